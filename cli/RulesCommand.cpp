@@ -1,0 +1,174 @@
+// `holon rules FILE...`: parse rule files, report diagnostics like a compiler, and summarise each
+// system: fields, cell states per lattice, masses, rules and their instances after closing them
+// under the lattice's rotations, constraints and properties.
+
+#include "cli/Commands.h"
+#include "rules/Diagnostics.h"
+#include "rules/Library.h"
+#include "rules/Model.h"
+#include "rules/Printer.h"
+
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+namespace holon::cli {
+
+namespace {
+
+struct RulesOptions {
+    std::vector<std::string> files;
+    std::vector<std::string> noWarnings;
+    bool json = false;
+};
+
+std::vector<const rules::Lattice*> latticesOf(const rules::System& s) {
+    if (s.lattice) return {&rules::Lattice::get(*s.lattice)};
+    return rules::Lattice::all();
+}
+
+const char* kindName(rules::Property::Kind k) {
+    switch (k) {
+    case rules::Property::Kind::Invariant: return "invariant";
+    case rules::Property::Kind::Progress: return "progress";
+    case rules::Property::Kind::Ranking: return "ranking";
+    case rules::Property::Kind::Holonomic: return "holonomic";
+    case rules::Property::Kind::Conserves: return "conserves";
+    }
+    return "";
+}
+
+nlohmann::ordered_json summarise(const rules::System& s) {
+    using json = nlohmann::ordered_json;
+    json j{{"file", s.sourceName}, {"system", s.name},
+           {"lattice", s.lattice ? rules::Lattice::get(*s.lattice).name() : "any"}};
+    json fields = json::array();
+    for (const rules::Field& f : s.fields) {
+        json fj{{"name", f.name}};
+        if (f.kind == rules::FieldKind::Enum) fj["values"] = f.values;
+        else if (f.kind == rules::FieldKind::Dir) fj["values"] = "dir";
+        else fj["values"] = std::to_string(f.lo) + ".." + std::to_string(f.hi);
+        if (f.whenField >= 0) {
+            json when = json::array();
+            for (int v : f.whenValues) when.push_back(s.fields[f.whenField].values[v]);
+            fj["if"] = when;
+        }
+        fields.push_back(fj);
+    }
+    j["fields"] = fields;
+    j["inputs"] = s.inputs;
+    json masses = json::object();
+    for (const rules::MassEntry& m : s.masses) masses[s.fields[m.field].values[m.value]] = m.mass.str();
+    j["masses"] = masses;
+    json states = json::object(), rulesJson = json::array();
+    std::vector<rules::Model> models;
+    for (const rules::Lattice* l : latticesOf(s)) {
+        models.emplace_back(s, *l);
+        states[l->name()] = models.back().alphabet().size();
+    }
+    j["states"] = states;
+    for (std::size_t r = 0; r < models.front().rules().size(); ++r) {
+        const rules::DirectedRule& dr = models.front().rules()[r];
+        // The reverse of a self-inverse '<=>' rule (transfer: C D <=> D C) adds no instance.
+        if (dr.reversed && models.front().shapeCount(static_cast<int>(r)) == 0) {
+            rulesJson.back()["self_inverse"] = true;
+            continue;
+        }
+        json instances = json::object();
+        for (const rules::Model& m : models) instances[m.lattice().name()] = m.shapeCount(static_cast<int>(r));
+        rulesJson.push_back({{"name", dr.name}, {"cells", dr.lhs().size()}, {"instances", instances},
+                             {"guarded", dr.guard() != nullptr}, {"self_inverse", false}});
+    }
+    j["rules"] = rulesJson;
+    json constraints = json::array();
+    for (const rules::Constraint& c : s.constraints) constraints.push_back(rules::printExpr(s, c.expr));
+    j["constraints"] = constraints;
+    j["goal"] = s.goal ? json(rules::printExpr(s, *s.goal)) : json(nullptr);
+    json props = json::array();
+    for (const rules::Property& p : s.properties) props.push_back({{"name", p.name}, {"kind", kindName(p.kind)}});
+    j["properties"] = props;
+    return j;
+}
+
+void printHuman(const nlohmann::ordered_json& j, std::ostream& out) {
+    out << "system " << j["system"].get<std::string>() << "  (" << j["file"].get<std::string>() << ")\n";
+    out << "  lattice      " << j["lattice"].get<std::string>() << '\n';
+    for (const auto& f : j["fields"]) {
+        out << "  field        " << f["name"].get<std::string>() << ": ";
+        if (f["values"].is_array()) {
+            bool first = true;
+            for (const auto& v : f["values"]) out << (first ? "" : " | ") << v.get<std::string>(), first = false;
+        } else {
+            out << f["values"].get<std::string>();
+        }
+        if (f.contains("if")) {
+            out << " if ";
+            bool first = true;
+            for (const auto& v : f["if"]) out << (first ? "" : " | ") << v.get<std::string>(), first = false;
+        }
+        out << '\n';
+    }
+    for (const auto& in : j["inputs"]) out << "  input        " << in.get<std::string>() << '\n';
+    out << "  mass         ";
+    if (j["masses"].empty()) out << "1 per occupied cell";
+    bool first = true;
+    for (const auto& [name, m] : j["masses"].items()) out << (first ? "" : ", ") << name << " = " << m.get<std::string>(), first = false;
+    out << "\n  cell states  ";
+    first = true;
+    for (const auto& [lattice, n] : j["states"].items()) out << (first ? "" : ", ") << lattice << " " << n.get<int>(), first = false;
+    out << "  (with the vacuum)\n  rules        instances after rotation closure (";
+    first = true;
+    for (const auto& [lattice, n] : j["states"].items()) out << (first ? "" : " / ") << lattice, first = false;
+    out << ")\n";
+    for (const auto& r : j["rules"]) {
+        out << "    " << std::left << std::setw(22) << r["name"].get<std::string>() << r["cells"].get<int>() << " cells  ";
+        first = true;
+        for (const auto& [lattice, n] : r["instances"].items()) out << (first ? "" : " / ") << n.get<int>(), first = false;
+        if (r["guarded"].get<bool>()) out << "  guarded";
+        if (r["self_inverse"].get<bool>()) out << "  self-inverse";
+        out << '\n';
+    }
+    for (const auto& c : j["constraints"]) out << "  constraint   " << c.get<std::string>() << '\n';
+    if (!j["goal"].is_null()) out << "  goal         " << j["goal"].get<std::string>() << '\n';
+    for (const auto& p : j["properties"])
+        out << "  property     " << p["name"].get<std::string>() << " (" << p["kind"].get<std::string>() << ")\n";
+}
+
+}  // namespace
+
+Run addRulesCommand(CLI::App& app) {
+    auto opts = std::make_shared<RulesOptions>();
+    CLI::App* sub = app.add_subcommand("rules", "Parse .holon rule files, report diagnostics and summarise each system");
+    sub->add_option("files", opts->files, "rule files (.holon)")->required();
+    sub->add_option("-W", opts->noWarnings, "silence a warning: -W no-NAME (names: unused-value, unused-input, "
+                                            "unmassed-value, duplicate-rule, no-rules)");
+    sub->add_flag("--json", opts->json, "print the summaries as JSON");
+    return [opts]() {
+        rules::LoadOptions load;
+        for (const std::string& w : opts->noWarnings) {
+            const std::string name = w.rfind("no-", 0) == 0 ? w.substr(3) : w;
+            const auto& known = rules::Diagnostics::warningNames();
+            if (std::find(known.begin(), known.end(), name) == known.end()) {
+                std::cerr << "holon rules: unknown warning '" << w << "'; try -W no-unused-value\n";
+                return 2;
+            }
+            load.silencedWarnings.push_back(name);
+        }
+        nlohmann::ordered_json all = nlohmann::ordered_json::array();
+        int failed = 0;
+        for (const std::string& file : opts->files) {
+            auto system = rules::loadSystem(file, std::cerr, load);
+            if (!system) {
+                ++failed;
+                continue;
+            }
+            nlohmann::ordered_json j = summarise(*system);
+            if (opts->json) all.push_back(j);
+            else printHuman(j, std::cout);
+        }
+        if (opts->json) std::cout << all.dump(2) << '\n';
+        return failed ? 2 : 0;
+    };
+}
+
+}  // namespace holon::cli

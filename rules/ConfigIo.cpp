@@ -1,0 +1,225 @@
+// Configuration formats. JSON lists the occupied cells in region order with every present field by
+// name (directions by the lattice's direction names), and the cells of each input; it is canonical:
+// one configuration has one text. ASCII art draws square regions row by row and hex regions as
+// offset rows (row r indented by |r| spaces, cells separated by a space) so the picture looks like
+// the lattice.
+
+#include "rules/ConfigIo.h"
+
+#include "rules/Error.h"
+#include "rules/Parser.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace holon::rules {
+
+namespace {
+
+nlohmann::json position(const Region& region, Vec v) {
+    if (region.lattice().dimension() == 3) return {v.x, v.y, v.z};
+    return {v.x, v.y};
+}
+
+std::string posText(const nlohmann::json& at) { return at.dump(); }
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        out.push_back(line);
+    }
+    while (!out.empty() && out.back().find_first_not_of(" \t") == std::string::npos) out.pop_back();
+    return out;
+}
+
+/// The cells of each ASCII row, in order: square rows are x = 0..W-1; hex rows are the cells of
+/// row r from west to east.
+std::vector<std::vector<int>> asciiRows(const Region& region) {
+    const Lattice& lattice = region.lattice();
+    if (lattice.dimension() == 3) throw InputError("ASCII art is for 2D regions; write 3D configurations as JSON");
+    std::vector<std::vector<int>> rows(region.extent().y);
+    for (int i = 0; i < region.size(); ++i) rows[region.cell(i).y - region.lower().y].push_back(i);
+    for (auto& row : rows) std::sort(row.begin(), row.end(), [&](int a, int b) { return region.cell(a).x < region.cell(b).x; });
+    return rows;
+}
+
+std::vector<std::string> rowTokens(const Region& region, const std::string& line) {
+    std::vector<std::string> tokens;
+    if (region.lattice().kind() == LatticeKind::Hex2D) {
+        std::istringstream in(line);
+        for (std::string t; in >> t;)
+            for (char ch : t) tokens.push_back(std::string(1, ch));
+    } else {
+        for (char ch : line) tokens.push_back(std::string(1, ch == ' ' ? '.' : ch));
+    }
+    return tokens;
+}
+
+}  // namespace
+
+nlohmann::json configToJson(const Interpreter& in, const Configuration& c) {
+    const Region& region = in.region();
+    const Model& model = in.model();
+    const System& system = model.system();
+    nlohmann::json cells = nlohmann::json::array();
+    for (int i = 0; i < region.size(); ++i) {
+        if (!c.cells[i]) continue;
+        nlohmann::json cell;
+        cell["at"] = position(region, region.cell(i));
+        const auto& fields = model.alphabet().fields(c.cells[i]);
+        for (std::size_t f = 0; f < fields.size(); ++f) {
+            if (fields[f] == kAbsent) continue;
+            const Field& field = system.fields[f];
+            if (field.kind == FieldKind::Enum) cell[field.name] = field.values[fields[f]];
+            else if (field.kind == FieldKind::Dir) cell[field.name] = region.lattice().directionName(fields[f]);
+            else cell[field.name] = fields[f];
+        }
+        cells.push_back(cell);
+    }
+    nlohmann::json j{{"system", system.name}, {"region", region.spec()}, {"cells", cells}};
+    nlohmann::json inputs = nlohmann::json::object();
+    for (std::size_t k = 0; k < system.inputs.size(); ++k) {
+        nlohmann::json list = nlohmann::json::array();
+        for (int i = 0; i < region.size(); ++i)
+            if ((c.inputs[i] >> k) & 1u) list.push_back(position(region, region.cell(i)));
+        inputs[system.inputs[k]] = list;
+    }
+    if (!system.inputs.empty()) j["inputs"] = inputs;
+    return j;
+}
+
+Configuration configFromJson(const Interpreter& in, const nlohmann::json& j) {
+    const Region& region = in.region();
+    const Model& model = in.model();
+    const System& system = model.system();
+    const int dim = region.lattice().dimension();
+    auto cellIndex = [&](const nlohmann::json& at) {
+        if (!at.is_array() || static_cast<int>(at.size()) != dim || !std::all_of(at.begin(), at.end(), [](auto& x) { return x.is_number_integer(); }))
+            throw InputError("a cell position must be " + std::string(dim == 3 ? "[x, y, z]" : "[x, y]") + ", found " + posText(at));
+        Vec v{at[0].get<int>(), at[1].get<int>(), dim == 3 ? at[2].get<int>() : 0};
+        const int i = region.indexOf(v);
+        if (i < 0) throw InputError("cell " + posText(at) + " lies outside region " + region.spec());
+        return i;
+    };
+    if (!j.is_object()) throw InputError("a configuration is a JSON object with \"cells\"");
+    if (j.contains("region") && j["region"].is_string() && j["region"].get<std::string>() != region.spec())
+        throw InputError("the configuration is for region " + j["region"].get<std::string>() + ", not " + region.spec());
+    Configuration c = in.empty();
+    if (!j.contains("cells") || !j["cells"].is_array()) throw InputError("a configuration needs a \"cells\" array");
+    for (const auto& cell : j["cells"]) {
+        if (!cell.is_object() || !cell.contains("at")) throw InputError("each cell is an object with \"at\" and its fields");
+        const int i = cellIndex(cell["at"]);
+        if (c.cells[i]) throw InputError("cell " + posText(cell["at"]) + " is listed twice");
+        std::vector<int> fields(system.fields.size(), kAbsent);
+        for (const auto& [key, value] : cell.items()) {
+            if (key == "at") continue;
+            const int f = system.fieldIndex(key);
+            if (f < 0) throw InputError("cell " + posText(cell["at"]) + ": system '" + system.name + "' has no field '" + key + "'");
+            const Field& field = system.fields[f];
+            if (field.kind == FieldKind::Int) {
+                if (!value.is_number_integer()) throw InputError("cell " + posText(cell["at"]) + ": field '" + key + "' holds an integer");
+                fields[f] = value.get<int>();
+                continue;
+            }
+            if (!value.is_string()) throw InputError("cell " + posText(cell["at"]) + ": field '" + key + "' holds a name");
+            const std::string name = value.get<std::string>();
+            if (field.kind == FieldKind::Dir) {
+                auto d = region.lattice().directionByName(name);
+                if (!d && name != "none") throw InputError("cell " + posText(cell["at"]) + ": '" + name + "' is not a direction of " + region.lattice().name());
+                fields[f] = d ? *d : kAbsent;
+            } else {
+                auto it = std::find(field.values.begin(), field.values.end(), name);
+                if (it == field.values.end()) throw InputError("cell " + posText(cell["at"]) + ": '" + name + "' is not a state of field '" + key + "'");
+                fields[f] = static_cast<int>(it - field.values.begin());
+            }
+        }
+        const int value = model.alphabet().find(fields);
+        if (value <= 0) throw InputError("cell " + posText(cell["at"]) + ": these fields do not make a state of '" + system.name + "' (a field is missing, or set where its 'if' does not hold)");
+        c.cells[i] = static_cast<CellValue>(value);
+    }
+    if (j.contains("inputs")) {
+        if (!j["inputs"].is_object()) throw InputError("\"inputs\" maps input names to lists of cells");
+        for (const auto& [name, list] : j["inputs"].items()) {
+            const int k = system.inputIndex(name);
+            if (k < 0) throw InputError("system '" + system.name + "' has no input '" + name + "'");
+            if (!list.is_array()) throw InputError("input '" + name + "' is a list of cells");
+            for (const auto& at : list) c.inputs[cellIndex(at)] |= 1u << k;
+        }
+    }
+    return c;
+}
+
+std::string configToAscii(const Interpreter& in, const Configuration& c) {
+    const Region& region = in.region();
+    const Alphabet& alphabet = in.model().alphabet();
+    const bool hex = region.lattice().kind() == LatticeKind::Hex2D;
+    std::string out;
+    for (const auto& row : asciiRows(region)) {
+        if (row.empty()) continue;
+        if (hex) out += std::string(static_cast<std::size_t>(std::abs(region.cell(row[0]).y)), ' ');
+        for (std::size_t k = 0; k < row.size(); ++k) {
+            const CellValue v = c.cells[row[k]];
+            const char g = v ? alphabet.glyph(v) : '.';
+            if (!g) throw InputError("state '" + alphabet.name(v) + "' has no one-character name; write this configuration as JSON");
+            if (hex && k) out += ' ';
+            out += g;
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+Configuration configFromAscii(const Interpreter& in, const std::string& text) {
+    const Region& region = in.region();
+    const Alphabet& alphabet = in.model().alphabet();
+    Configuration c = in.empty();
+    const auto rows = asciiRows(region);
+    const auto textLines = lines(text);
+    if (textLines.size() > rows.size())
+        throw InputError("the picture has " + std::to_string(textLines.size()) + " rows; region " + region.spec() + " has " + std::to_string(rows.size()));
+    for (std::size_t r = 0; r < textLines.size(); ++r) {
+        const auto tokens = rowTokens(region, textLines[r]);
+        if (tokens.size() > rows[r].size())
+            throw InputError("row " + std::to_string(r + 1) + " of the picture has " + std::to_string(tokens.size()) +
+                             " cells; the region's row has " + std::to_string(rows[r].size()));
+        for (std::size_t k = 0; k < tokens.size(); ++k) {
+            const char ch = tokens[k][0];
+            if (ch == '.' || ch == '_') continue;
+            const int v = alphabet.byGlyph(ch);
+            if (v < 0) throw InputError("row " + std::to_string(r + 1) + ", column " + std::to_string(k + 1) + ": '" +
+                                        std::string(1, ch) + "' is not a one-character state of '" + in.model().system().name + "'");
+            c.cells[rows[r][k]] = static_cast<CellValue>(v);
+        }
+    }
+    return c;
+}
+
+std::vector<bool> maskFromAscii(const Region& region, const std::string& text) {
+    std::vector<bool> mask(region.size(), false);
+    const auto rows = asciiRows(region);
+    const auto textLines = lines(text);
+    if (textLines.size() > rows.size()) throw InputError("the mask has more rows than region " + region.spec());
+    for (std::size_t r = 0; r < textLines.size(); ++r) {
+        const auto tokens = rowTokens(region, textLines[r]);
+        if (tokens.size() > rows[r].size()) throw InputError("row " + std::to_string(r + 1) + " of the mask is wider than the region");
+        for (std::size_t k = 0; k < tokens.size(); ++k) mask[rows[r][k]] = tokens[k][0] != '.' && tokens[k][0] != '_';
+    }
+    return mask;
+}
+
+Configuration readConfigFile(const Interpreter& in, const std::string& path) {
+    const std::string text = readTextFile(path);
+    const auto first = text.find_first_not_of(" \t\r\n");
+    try {
+        if (first != std::string::npos && text[first] == '{') return configFromJson(in, nlohmann::json::parse(text));
+        return configFromAscii(in, text);
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(path + ": not valid JSON: " + e.what());
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
+}
+
+}  // namespace holon::rules

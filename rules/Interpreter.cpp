@@ -1,0 +1,236 @@
+// The reference semantics of the rule language (seed 000 §II-C). A generator instance is enabled
+// when its left side matches, its guard holds, and the configuration it produces passes every
+// non-local constraint: "all possible next configurations can be found by applying each generator at
+// each admissible location, and then filtering the resulting set of configurations through all
+// non-local constraints". Cells outside the region read as empty with no inputs; rules never write
+// there. This file favours obviousness over speed: the fast engines are tested against it.
+
+#include "rules/Interpreter.h"
+
+#include <deque>
+
+namespace holon::rules {
+
+Interpreter::Interpreter(const Model& model, const Region& region) : model_(&model), region_(&region) {}
+
+Configuration Interpreter::empty() const {
+    return {std::vector<CellValue>(region_->size(), 0), std::vector<std::uint32_t>(region_->size(), 0)};
+}
+
+CellValue Interpreter::valueAt(Vec position, const Configuration& c) const {
+    const int i = region_->indexOf(position);
+    return i < 0 ? 0 : c.cells[i];
+}
+
+CellContext Interpreter::context(Vec position, const Configuration& c, const Placement* at) const {
+    const int i = region_->indexOf(position);
+    return {&model_->alphabet(), &model_->lattice(), position, i < 0 ? 0u : c.inputs[i], at ? &at->positions : nullptr, false};
+}
+
+std::optional<std::vector<int>> Interpreter::cellsOf(const Instance& instance) const {
+    std::vector<int> cells;
+    for (Vec o : model_->shapes()[instance.shape].offsets) {
+        const int i = region_->indexOf(instance.anchor + o);
+        if (i < 0) return std::nullopt;
+        cells.push_back(i);
+    }
+    return cells;
+}
+
+bool Interpreter::matches(const Configuration& c, const Instance& instance) const {
+    const RuleShape& shape = model_->shapes()[instance.shape];
+    const DirectedRule& rule = model_->rules()[shape.rule];
+    Placement at;
+    for (Vec o : shape.offsets) {
+        if (!region_->contains(instance.anchor + o)) return false;
+        at.positions.push_back(instance.anchor + o);
+    }
+    for (std::size_t i = 0; i < at.positions.size(); ++i)
+        if (!matchesTerm(rule.lhs()[i], valueAt(at.positions[i], c), context(at.positions[i], c, &at))) return false;
+    // A `<=>` rule read backwards tests its input atoms on the (now left) right side as well.
+    if (rule.reversed)
+        for (std::size_t i = 0; i < at.positions.size(); ++i)
+            for (const Atom& a : rule.rhs()[i].atoms)
+                if (a.kind == Atom::Kind::Input && !matchesTerm(CellTerm{CellTerm::Base::Any, {a}, false, {}, {}},
+                                                                 valueAt(at.positions[i], c), context(at.positions[i], c, &at)))
+                    return false;
+    return !rule.guard() || holdsAt(*rule.guard(), c, &at);
+}
+
+Configuration Interpreter::apply(const Configuration& c, const Instance& instance) const {
+    const RuleShape& shape = model_->shapes()[instance.shape];
+    const DirectedRule& rule = model_->rules()[shape.rule];
+    Placement at;
+    for (Vec o : shape.offsets) at.positions.push_back(instance.anchor + o);
+    Configuration next = c;
+    for (std::size_t i = 0; i < at.positions.size(); ++i) {
+        const int cell = region_->indexOf(at.positions[i]);
+        const int value = rewriteTerm(rule.rhs()[i], c.cells[cell], context(at.positions[i], c, &at));
+        // validate() proved every right side complete on every state its left side admits.
+        next.cells[cell] = static_cast<CellValue>(value < 0 ? c.cells[cell] : value);
+    }
+    return next;
+}
+
+std::optional<Configuration> Interpreter::successor(const Configuration& c, const Instance& instance) const {
+    if (!matches(c, instance)) return std::nullopt;
+    Configuration next = apply(c, instance);
+    if (!legal(next)) return std::nullopt;
+    return next;
+}
+
+std::vector<Instance> Interpreter::enabled(const Configuration& c) const {
+    std::vector<Instance> out;
+    const int shapes = static_cast<int>(model_->shapes().size());
+    for (int s = 0; s < shapes; ++s) {
+        const Vec first = model_->shapes()[s].offsets[0];
+        // Anchor every shape so that its first cell runs over the region.
+        for (Vec cell : region_->cells()) {
+            Instance instance{s, cell - first};
+            if (successor(c, instance)) out.push_back(instance);
+        }
+    }
+    return out;
+}
+
+bool Interpreter::legal(const Configuration& c) const {
+    for (const Constraint& k : model_->system().constraints)
+        if (!holds(k.expr, c)) return false;
+    return true;
+}
+
+bool Interpreter::atGoal(const Configuration& c) const {
+    return model_->system().goal && holds(*model_->system().goal, c);
+}
+
+bool Interpreter::holds(const Expr& e, const Configuration& c) const { return holdsAt(e, c, nullptr); }
+Rational Interpreter::number(const Expr& e, const Configuration& c) const { return numberAt(e, c, nullptr); }
+
+Rational Interpreter::mass(const Configuration& c) const {
+    Rational m;
+    for (CellValue v : c.cells) m += model_->alphabet().mass(v);
+    return m;
+}
+
+int Interpreter::occupied(const Configuration& c) const {
+    int n = 0;
+    for (CellValue v : c.cells) n += v != 0;
+    return n;
+}
+
+int Interpreter::countCells(const Expr& e, const Configuration& c, const Placement* at) const {
+    int n = 0;
+    if (e.around >= 0) {
+        const Vec centre = at->positions[e.around];
+        for (Vec d : model_->lattice().directions())
+            n += matchesPredicate(e.pred, valueAt(centre + d, c), context(centre + d, c, at));
+        return n;
+    }
+    for (int i = 0; i < region_->size(); ++i) n += matchesPredicate(e.pred, c.cells[i], context(region_->cell(i), c, at));
+    return n;
+}
+
+bool Interpreter::holdsAt(const Expr& e, const Configuration& c, const Placement* at) const {
+    auto cmp = [](CmpOp op, const Rational& a, const Rational& b) {
+        switch (op) {
+        case CmpOp::Eq: return a == b;
+        case CmpOp::Ne: return a != b;
+        case CmpOp::Lt: return a < b;
+        case CmpOp::Le: return a <= b;
+        case CmpOp::Gt: return a > b;
+        case CmpOp::Ge: return a >= b;
+        }
+        return false;
+    };
+    switch (e.kind) {
+    case Expr::Kind::Bool: return e.value.num() != 0;
+    case Expr::Kind::And: return holdsAt(e.kids[0], c, at) && holdsAt(e.kids[1], c, at);
+    case Expr::Kind::Or: return holdsAt(e.kids[0], c, at) || holdsAt(e.kids[1], c, at);
+    case Expr::Kind::Implies: return !holdsAt(e.kids[0], c, at) || holdsAt(e.kids[1], c, at);
+    case Expr::Kind::Not: return !holdsAt(e.kids[0], c, at);
+    case Expr::Kind::Compare: return cmp(e.op, numberAt(e.kids[0], c, at), numberAt(e.kids[1], c, at));
+    case Expr::Kind::Some: return countCells(e, c, at) > 0;
+    case Expr::Kind::No: return countCells(e, c, at) == 0;
+    case Expr::Kind::All: {
+        const int total = e.around >= 0 ? model_->lattice().degree() : region_->size();
+        return countCells(e, c, at) == total;
+    }
+    case Expr::Kind::Connected: return connected(e.pred, c);
+    case Expr::Kind::Reaches: return reaches(e, c);
+    default: return false;  // numeric kinds never reach here: the parser types every expression
+    }
+}
+
+Rational Interpreter::numberAt(const Expr& e, const Configuration& c, const Placement* at) const {
+    switch (e.kind) {
+    case Expr::Kind::Number: return e.value;
+    case Expr::Kind::Mass: return mass(c);
+    case Expr::Kind::Add: return numberAt(e.kids[0], c, at) + numberAt(e.kids[1], c, at);
+    case Expr::Kind::Sub: return numberAt(e.kids[0], c, at) - numberAt(e.kids[1], c, at);
+    case Expr::Kind::Neg: return -numberAt(e.kids[0], c, at);
+    case Expr::Kind::Count: return countCells(e, c, at);
+    default: return 0;
+    }
+}
+
+bool Interpreter::connected(const CellPredicate& pred, const Configuration& c) const {
+    std::vector<char> member(region_->size(), 0), seen(region_->size(), 0);
+    int start = -1, total = 0;
+    for (int i = 0; i < region_->size(); ++i)
+        if (matchesPredicate(pred, c.cells[i], context(region_->cell(i), c, nullptr))) {
+            member[i] = 1, ++total;
+            if (start < 0) start = i;
+        }
+    if (total == 0) return true;
+    std::deque<int> queue{start};
+    seen[start] = 1;
+    int reached = 0;
+    while (!queue.empty()) {
+        const int i = queue.front();
+        queue.pop_front();
+        ++reached;
+        for (int d = 0; d < model_->lattice().degree(); ++d) {
+            const int j = region_->neighbour(i, d);
+            if (j >= 0 && member[j] && !seen[j]) seen[j] = 1, queue.push_back(j);
+        }
+    }
+    return reached == total;
+}
+
+bool Interpreter::reaches(const Expr& e, const Configuration& c) const {
+    // Every pred cell follows its pointer through pred cells to a target cell, with no cycle and no
+    // pointer leaving the region. Memoised: 0 unknown, 1 on the current walk, 2 good, 3 bad.
+    const int n = region_->size();
+    std::vector<char> state(n, 0);
+    auto isPred = [&](int i) { return matchesPredicate(e.pred, c.cells[i], context(region_->cell(i), c, nullptr)); };
+    auto isTarget = [&](int i) { return matchesPredicate(e.target, c.cells[i], context(region_->cell(i), c, nullptr)); };
+    for (int start = 0; start < n; ++start) {
+        if (state[start] || !isPred(start)) continue;
+        std::vector<int> walk;
+        int i = start;
+        char verdict = 3;
+        while (true) {
+            if (state[i] == 2 || state[i] == 3) {
+                verdict = state[i];
+                break;
+            }
+            if (state[i] == 1) break;  // a cycle
+            state[i] = 1;
+            walk.push_back(i);
+            const int d = c.cells[i] == 0 ? kAbsent : model_->alphabet().fields(c.cells[i])[e.field];
+            const int j = d == kAbsent ? -1 : region_->neighbour(i, d);
+            if (j < 0) break;
+            if (isTarget(j)) {
+                verdict = 2;
+                break;
+            }
+            if (!isPred(j)) break;
+            i = j;
+        }
+        for (int w : walk) state[w] = verdict;
+        if (verdict == 3) return false;
+    }
+    return true;
+}
+
+}  // namespace holon::rules

@@ -1,0 +1,73 @@
+#pragma once
+// The reference interpreter: the semantics of a system on a bounded region. Every other engine
+// (explorer, SMT encoding, compiled planner) is tested against this one.
+
+#include "rules/Cells.h"
+#include "rules/Model.h"
+#include "rules/Region.h"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace holon::rules {
+
+/// The state of every cell of a region, and the read-only inputs the problem sets per cell (bit i:
+/// input i of the system).
+struct Configuration {
+    std::vector<CellValue> cells;
+    std::vector<std::uint32_t> inputs;
+    friend bool operator==(const Configuration&, const Configuration&) = default;
+};
+
+/// A rule shape placed on the lattice: pattern cell i sits at anchor + shape.offsets[i].
+struct Instance {
+    int shape = 0;
+    Vec anchor;
+    friend bool operator==(const Instance&, const Instance&) = default;
+};
+
+class Interpreter {
+public:
+    Interpreter(const Model& model, const Region& region);
+    const Model& model() const { return *model_; }
+    const Region& region() const { return *region_; }
+
+    Configuration empty() const;
+    /// Region indices of the instance's cells, or nothing when one lies outside the region.
+    std::optional<std::vector<int>> cellsOf(const Instance& instance) const;
+    /// The left side and the guard hold (the local part of being enabled).
+    bool matches(const Configuration& c, const Instance& instance) const;
+    /// The configuration after firing; requires matches(c, instance).
+    Configuration apply(const Configuration& c, const Instance& instance) const;
+    /// matches, and the result satisfies every non-local constraint: the successor, or nothing.
+    std::optional<Configuration> successor(const Configuration& c, const Instance& instance) const;
+    /// Every instance with a successor, in a fixed order (shape, then anchor).
+    std::vector<Instance> enabled(const Configuration& c) const;
+    /// All non-local constraints hold.
+    bool legal(const Configuration& c) const;
+
+    bool holds(const Expr& e, const Configuration& c) const;
+    Rational number(const Expr& e, const Configuration& c) const;
+    Rational mass(const Configuration& c) const;
+    int occupied(const Configuration& c) const;
+    /// The goal of the system, or false when it declares none.
+    bool atGoal(const Configuration& c) const;
+
+private:
+    struct Placement {
+        std::vector<Vec> positions;
+    };
+    bool holdsAt(const Expr& e, const Configuration& c, const Placement* at) const;
+    Rational numberAt(const Expr& e, const Configuration& c, const Placement* at) const;
+    int countCells(const Expr& e, const Configuration& c, const Placement* at) const;
+    bool connected(const CellPredicate& pred, const Configuration& c) const;
+    bool reaches(const Expr& e, const Configuration& c) const;
+    CellContext context(Vec position, const Configuration& c, const Placement* at) const;
+    CellValue valueAt(Vec position, const Configuration& c) const;
+
+    const Model* model_;
+    const Region* region_;
+};
+
+}  // namespace holon::rules

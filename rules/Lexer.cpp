@@ -1,0 +1,109 @@
+// The .holon tokenizer: identifiers, integers, punctuation, significant newlines and `//` comments.
+// Unknown characters are reported and skipped so that the parser still sees the rest of the line.
+
+#include "rules/Lexer.h"
+
+#include <array>
+#include <cctype>
+
+namespace holon::rules {
+
+namespace {
+
+constexpr std::array<std::string_view, 25> kPunct{"<=>", "=>", "<=", ">=", "==", "!=", "..", "<", ">", "=", ":",
+                                                 "|",   "&",  "!",  "@",  ",",  "(",  ")",  "*", "#", "_", "/",
+                                                 "+",   "-",  ";"};
+
+bool continuesLine(const Token& t) {
+    static constexpr std::array<std::string_view, 14> joiners{"and", "or",  "not", "implies", "if", "assuming", ",",
+                                                              "=>",  "<=>", "|",   "&",       ":",  "=",        "("};
+    if (t.kind != Token::Kind::Ident && t.kind != Token::Kind::Punct) return false;
+    for (auto j : joiners)
+        if (t.text == j) return true;
+    return false;
+}
+
+bool startsDeclaration(std::string_view rest) {
+    static constexpr std::array<std::string_view, 13> keywords{"system",     "lattice",   "field",     "states",  "input",
+                                                               "mass",       "rule",      "constraint", "goal",   "invariant",
+                                                               "ranking",    "progress",  "holonomic"};
+    for (auto k : keywords)
+        if (rest.substr(0, k.size()) == k && (rest.size() == k.size() || rest[k.size()] == ' ')) return true;
+    return rest.substr(0, 10) == "conserves ";
+}
+
+bool identStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
+bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+
+}  // namespace
+
+std::vector<Token> tokenize(std::string_view src, Diagnostics& diagnostics) {
+    std::vector<Token> tokens;
+    int line = 1, col = 1, depth = 0;
+    std::size_t i = 0;
+    auto push = [&](Token::Kind kind, std::string text, SourceLoc loc) { tokens.push_back({kind, std::move(text), loc}); };
+    while (i < src.size()) {
+        const char c = src[i];
+        const SourceLoc loc{line, col};
+        if (c == '\n') {
+            // An unclosed parenthesis must not swallow the rest of the file: a declaration keyword at
+            // the start of the next line ends it.
+            if (depth > 0 && startsDeclaration(src.substr(i + 1))) depth = 0;
+            if (depth == 0 && !tokens.empty() && tokens.back().kind != Token::Kind::Newline && !continuesLine(tokens.back()))
+                push(Token::Kind::Newline, "", loc);
+            ++i, ++line, col = 1;
+            continue;
+        }
+        if (c == ' ' || c == '\t' || c == '\r') {
+            ++i, ++col;
+            continue;
+        }
+        if (c == '/' && i + 1 < src.size() && src[i + 1] == '/') {
+            while (i < src.size() && src[i] != '\n') ++i, ++col;
+            continue;
+        }
+        if (identStart(c)) {
+            std::size_t j = i;
+            while (j < src.size() && identChar(src[j])) ++j;
+            push(Token::Kind::Ident, std::string(src.substr(i, j - i)), loc);
+            col += static_cast<int>(j - i), i = j;
+            continue;
+        }
+        if (std::isdigit(static_cast<unsigned char>(c))) {
+            std::size_t j = i;
+            while (j < src.size() && std::isdigit(static_cast<unsigned char>(src[j]))) ++j;
+            if (j - i > 9) {
+                diagnostics.error(loc, "number too large");
+                push(Token::Kind::Int, "0", loc);
+            } else {
+                push(Token::Kind::Int, std::string(src.substr(i, j - i)), loc);
+            }
+            col += static_cast<int>(j - i), i = j;
+            continue;
+        }
+        bool matched = false;
+        for (auto p : kPunct) {
+            if (src.substr(i, p.size()) == p) {
+                if (p == "(") ++depth;
+                if (p == ")" && depth > 0) --depth;
+                push(Token::Kind::Punct, std::string(p), loc);
+                i += p.size(), col += static_cast<int>(p.size());
+                matched = true;
+                break;
+            }
+        }
+        if (matched) continue;
+        const unsigned char u = static_cast<unsigned char>(c);
+        diagnostics.error(loc, u >= 0x80 ? std::string("non-ASCII character; .holon files are plain ASCII")
+                                         : "unexpected character '" + std::string(1, c) + "'");
+        // Skip a whole UTF-8 sequence so one character gives one diagnostic.
+        std::size_t j = i + 1;
+        while (u >= 0x80 && j < src.size() && (static_cast<unsigned char>(src[j]) & 0xC0) == 0x80) ++j;
+        i = j, ++col;
+    }
+    if (!tokens.empty() && tokens.back().kind != Token::Kind::Newline) push(Token::Kind::Newline, "", {line, col});
+    push(Token::Kind::End, "", {line, col});
+    return tokens;
+}
+
+}  // namespace holon::rules

@@ -1,0 +1,49 @@
+// File loading shared by every command, and access to the bundled standard library in
+// rules/library/ (seed 000's systems pixel ... general-lock_n, the U/P/F planners, the hex pivot).
+// The library path is compiled in and can be overridden with HOLON_LIBRARY.
+
+#include "rules/Library.h"
+
+#include "rules/Error.h"
+#include "rules/Parser.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+namespace holon::rules {
+
+std::optional<System> loadSystem(const std::string& path, std::ostream& out, const LoadOptions& options) {
+    const std::string text = readTextFile(path);
+    Diagnostics diagnostics(path, text);
+    for (const std::string& w : options.silencedWarnings) diagnostics.silence(w);
+    auto system = parseSystem(text, diagnostics, path);
+    out << diagnostics.render();
+    if (diagnostics.hasErrors())
+        out << path << ": " << diagnostics.errorCount() << (diagnostics.errorCount() == 1 ? " error" : " errors") << '\n';
+    return system;
+}
+
+std::string libraryDir() {
+    if (const char* env = std::getenv("HOLON_LIBRARY")) return env;
+    return HOLON_LIBRARY_DIR;
+}
+
+std::vector<std::string> libraryFiles() {
+    std::vector<std::string> files;
+    for (const auto& entry : std::filesystem::directory_iterator(libraryDir()))
+        if (entry.path().extension() == ".holon") files.push_back(entry.path().string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+System librarySystem(const std::string& stem) {
+    const std::string path = libraryDir() + "/" + stem + ".holon";
+    std::ostringstream messages;
+    auto system = loadSystem(path, messages);
+    if (!system) throw InputError("library system '" + stem + "' failed to load:\n" + messages.str());
+    return *system;
+}
+
+}  // namespace holon::rules

@@ -1,0 +1,29 @@
+#pragma once
+// Loading .holon files: with diagnostics printed, and from the bundled standard library.
+
+#include "rules/Diagnostics.h"
+#include "rules/Ir.h"
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace holon::rules {
+
+struct LoadOptions {
+    std::vector<std::string> silencedWarnings;
+};
+
+/// Parses a file, writes its diagnostics to `diagnosticsOut`, and returns the system when there
+/// were no errors. Throws InputError when the file cannot be read.
+std::optional<System> loadSystem(const std::string& path, std::ostream& diagnosticsOut, const LoadOptions& options = {});
+
+/// The folder of the bundled library, rules/library/.
+std::string libraryDir();
+/// Paths of every bundled .holon file, sorted.
+std::vector<std::string> libraryFiles();
+/// Loads a bundled system by file stem ("planner_intermediate"); throws InputError when it fails.
+System librarySystem(const std::string& stem);
+
+}  // namespace holon::rules

@@ -1,0 +1,162 @@
+// A system on a lattice. The alphabet enumerates the cell states (seed 000 §III: D, C, B1..Bn-1; the
+// planner's U/P/F labels with their parent pointers). Rule shapes close each generator under the
+// lattice's rotation group, in the spirit of Abrams and Ghrist's generator catalogues (seed 000
+// §II-C): a template written once along one direction applies in every orientation. Orientations
+// that rewrite the same cells in the same way (a pair along the z axis turned about z; the reverse of
+// a self-inverse transfer) are kept once, found by comparing structural keys.
+
+#include "rules/Model.h"
+
+#include "rules/Error.h"
+#include "rules/Printer.h"
+
+#include <algorithm>
+#include <set>
+
+namespace holon::rules {
+
+namespace {
+
+std::string vecText(Vec v) { return "(" + std::to_string(v.x) + "," + std::to_string(v.y) + "," + std::to_string(v.z) + ")"; }
+
+}  // namespace
+
+Alphabet::Alphabet(const System& system, const Lattice& lattice) : system_(&system), lattice_(&lattice) {
+    values_.push_back({});  // the vacuum
+    std::vector<int> current(system.fields.size(), kAbsent);
+    auto enumerate = [&](auto&& self, std::size_t f) -> void {
+        if (f == system.fields.size()) {
+            if (values_.size() > 65535) throw InputError("system '" + system.name + "' has more than 65535 cell states; use fewer or smaller fields");
+            index_[current] = static_cast<int>(values_.size());
+            values_.push_back(current);
+            return;
+        }
+        const Field& field = system.fields[f];
+        const bool active = field.whenField < 0 ||
+                            std::count(field.whenValues.begin(), field.whenValues.end(), current[field.whenField]) > 0;
+        std::vector<int> domain;
+        if (!active) domain = {kAbsent};
+        else if (field.kind == FieldKind::Enum)
+            for (int v = 0; v < static_cast<int>(field.values.size()); ++v) domain.push_back(v);
+        else if (field.kind == FieldKind::Int)
+            for (int v = field.lo; v <= field.hi; ++v) domain.push_back(v);
+        else {
+            if (field.whenField < 0) domain.push_back(kAbsent);  // an unconditional pointer may hold none
+            for (int d = 0; d < lattice.degree(); ++d) domain.push_back(d);
+        }
+        for (int v : domain) {
+            current[f] = v;
+            self(self, f + 1);
+        }
+        current[f] = kAbsent;
+    };
+    if (!system.fields.empty()) enumerate(enumerate, 0);
+    else {
+        index_[{}] = 1;
+        values_.push_back({});
+    }
+    // Mass: the sum of the declared masses of a state's values; 1 per occupied cell when none are declared.
+    mass_.assign(values_.size(), Rational(system.masses.empty() ? 1 : 0));
+    mass_[0] = 0;
+    for (std::size_t v = 1; v < values_.size(); ++v)
+        for (const MassEntry& m : system.masses)
+            if (values_[v][m.field] == m.value) mass_[v] += m.mass;
+    glyph_.assign(values_.size(), 0);
+    for (std::size_t v = 1; v < values_.size(); ++v) {
+        std::string n;
+        bool plain = true;
+        for (std::size_t f = 0; f < system.fields.size(); ++f) {
+            const Field& field = system.fields[f];
+            if (field.kind == FieldKind::Enum) n += field.values[values_[v][f]];
+            else if (values_[v][f] != kAbsent && !(field.kind == FieldKind::Int && values_[v][f] == field.lo)) plain = false;
+        }
+        if (system.fields.empty()) n = "#";
+        if (plain && n.size() == 1 && n != "." && n != "_") glyph_[v] = n[0];
+    }
+}
+
+int Alphabet::find(const std::vector<int>& fields) const {
+    auto it = index_.find(fields);
+    return it == index_.end() ? -1 : it->second;
+}
+
+int Alphabet::byGlyph(char c) const {
+    for (int v = 1; v < size(); ++v)
+        if (glyph_[v] == c) return v;
+    return -1;
+}
+
+std::string Alphabet::name(CellValue v) const {
+    if (v == 0) return "_";
+    std::string out;
+    for (std::size_t f = 0; f < system_->fields.size(); ++f) {
+        const Field& field = system_->fields[f];
+        const int x = values_[v][f];
+        if (field.kind == FieldKind::Enum) out += (out.empty() ? "" : "&") + field.values[x];
+        else if (x != kAbsent)
+            out += (out.empty() ? "" : "&") + field.name + "=" +
+                   (field.kind == FieldKind::Dir ? lattice_->directionName(x) : std::to_string(x));
+    }
+    return out.empty() ? "#" : out;
+}
+
+Model::Model(const System& system, const Lattice& lattice)
+    : system_(&system), lattice_(&lattice), alphabet_(system, lattice) {
+    if (system.lattice && *system.lattice != lattice.kind())
+        throw InputError("system '" + system.name + "' is written for the " + Lattice::get(*system.lattice).name() +
+                         " lattice; choose a region of that lattice");
+    for (const Rule& r : system.rules) {
+        rules_.push_back({r.name, &r, false});
+        if (r.bidirectional) rules_.push_back({r.reverseName.empty() ? r.name + ".rev" : r.reverseName, &r, true});
+    }
+    std::map<std::string, int> seen;  // structural key -> directed rule that produced it first
+    for (int ri = 0; ri < static_cast<int>(rules_.size()); ++ri) {
+        const DirectedRule& dr = rules_[ri];
+        const auto& lhs = dr.lhs();
+        bool anyNew = false;
+        int repeats = -1;
+        for (int rot = 0; rot < static_cast<int>(lattice.rotations().size()); ++rot) {
+            const Rotation& R = lattice.rotations()[rot];
+            std::vector<Vec> offsets;
+            for (std::size_t i = 0; i < lhs.size(); ++i) {
+                Vec base = lhs[0].hasOffset ? dr.rule->lhs[i].offset
+                                            : Vec{static_cast<int>(i) * lattice.direction(0).x,
+                                                  static_cast<int>(i) * lattice.direction(0).y,
+                                                  static_cast<int>(i) * lattice.direction(0).z};
+                offsets.push_back(R.apply(base));
+            }
+            // Key: cells sorted by position relative to the lowest one; references become offsets.
+            Vec low = *std::min_element(offsets.begin(), offsets.end());
+            auto refFrom = [&](Vec from) {
+                return RefPrinter([&, from](int k) { return vecText(offsets[k] - from); });
+            };
+            std::vector<std::string> cells;
+            for (std::size_t i = 0; i < lhs.size(); ++i)
+                cells.push_back(vecText(offsets[i] - low) + printTerm(system, lhs[i], refFrom(offsets[i])) + ">" +
+                                printTerm(system, dr.rhs()[i], refFrom(offsets[i])));
+            std::sort(cells.begin(), cells.end());
+            std::string key;
+            for (const std::string& c : cells) key += c + ";";
+            if (const Expr* g = dr.guard()) {
+                // Guards name cells by index; print them relative to the lowest cell too. nbr@k is
+                // written with its cell's offset by rewriting around-indices through the ref printer.
+                key += "if" + printExpr(system, *g, refFrom(low));
+                for (std::size_t i = 0; i < offsets.size(); ++i) key += vecText(offsets[i] - low);
+            }
+            auto [it, inserted] = seen.emplace(key, ri);
+            if (!inserted) {
+                if (it->second != ri) repeats = it->second;
+                continue;
+            }
+            anyNew = true;
+            shapes_.push_back({ri, rot, std::move(offsets)});
+        }
+        if (!anyNew && repeats >= 0) duplicates_.push_back({ri, repeats});
+    }
+}
+
+int Model::shapeCount(int rule) const {
+    return static_cast<int>(std::count_if(shapes_.begin(), shapes_.end(), [&](const RuleShape& s) { return s.rule == rule; }));
+}
+
+}  // namespace holon::rules

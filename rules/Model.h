@@ -1,0 +1,86 @@
+#pragma once
+// A system placed on a lattice: its finite cell alphabet, its directed rules and the rule shapes
+// obtained by closing every rule under the lattice's rotations.
+
+#include "rules/Ir.h"
+
+#include <climits>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace holon::rules {
+
+using CellValue = std::uint16_t;  // index into the alphabet; 0 is the vacuum
+constexpr int kAbsent = INT_MIN;  // a conditional field that is switched off, or a dir field holding none
+
+/// Every cell state of a system on one lattice: all assignments of the fields that respect their
+/// `if` conditions, numbered from 1 (0 is the vacuum).
+class Alphabet {
+public:
+    Alphabet(const System& system, const Lattice& lattice);
+    int size() const { return static_cast<int>(values_.size()); }
+    /// Field values of a state (kAbsent where a field is off); empty for the vacuum.
+    const std::vector<int>& fields(CellValue v) const { return values_[v]; }
+    /// The state with exactly these field values, or -1 when the assignment is not in the alphabet.
+    int find(const std::vector<int>& fields) const;
+    Rational mass(CellValue v) const { return mass_[v]; }
+    /// Human-readable name: "F", "P(parent=+x)", "C&lock=E".
+    std::string name(CellValue v) const;
+    /// The one-character name of a state for ASCII art, or 0 when it has none.
+    char glyph(CellValue v) const { return glyph_[v]; }
+    int byGlyph(char c) const;
+    const std::vector<Field>& schema() const { return system_->fields; }
+    const Lattice& lattice() const { return *lattice_; }
+
+private:
+    const System* system_;
+    const Lattice* lattice_;
+    std::vector<std::vector<int>> values_;
+    std::map<std::vector<int>, int> index_;
+    std::vector<Rational> mass_;
+    std::vector<char> glyph_;
+};
+
+/// One direction of a rule: a `<=>` rule gives two.
+struct DirectedRule {
+    std::string name;
+    const Rule* rule = nullptr;
+    bool reversed = false;
+    const std::vector<CellTerm>& lhs() const { return reversed ? rule->rhs : rule->lhs; }
+    const std::vector<CellTerm>& rhs() const { return reversed ? rule->lhs : rule->rhs; }
+    const Expr* guard() const { return rule->guard ? &*rule->guard : nullptr; }
+};
+
+/// A rule in one orientation: the offsets of its pattern cells from the anchor.
+struct RuleShape {
+    int rule = 0;  // index into Model::rules()
+    int rotation = 0;
+    std::vector<Vec> offsets;
+};
+
+class Model {
+public:
+    /// Throws InputError when the system is fixed to another lattice.
+    Model(const System& system, const Lattice& lattice);
+    const System& system() const { return *system_; }
+    const Lattice& lattice() const { return *lattice_; }
+    const Alphabet& alphabet() const { return alphabet_; }
+    const std::vector<DirectedRule>& rules() const { return rules_; }
+    const std::vector<RuleShape>& shapes() const { return shapes_; }
+    /// Number of shapes of each directed rule after deduplication (0: the rule repeats another).
+    int shapeCount(int rule) const;
+    /// Directed rules whose every orientation repeats an orientation of an earlier rule, with it.
+    const std::vector<std::pair<int, int>>& duplicates() const { return duplicates_; }
+
+private:
+    const System* system_;
+    const Lattice* lattice_;
+    Alphabet alphabet_;
+    std::vector<DirectedRule> rules_;
+    std::vector<RuleShape> shapes_;
+    std::vector<std::pair<int, int>> duplicates_;
+};
+
+}  // namespace holon::rules

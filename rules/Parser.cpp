@@ -1,0 +1,716 @@
+// Recursive-descent parser for the .holon rule language (grammar in README.md, "The rule language").
+// Names are resolved as they are parsed (a name must be declared before it is used), so the IR it
+// produces is complete. Errors abort only the current declaration: the parser skips to the next line
+// and goes on, so one run reports every mistake in the file (Souffle's discipline). Semantic checks
+// that need the cell alphabet run afterwards in validate().
+
+#include "rules/Parser.h"
+
+#include "rules/Error.h"
+#include "rules/Lexer.h"
+#include "rules/Validate.h"
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace holon::rules {
+
+namespace {
+
+const std::set<std::string> kReserved{"system", "lattice", "field", "states", "input", "mass", "rule", "constraint",
+                                      "goal", "invariant", "ranking", "progress", "holonomic", "conserves", "if",
+                                      "and", "or", "not", "implies", "assuming", "by", "nbr", "none", "dir", "true",
+                                      "false", "count", "all", "some", "no", "connected", "reaches", "any"};
+
+bool isBoolExpr(const Expr& e) {
+    switch (e.kind) {
+    case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Add: case Expr::Kind::Sub:
+    case Expr::Kind::Neg: case Expr::Kind::Count:
+        return false;
+    default:
+        return true;
+    }
+}
+
+class Parser {
+public:
+    Parser(const std::vector<Token>& tokens, Diagnostics& d) : t_(tokens), d_(d) {}
+
+    System run() {
+        while (peek().kind != Token::Kind::End) {
+            if (peek().kind == Token::Kind::Newline) {
+                ++p_;
+                continue;
+            }
+            try {
+                declaration();
+                if (peek().kind != Token::Kind::Newline) fail(peek().loc, "unexpected " + describe(peek()) + " at the end of the declaration");
+            } catch (const Fail&) {
+                while (peek().kind != Token::Kind::Newline && peek().kind != Token::Kind::End) ++p_;
+            }
+        }
+        return std::move(s_);
+    }
+
+private:
+    struct Fail {};
+    const std::vector<Token>& t_;
+    Diagnostics& d_;
+    System s_;
+    std::size_t p_ = 0;
+    std::set<std::string> ruleNames_, propertyNames_;
+    bool sawSystem_ = false;
+    // Context of the rule being parsed: pattern length for @k references, guard mode.
+    int patternCells_ = -1;
+    bool inGuard_ = false;
+
+    const Token& peek(std::size_t k = 0) const { return t_[std::min(p_ + k, t_.size() - 1)]; }
+    bool at(std::string_view text) const { return peek().is(text); }
+    bool accept(std::string_view text) {
+        if (!at(text)) return false;
+        ++p_;
+        return true;
+    }
+    const Token& next() {
+        const Token& tok = peek();
+        if (tok.kind != Token::Kind::End) ++p_;
+        return tok;
+    }
+    [[noreturn]] void fail(SourceLoc loc, std::string message) {
+        d_.error(loc, std::move(message));
+        throw Fail{};
+    }
+    static std::string describe(const Token& tok) {
+        switch (tok.kind) {
+        case Token::Kind::Newline: return "end of line";
+        case Token::Kind::End: return "end of file";
+        default: return "'" + tok.text + "'";
+        }
+    }
+    void expect(std::string_view text, std::string_view context) {
+        if (!accept(text))
+            fail(peek().loc, "expected '" + std::string(text) + "' " + std::string(context) + ", found " + describe(peek()));
+    }
+    const Token& identifier(std::string_view what) {
+        const Token& tok = peek();
+        if (tok.kind != Token::Kind::Ident) fail(tok.loc, "expected " + std::string(what) + ", found " + describe(tok));
+        return next();
+    }
+    const Token& freshName(std::string_view what) {
+        const Token& tok = identifier(what);
+        if (kReserved.count(tok.text)) fail(tok.loc, "'" + tok.text + "' is a keyword and cannot name " + std::string(what));
+        return tok;
+    }
+    int integer(std::string_view what) {
+        bool negative = accept("-");
+        const Token& tok = peek();
+        if (tok.kind != Token::Kind::Int) fail(tok.loc, "expected " + std::string(what) + ", found " + describe(tok));
+        next();
+        return negative ? -std::stoi(tok.text) : std::stoi(tok.text);
+    }
+
+    // ---- names ---------------------------------------------------------------------------------
+    struct ValueRef {
+        int field = -1, value = -1;
+    };
+    std::vector<ValueRef> findValue(const std::string& name) const {
+        std::vector<ValueRef> found;
+        for (int f = 0; f < static_cast<int>(s_.fields.size()); ++f) {
+            const auto& vs = s_.fields[f].values;
+            for (int v = 0; v < static_cast<int>(vs.size()); ++v)
+                if (vs[v] == name) found.push_back({f, v});
+        }
+        return found;
+    }
+    bool nameTaken(const std::string& name) const {
+        return !findValue(name).empty() || s_.fieldIndex(name) >= 0 || s_.inputIndex(name) >= 0;
+    }
+    ValueRef uniqueValue(const Token& tok) {
+        auto found = findValue(tok.text);
+        if (found.empty())
+            fail(tok.loc, "unknown state '" + tok.text + "'; declare it in a field before using it");
+        if (found.size() > 1)
+            fail(tok.loc, "'" + tok.text + "' is a value of fields '" + s_.fields[found[0].field].name + "' and '" +
+                              s_.fields[found[1].field].name + "'; write " + s_.fields[found[0].field].name + "=" + tok.text);
+        return found[0];
+    }
+
+    // ---- declarations --------------------------------------------------------------------------
+    void declaration() {
+        const Token& kw = identifier("a declaration (system, field, rule, constraint, ...)");
+        const std::string& k = kw.text;
+        if (k == "system") return systemDecl(kw);
+        if (k == "lattice") return latticeDecl();
+        if (k == "field") {
+            const std::string& name = freshName("a field").text;
+            expect(":", "after the field name, as in field label: U | P | F");
+            return fieldDecl(kw.loc, name);
+        }
+        if (k == "states") return fieldDecl(kw.loc, "state");
+        if (k == "input") return inputDecl();
+        if (k == "mass") return massDecl();
+        if (k == "rule") return ruleDecl(kw.loc);
+        if (k == "constraint") return s_.constraints.push_back({boolExpr(), kw.loc});
+        if (k == "goal") {
+            if (s_.goal) fail(kw.loc, "a system has one goal; join the conditions with 'and'");
+            s_.goal = boolExpr();
+            return;
+        }
+        if (k == "invariant" || k == "ranking" || k == "progress" || k == "holonomic" || k == "conserves")
+            return propertyDecl(kw);
+        fail(kw.loc, "unknown declaration '" + k +
+                         "'; expected system, lattice, field, states, input, mass, rule, constraint, goal, invariant, "
+                         "ranking, progress, holonomic or conserves");
+    }
+
+    void systemDecl(const Token& kw) {
+        const Token& name = freshName("the system");
+        if (sawSystem_) fail(kw.loc, "a file declares one system; '" + s_.name + "' was declared already");
+        sawSystem_ = true;
+        s_.name = name.text;
+    }
+
+    void latticeDecl() {
+        const Token& name = identifier("a lattice");
+        if (!s_.rules.empty()) fail(name.loc, "declare the lattice before the rules");
+        if (name.text == "any") return;
+        const Lattice* lattice = Lattice::byName(name.text);
+        if (!lattice) fail(name.loc, "unknown lattice '" + name.text + "'; use square2d, cubic3d, hex2d or any");
+        s_.lattice = lattice->kind();
+    }
+
+    void fieldDecl(SourceLoc loc, const std::string& name) {
+        Field f;
+        f.name = name;
+        f.loc = loc;
+        if (s_.fieldIndex(name) >= 0) fail(loc, "field '" + name + "' is declared twice");
+        if (nameTaken(name)) fail(loc, "'" + name + "' already names a state or an input");
+        if (accept("dir")) {
+            f.kind = FieldKind::Dir;
+        } else if (peek().kind == Token::Kind::Int || at("-")) {
+            f.kind = FieldKind::Int;
+            f.lo = integer("the lower bound");
+            expect("..", "between the bounds of an integer field, as in 0..3");
+            f.hi = integer("the upper bound");
+            if (f.hi < f.lo) fail(loc, "empty integer range " + std::to_string(f.lo) + ".." + std::to_string(f.hi));
+            if (f.hi - f.lo > 255) fail(loc, "integer fields hold at most 256 values");
+        } else {
+            do {
+                const Token& v = freshName("a state");
+                if (nameTaken(v.text) || std::count(f.values.begin(), f.values.end(), v.text))
+                    fail(v.loc, "'" + v.text + "' is declared twice; state names must be unique in a system");
+                f.values.push_back(v.text);
+            } while (accept("|"));
+        }
+        if (accept("if")) {
+            do {
+                const Token& v = identifier("a state of an earlier field");
+                ValueRef r = uniqueValue(v);
+                if (f.whenField >= 0 && f.whenField != r.field)
+                    fail(v.loc, "the states after 'if' must belong to one field");
+                f.whenField = r.field;
+                f.whenValues.push_back(r.value);
+            } while (accept("|"));
+        }
+        s_.fields.push_back(std::move(f));
+    }
+
+    void inputDecl() {
+        do {
+            const Token& n = freshName("an input");
+            if (nameTaken(n.text)) fail(n.loc, "'" + n.text + "' is declared twice");
+            s_.inputs.push_back(n.text);
+        } while (accept(","));
+    }
+
+    Rational rational() {
+        int num = integer("a mass");
+        int den = 1;
+        if (accept("/")) {
+            den = integer("a denominator");
+            if (den <= 0) fail(peek().loc, "a denominator must be positive");
+        }
+        return Rational(num, den);
+    }
+
+    void massDecl() {
+        do {
+            const Token& v = identifier("a state");
+            ValueRef r = uniqueValue(v);
+            expect("=", "after the state in a mass declaration, as in mass C = 3/2");
+            Rational m = rational();
+            for (const MassEntry& e : s_.masses)
+                if (e.field == r.field && e.value == r.value) fail(v.loc, "mass of '" + v.text + "' is declared twice");
+            s_.masses.push_back({r.field, r.value, m, v.loc});
+        } while (accept(","));
+    }
+
+    // ---- rules ---------------------------------------------------------------------------------
+    void ruleDecl(SourceLoc loc) {
+        Rule r;
+        r.loc = loc;
+        r.name = freshName("a rule").text;
+        if (accept("/")) r.reverseName = freshName("the reverse rule").text;
+        for (const std::string& n : {r.name, r.reverseName})
+            if (!n.empty() && !ruleNames_.insert(n).second) fail(loc, "rule '" + n + "' is declared twice");
+        expect(":", "after the rule name");
+        patternCells_ = -1;
+        r.lhs = pattern();
+        const Token& arrow = peek();
+        if (accept("<=>")) r.bidirectional = true;
+        else if (!accept("=>")) fail(peek().loc, "expected '=>' or '<=>' after the left side, found " + describe(peek()));
+        r.rhs = pattern();
+        if (!r.reverseName.empty() && !r.bidirectional)
+            fail(loc, "only a '<=>' rule has a reverse to name; drop '/" + r.reverseName + "'");
+        if (r.lhs.size() != r.rhs.size())
+            fail(arrow.loc, "the left side has " + std::to_string(r.lhs.size()) + " cells and the right side " +
+                                std::to_string(r.rhs.size()) + "; a rule rewrites the same cells");
+        patternCells_ = static_cast<int>(r.lhs.size());
+        checkLayout(r);
+        if (accept("if")) {
+            if (r.bidirectional)
+                fail(peek().loc, "a '<=>' rule cannot have a guard (it would hold before one direction only); "
+                                 "write the two directions as separate '=>' rules");
+            inGuard_ = true;
+            try {
+                r.guard = boolExpr();
+            } catch (const Fail&) {
+                inGuard_ = false;
+                throw;
+            }
+            inGuard_ = false;
+        }
+        checkSides(r);
+        checkRefs(r);
+        s_.rules.push_back(std::move(r));
+    }
+
+    std::vector<CellTerm> pattern() {
+        std::vector<CellTerm> cells;
+        while (!at("=>") && !at("<=>") && !at("if") && peek().kind != Token::Kind::Newline &&
+               peek().kind != Token::Kind::End)
+            cells.push_back(cellTerm(true));
+        if (cells.empty()) fail(peek().loc, "expected a cell (a state, '_', '*' or '#'), found " + describe(peek()));
+        return cells;
+    }
+
+    CellTerm cellTerm(bool allowOffset) {
+        CellTerm c;
+        c.loc = peek().loc;
+        bool explicitBase = true;
+        if (accept("_")) c.base = CellTerm::Base::Empty;
+        else if (accept("*")) c.base = CellTerm::Base::Any;
+        else if (accept("#")) c.base = CellTerm::Base::Occupied;
+        else {
+            explicitBase = false;
+            c.atoms.push_back(atom());
+        }
+        while (accept("&")) c.atoms.push_back(atom());
+        for (const Atom& a : c.atoms) {
+            if (a.kind != Atom::Kind::Field) continue;
+            if (c.base == CellTerm::Base::Empty) fail(a.loc, "an empty cell '_' has no fields to test");
+            c.base = CellTerm::Base::Occupied;
+        }
+        (void)explicitBase;
+        if (at("@") && peek(1).is("(")) {
+            if (!allowOffset) fail(peek().loc, "positions '@(...)' belong in rule patterns only");
+            next(), next();
+            c.hasOffset = true;
+            c.offset.x = integer("an x offset");
+            expect(",", "between coordinates");
+            c.offset.y = integer("a y offset");
+            if (accept(",")) c.offset.z = integer("a z offset");
+            expect(")", "after the coordinates");
+        }
+        return c;
+    }
+
+    Atom atom() {
+        Atom a;
+        a.loc = peek().loc;
+        a.negated = accept("!");
+        const Token& name = identifier("a state, a field or an input");
+        if (accept("=")) {
+            a.kind = Atom::Kind::Field;
+            a.index = s_.fieldIndex(name.text);
+            if (a.index < 0) fail(name.loc, "unknown field '" + name.text + "'");
+            a.value = fieldValue(s_.fields[a.index]);
+            return a;
+        }
+        if (int in = s_.inputIndex(name.text); in >= 0) {
+            a.kind = Atom::Kind::Input;
+            a.index = in;
+            return a;
+        }
+        if (s_.fieldIndex(name.text) >= 0)
+            fail(name.loc, "'" + name.text + "' is a field; test it with " + name.text + "=VALUE");
+        ValueRef r = uniqueValue(name);
+        a.kind = Atom::Kind::Field;
+        a.index = r.field;
+        a.value = {FieldValue::Kind::Literal, r.value};
+        return a;
+    }
+
+    FieldValue fieldValue(const Field& f) {
+        const Token& tok = peek();
+        if (accept("none")) {
+            if (f.kind != FieldKind::Dir && f.whenField < 0)
+                fail(tok.loc, "field '" + f.name + "' is always present; 'none' applies to dir fields and fields with 'if'");
+            return {FieldValue::Kind::None, 0};
+        }
+        if (f.kind == FieldKind::Dir) {
+            expect("@", "before a pattern cell index: a dir field points at a cell of the rule, as in parent=@0");
+            const Token& k = peek();
+            int cell = integer("a pattern cell index");
+            if (cell < 0) fail(k.loc, "pattern cell indices start at 0");
+            return {FieldValue::Kind::CellRef, cell};
+        }
+        if (f.kind == FieldKind::Int) {
+            int v = integer("an integer");
+            if (v < f.lo || v > f.hi)
+                fail(tok.loc, std::to_string(v) + " is outside the range " + std::to_string(f.lo) + ".." + std::to_string(f.hi) +
+                                  " of field '" + f.name + "'");
+            return {FieldValue::Kind::Literal, v};
+        }
+        const Token& v = identifier("a state of field '" + f.name + "'");
+        auto it = std::find(f.values.begin(), f.values.end(), v.text);
+        if (it == f.values.end()) fail(v.loc, "'" + v.text + "' is not a state of field '" + f.name + "'");
+        return {FieldValue::Kind::Literal, static_cast<int>(it - f.values.begin())};
+    }
+
+    void checkLayout(const Rule& r) {
+        const bool first = r.lhs[0].hasOffset;
+        std::vector<Vec> seen;
+        for (const auto* side : {&r.lhs, &r.rhs})
+            for (std::size_t i = 0; i < side->size(); ++i) {
+                const CellTerm& c = (*side)[i];
+                if (side == &r.rhs) {
+                    if (c.hasOffset && r.lhs[i].offset != c.offset)
+                        fail(c.loc, "a right-side cell has the position of its left-side cell; drop the '@(...)'");
+                    continue;
+                }
+                if (c.hasOffset != first)
+                    fail(c.loc, "give every cell of the pattern a position '@(x,y)', or none (cells then form a line)");
+                if (!c.hasOffset) continue;
+                if (!s_.lattice)
+                    fail(c.loc, "positions '@(...)' need a fixed lattice; declare 'lattice hex2d' (or square2d, cubic3d) first");
+                if (std::find(seen.begin(), seen.end(), c.offset) != seen.end())
+                    fail(c.loc, "two cells of the pattern have the same position");
+                if (Lattice::get(*s_.lattice).dimension() == 2 && c.offset.z != 0)
+                    fail(c.loc, "a 2D lattice has no z coordinate");
+                seen.push_back(c.offset);
+            }
+    }
+
+    void checkSides(const Rule& r) {
+        auto checkAssignable = [&](const CellTerm& c, bool inputsAllowed, const char* side) {
+            if (c.base == CellTerm::Base::Occupied && c.atoms.empty())
+                fail(c.loc, std::string("'#' on the ") + side + " side does not say which state the cell becomes; name it");
+            std::set<int> fields;
+            for (const Atom& a : c.atoms) {
+                if (a.negated) fail(a.loc, std::string("a negation on the ") + side + " side does not say what the cell becomes");
+                if (a.kind == Atom::Kind::Input && !inputsAllowed)
+                    fail(a.loc, "inputs are read-only; move the condition '" + s_.inputs[a.index] + "' to the left side");
+                if (a.kind == Atom::Kind::Field && !fields.insert(a.index).second)
+                    fail(a.loc, "field '" + s_.fields[a.index].name + "' is set twice in one cell");
+            }
+        };
+        for (const CellTerm& c : r.rhs) checkAssignable(c, r.bidirectional, "right");
+        if (r.bidirectional)
+            for (const CellTerm& c : r.lhs) checkAssignable(c, true, "left (the rule runs both ways)");
+    }
+
+    void checkRefs(const Rule& r) {
+        // Every `@k` must name a cell of the pattern; on a line pattern, a pointer can only hold the
+        // direction of an adjacent cell.
+        for (const auto* side : {&r.lhs, &r.rhs})
+            for (std::size_t i = 0; i < side->size(); ++i)
+                for (const Atom& a : (*side)[i].atoms) {
+                    if (a.value.kind != FieldValue::Kind::CellRef) continue;
+                    const int k = a.value.value;
+                    if (k >= patternCells_)
+                        fail(a.loc, "@" + std::to_string(k) + " names no cell: the pattern has cells @0..@" +
+                                        std::to_string(patternCells_ - 1));
+                    const bool adjacent = r.lhs[0].hasOffset
+                                              ? Lattice::get(*s_.lattice).adjacent(r.lhs[i].offset, r.lhs[k].offset)
+                                              : (k == static_cast<int>(i) + 1 || k + 1 == static_cast<int>(i));
+                    if (!adjacent)
+                        fail(a.loc, "@" + std::to_string(k) + " is not a neighbour of this cell, so no direction points at it");
+                }
+    }
+
+    // ---- properties ----------------------------------------------------------------------------
+    void propertyDecl(const Token& kw) {
+        Property p;
+        p.loc = kw.loc;
+        const std::string& k = kw.text;
+        auto optionalName = [&](const std::string& fallback) {
+            if (peek().kind == Token::Kind::Ident && !kReserved.count(peek().text)) return next().text;
+            return fallback;
+        };
+        if (k == "invariant") {
+            p.kind = Property::Kind::Invariant;
+            p.name = freshName("the invariant").text;
+            expect(":", "after the invariant's name");
+            p.exprs.push_back(boolExpr());
+        } else if (k == "ranking") {
+            p.kind = Property::Kind::Ranking;
+            p.name = freshName("the ranking").text;
+            expect(":", "after the ranking's name");
+            do p.exprs.push_back(numberExpr());
+            while (accept(","));
+        } else if (k == "progress") {
+            p.kind = Property::Kind::Progress;
+            p.name = optionalName("progress");
+            if (accept("assuming")) p.exprs.push_back(boolExpr());
+            if (!s_.goal) fail(kw.loc, "progress needs a goal; declare 'goal ...' before it");
+        } else if (k == "holonomic") {
+            p.kind = Property::Kind::Holonomic;
+            p.name = optionalName("holonomy");
+            if (accept("by")) {
+                const Token& how = identifier("'occupancy' or 'move'");
+                if (how.text == "move") p.adjacency = Property::Adjacency::Move;
+                else if (how.text != "occupancy") fail(how.loc, "holonomy is 'by occupancy' or 'by move'");
+            }
+        } else {
+            p.kind = Property::Kind::Conserves;
+            const Token& what = identifier("'mass' or 'count'");
+            if (what.text == "count") p.quantity = Property::Quantity::Count;
+            else if (what.text != "mass") fail(what.loc, "a system conserves 'mass' or 'count'");
+            p.name = optionalName(what.text + "_conservation");
+        }
+        if (!propertyNames_.insert(p.name).second) fail(kw.loc, "property '" + p.name + "' is declared twice");
+        s_.properties.push_back(std::move(p));
+    }
+
+    // ---- expressions ---------------------------------------------------------------------------
+    Expr boolExpr() {
+        SourceLoc loc = peek().loc;
+        Expr e = expr();
+        if (!isBoolExpr(e)) fail(loc, "expected a condition, found a number; compare it, as in count(F) >= 1");
+        return e;
+    }
+    Expr numberExpr() {
+        SourceLoc loc = peek().loc;
+        Expr e = expr();
+        if (isBoolExpr(e)) fail(loc, "expected a number, found a condition");
+        return e;
+    }
+    Expr node(Expr::Kind kind, SourceLoc loc, std::vector<Expr> kids = {}) {
+        Expr e;
+        e.kind = kind;
+        e.loc = loc;
+        e.kids = std::move(kids);
+        return e;
+    }
+    void requireBool(const Expr& e, bool want) {
+        if (isBoolExpr(e) != want) fail(e.loc, want ? "expected a condition here, found a number" : "expected a number here, found a condition");
+    }
+    Expr expr() {
+        Expr lhs = disjunction();
+        if (peek().is("implies")) {
+            SourceLoc loc = next().loc;
+            Expr rhs = expr();
+            requireBool(lhs, true), requireBool(rhs, true);
+            return node(Expr::Kind::Implies, loc, {std::move(lhs), std::move(rhs)});
+        }
+        return lhs;
+    }
+    Expr disjunction() {
+        Expr e = conjunction();
+        while (peek().is("or")) {
+            SourceLoc loc = next().loc;
+            Expr rhs = conjunction();
+            requireBool(e, true), requireBool(rhs, true);
+            e = node(Expr::Kind::Or, loc, {std::move(e), std::move(rhs)});
+        }
+        return e;
+    }
+    Expr conjunction() {
+        Expr e = negation();
+        while (peek().is("and")) {
+            SourceLoc loc = next().loc;
+            Expr rhs = negation();
+            requireBool(e, true), requireBool(rhs, true);
+            e = node(Expr::Kind::And, loc, {std::move(e), std::move(rhs)});
+        }
+        return e;
+    }
+    Expr negation() {
+        if (peek().is("not")) {
+            SourceLoc loc = next().loc;
+            Expr e = negation();
+            requireBool(e, true);
+            return node(Expr::Kind::Not, loc, {std::move(e)});
+        }
+        return comparison();
+    }
+    Expr comparison() {
+        Expr lhs = sum();
+        static const std::pair<const char*, CmpOp> ops[] = {{"==", CmpOp::Eq}, {"!=", CmpOp::Ne}, {"<=", CmpOp::Le},
+                                                            {">=", CmpOp::Ge}, {"<", CmpOp::Lt},  {">", CmpOp::Gt}};
+        for (auto [text, op] : ops)
+            if (at(text)) {
+                SourceLoc loc = next().loc;
+                Expr rhs = sum();
+                requireBool(lhs, false), requireBool(rhs, false);
+                Expr e = node(Expr::Kind::Compare, loc, {std::move(lhs), std::move(rhs)});
+                e.op = op;
+                return e;
+            }
+        return lhs;
+    }
+    Expr sum() {
+        Expr e = unary();
+        while (at("+") || at("-")) {
+            SourceLoc loc = peek().loc;
+            Expr::Kind kind = next().text == "+" ? Expr::Kind::Add : Expr::Kind::Sub;
+            Expr rhs = unary();
+            requireBool(e, false), requireBool(rhs, false);
+            e = node(kind, loc, {std::move(e), std::move(rhs)});
+        }
+        return e;
+    }
+    Expr unary() {
+        if (at("-")) {
+            SourceLoc loc = next().loc;
+            Expr e = unary();
+            requireBool(e, false);
+            return node(Expr::Kind::Neg, loc, {std::move(e)});
+        }
+        return primary();
+    }
+    Expr primary() {
+        const Token& tok = peek();
+        SourceLoc loc = tok.loc;
+        if (tok.kind == Token::Kind::Int) {
+            Expr e = node(Expr::Kind::Number, loc);
+            e.value = rational();
+            return e;
+        }
+        if (accept("(")) {
+            Expr e = expr();
+            expect(")", "to close the parenthesis");
+            return e;
+        }
+        if (accept("true") || accept("false")) {
+            Expr e = node(Expr::Kind::Bool, loc);
+            e.value = tok.text == "true" ? 1 : 0;
+            return e;
+        }
+        if (accept("mass")) {
+            if (inGuard_) fail(loc, "a guard is local; total mass is a non-local condition, write it as a constraint");
+            return node(Expr::Kind::Mass, loc);
+        }
+        static const std::pair<const char*, Expr::Kind> quantifiers[] = {
+            {"count", Expr::Kind::Count}, {"all", Expr::Kind::All}, {"some", Expr::Kind::Some}, {"no", Expr::Kind::No}};
+        for (auto [word, kind] : quantifiers)
+            if (accept(word)) return quantifier(kind, loc, word);
+        if (accept("connected")) {
+            nonLocal(loc, "connected");
+            Expr e = node(Expr::Kind::Connected, loc);
+            if (accept("(")) {
+                e.pred = predicate();
+                expect(")", "after the cells of connected(...)");
+            } else {
+                CellTerm occupied;
+                occupied.base = CellTerm::Base::Occupied;
+                e.pred = {occupied};
+            }
+            return e;
+        }
+        if (accept("reaches")) {
+            nonLocal(loc, "reaches");
+            Expr e = node(Expr::Kind::Reaches, loc);
+            expect("(", "after reaches, as in reaches(P, parent, F)");
+            e.pred = predicate();
+            expect(",", "after the cells that follow pointers");
+            const Token& f = identifier("a dir field");
+            e.field = s_.fieldIndex(f.text);
+            if (e.field < 0 || s_.fields[e.field].kind != FieldKind::Dir) fail(f.loc, "'" + f.text + "' is not a dir field");
+            expect(",", "after the field");
+            e.target = predicate();
+            expect(")", "to close reaches(...)");
+            return e;
+        }
+        fail(loc, "expected an expression, found " + describe(tok));
+    }
+    void nonLocal(SourceLoc loc, const std::string& what) {
+        if (inGuard_) fail(loc, "a guard is local; '" + what + "' is non-local, write it as a constraint");
+    }
+    Expr quantifier(Expr::Kind kind, SourceLoc loc, const std::string& word) {
+        Expr e = node(kind, loc);
+        if (accept("nbr")) {
+            if (!inGuard_) fail(loc, "'" + word + " nbr' quantifies over a rule's neighbourhood and belongs in a guard");
+            e.around = 0;
+            if (accept("@")) {
+                const Token& k = peek();
+                e.around = integer("a pattern cell index");
+                if (e.around < 0 || e.around >= patternCells_)
+                    fail(k.loc, "@" + std::to_string(e.around) + " names no cell of the pattern");
+            }
+            e.pred = predicate();
+        } else {
+            if (inGuard_) fail(loc, "a guard is local; write '" + word + " nbr ...', or make this a constraint");
+            expect("(", "after " + word + ", as in " + word + "(F)");
+            e.pred = predicate();
+            expect(")", "to close " + word + "(...)");
+        }
+        return e;
+    }
+    CellPredicate predicate() {
+        CellPredicate p;
+        do {
+            CellTerm c = cellTerm(false);
+            for (const Atom& a : c.atoms)
+                if (a.value.kind == FieldValue::Kind::CellRef && (!inGuard_ || a.value.value >= patternCells_))
+                    fail(a.loc, inGuard_ ? "@" + std::to_string(a.value.value) + " names no cell of the pattern"
+                                         : "'@k' names a rule's cell and belongs in rules and guards");
+            p.push_back(std::move(c));
+        } while (accept("|"));
+        return p;
+    }
+};
+
+}  // namespace
+
+std::optional<System> parseSystem(std::string_view source, Diagnostics& diagnostics, std::string sourceName) {
+    std::vector<Token> tokens = tokenize(source, diagnostics);
+    System system = Parser(tokens, diagnostics).run();
+    system.sourceName = std::move(sourceName);
+    if (system.name.empty() && !diagnostics.hasErrors()) diagnostics.error({1, 1}, "the file declares no system; start it with 'system NAME'");
+    if (diagnostics.hasErrors()) return std::nullopt;
+    validate(system, diagnostics);
+    if (diagnostics.hasErrors()) return std::nullopt;
+    return system;
+}
+
+std::string readTextFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError("cannot read '" + path + "': no such file or not readable");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+int System::fieldIndex(const std::string& name) const {
+    for (int i = 0; i < static_cast<int>(fields.size()); ++i)
+        if (fields[i].name == name) return i;
+    return -1;
+}
+
+int System::inputIndex(const std::string& name) const {
+    for (int i = 0; i < static_cast<int>(inputs.size()); ++i)
+        if (inputs[i] == name) return i;
+    return -1;
+}
+
+const Property* System::property(const std::string& name) const {
+    for (const Property& p : properties)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+}  // namespace holon::rules

@@ -1,0 +1,178 @@
+// The canonical printer of the rule IR. Its output is the normal form of a .holon file: parsing it
+// gives back an equal IR (tested for every library file). The same term and expression printers,
+// with references replaced by offsets, give the structural keys that deduplicate rule orientations.
+
+#include "rules/Printer.h"
+
+#include <sstream>
+
+namespace holon::rules {
+
+namespace {
+
+std::string refText(const RefPrinter& ref, int k) { return ref ? ref(k) : "@" + std::to_string(k); }
+
+std::string valueText(const System& s, const Atom& a, const RefPrinter& ref) {
+    const Field& f = s.fields[a.index];
+    switch (a.value.kind) {
+    case FieldValue::Kind::None: return f.name + "=none";
+    case FieldValue::Kind::CellRef: return f.name + "=" + refText(ref, a.value.value);
+    case FieldValue::Kind::Literal:
+        if (f.kind == FieldKind::Enum) return f.values[a.value.value];
+        return f.name + "=" + std::to_string(a.value.value);
+    }
+    return {};
+}
+
+std::string cmpText(CmpOp op) {
+    switch (op) {
+    case CmpOp::Eq: return "==";
+    case CmpOp::Ne: return "!=";
+    case CmpOp::Lt: return "<";
+    case CmpOp::Le: return "<=";
+    case CmpOp::Gt: return ">";
+    case CmpOp::Ge: return ">=";
+    }
+    return "==";
+}
+
+bool atomic(const Expr& e) {
+    switch (e.kind) {
+    case Expr::Kind::And: case Expr::Kind::Or: case Expr::Kind::Implies: case Expr::Kind::Compare:
+    case Expr::Kind::Add: case Expr::Kind::Sub: case Expr::Kind::Not: case Expr::Kind::Neg:
+        return false;
+    case Expr::Kind::Number: return e.value.isInteger() && e.value.num() >= 0;
+    default: return true;
+    }
+}
+
+}  // namespace
+
+std::string printTerm(const System& s, const CellTerm& term, const RefPrinter& ref) {
+    std::string out;
+    bool implied = term.base == CellTerm::Base::Occupied && !term.atoms.empty() && [&] {
+        for (const Atom& a : term.atoms)
+            if (a.kind == Atom::Kind::Field) return true;
+        return false;
+    }();
+    if (term.base == CellTerm::Base::Empty) out = "_";
+    else if (term.base == CellTerm::Base::Occupied && !implied) out = "#";
+    else if (term.base == CellTerm::Base::Any && term.atoms.empty()) out = "*";
+    for (const Atom& a : term.atoms) {
+        if (!out.empty()) out += "&";
+        if (a.negated) out += "!";
+        out += a.kind == Atom::Kind::Input ? s.inputs[a.index] : valueText(s, a, ref);
+    }
+    return out;
+}
+
+std::string printPredicate(const System& s, const CellPredicate& pred, const RefPrinter& ref) {
+    std::string out;
+    for (const CellTerm& t : pred) out += (out.empty() ? "" : " | ") + printTerm(s, t, ref);
+    return out;
+}
+
+std::string printExpr(const System& s, const Expr& e, const RefPrinter& ref) {
+    auto sub = [&](const Expr& k) { return atomic(k) ? printExpr(s, k, ref) : "(" + printExpr(s, k, ref) + ")"; };
+    auto binary = [&](const char* op) { return sub(e.kids[0]) + " " + op + " " + sub(e.kids[1]); };
+    auto quant = [&](const char* word) {
+        if (e.around >= 0) return std::string(word) + " nbr" + (e.around ? "@" + std::to_string(e.around) : "") + " " + printPredicate(s, e.pred, ref);
+        return std::string(word) + "(" + printPredicate(s, e.pred, ref) + ")";
+    };
+    switch (e.kind) {
+    case Expr::Kind::Bool: return e.value.num() ? "true" : "false";
+    case Expr::Kind::Number: return e.value.num() < 0 ? "-" + (-e.value).str() : e.value.str();
+    case Expr::Kind::Mass: return "mass";
+    case Expr::Kind::And: return binary("and");
+    case Expr::Kind::Or: return binary("or");
+    case Expr::Kind::Implies: return binary("implies");
+    case Expr::Kind::Not: return "not " + sub(e.kids[0]);
+    case Expr::Kind::Compare: return binary(cmpText(e.op).c_str());
+    case Expr::Kind::Add: return binary("+");
+    case Expr::Kind::Sub: return binary("-");
+    case Expr::Kind::Neg: return "-" + sub(e.kids[0]);
+    case Expr::Kind::Count: return quant("count");
+    case Expr::Kind::All: return quant("all");
+    case Expr::Kind::Some: return quant("some");
+    case Expr::Kind::No: return quant("no");
+    case Expr::Kind::Connected: {
+        const bool everything = e.pred.size() == 1 && e.pred[0].base == CellTerm::Base::Occupied && e.pred[0].atoms.empty();
+        return everything ? "connected" : "connected(" + printPredicate(s, e.pred, ref) + ")";
+    }
+    case Expr::Kind::Reaches:
+        return "reaches(" + printPredicate(s, e.pred, ref) + ", " + s.fields[e.field].name + ", " +
+               printPredicate(s, e.target, ref) + ")";
+    }
+    return {};
+}
+
+std::string printRule(const System& s, const Rule& r) {
+    std::ostringstream out;
+    out << "rule " << r.name;
+    if (!r.reverseName.empty()) out << " / " << r.reverseName;
+    out << ":";
+    for (const CellTerm& c : r.lhs) {
+        out << ' ' << printTerm(s, c);
+        if (c.hasOffset) {
+            out << "@(" << c.offset.x << ',' << c.offset.y;
+            if (s.lattice && Lattice::get(*s.lattice).dimension() == 3) out << ',' << c.offset.z;
+            out << ')';
+        }
+    }
+    out << (r.bidirectional ? " <=>" : " =>");
+    for (const CellTerm& c : r.rhs) out << ' ' << printTerm(s, c);
+    if (r.guard) out << " if " << printExpr(s, *r.guard);
+    return out.str();
+}
+
+std::string printSystem(const System& s) {
+    std::ostringstream out;
+    out << "system " << s.name << '\n';
+    if (s.lattice) out << "lattice " << Lattice::get(*s.lattice).name() << '\n';
+    for (const Field& f : s.fields) {
+        out << "field " << f.name << ": ";
+        if (f.kind == FieldKind::Dir) out << "dir";
+        else if (f.kind == FieldKind::Int) out << f.lo << ".." << f.hi;
+        else
+            for (std::size_t i = 0; i < f.values.size(); ++i) out << (i ? " | " : "") << f.values[i];
+        if (f.whenField >= 0) {
+            out << " if ";
+            for (std::size_t i = 0; i < f.whenValues.size(); ++i)
+                out << (i ? " | " : "") << s.fields[f.whenField].values[f.whenValues[i]];
+        }
+        out << '\n';
+    }
+    for (const std::string& in : s.inputs) out << "input " << in << '\n';
+    if (!s.masses.empty()) {
+        out << "mass ";
+        for (std::size_t i = 0; i < s.masses.size(); ++i)
+            out << (i ? ", " : "") << s.fields[s.masses[i].field].values[s.masses[i].value] << " = " << s.masses[i].mass.str();
+        out << '\n';
+    }
+    for (const Rule& r : s.rules) out << printRule(s, r) << '\n';
+    for (const Constraint& c : s.constraints) out << "constraint " << printExpr(s, c.expr) << '\n';
+    if (s.goal) out << "goal " << printExpr(s, *s.goal) << '\n';
+    for (const Property& p : s.properties) {
+        switch (p.kind) {
+        case Property::Kind::Invariant: out << "invariant " << p.name << ": " << printExpr(s, p.exprs[0]); break;
+        case Property::Kind::Ranking:
+            out << "ranking " << p.name << ":";
+            for (std::size_t i = 0; i < p.exprs.size(); ++i) out << (i ? ", " : " ") << printExpr(s, p.exprs[i]);
+            break;
+        case Property::Kind::Progress:
+            out << "progress " << p.name;
+            if (!p.exprs.empty()) out << " assuming " << printExpr(s, p.exprs[0]);
+            break;
+        case Property::Kind::Holonomic:
+            out << "holonomic " << p.name << " by " << (p.adjacency == Property::Adjacency::Move ? "move" : "occupancy");
+            break;
+        case Property::Kind::Conserves:
+            out << "conserves " << (p.quantity == Property::Quantity::Mass ? "mass " : "count ") << p.name;
+            break;
+        }
+        out << '\n';
+    }
+    return out.str();
+}
+
+}  // namespace holon::rules

@@ -1,0 +1,44 @@
+#pragma once
+// Bounded regions of a lattice: the finite sets of cells that configurations live on.
+
+#include "rules/Lattice.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace holon::rules {
+
+class Region {
+public:
+    /// Parses "square:WxH", "cubic:WxHxD" or "hex:rR"; throws InputError naming the fix.
+    static Region parse(std::string_view spec, std::size_t maxCells = 1u << 26);
+    static Region box(const Lattice& lattice, Vec size);
+    static Region hexagon(int radius);
+
+    const Lattice& lattice() const { return *lattice_; }
+    const std::string& spec() const { return spec_; }
+    int size() const { return static_cast<int>(cells_.size()); }
+    Vec cell(int i) const { return cells_[i]; }
+    const std::vector<Vec>& cells() const { return cells_; }
+    /// Index of a lattice point, or -1 when it lies outside the region.
+    int indexOf(Vec v) const;
+    bool contains(Vec v) const { return indexOf(v) >= 0; }
+    /// Neighbour of cell i in direction d, or -1 outside the region.
+    int neighbour(int i, int d) const { return neighbours_[static_cast<std::size_t>(i) * lattice_->degree() + d]; }
+    /// The smallest box containing the region: lower corner and extent.
+    Vec lower() const { return lower_; }
+    Vec extent() const { return extent_; }
+
+private:
+    Region(const Lattice& lattice, std::string spec, std::vector<Vec> cells);
+    const Lattice* lattice_;
+    std::string spec_;
+    std::vector<Vec> cells_;
+    Vec lower_, extent_;
+    std::vector<std::int32_t> boxIndex_;  // over the bounding box; -1 where not in the region
+    std::vector<std::int32_t> neighbours_;
+};
+
+}  // namespace holon::rules
