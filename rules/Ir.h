@@ -126,6 +126,7 @@ struct System {
     std::optional<LatticeKind> lattice;  // none: the system works on every lattice
     std::vector<Field> fields;
     std::vector<std::string> inputs;
+    std::vector<SourceLoc> inputLocs;  // where each input was declared
     std::vector<MassEntry> masses;
     std::vector<Rule> rules;
     std::vector<Constraint> constraints;

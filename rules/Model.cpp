@@ -67,6 +67,7 @@ Alphabet::Alphabet(const System& system, const Lattice& lattice) : system_(&syst
         bool plain = true;
         for (std::size_t f = 0; f < system.fields.size(); ++f) {
             const Field& field = system.fields[f];
+            if (values_[v][f] == kAbsent) continue;
             if (field.kind == FieldKind::Enum) n += field.values[values_[v][f]];
             else if (values_[v][f] != kAbsent && !(field.kind == FieldKind::Int && values_[v][f] == field.lo)) plain = false;
         }
@@ -92,8 +93,9 @@ std::string Alphabet::name(CellValue v) const {
     for (std::size_t f = 0; f < system_->fields.size(); ++f) {
         const Field& field = system_->fields[f];
         const int x = values_[v][f];
+        if (x == kAbsent) continue;
         if (field.kind == FieldKind::Enum) out += (out.empty() ? "" : "&") + field.values[x];
-        else if (x != kAbsent)
+        else
             out += (out.empty() ? "" : "&") + field.name + "=" +
                    (field.kind == FieldKind::Dir ? lattice_->directionName(x) : std::to_string(x));
     }
@@ -119,7 +121,7 @@ Model::Model(const System& system, const Lattice& lattice)
             const Rotation& R = lattice.rotations()[rot];
             std::vector<Vec> offsets;
             for (std::size_t i = 0; i < lhs.size(); ++i) {
-                Vec base = lhs[0].hasOffset ? dr.rule->lhs[i].offset
+                Vec base = dr.rule->lhs[0].hasOffset ? dr.rule->lhs[i].offset
                                             : Vec{static_cast<int>(i) * lattice.direction(0).x,
                                                   static_cast<int>(i) * lattice.direction(0).y,
                                                   static_cast<int>(i) * lattice.direction(0).z};

@@ -24,6 +24,30 @@ const std::set<std::string> kReserved{"system", "lattice", "field", "states", "i
                                       "and", "or", "not", "implies", "assuming", "by", "nbr", "none", "dir", "true",
                                       "false", "count", "all", "some", "no", "connected", "reaches", "any"};
 
+int editDistance(const std::string& a, const std::string& b) {
+    std::vector<int> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = static_cast<int>(j);
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        int diagonal = row[0];
+        row[0] = static_cast<int>(i);
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const int up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+/// "; did you mean 'x'?" for the closest candidate within two edits, or nothing.
+std::string suggestion(const std::string& name, const std::vector<std::string>& candidates) {
+    const std::string* best = nullptr;
+    int bestDistance = 3;
+    for (const std::string& c : candidates)
+        if (int dist = editDistance(name, c); dist < bestDistance && dist < static_cast<int>(c.size())) best = &c, bestDistance = dist;
+    return best ? "; did you mean '" + *best + "'?" : "";
+}
+
 bool isBoolExpr(const Expr& e) {
     switch (e.kind) {
     case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Add: case Expr::Kind::Sub:
@@ -129,8 +153,12 @@ private:
     }
     ValueRef uniqueValue(const Token& tok) {
         auto found = findValue(tok.text);
-        if (found.empty())
-            fail(tok.loc, "unknown state '" + tok.text + "'; declare it in a field before using it");
+        if (found.empty()) {
+            std::vector<std::string> known = s_.inputs;
+            for (const Field& f : s_.fields) known.insert(known.end(), f.values.begin(), f.values.end());
+            const std::string hint = suggestion(tok.text, known);
+            fail(tok.loc, "unknown state '" + tok.text + "'" + (hint.empty() ? "; declare it in a field before using it" : hint));
+        }
         if (found.size() > 1)
             fail(tok.loc, "'" + tok.text + "' is a value of fields '" + s_.fields[found[0].field].name + "' and '" +
                               s_.fields[found[1].field].name + "'; write " + s_.fields[found[0].field].name + "=" + tok.text);
@@ -160,6 +188,9 @@ private:
         }
         if (k == "invariant" || k == "ranking" || k == "progress" || k == "holonomic" || k == "conserves")
             return propertyDecl(kw);
+        const std::string hint = suggestion(k, {"system", "lattice", "field", "states", "input", "mass", "rule", "constraint",
+                                                "goal", "invariant", "ranking", "progress", "holonomic", "conserves"});
+        if (!hint.empty()) fail(kw.loc, "unknown declaration '" + k + "'" + hint);
         fail(kw.loc, "unknown declaration '" + k +
                          "'; expected system, lattice, field, states, input, mass, rule, constraint, goal, invariant, "
                          "ranking, progress, holonomic or conserves");
@@ -222,6 +253,7 @@ private:
             const Token& n = freshName("an input");
             if (nameTaken(n.text)) fail(n.loc, "'" + n.text + "' is declared twice");
             s_.inputs.push_back(n.text);
+            s_.inputLocs.push_back(n.loc);
         } while (accept(","));
     }
 
@@ -265,8 +297,8 @@ private:
         if (!r.reverseName.empty() && !r.bidirectional)
             fail(loc, "only a '<=>' rule has a reverse to name; drop '/" + r.reverseName + "'");
         if (r.lhs.size() != r.rhs.size())
-            fail(arrow.loc, "the left side has " + std::to_string(r.lhs.size()) + " cells and the right side " +
-                                std::to_string(r.rhs.size()) + "; a rule rewrites the same cells");
+            fail(arrow.loc, "the left side has " + cells(r.lhs.size()) + " and the right side " + cells(r.rhs.size()) +
+                                "; a rule rewrites the same cells");
         patternCells_ = static_cast<int>(r.lhs.size());
         checkLayout(r);
         if (accept("if")) {
@@ -286,6 +318,8 @@ private:
         checkRefs(r);
         s_.rules.push_back(std::move(r));
     }
+
+    static std::string cells(std::size_t n) { return std::to_string(n) + (n == 1 ? " cell" : " cells"); }
 
     std::vector<CellTerm> pattern() {
         std::vector<CellTerm> cells;
@@ -635,7 +669,10 @@ private:
             expect(")", "to close reaches(...)");
             return e;
         }
-        fail(loc, "expected an expression, found " + describe(tok));
+        const std::string hint = tok.kind == Token::Kind::Ident
+                                     ? suggestion(tok.text, {"connected", "reaches", "count", "all", "some", "no", "mass", "true", "false", "not"})
+                                     : "";
+        fail(loc, "expected an expression, found " + describe(tok) + hint);
     }
     void nonLocal(SourceLoc loc, const std::string& what) {
         if (inGuard_) fail(loc, "a guard is local; '" + what + "' is non-local, write it as a constraint");

@@ -36,13 +36,18 @@ std::string cmpText(CmpOp op) {
     return "==";
 }
 
-bool atomic(const Expr& e) {
+/// Binding strength, as in the parser: implies < or < and < not < compare < +,- < unary minus < atoms.
+int precedence(const Expr& e) {
     switch (e.kind) {
-    case Expr::Kind::And: case Expr::Kind::Or: case Expr::Kind::Implies: case Expr::Kind::Compare:
-    case Expr::Kind::Add: case Expr::Kind::Sub: case Expr::Kind::Not: case Expr::Kind::Neg:
-        return false;
-    case Expr::Kind::Number: return e.value.isInteger() && e.value.num() >= 0;
-    default: return true;
+    case Expr::Kind::Implies: return 1;
+    case Expr::Kind::Or: return 2;
+    case Expr::Kind::And: return 3;
+    case Expr::Kind::Not: return 4;
+    case Expr::Kind::Compare: return 5;
+    case Expr::Kind::Add: case Expr::Kind::Sub: return 6;
+    case Expr::Kind::Neg: return 7;
+    case Expr::Kind::Number: return e.value.isInteger() ? 8 : 7;  // 3/2 prints as a fraction: keep it whole
+    default: return 8;
     }
 }
 
@@ -73,8 +78,17 @@ std::string printPredicate(const System& s, const CellPredicate& pred, const Ref
 }
 
 std::string printExpr(const System& s, const Expr& e, const RefPrinter& ref) {
-    auto sub = [&](const Expr& k) { return atomic(k) ? printExpr(s, k, ref) : "(" + printExpr(s, k, ref) + ")"; };
-    auto binary = [&](const char* op) { return sub(e.kids[0]) + " " + op + " " + sub(e.kids[1]); };
+    // A child is parenthesised when it binds more loosely than its parent, or as tightly on the side
+    // the parser would not group it (left-associative operators group to the left; implies to the right).
+    auto sub = [&](const Expr& k, bool tighter) {
+        const bool bare = precedence(k) > precedence(e) || (!tighter && precedence(k) == precedence(e));
+        return bare ? printExpr(s, k, ref) : "(" + printExpr(s, k, ref) + ")";
+    };
+    auto binary = [&](const char* op) {
+        const bool rightAssoc = e.kind == Expr::Kind::Implies;
+        const bool chain = e.kind != Expr::Kind::Compare;
+        return sub(e.kids[0], rightAssoc || !chain) + " " + op + " " + sub(e.kids[1], !rightAssoc || !chain);
+    };
     auto quant = [&](const char* word) {
         if (e.around >= 0) return std::string(word) + " nbr" + (e.around ? "@" + std::to_string(e.around) : "") + " " + printPredicate(s, e.pred, ref);
         return std::string(word) + "(" + printPredicate(s, e.pred, ref) + ")";
@@ -86,11 +100,11 @@ std::string printExpr(const System& s, const Expr& e, const RefPrinter& ref) {
     case Expr::Kind::And: return binary("and");
     case Expr::Kind::Or: return binary("or");
     case Expr::Kind::Implies: return binary("implies");
-    case Expr::Kind::Not: return "not " + sub(e.kids[0]);
+    case Expr::Kind::Not: return "not " + sub(e.kids[0], false);
     case Expr::Kind::Compare: return binary(cmpText(e.op).c_str());
     case Expr::Kind::Add: return binary("+");
     case Expr::Kind::Sub: return binary("-");
-    case Expr::Kind::Neg: return "-" + sub(e.kids[0]);
+    case Expr::Kind::Neg: return "-" + sub(e.kids[0], false);
     case Expr::Kind::Count: return quant("count");
     case Expr::Kind::All: return quant("all");
     case Expr::Kind::Some: return quant("some");
@@ -160,14 +174,16 @@ std::string printSystem(const System& s) {
             for (std::size_t i = 0; i < p.exprs.size(); ++i) out << (i ? ", " : " ") << printExpr(s, p.exprs[i]);
             break;
         case Property::Kind::Progress:
-            out << "progress " << p.name;
+            out << "progress";
+            if (p.name != "progress") out << ' ' << p.name;
             if (!p.exprs.empty()) out << " assuming " << printExpr(s, p.exprs[0]);
             break;
         case Property::Kind::Holonomic:
-            out << "holonomic " << p.name << " by " << (p.adjacency == Property::Adjacency::Move ? "move" : "occupancy");
+            out << "holonomic " << (p.name == "holonomy" ? "" : p.name + " ") << "by " << (p.adjacency == Property::Adjacency::Move ? "move" : "occupancy");
             break;
         case Property::Kind::Conserves:
-            out << "conserves " << (p.quantity == Property::Quantity::Mass ? "mass " : "count ") << p.name;
+            out << "conserves " << (p.quantity == Property::Quantity::Mass ? "mass" : "count");
+            if (p.name != (p.quantity == Property::Quantity::Mass ? "mass_conservation" : "count_conservation")) out << ' ' << p.name;
             break;
         }
         out << '\n';

@@ -98,7 +98,7 @@ void validate(const System& system, Diagnostics& d) {
                 d.warning(field.loc, "unused-value", "no rule mentions state '" + field.values[v] + "'");
     }
     for (int i = 0; i < static_cast<int>(system.inputs.size()); ++i)
-        if (!usedInputs.count(i)) d.warning({1, 1}, "unused-input", "input '" + system.inputs[i] + "' is never read");
+        if (!usedInputs.count(i)) d.warning(system.inputLocs[i], "unused-input", "input '" + system.inputs[i] + "' is never read");
     for (int f = 0; f < static_cast<int>(system.fields.size()); ++f) {
         int massed = 0;
         for (const MassEntry& m : system.masses) massed += m.field == f;

@@ -1,0 +1,51 @@
+// Configuration formats: JSON and ASCII art round trips, and clear errors for bad input.
+
+#include "rules/Error.h"
+#include "TestSupport.h"
+
+using namespace holon;
+using test::World;
+
+TEST_CASE("JSON round trip keeps every field and input") {
+    World w = World::library("planner_general1", "square:3x2");
+    auto c = w.in->empty();
+    w.mark(c, "target", "##.\n#..");
+    w.set(c, 0, 0, "C&F"), w.set(c, 1, 0, "D&P&parent=-x"), w.set(c, 1, 1, "D&U");
+    auto j = rules::configToJson(*w.in, c);
+    CHECK(j["cells"].size() == 3);
+    CHECK(j["cells"][1]["parent"] == "-x");
+    CHECK(rules::configFromJson(*w.in, j) == c);
+    CHECK(rules::configFromJson(*w.in, nlohmann::json::parse(j.dump())) == c);
+}
+
+TEST_CASE("ASCII art round trips on square and hex regions") {
+    World sq = World::library("general2", "square:4x2");
+    const std::string art = "CD..\n.B1.";
+    CHECK_THROWS_AS(sq.ascii(art), InputError);  // B1 has no one-character name
+    World g1 = World::library("general1", "square:4x2");
+    auto c = g1.ascii("CD..\n.DC.");
+    CHECK(rules::configToAscii(*g1.in, c) == "CD..\n.DC.\n");
+    World hex = World::library("hex_pivot", "hex:r1");
+    auto h = hex.in->empty();
+    h.cells[hex.region.indexOf({0, 0, 0})] = 1;
+    h.cells[hex.region.indexOf({1, -1, 0})] = 1;
+    const std::string drawn = rules::configToAscii(*hex.in, h);
+    CHECK(drawn == " . M\n. M .\n . .\n");
+    CHECK(rules::configFromAscii(*hex.in, drawn) == h);
+}
+
+TEST_CASE("bad configurations are rejected with the place and the fix") {
+    World w = World::library("planner_intermediate", "square:3x3");
+    auto bad = [&](const std::string& text, const std::string& message) {
+        CHECK_THROWS_WITH_AS(rules::configFromJson(*w.in, nlohmann::json::parse(text)), doctest::Contains(message.c_str()), InputError);
+    };
+    bad(R"({"cells":[{"at":[5,0],"label":"F"}]})", "lies outside region square:3x3");
+    bad(R"({"cells":[{"at":[0,0],"label":"X"}]})", "'X' is not a state of field 'label'");
+    bad(R"({"cells":[{"at":[0,0],"label":"P"}]})", "do not make a state");
+    bad(R"({"cells":[{"at":[0,0],"label":"F"},{"at":[0,0],"label":"U"}]})", "listed twice");
+    bad(R"({"cells":[{"at":[0,0],"colour":"F"}]})", "has no field 'colour'");
+    bad(R"({"cells":[],"inputs":{"goal":[]}})", "has no input 'goal'");
+    bad(R"({"region":"square:4x4","cells":[]})", "not square:3x3");
+    CHECK_THROWS_WITH_AS(w.ascii("FFFF"), doctest::Contains("row 1"), InputError);
+    CHECK_THROWS_WITH_AS(w.ascii("FZ"), doctest::Contains("'Z' is not a one-character state"), InputError);
+}

@@ -1,0 +1,98 @@
+// The reference interpreter on small hand-made systems: matching, rewriting with the frame
+// condition, pointer references, guards, non-local filtering, and rotation closure.
+
+#include "TestSupport.h"
+
+using namespace holon;
+using test::World;
+
+TEST_CASE("non-local constraints filter successors: intermediate never disconnects") {
+    World w = World::library("intermediate", "square:3x1");
+    auto c = w.ascii("MMM");
+    // Deleting the middle module would split the row; only the two ends can go.
+    auto names = w.enabledRules(c);
+    CHECK(std::count(names.begin(), names.end(), "destroy") == 2);
+    for (const auto& i : w.in->enabled(c)) CHECK(w.in->legal(*w.in->successor(c, i)));
+    // Locally the middle deletion matches, but the constraint rejects it.
+    int rejected = 0;
+    for (int s = 0; s < static_cast<int>(w.model->shapes().size()); ++s)
+        for (rules::Vec cell : w.region.cells()) {
+            rules::Instance inst{s, cell - w.model->shapes()[s].offsets[0]};
+            if (w.in->matches(c, inst) && !w.in->successor(c, inst)) ++rejected;
+        }
+    CHECK(rejected == 2);  // the middle cell, destroyed from either neighbour
+}
+
+TEST_CASE("pointer references resolve to the direction of the referenced cell") {
+    World w(test::parse("system t\nfield label: A | B\nfield ptr: dir if B\nrule r: A A => A B&ptr=@0\n"), "square:3x3");
+    auto c = w.in->empty();
+    c.cells[w.region.indexOf({1, 1, 0})] = static_cast<rules::CellValue>(w.value("A"));
+    c.cells[w.region.indexOf({1, 0, 0})] = static_cast<rules::CellValue>(w.value("A"));
+    auto enabled = w.in->enabled(c);
+    REQUIRE(enabled.size() == 2);  // either cell may recruit the other
+    for (const auto& i : enabled) {
+        auto next = *w.in->successor(c, i);
+        auto cells = *w.in->cellsOf(i);
+        // The new B points from its cell back at the anchor.
+        const rules::Vec from = w.region.cell(cells[1]), to = w.region.cell(cells[0]);
+        CHECK(w.model->alphabet().name(next.cells[cells[1]]) == "B&ptr=" + w.region.lattice().directionName(w.region.lattice().directionOf(to - from)));
+    }
+}
+
+TEST_CASE("rotation closure: pair rules have one orientation per direction, and cells outside the region never match") {
+    rules::System s = test::parse("system t\nstates M\nrule grow: M _ => M M\n");
+    for (const auto* l : rules::Lattice::all()) CHECK(rules::Model(s, *l).shapes().size() == static_cast<std::size_t>(l->degree()));
+    World w(s, "square:2x2");
+    auto c = w.ascii("M.\n..");
+    CHECK(w.in->enabled(c).size() == 2);
+    World h(s, "hex:r1");
+    auto hc = h.in->empty();
+    hc.cells[h.region.indexOf({0, 0, 0})] = 1;
+    CHECK(h.in->enabled(hc).size() == 6);
+}
+
+TEST_CASE("the frame condition keeps fields a right side does not name") {
+    World w(test::parse("system t\nfield res: D | C\nfield label: U | F\nrule f: F U => F F\n"), "square:2x1");
+    auto c = w.in->empty();
+    c.cells[0] = static_cast<rules::CellValue>(w.value("C&F"));
+    c.cells[1] = static_cast<rules::CellValue>(w.value("D&U"));
+    auto enabled = w.in->enabled(c);
+    REQUIRE(enabled.size() == 1);
+    auto next = *w.in->successor(c, enabled[0]);
+    CHECK(w.at(next, 0, 0) == "C&F");
+    CHECK(w.at(next, 1, 0) == "D&F");
+}
+
+TEST_CASE("guards quantify over lattice neighbours, including cells outside the region as empty") {
+    World w(test::parse("system t\nstates M | N\nrule lone: M => N if no nbr # \nrule crowd: M => N if count nbr M >= 2\n"), "square:3x3");
+    auto c = w.ascii("M..\n...\n..M");
+    CHECK(w.enabledRules(c) == std::vector<std::string>{"lone", "lone"});
+    auto d = w.ascii("MMM");
+    CHECK(w.enabledRules(d) == std::vector<std::string>{"crowd"});
+}
+
+TEST_CASE("expressions: counts, mass, connected, reaches") {
+    World w(test::parse(R"(system t
+field label: U | P | F
+field parent: dir if P
+rule r: U => F
+invariant tree: reaches(P, parent, F)
+invariant shape: connected and connected(F) and count(P) == 2 and mass == 4
+invariant small: connected and count(#) == 2 and all(# | _) and no(P)
+invariant joined: connected
+)"), "square:4x1");
+    auto holds = [&](const char* name, const rules::Configuration& c) { return w.in->holds(w.system.property(name)->exprs[0], c); };
+    auto c = w.in->empty();
+    auto set = [&](int x, const std::string& v) { c.cells[w.region.indexOf({x, 0, 0})] = static_cast<rules::CellValue>(w.value(v)); };
+    set(0, "F"), set(1, "P&parent=-x"), set(2, "P&parent=-x"), set(3, "U");
+    CHECK(holds("tree", c));
+    CHECK(holds("shape", c));
+    set(1, "P&parent=+x");  // 1 and 2 now point at each other: a cycle
+    CHECK_FALSE(holds("tree", c));
+    set(1, "U");
+    CHECK_FALSE(holds("tree", c));  // 2 points at a U
+    set(3, "_"), set(2, "_");
+    CHECK(holds("small", c));
+    set(1, "_"), set(3, "F");
+    CHECK_FALSE(holds("joined", c));
+}
