@@ -47,13 +47,15 @@ bool Interpreter::matches(const Configuration& c, const Instance& instance) cons
     }
     for (std::size_t i = 0; i < at.positions.size(); ++i)
         if (!matchesTerm(rule.lhs()[i], valueAt(at.positions[i], c), context(at.positions[i], c, &at))) return false;
-    // A `<=>` rule read backwards tests its input atoms on the (now left) right side as well.
+    // A `<=>` rule read backwards tests its input atoms on the (now right) left side as well.
     if (rule.reversed)
         for (std::size_t i = 0; i < at.positions.size(); ++i)
-            for (const Atom& a : rule.rhs()[i].atoms)
-                if (a.kind == Atom::Kind::Input && !matchesTerm(CellTerm{CellTerm::Base::Any, {a}, false, {}, {}},
-                                                                 valueAt(at.positions[i], c), context(at.positions[i], c, &at)))
+            for (const Atom& a : rule.rhs()[i].atoms) {
+                CellTerm inputOnly;
+                inputOnly.atoms = {a};
+                if (a.kind == Atom::Kind::Input && !matchesTerm(inputOnly, valueAt(at.positions[i], c), context(at.positions[i], c, &at)))
                     return false;
+            }
     return !rule.guard() || holdsAt(*rule.guard(), c, &at);
 }
 
@@ -65,6 +67,10 @@ Configuration Interpreter::apply(const Configuration& c, const Instance& instanc
     Configuration next = c;
     for (std::size_t i = 0; i < at.positions.size(); ++i) {
         const int cell = region_->indexOf(at.positions[i]);
+        if (const int k = rule.rhs()[i].copyFrom; k >= 0) {
+            next.cells[cell] = c.cells[region_->indexOf(at.positions[k])];
+            continue;
+        }
         const int value = rewriteTerm(rule.rhs()[i], c.cells[cell], context(at.positions[i], c, &at));
         // validate() proved every right side complete on every state its left side admits.
         next.cells[cell] = static_cast<CellValue>(value < 0 ? c.cells[cell] : value);

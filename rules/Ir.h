@@ -62,7 +62,8 @@ struct CellTerm {
     enum class Base { Empty, Any, Occupied } base = Base::Any;  // `_`, `*`, `#` (field atoms imply #)
     std::vector<Atom> atoms;
     bool hasOffset = false;
-    Vec offset;  // explicit position in lattice coordinates, `@(x,y)`
+    Vec offset;         // explicit position in lattice coordinates, `@(x,y)`
+    int copyFrom = -1;  // right sides only: `@k`, the cell takes the state pattern cell k had (a move)
     SourceLoc loc;
     friend bool operator==(const CellTerm&, const CellTerm&) = default;
 };

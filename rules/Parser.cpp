@@ -334,6 +334,11 @@ private:
         CellTerm c;
         c.loc = peek().loc;
         bool explicitBase = true;
+        if (allowOffset && at("@") && peek(1).kind == Token::Kind::Int) {
+            next();
+            c.copyFrom = integer("a pattern cell index");
+            return c;
+        }
         if (accept("_")) c.base = CellTerm::Base::Empty;
         else if (accept("*")) c.base = CellTerm::Base::Any;
         else if (accept("#")) c.base = CellTerm::Base::Occupied;
@@ -439,6 +444,14 @@ private:
     }
 
     void checkSides(const Rule& r) {
+        for (const CellTerm& c : r.lhs)
+            if (c.copyFrom >= 0) fail(c.loc, "'@" + std::to_string(c.copyFrom) + "' copies a state and belongs on the right side");
+        for (const CellTerm& c : r.rhs) {
+            if (c.copyFrom < 0) continue;
+            if (r.bidirectional) fail(c.loc, "a copy '@k' makes a rule one-way; write the two directions as separate '=>' rules");
+            if (c.copyFrom >= static_cast<int>(r.lhs.size()))
+                fail(c.loc, "@" + std::to_string(c.copyFrom) + " names no cell: the pattern has cells @0..@" + std::to_string(r.lhs.size() - 1));
+        }
         auto checkAssignable = [&](const CellTerm& c, bool inputsAllowed, const char* side) {
             if (c.base == CellTerm::Base::Occupied && c.atoms.empty())
                 fail(c.loc, std::string("'#' on the ") + side + " side does not say which state the cell becomes; name it");

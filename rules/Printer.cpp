@@ -54,6 +54,7 @@ int precedence(const Expr& e) {
 }  // namespace
 
 std::string printTerm(const System& s, const CellTerm& term, const RefPrinter& ref) {
+    if (term.copyFrom >= 0) return ref ? "copy" + ref(term.copyFrom) : "@" + std::to_string(term.copyFrom);
     std::string out;
     bool implied = term.base == CellTerm::Base::Occupied && !term.atoms.empty() && [&] {
         for (const Atom& a : term.atoms)

@@ -30,10 +30,13 @@ void collectExpr(const Expr& e, std::set<std::pair<int, int>>& values, std::set<
 
 void checkRightSides(const System& system, const Model& model, Diagnostics& d, std::set<const Rule*>& reported) {
     const Alphabet& alphabet = model.alphabet();
+    // Whether a rewrite is complete does not depend on the orientation: one shape per rule suffices.
+    std::set<int> checked;
     for (const RuleShape& shape : model.shapes()) {
         const DirectedRule& rule = model.rules()[shape.rule];
-        if (reported.count(rule.rule)) continue;
+        if (reported.count(rule.rule) || !checked.insert(shape.rule).second) continue;
         for (std::size_t i = 0; i < shape.offsets.size(); ++i) {
+            if (rule.rhs()[i].copyFrom >= 0) continue;  // a copied state is complete
             CellContext at{&alphabet, &model.lattice(), shape.offsets[i], 0, &shape.offsets, true};
             for (int v = 0; v < alphabet.size(); ++v) {
                 if (!matchesTerm(rule.lhs()[i], static_cast<CellValue>(v), at)) continue;

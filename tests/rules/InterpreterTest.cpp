@@ -2,6 +2,7 @@
 // condition, pointer references, guards, non-local filtering, and rotation closure.
 
 #include "TestSupport.h"
+#include "rules/Printer.h"
 
 using namespace holon;
 using test::World;
@@ -95,4 +96,21 @@ invariant joined: connected
     CHECK(holds("small", c));
     set(1, "_"), set(3, "F");
     CHECK_FALSE(holds("joined", c));
+}
+
+TEST_CASE("a copy term moves a module with its fields; blocking cells must be occupied") {
+    rules::System s = test::parse(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/../examples/rules/sliding_cube.holon"));
+    CHECK(rules::printSystem(test::parse(rules::printSystem(s))) == rules::printSystem(s));
+    World w(s, "square:3x3");
+    auto c = w.in->empty();
+    w.set(c, 0, 0, "M&charge=2"), w.set(c, 0, 1, "M&charge=0"), w.set(c, 1, 1, "M&charge=0");
+    bool slid = false;
+    for (const auto& i : w.in->enabled(c)) {
+        auto next = *w.in->successor(c, i);
+        if (w.at(next, 1, 0) == "M&charge=2" && w.at(next, 0, 0) == "_") slid = true;
+    }
+    CHECK(slid);
+    w.set(c, 1, 1, "_");  // without the second wall module the slide from (0,0) to (1,0) is blocked
+    w.set(c, 0, 2, "M&charge=0");
+    for (const auto& i : w.in->enabled(c)) CHECK_FALSE(w.at(*w.in->successor(c, i), 1, 0) == "M&charge=2");
 }

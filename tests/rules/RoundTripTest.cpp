@@ -41,6 +41,7 @@ rule a / b: C&lock=none _&target <=> D&lock=@1 B1&lock=@0
 rule c: #&!target * => _ * if no nbr U | P&parent=@0 and count nbr@1 F >= 2 or not some nbr D
 rule d: U&age=2 => F
 rule e: F@(0,0) _@(1,0) _@(0,1) => F D&F D&F
+rule m: F@(0,0) _@(1,0) #@(0,1) => _ @0 *
 constraint connected and count(#) <= 10 - 1 and mass >= 3/2
 constraint all(F&target | _&!target) implies -count(P) < 0
 goal all(F&target | _&!target)
@@ -55,6 +56,6 @@ conserves count cnt
     rules::System again = test::parse(printed);
     CHECK(again == s);
     CHECK(rules::printSystem(again) == printed);
-    CHECK(s.rules.size() == 4);
+    CHECK(s.rules.size() == 5);
     CHECK(s.properties.size() == 5);
 }
