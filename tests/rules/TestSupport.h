@@ -8,6 +8,7 @@
 #include "rules/Parser.h"
 
 #include <doctest/doctest.h>
+#include <filesystem>
 #include <memory>
 #include <string>
 

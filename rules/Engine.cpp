@@ -1,0 +1,353 @@
+// The compiled rule engine. Each rule shape is compiled, once per load, into decision tables: for
+// every pattern cell a bit mask over (input combination, cell state) for its left side, and a
+// state -> state table for its right side; guards become per-direction masks over the neighbours.
+// Testing an instance is then a handful of table look-ups with no allocation. Non-local
+// expressions (constraints, goals, properties) are evaluated over the same masks. The semantics are
+// exactly the reference interpreter's (tests/rules/EngineTest.cpp runs both side by side).
+
+#include "rules/Engine.h"
+
+#include "rules/Error.h"
+
+#include <algorithm>
+#include <functional>
+#include <numeric>
+
+namespace holon::rules {
+
+struct Engine::GuardNode {
+    Expr::Kind kind = Expr::Kind::Bool;
+    CmpOp op = CmpOp::Eq;
+    Rational value;
+    std::vector<GuardNode> kids;
+    int around = -1;
+    std::vector<Mask> perDirection;  // quantifiers: the predicate for the neighbour in direction d
+};
+
+struct Engine::ShapeTables {
+    std::vector<Mask> lhs;
+    std::vector<std::vector<CellValue>> rhs;  // empty for a copy term
+    std::vector<int> copyFrom;
+    bool hasGuard = false;
+    GuardNode guard;
+};
+
+namespace {
+
+void setBit(std::vector<std::uint64_t>& bits, std::size_t i) { bits[i >> 6] |= std::uint64_t{1} << (i & 63); }
+
+void collectPredicates(const Expr& e, std::vector<const CellPredicate*>& out) {
+    if (!e.pred.empty()) out.push_back(&e.pred);
+    if (!e.target.empty()) out.push_back(&e.target);
+    for (const Expr& k : e.kids) collectPredicates(k, out);
+}
+
+}  // namespace
+
+Engine::Mask Engine::compileTerm(const CellTerm& term, const std::vector<Vec>* pattern, Vec position,
+                                 const CellTerm* alsoInputs) const {
+    Mask m;
+    m.bits.assign((combos_.size() * alphabet_ + 63) / 64, 0);
+    for (std::size_t c = 0; c < combos_.size(); ++c) {
+        CellContext at{&model_->alphabet(), &model_->lattice(), position, combos_[c], pattern, false};
+        for (int v = 0; v < alphabet_; ++v) {
+            bool ok = matchesTerm(term, static_cast<CellValue>(v), at);
+            if (ok && alsoInputs)
+                for (const Atom& a : alsoInputs->atoms)
+                    if (a.kind == Atom::Kind::Input) {
+                        CellTerm only;
+                        only.atoms = {a};
+                        ok = ok && matchesTerm(only, static_cast<CellValue>(v), at);
+                    }
+            if (ok) setBit(m.bits, c * alphabet_ + v);
+        }
+    }
+    return m;
+}
+
+Engine::Mask Engine::compilePredicate(const CellPredicate& pred, const std::vector<Vec>* pattern, Vec position) const {
+    Mask m;
+    m.bits.assign((combos_.size() * alphabet_ + 63) / 64, 0);
+    for (const CellTerm& t : pred) {
+        Mask one = compileTerm(t, pattern, position, nullptr);
+        for (std::size_t i = 0; i < m.bits.size(); ++i) m.bits[i] |= one.bits[i];
+    }
+    return m;
+}
+
+Engine::Engine(const Model& model, const Region& region, const std::vector<std::uint32_t>& inputs)
+    : model_(&model), region_(&region), inputs_(inputs), alphabet_(model.alphabet().size()) {
+    if (static_cast<int>(inputs_.size()) != region.size()) inputs_.assign(region.size(), 0);
+    // Input combinations actually present, so masks stay small whatever the number of inputs.
+    combos_.push_back(0);
+    combo_.resize(region.size());
+    for (int i = 0; i < region.size(); ++i) {
+        auto it = std::find(combos_.begin(), combos_.end(), inputs_[i]);
+        if (it == combos_.end()) it = combos_.insert(combos_.end(), inputs_[i]);
+        combo_[i] = static_cast<int>(it - combos_.begin());
+    }
+    emptyCombo_ = 0;
+
+    const Lattice& lattice = model.lattice();
+    std::function<GuardNode(const Expr&, const RuleShape&)> compileGuard = [&](const Expr& e, const RuleShape& shape) {
+        GuardNode g;
+        g.kind = e.kind, g.op = e.op, g.value = e.value, g.around = e.around;
+        for (const Expr& k : e.kids) g.kids.push_back(compileGuard(k, shape));
+        if (e.around >= 0)
+            for (int d = 0; d < lattice.degree(); ++d)
+                g.perDirection.push_back(compilePredicate(e.pred, &shape.offsets, shape.offsets[e.around] + lattice.direction(d)));
+        return g;
+    };
+    for (const RuleShape& shape : model.shapes()) {
+        const DirectedRule& rule = model.rules()[shape.rule];
+        if (shape.offsets.size() > kMaxCells) throw InputError("rule '" + rule.name + "' has more than 8 cells");
+        ShapeTables t;
+        for (std::size_t k = 0; k < shape.offsets.size(); ++k) {
+            t.lhs.push_back(compileTerm(rule.lhs()[k], &shape.offsets, shape.offsets[k], rule.reversed ? &rule.rhs()[k] : nullptr));
+            const CellTerm& rhs = rule.rhs()[k];
+            t.copyFrom.push_back(rhs.copyFrom);
+            std::vector<CellValue> table;
+            if (rhs.copyFrom < 0) {
+                CellContext at{&model.alphabet(), &lattice, shape.offsets[k], 0, &shape.offsets, false};
+                for (int v = 0; v < alphabet_; ++v) {
+                    const int w = rewriteTerm(rhs, static_cast<CellValue>(v), at);
+                    table.push_back(static_cast<CellValue>(w < 0 ? v : w));
+                }
+            }
+            t.rhs.push_back(std::move(table));
+        }
+        if (const Expr* g = rule.guard()) {
+            t.hasGuard = true;
+            t.guard = compileGuard(*g, shape);
+        }
+        shapes_.push_back(std::move(t));
+    }
+    byCell_.resize(region.size());
+    for (int s = 0; s < static_cast<int>(model.shapes().size()); ++s) {
+        const RuleShape& shape = model.shapes()[s];
+        for (Vec cell : region.cells()) {
+            Placed p;
+            p.shape = s, p.rule = shape.rule, p.anchor = cell - shape.offsets[0];
+            p.size = static_cast<std::uint8_t>(shape.offsets.size());
+            bool inside = true;
+            for (std::size_t k = 0; k < shape.offsets.size() && inside; ++k) {
+                p.cells[k] = region.indexOf(p.anchor + shape.offsets[k]);
+                inside = p.cells[k] >= 0;
+            }
+            if (!inside) continue;
+            for (int k = 0; k < p.size; ++k) byCell_[p.cells[k]].push_back(static_cast<std::int32_t>(placed_.size()));
+            placed_.push_back(p);
+        }
+    }
+    // Masses as integers over the least common denominator.
+    for (int v = 0; v < alphabet_; ++v) massDen_ = std::lcm(massDen_, model.alphabet().mass(static_cast<CellValue>(v)).den());
+    for (int v = 0; v < alphabet_; ++v) {
+        Rational m = model.alphabet().mass(static_cast<CellValue>(v));
+        mass_.push_back(m.num() * (massDen_ / m.den()));
+    }
+    std::vector<const CellPredicate*> preds;
+    const System& s = model.system();
+    for (const Constraint& c : s.constraints) collectPredicates(c.expr, preds);
+    if (s.goal) collectPredicates(*s.goal, preds);
+    for (const Property& p : s.properties)
+        for (const Expr& e : p.exprs) collectPredicates(e, preds);
+    for (const CellPredicate* p : preds) predicates_.emplace(p, compilePredicate(*p, nullptr, {}));
+}
+
+Engine::~Engine() = default;
+Engine::Engine(Engine&&) noexcept = default;
+
+bool Engine::matches(const CellValue* cells, int placed) const {
+    const Placed& p = placed_[placed];
+    const ShapeTables& t = shapes_[p.shape];
+    for (int k = 0; k < p.size; ++k)
+        if (!test(t.lhs[k], combo_[p.cells[k]], cells[p.cells[k]])) return false;
+    return !t.hasGuard || guard(t.guard, cells, p);
+}
+
+void Engine::apply(CellValue* cells, int placed, CellValue* saved) const {
+    const Placed& p = placed_[placed];
+    const ShapeTables& t = shapes_[p.shape];
+    for (int k = 0; k < p.size; ++k) saved[k] = cells[p.cells[k]];
+    for (int k = 0; k < p.size; ++k)
+        cells[p.cells[k]] = t.copyFrom[k] >= 0 ? saved[t.copyFrom[k]] : t.rhs[k][saved[k]];
+}
+
+void Engine::undo(CellValue* cells, int placed, const CellValue* saved) const {
+    const Placed& p = placed_[placed];
+    for (int k = 0; k < p.size; ++k) cells[p.cells[k]] = saved[k];
+}
+
+int Engine::guardCount(const GuardNode& g, const CellValue* cells, const Placed& p) const {
+    const int centre = p.cells[g.around];
+    int n = 0;
+    for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) {
+        const int nb = region_->neighbour(centre, d);
+        n += test(g.perDirection[d], comboOf(nb), nb < 0 ? 0 : cells[nb]);
+    }
+    return n;
+}
+
+Rational Engine::guardNumber(const GuardNode& g, const CellValue* cells, const Placed& p) const {
+    switch (g.kind) {
+    case Expr::Kind::Number: return g.value;
+    case Expr::Kind::Add: return guardNumber(g.kids[0], cells, p) + guardNumber(g.kids[1], cells, p);
+    case Expr::Kind::Sub: return guardNumber(g.kids[0], cells, p) - guardNumber(g.kids[1], cells, p);
+    case Expr::Kind::Neg: return -guardNumber(g.kids[0], cells, p);
+    case Expr::Kind::Count: return guardCount(g, cells, p);
+    default: return 0;
+    }
+}
+
+namespace {
+bool compare(CmpOp op, const Rational& a, const Rational& b) {
+    switch (op) {
+    case CmpOp::Eq: return a == b;
+    case CmpOp::Ne: return a != b;
+    case CmpOp::Lt: return a < b;
+    case CmpOp::Le: return a <= b;
+    case CmpOp::Gt: return a > b;
+    case CmpOp::Ge: return a >= b;
+    }
+    return false;
+}
+}  // namespace
+
+bool Engine::guard(const GuardNode& g, const CellValue* cells, const Placed& p) const {
+    switch (g.kind) {
+    case Expr::Kind::Bool: return g.value.num() != 0;
+    case Expr::Kind::And: return guard(g.kids[0], cells, p) && guard(g.kids[1], cells, p);
+    case Expr::Kind::Or: return guard(g.kids[0], cells, p) || guard(g.kids[1], cells, p);
+    case Expr::Kind::Implies: return !guard(g.kids[0], cells, p) || guard(g.kids[1], cells, p);
+    case Expr::Kind::Not: return !guard(g.kids[0], cells, p);
+    case Expr::Kind::Compare: return compare(g.op, guardNumber(g.kids[0], cells, p), guardNumber(g.kids[1], cells, p));
+    case Expr::Kind::Some: return guardCount(g, cells, p) > 0;
+    case Expr::Kind::No: return guardCount(g, cells, p) == 0;
+    case Expr::Kind::All: return guardCount(g, cells, p) == static_cast<int>(g.perDirection.size());
+    default: return false;
+    }
+}
+
+const Engine::Mask& Engine::predicateMask(const CellPredicate& pred) const {
+    auto it = predicates_.find(&pred);
+    if (it == predicates_.end()) throw InputError("internal: an expression that is not part of the system was evaluated");
+    return it->second;
+}
+
+bool Engine::connected(const Mask& m, const CellValue* cells) const {
+    thread_local std::vector<std::int32_t> stack;
+    thread_local std::vector<std::uint32_t> seen;
+    thread_local std::uint32_t stamp = 0;
+    const int n = region_->size();
+    if (static_cast<int>(seen.size()) < n) seen.assign(n, 0), stamp = 0;
+    if (++stamp == 0) std::fill(seen.begin(), seen.end(), 0), stamp = 1;
+    int total = 0, start = -1;
+    for (int i = 0; i < n; ++i)
+        if (test(m, combo_[i], cells[i])) {
+            ++total;
+            if (start < 0) start = i;
+        }
+    if (total == 0) return true;
+    stack.clear();
+    stack.push_back(start);
+    seen[start] = stamp;
+    int reached = 0;
+    const int degree = model_->lattice().degree();
+    while (!stack.empty()) {
+        const int i = stack.back();
+        stack.pop_back();
+        ++reached;
+        for (int d = 0; d < degree; ++d) {
+            const int j = region_->neighbour(i, d);
+            if (j >= 0 && seen[j] != stamp && test(m, combo_[j], cells[j])) seen[j] = stamp, stack.push_back(j);
+        }
+    }
+    return reached == total;
+}
+
+bool Engine::legal(const CellValue* cells) const {
+    for (const Constraint& c : model_->system().constraints)
+        if (!holds(c.expr, cells)) return false;
+    return true;
+}
+
+std::int64_t Engine::massUnits(const CellValue* cells) const {
+    std::int64_t m = 0;
+    for (int i = 0; i < region_->size(); ++i) m += mass_[cells[i]];
+    return m;
+}
+
+Rational Engine::number(const Expr& e, const CellValue* cells) const {
+    switch (e.kind) {
+    case Expr::Kind::Number: return e.value;
+    case Expr::Kind::Mass: return Rational(massUnits(cells), massDen_);
+    case Expr::Kind::Add: return number(e.kids[0], cells) + number(e.kids[1], cells);
+    case Expr::Kind::Sub: return number(e.kids[0], cells) - number(e.kids[1], cells);
+    case Expr::Kind::Neg: return -number(e.kids[0], cells);
+    case Expr::Kind::Count: {
+        const Mask& m = predicateMask(e.pred);
+        int n = 0;
+        for (int i = 0; i < region_->size(); ++i) n += test(m, combo_[i], cells[i]);
+        return n;
+    }
+    default: return 0;
+    }
+}
+
+bool Engine::holds(const Expr& e, const CellValue* cells) const {
+    switch (e.kind) {
+    case Expr::Kind::Bool: return e.value.num() != 0;
+    case Expr::Kind::And: return holds(e.kids[0], cells) && holds(e.kids[1], cells);
+    case Expr::Kind::Or: return holds(e.kids[0], cells) || holds(e.kids[1], cells);
+    case Expr::Kind::Implies: return !holds(e.kids[0], cells) || holds(e.kids[1], cells);
+    case Expr::Kind::Not: return !holds(e.kids[0], cells);
+    case Expr::Kind::Compare: return compare(e.op, number(e.kids[0], cells), number(e.kids[1], cells));
+    case Expr::Kind::Some:
+    case Expr::Kind::No:
+    case Expr::Kind::All: {
+        const Mask& m = predicateMask(e.pred);
+        int n = 0;
+        for (int i = 0; i < region_->size(); ++i) n += test(m, combo_[i], cells[i]);
+        return e.kind == Expr::Kind::Some ? n > 0 : e.kind == Expr::Kind::No ? n == 0 : n == region_->size();
+    }
+    case Expr::Kind::Connected: return connected(predicateMask(e.pred), cells);
+    case Expr::Kind::Reaches: {
+        const Mask& from = predicateMask(e.pred);
+        const Mask& to = predicateMask(e.target);
+        const int n = region_->size();
+        thread_local std::vector<char> state;
+        thread_local std::vector<int> walk;
+        state.assign(n, 0);
+        for (int start = 0; start < n; ++start) {
+            if (state[start] || !test(from, combo_[start], cells[start])) continue;
+            walk.clear();
+            int i = start;
+            char verdict = 3;
+            while (true) {
+                if (state[i] >= 2) {
+                    verdict = state[i];
+                    break;
+                }
+                if (state[i] == 1) break;
+                state[i] = 1;
+                walk.push_back(i);
+                const int d = cells[i] == 0 ? kAbsent : model_->alphabet().fields(cells[i])[e.field];
+                const int j = d == kAbsent ? -1 : region_->neighbour(i, d);
+                if (j < 0) break;
+                if (test(to, combo_[j], cells[j])) {
+                    verdict = 2;
+                    break;
+                }
+                if (!test(from, combo_[j], cells[j])) break;
+                i = j;
+            }
+            for (int w : walk) state[w] = verdict;
+            if (verdict == 3) return false;
+        }
+        return true;
+    }
+    default: return false;
+    }
+}
+
+}  // namespace holon::rules
