@@ -8,8 +8,10 @@
 #include "rules/Engine.h"
 
 #include "rules/Error.h"
+#include "rules/Printer.h"
 
 #include <algorithm>
+#include <bit>
 #include <functional>
 #include <numeric>
 
@@ -151,11 +153,31 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     if (s.goal) collectPredicates(*s.goal, preds);
     for (const Property& p : s.properties)
         for (const Expr& e : p.exprs) collectPredicates(e, preds);
-    for (const CellPredicate* p : preds) predicates_.emplace(p, compilePredicate(*p, nullptr, {}));
+    std::unordered_map<std::string, int> byText;
+    for (const CellPredicate* p : preds) {
+        const std::string text = printPredicate(s, *p);
+        auto [it, fresh] = byText.emplace(text, static_cast<int>(predicateMasks_.size()));
+        if (fresh) predicateMasks_.push_back(compilePredicate(*p, nullptr, {}));
+        predicateIndex_.emplace(p, it->second);
+    }
+    for (const Constraint& c : s.constraints) compiledConstraints_.push_back(compileExpr(c.expr));
+    if (region.size() <= 64) {
+        neighbourBits_.assign(region.size(), 0);
+        for (int i = 0; i < region.size(); ++i)
+            for (int d = 0; d < lattice.degree(); ++d)
+                if (int j = region.neighbour(i, d); j >= 0) neighbourBits_[i] |= std::uint64_t{1} << j;
+    }
 }
 
 Engine::~Engine() = default;
 Engine::Engine(Engine&&) noexcept = default;
+
+Engine::CompiledExpr Engine::compileExpr(const Expr& e) const {
+    CompiledExpr c{e.kind, e.op, e.value, -1, &e, {}};
+    if (!e.pred.empty()) c.predicate = predicateIndex_.at(&e.pred);
+    for (const Expr& k : e.kids) c.kids.push_back(compileExpr(k));
+    return c;
+}
 
 bool Engine::matches(const CellValue* cells, int placed) const {
     const Placed& p = placed_[placed];
@@ -229,9 +251,109 @@ bool Engine::guard(const GuardNode& g, const CellValue* cells, const Placed& p) 
 }
 
 const Engine::Mask& Engine::predicateMask(const CellPredicate& pred) const {
-    auto it = predicates_.find(&pred);
-    if (it == predicates_.end()) throw InputError("internal: an expression that is not part of the system was evaluated");
-    return it->second;
+    auto it = predicateIndex_.find(&pred);
+    if (it == predicateIndex_.end()) throw InputError("internal: an expression that is not part of the system was evaluated");
+    return predicateMasks_[it->second];
+}
+
+// ---- Evaluator -----------------------------------------------------------------------------------
+
+Engine::Evaluator::Evaluator(const Engine& engine)
+    : engine_(&engine), cells_(engine.region().size(), 0), members_(engine.predicateMasks_.size(), 0),
+      small_(engine.region().size() <= 64) {}
+
+void Engine::Evaluator::load(const CellValue* cells) {
+    std::copy(cells, cells + cells_.size(), cells_.begin());
+    mass_ = 0;
+    for (std::size_t i = 0; i < cells_.size(); ++i) mass_ += engine_->mass_[cells_[i]];
+    if (!small_) return;
+    for (std::size_t k = 0; k < members_.size(); ++k) {
+        std::uint64_t bits = 0;
+        for (std::size_t i = 0; i < cells_.size(); ++i)
+            if (engine_->test(engine_->predicateMasks_[k], engine_->combo_[i], cells_[i])) bits |= std::uint64_t{1} << i;
+        members_[k] = bits;
+    }
+}
+
+void Engine::Evaluator::set(int cell, CellValue value) {
+    const CellValue old = cells_[cell];
+    if (old == value) return;
+    mass_ += engine_->mass_[value] - engine_->mass_[old];
+    cells_[cell] = value;
+    if (!small_) return;
+    const std::uint64_t bit = std::uint64_t{1} << cell;
+    const int combo = engine_->combo_[cell];
+    for (std::size_t k = 0; k < members_.size(); ++k) {
+        if (engine_->test(engine_->predicateMasks_[k], combo, value)) members_[k] |= bit;
+        else members_[k] &= ~bit;
+    }
+}
+
+void Engine::Evaluator::apply(int placed, CellValue* saved) {
+    const Placed& p = engine_->placed_[placed];
+    const ShapeTables& t = engine_->shapes_[p.shape];
+    for (int k = 0; k < p.size; ++k) saved[k] = cells_[p.cells[k]];
+    for (int k = 0; k < p.size; ++k) set(p.cells[k], t.copyFrom[k] >= 0 ? saved[t.copyFrom[k]] : t.rhs[k][saved[k]]);
+}
+
+void Engine::Evaluator::undo(int placed, const CellValue* saved) {
+    const Placed& p = engine_->placed_[placed];
+    for (int k = p.size - 1; k >= 0; --k) set(p.cells[k], saved[k]);
+}
+
+bool Engine::Evaluator::legal() const {
+    if (!small_) return engine_->legal(cells_.data());
+    for (const CompiledExpr& c : engine_->compiledConstraints_)
+        if (!fastHolds(c)) return false;
+    return true;
+}
+
+bool Engine::Evaluator::holds(const Expr& e) const { return engine_->holds(e, cells_.data()); }
+
+Rational Engine::Evaluator::fastNumber(const CompiledExpr& e) const {
+    auto kid = [&](int k) -> const CompiledExpr& { return e.kids[k]; };
+    switch (e.kind) {
+    case Expr::Kind::Number: return e.value;
+    case Expr::Kind::Count: return std::popcount(members_[e.predicate]);
+    case Expr::Kind::Mass: return Rational(mass_, engine_->massDen_);
+    case Expr::Kind::Add: return fastNumber(kid(0)) + fastNumber(kid(1));
+    case Expr::Kind::Sub: return fastNumber(kid(0)) - fastNumber(kid(1));
+    case Expr::Kind::Neg: return -fastNumber(kid(0));
+    default: return engine_->number(*e.source, cells_.data());
+    }
+}
+
+bool Engine::Evaluator::fastHolds(const CompiledExpr& e) const {
+    auto kid = [&](int k) -> const CompiledExpr& { return e.kids[k]; };
+    switch (e.kind) {
+    case Expr::Kind::Bool: return e.value.num() != 0;
+    case Expr::Kind::And: return fastHolds(kid(0)) && fastHolds(kid(1));
+    case Expr::Kind::Or: return fastHolds(kid(0)) || fastHolds(kid(1));
+    case Expr::Kind::Implies: return !fastHolds(kid(0)) || fastHolds(kid(1));
+    case Expr::Kind::Not: return !fastHolds(kid(0));
+    case Expr::Kind::Compare: return compare(e.op, fastNumber(kid(0)), fastNumber(kid(1)));
+    case Expr::Kind::Some: return members_[e.predicate] != 0;
+    case Expr::Kind::No: return members_[e.predicate] == 0;
+    case Expr::Kind::All: {
+        const int n = static_cast<int>(cells_.size());
+        const std::uint64_t all = n == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
+        return members_[e.predicate] == all;
+    }
+    case Expr::Kind::Connected: {
+        const std::uint64_t m = members_[e.predicate];
+        if (!m) return true;
+        std::uint64_t reached = m & (~m + 1), frontier = reached;
+        while (frontier) {
+            const int i = std::countr_zero(frontier);
+            frontier &= frontier - 1;
+            const std::uint64_t add = engine_->neighbourBits_[i] & m & ~reached;
+            reached |= add;
+            frontier |= add;
+        }
+        return reached == m;
+    }
+    default: return engine_->holds(*e.source, cells_.data());
+    }
 }
 
 bool Engine::connected(const Mask& m, const CellValue* cells) const {

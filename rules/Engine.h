@@ -53,6 +53,35 @@ public:
     Rational number(const Expr& e, const CellValue* cells) const;
 
 private:
+    struct CompiledExpr;
+
+public:
+    /// Incremental evaluation of the non-local constraints while one thread walks through
+    /// configurations that differ in a few cells. On regions of at most 64 cells every predicate of
+    /// the system is kept as a 64-bit membership mask, updated per changed cell, and connectivity
+    /// is a flood fill over neighbour masks; larger regions fall back to the general evaluation.
+    class Evaluator {
+    public:
+        explicit Evaluator(const Engine& engine);
+        void load(const CellValue* cells);
+        const CellValue* cells() const { return cells_.data(); }
+        void apply(int placed, CellValue* saved);
+        void undo(int placed, const CellValue* saved);
+        void set(int cell, CellValue value);
+        bool legal() const;
+        bool holds(const Expr& e) const;
+
+    private:
+        bool fastHolds(const CompiledExpr& n) const;
+        Rational fastNumber(const CompiledExpr& n) const;
+        const Engine* engine_;
+        std::vector<CellValue> cells_;
+        std::vector<std::uint64_t> members_;  // per predicate index
+        std::int64_t mass_ = 0;
+        bool small_;
+    };
+
+private:
     struct Mask {
         std::vector<std::uint64_t> bits;  // over (input combination, cell value)
     };
@@ -83,7 +112,20 @@ private:
     std::vector<std::vector<std::int32_t>> byCell_;
     std::vector<std::int64_t> mass_;
     std::int64_t massDen_ = 1;
-    std::unordered_map<const CellPredicate*, Mask> predicates_;
+    std::unordered_map<const CellPredicate*, int> predicateIndex_;
+    std::vector<Mask> predicateMasks_;  // distinct predicates only: equal text, one mask
+    /// The constraints as trees whose predicates are already indices (the Evaluator's input).
+    struct CompiledExpr {
+        Expr::Kind kind;
+        CmpOp op;
+        Rational value;
+        int predicate = -1;
+        const Expr* source = nullptr;
+        std::vector<CompiledExpr> kids;
+    };
+    std::vector<CompiledExpr> compiledConstraints_;
+    CompiledExpr compileExpr(const Expr& e) const;
+    std::vector<std::uint64_t> neighbourBits_;  // small regions: per cell, its neighbours as a mask
 };
 
 }  // namespace holon::rules

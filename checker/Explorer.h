@@ -1,0 +1,100 @@
+#pragma once
+// Explicit-state exploration of a reconfiguration graph: breadth-first from initial configurations,
+// or over every legal configuration of a region, on all cores, with limits that stop the search
+// cleanly and say what was left.
+
+#include "checker/StateStore.h"
+#include "rules/Engine.h"
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace holon::checker {
+
+/// When to give up. A budget is a value passed to every long-running call (OMPL's termination
+/// condition): it never throws, it only says "stop".
+struct Limits {
+    std::uint64_t maxStates = 50'000'000;
+    double timeoutSeconds = 0;           // 0: none
+    std::uint64_t memoryBytes = 16ull << 30;
+    int threads = 2;
+};
+
+enum class StopReason { Finished, MaxStates, Timeout, Memory };
+std::string stopReasonName(StopReason r);
+
+struct ExploreStats {
+    std::uint64_t states = 0, edges = 0, frontier = 0;
+    int depth = 0;
+    double seconds = 0;
+    StopReason stopped = StopReason::Finished;
+    std::size_t bytes = 0;
+};
+
+class Explorer {
+public:
+    struct Options {
+        Limits limits;
+        bool recordEdges = true;  // keep the successor lists (for components, holonomy, --dot)
+        /// Called from worker threads for every newly stored state (id, unpacked cells); must be
+        /// thread-safe. Used for per-state property checks.
+        std::function<void(StateId, const CellValue*)> onState;
+        /// Progress reports, about every half second, from the thread that runs explore().
+        std::function<void(const ExploreStats&)> onProgress;
+    };
+
+    Explorer(const rules::Engine& engine, Options options);
+    /// Adds an initial configuration (it must be legal; the caller checks).
+    StateId addInitial(const CellValue* cells);
+    /// Adds every legal configuration of the region (the `--all` graph); throws InputError when the
+    /// region has more candidate configurations than the limits allow.
+    void addAllLegal();
+    /// Runs the breadth-first search until done or a limit is hit.
+    const ExploreStats& explore();
+
+    const rules::Engine& engine() const { return *engine_; }
+    const StateStore& store() const { return store_; }
+    const ExploreStats& stats() const { return stats_; }
+    void unpack(StateId id, CellValue* cells) const { store_.layout().unpack(store_.state(id), cells); }
+    std::vector<CellValue> cells(StateId id) const;
+    /// BFS tree: the state a state was first reached from (kNoState for initial ones), and the placed
+    /// instance that led to it.
+    StateId parent(StateId id) const { return parent_[id]; }
+    std::int32_t via(StateId id) const { return via_[id]; }
+    bool isInitial(StateId id) const { return parent_[id] == kNoState && !store_.isHole(id); }
+    /// Ids of states stored so far, holes excluded, in id order.
+    std::vector<StateId> ids() const;
+    /// States with no enabled instance at all.
+    const std::vector<StateId>& terminal() const { return terminal_; }
+    /// Successor lists as compressed rows (edges recorded only while exploring with recordEdges).
+    const std::vector<std::uint64_t>& rowStart() const { return rowStart_; }
+    const std::vector<StateId>& successors() const { return succ_; }
+    const std::vector<std::int32_t>& successorVia() const { return succVia_; }
+    bool hasEdges() const { return !rowStart_.empty(); }
+    /// The path of (state, instance that led to it) from an initial state to `id`.
+    std::vector<std::pair<StateId, std::int32_t>> pathTo(StateId id) const;
+    std::size_t bytesPerState() const;
+
+private:
+    void expand(StateId id, rules::Engine::Evaluator& ev, std::vector<CellValue>& cells, std::vector<std::uint64_t>& packed, std::vector<StateId>& next,
+                std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>>& edges, std::vector<StateId>& terminal,
+                std::uint64_t& edgeCount);
+    void buildRows(std::vector<std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>>>& perThread);
+
+    const rules::Engine* engine_;
+    Options options_;
+    StateStore store_;
+    std::vector<StateId> parent_;
+    std::vector<std::int32_t> via_;
+    std::vector<StateId> frontier_;
+    std::vector<StateId> terminal_;
+    std::vector<std::uint64_t> rowStart_;
+    std::vector<StateId> succ_;
+    std::vector<std::int32_t> succVia_;
+    ExploreStats stats_;
+};
+
+}  // namespace holon::checker
