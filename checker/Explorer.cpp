@@ -113,7 +113,7 @@ void Explorer::addAllLegal() {
     }
 }
 
-void Explorer::expand(StateId id, rules::Engine::Evaluator& ev, std::vector<CellValue>& cells, std::vector<std::uint64_t>& packed,
+void Explorer::expand(StateId id, rules::Engine::Evaluator& ev, std::vector<CellValue>& cells,
                       std::vector<StateId>& next, std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>>& edges,
                       std::vector<StateId>& terminal, std::uint64_t& edgeCount) {
     // First collect the successors, packed by patching the parent's words and with their table
@@ -196,11 +196,10 @@ const ExploreStats& Explorer::explore() {
             std::vector<std::uint64_t> edgeCounts(threads, 0);
             auto work = [&](int t) {
                 std::vector<CellValue> cells(engine_->region().size());
-                std::vector<std::uint64_t> packed(store_.layout().words());
                 rules::Engine::Evaluator ev(*engine_);
                 const std::size_t per = (end - pos + threads - 1) / threads;
                 const std::size_t lo = pos + per * t, hi = std::min(end, lo + per);
-                for (std::size_t k = lo; k < hi; ++k) expand(frontier_[k], ev, cells, packed, next[t], edges[t], terminal[t], edgeCounts[t]);
+                for (std::size_t k = lo; k < hi; ++k) expand(frontier_[k], ev, cells, next[t], edges[t], terminal[t], edgeCounts[t]);
             };
             std::vector<std::thread> pool;
             for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);

@@ -79,7 +79,7 @@ public:
     std::size_t bytesPerState() const;
 
 private:
-    void expand(StateId id, rules::Engine::Evaluator& ev, std::vector<CellValue>& cells, std::vector<std::uint64_t>& packed, std::vector<StateId>& next,
+    void expand(StateId id, rules::Engine::Evaluator& ev, std::vector<CellValue>& cells, std::vector<StateId>& next,
                 std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>>& edges, std::vector<StateId>& terminal,
                 std::uint64_t& edgeCount);
     void buildRows(std::vector<std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>>>& perThread);
