@@ -10,5 +10,6 @@ namespace holon::cli {
 using Run = std::function<int()>;
 
 Run addRulesCommand(CLI::App& app);
+Run addCheckCommand(CLI::App& app);
 
 }  // namespace holon::cli

@@ -3,6 +3,7 @@
 // under the lattice's rotations, constraints and properties.
 
 #include "cli/Commands.h"
+#include "cli/Inputs.h"
 #include "rules/Diagnostics.h"
 #include "rules/Library.h"
 #include "rules/Model.h"
@@ -144,20 +145,10 @@ Run addRulesCommand(CLI::App& app) {
                                             "unmassed-value, duplicate-rule, no-rules)");
     sub->add_flag("--json", opts->json, "print the summaries as JSON");
     return [opts]() {
-        rules::LoadOptions load;
-        for (const std::string& w : opts->noWarnings) {
-            const std::string name = w.rfind("no-", 0) == 0 ? w.substr(3) : w;
-            const auto& known = rules::Diagnostics::warningNames();
-            if (std::find(known.begin(), known.end(), name) == known.end()) {
-                std::cerr << "holon rules: unknown warning '" << w << "'; try -W no-unused-value\n";
-                return 2;
-            }
-            load.silencedWarnings.push_back(name);
-        }
         nlohmann::ordered_json all = nlohmann::ordered_json::array();
         int failed = 0;
         for (const std::string& file : opts->files) {
-            auto system = rules::loadSystem(file, std::cerr, load);
+            auto system = loadRules(file, opts->noWarnings);
             if (!system) {
                 ++failed;
                 continue;

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
         runs[app.get_subcommands({})[before]] = std::move(run);
     };
     add(holon::cli::addRulesCommand);
+    add(holon::cli::addCheckCommand);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,314 @@
+// The explicit-state checks of `holon check` (seed 000 §II and §IV-C on a bounded region):
+// invariants on every stored state (the first violation has a shortest trace, since the search is
+// breadth-first), conservation and ranking on every edge, deadlocks as terminal states outside the
+// goal, livelocks as cycles of the graph on which the ranking never decreases (BGL strong
+// components of the non-decreasing edges), and holonomy (Holonomy.cpp). A property that needs the
+// whole graph is "unknown" when a limit stopped the search before a violation was found.
+
+#include "checker/Check.h"
+
+#include "checker/Graph.h"
+#include "checker/Holonomy.h"
+#include "rules/Error.h"
+
+#include <algorithm>
+#include <chrono>
+#include <mutex>
+
+namespace holon::checker {
+
+bool CheckReport::violated() const {
+    return std::any_of(properties.begin(), properties.end(), [](const PropertyResult& p) { return p.verdict == Verdict::Violated; });
+}
+
+nlohmann::json CheckReport::toJson() const {
+    nlohmann::json props = nlohmann::json::array();
+    for (const PropertyResult& p : properties)
+        props.push_back({{"name", p.name}, {"kind", p.kind}, {"verdict", verdictName(p.verdict)}, {"summary", p.summary},
+                         {"witness", p.witness}, {"seconds", p.seconds}});
+    return {{"system", system},
+            {"region", region},
+            {"states", stats.states},
+            {"edges", stats.edges},
+            {"components", components < 0 ? nlohmann::json(nullptr) : nlohmann::json(components)},
+            {"depth", stats.depth},
+            {"seconds", stats.seconds},
+            {"stopped", stopReasonName(stats.stopped)},
+            {"frontier", stats.frontier},
+            {"bytes_per_state", bytesPerState},
+            {"properties", props}};
+}
+
+std::vector<std::string> checkableProperties(const rules::System& system) {
+    std::vector<std::string> names;
+    for (const rules::Property& p : system.properties) names.push_back(p.name);
+    names.push_back("deadlock");
+    return names;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+bool lexLess(const std::vector<rules::Rational>& a, const std::vector<rules::Rational>& b) {
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end());
+}
+
+/// The trace to `from` followed by the step along edge index `e`.
+Trace traceWithStep(const Explorer& ex, StateId from, std::uint64_t e) {
+    Trace t = traceTo(ex, from);
+    t.steps.push_back({ex.cells(ex.successors()[e]), ex.successorVia()[e]});
+    return t;
+}
+
+/// Cells outside the largest connected part of the occupied cells (to mark a disconnection).
+std::vector<int> cutOff(const rules::Region& region, const std::vector<CellValue>& cells) {
+    std::vector<int> comp(region.size(), -1), sizes;
+    for (int s = 0; s < region.size(); ++s) {
+        if (!cells[s] || comp[s] >= 0) continue;
+        const int id = static_cast<int>(sizes.size());
+        sizes.push_back(0);
+        std::vector<int> stack{s};
+        comp[s] = id;
+        while (!stack.empty()) {
+            const int i = stack.back();
+            stack.pop_back();
+            ++sizes[id];
+            for (int d = 0; d < region.lattice().degree(); ++d)
+                if (int j = region.neighbour(i, d); j >= 0 && cells[j] && comp[j] < 0) comp[j] = id, stack.push_back(j);
+        }
+    }
+    std::vector<int> out;
+    if (sizes.size() < 2) return out;
+    const int biggest = static_cast<int>(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
+    for (int i = 0; i < region.size(); ++i)
+        if (cells[i] && comp[i] != biggest) out.push_back(i);
+    return out;
+}
+
+}  // namespace
+
+CheckReport check(const rules::Model& model, const rules::Region& region, const CheckOptions& options, Exploration* keep) {
+    const rules::System& system = model.system();
+    const auto known = checkableProperties(system);
+    for (const std::string& name : options.properties)
+        if (std::find(known.begin(), known.end(), name) == known.end()) {
+            std::string list;
+            for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+            throw InputError("system '" + system.name + "' has no property '" + name + "'; it has: " + list);
+        }
+    auto selected = [&](const std::string& name) {
+        return options.properties.empty() || std::find(options.properties.begin(), options.properties.end(), name) != options.properties.end();
+    };
+
+    std::vector<std::uint32_t> inputs = options.inputs;
+    if (!options.all && !options.initial.empty()) inputs = options.initial.front().inputs;
+    auto engine = std::make_unique<rules::Engine>(model, region, inputs);
+    const rules::Engine& e = *engine;
+
+    // Invariants are checked on every state as it is stored.
+    std::vector<const rules::Property*> invariants;
+    for (const rules::Property& p : system.properties)
+        if (p.kind == rules::Property::Kind::Invariant && selected(p.name)) invariants.push_back(&p);
+    std::vector<std::vector<StateId>> invariantViolations(invariants.size());
+    std::mutex violationMutex;
+
+    Explorer::Options xo;
+    xo.limits = options.limits;
+    xo.recordEdges = true;
+    xo.onProgress = options.onProgress;
+    if (!invariants.empty())
+        xo.onState = [&](StateId id, const CellValue* cells) {
+            for (std::size_t k = 0; k < invariants.size(); ++k)
+                if (!e.holds(invariants[k]->exprs[0], cells)) {
+                    std::lock_guard<std::mutex> lock(violationMutex);
+                    if (invariantViolations[k].size() < 64) invariantViolations[k].push_back(id);
+                }
+        };
+    auto ex = std::make_unique<Explorer>(e, xo);
+    if (options.all) {
+        ex->addAllLegal();
+    } else {
+        if (options.initial.empty()) throw InputError("give initial configurations with --from, or explore every legal configuration with --all");
+        for (const rules::Configuration& c : options.initial) {
+            if (!e.legal(c.cells.data())) throw InputError("the initial configuration violates a constraint of '" + system.name + "'");
+            ex->addInitial(c.cells.data());
+        }
+    }
+    CheckReport report;
+    report.system = system.name;
+    report.region = region.spec();
+    report.stats = ex->explore();
+    report.bytesPerState = ex->bytesPerState();
+    const bool complete = report.stats.stopped == StopReason::Finished;
+    Components comps;
+    comps = components(*ex);
+    report.components = complete ? comps.count : -1;
+
+    const auto ids = ex->ids();
+    const auto& row = ex->rowStart();
+    const auto& succ = ex->successors();
+    auto unknownOr = [&](PropertyResult& r, const std::string& holdsText) {
+        r.verdict = complete ? Verdict::Holds : Verdict::Unknown;
+        r.summary = complete ? holdsText : "no violation among the " + std::to_string(report.stats.states) + " states explored before the limit";
+    };
+
+    for (const rules::Property& p : system.properties) {
+        if (!selected(p.name)) continue;
+        const auto t0 = Clock::now();
+        PropertyResult r;
+        r.name = p.name;
+        switch (p.kind) {
+        case rules::Property::Kind::Invariant: {
+            r.kind = "invariant";
+            const auto& bad = invariantViolations[std::find(invariants.begin(), invariants.end(), &p) - invariants.begin()];
+            if (bad.empty()) {
+                unknownOr(r, "holds in all " + std::to_string(report.stats.states) + " states");
+                break;
+            }
+            // The violation closest to an initial state.
+            StateId best = bad[0];
+            for (StateId s : bad)
+                if (ex->pathTo(s).size() < ex->pathTo(best).size()) best = s;
+            r.verdict = Verdict::Violated;
+            r.trace = traceTo(*ex, best);
+            r.trace->marked = cutOff(region, ex->cells(best));
+            r.witness = {{"state", best}, {"distance", r.trace->steps.size() - 1}};
+            r.summary = "violated after " + std::to_string(r.trace->steps.size() - 1) + " steps";
+            break;
+        }
+        case rules::Property::Kind::Conserves: {
+            r.kind = "conserves";
+            const bool byMass = p.quantity == rules::Property::Quantity::Mass;
+            std::vector<std::int64_t> amount(ex->store().capacityUsed(), 0);
+            for (StateId s : ids) {
+                const auto cells = ex->cells(s);
+                amount[s] = byMass ? e.massUnits(cells.data()) : std::count_if(cells.begin(), cells.end(), [](CellValue v) { return v != 0; });
+            }
+            for (StateId s : ids)
+                for (std::uint64_t k = row[s]; k < row[s + 1] && r.verdict != Verdict::Violated; ++k)
+                    if (amount[succ[k]] != amount[s]) {
+                        r.verdict = Verdict::Violated;
+                        r.trace = traceWithStep(*ex, s, k);
+                        const auto& rule = e.model().rules()[e.instances()[ex->successorVia()[k]].rule];
+                        r.summary = "rule '" + rule.name + "' changes the " + (byMass ? "mass" : "count");
+                        r.witness = {{"rule", rule.name}, {"before", rules::Rational(amount[s], byMass ? e.massDenominator() : 1).str()},
+                                     {"after", rules::Rational(amount[succ[k]], byMass ? e.massDenominator() : 1).str()}};
+                    }
+            if (r.verdict != Verdict::Violated) unknownOr(r, "every one of the " + std::to_string(report.stats.edges) + " steps keeps it");
+            break;
+        }
+        case rules::Property::Kind::Ranking: {
+            r.kind = "ranking";
+            std::vector<std::vector<rules::Rational>> rank(ex->store().capacityUsed());
+            for (StateId s : ids) {
+                const auto cells = ex->cells(s);
+                for (const rules::Expr& x : p.exprs) rank[s].push_back(e.number(x, cells.data()));
+            }
+            std::vector<char> flat(succ.size(), 0);
+            std::uint64_t badEdges = 0, firstBad = 0;
+            StateId firstFrom = kNoState;
+            for (StateId s : ids)
+                for (std::uint64_t k = row[s]; k < row[s + 1]; ++k)
+                    if (!lexLess(rank[succ[k]], rank[s])) {
+                        flat[k] = 1;
+                        if (badEdges++ == 0) firstBad = k, firstFrom = s;
+                    }
+            if (badEdges == 0) {
+                unknownOr(r, "every step decreases it");
+                break;
+            }
+            r.verdict = Verdict::Violated;
+            // A livelock: a cycle made of non-decreasing steps, inside one strong component.
+            const Components scc = strongComponents(*ex, flat);
+            std::vector<int> sccSize(scc.count, 0);
+            for (StateId s : ids) ++sccSize[scc.of[s]];
+            StateId cycleAt = kNoState;
+            for (StateId s : ids)
+                if (sccSize[scc.of[s]] > 1) {
+                    cycleAt = s;
+                    break;
+                }
+            if (cycleAt == kNoState) {
+                r.trace = traceWithStep(*ex, firstFrom, firstBad);
+                r.summary = std::to_string(badEdges) + " steps do not decrease it (no cycle: still terminating here)";
+                r.witness = {{"non_decreasing_steps", badEdges}, {"livelock", false}};
+            } else {
+                // Lasso: reach the cycle, go round it once (a successor in the same component, then back).
+                Trace t = traceTo(*ex, cycleAt);
+                StateId nextOnCycle = kNoState;
+                for (std::uint64_t k = row[cycleAt]; k < row[cycleAt + 1]; ++k)
+                    if (flat[k] && scc.of[succ[k]] == scc.of[cycleAt]) nextOnCycle = succ[k];
+                const auto back = GraphView(*ex).shortestPath(nextOnCycle, cycleAt);
+                std::vector<StateId> loop{cycleAt, nextOnCycle};
+                loop.insert(loop.end(), back.begin() + 1, back.end());
+                Trace cycle = traceAlong(*ex, loop);
+                t.loop = static_cast<int>(t.steps.size()) - 1;
+                // ITF: the last state steps back to states[loop], so the repeated state is not written twice.
+                t.steps.insert(t.steps.end(), cycle.steps.begin() + 1, cycle.steps.end() - 1);
+                r.trace = t;
+                r.summary = "livelock: a cycle of " + std::to_string(loop.size() - 1) + " steps on which it never decreases";
+                r.witness = {{"non_decreasing_steps", badEdges}, {"livelock", true}, {"cycle", loop.size() - 1}};
+            }
+            break;
+        }
+        case rules::Property::Kind::Progress: {
+            r.kind = "progress";
+            for (StateId s : ex->terminal()) {
+                const auto cells = ex->cells(s);
+                if (system.goal && e.holds(*system.goal, cells.data())) continue;
+                if (!p.exprs.empty() && !e.holds(p.exprs[0], cells.data())) continue;
+                r.verdict = Verdict::Violated;
+                r.trace = traceTo(*ex, s);
+                r.summary = "no rule is enabled in a state outside the goal, after " + std::to_string(r.trace->steps.size() - 1) + " steps";
+                r.witness = {{"state", s}, {"distance", r.trace->steps.size() - 1}};
+                break;
+            }
+            if (r.verdict != Verdict::Violated) unknownOr(r, "some rule is enabled in every state outside the goal");
+            break;
+        }
+        case rules::Property::Kind::Holonomic:
+            if (!complete) {
+                r.kind = "holonomic";
+                r.summary = "needs the whole graph; the search stopped at a limit";
+            } else {
+                r = checkHolonomy(*ex, comps, p);
+            }
+            break;
+        }
+        if (r.trace) r.trace->property = p.name;
+        r.seconds = since(t0);
+        report.properties.push_back(std::move(r));
+    }
+    if (selected("deadlock")) {
+        const auto t0 = Clock::now();
+        PropertyResult r;
+        r.name = "deadlock";
+        r.kind = "deadlock";
+        std::uint64_t count = 0;
+        StateId first = kNoState;
+        for (StateId s : ex->terminal()) {
+            const auto cells = ex->cells(s);
+            if (system.goal && e.holds(*system.goal, cells.data())) continue;
+            if (count++ == 0 || ex->pathTo(s).size() < ex->pathTo(first).size()) first = s;
+        }
+        if (count == 0) unknownOr(r, "every state outside the goal has an enabled rule");
+        else {
+            r.verdict = Verdict::Violated;
+            r.trace = traceTo(*ex, first);
+            r.trace->property = "deadlock";
+            r.summary = std::to_string(count) + " states with no enabled rule outside the goal";
+            r.witness = {{"deadlocks", count}, {"state", first}, {"distance", r.trace->steps.size() - 1}};
+        }
+        r.seconds = since(t0);
+        report.properties.push_back(std::move(r));
+    }
+    if (keep) {
+        keep->explorer = std::move(ex);
+        keep->engine = std::move(engine);
+    }
+    return report;
+}
+
+}  // namespace holon::checker

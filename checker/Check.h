@@ -1,0 +1,49 @@
+#pragma once
+// `holon check`: explore a system's reconfiguration graph on a bounded region and decide its
+// properties with evidence.
+
+#include "checker/Explorer.h"
+#include "checker/Verdict.h"
+#include "rules/Interpreter.h"
+
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace holon::checker {
+
+struct CheckOptions {
+    Limits limits;
+    bool all = false;                          // every legal configuration instead of the reachable ones
+    std::vector<rules::Configuration> initial;  // used when !all
+    std::vector<std::uint32_t> inputs;          // per cell; with --all, the problem's inputs
+    std::vector<std::string> properties;        // empty: all of them
+    std::function<void(const ExploreStats&)> onProgress;
+};
+
+struct CheckReport {
+    std::string system, region;
+    ExploreStats stats;
+    int components = -1;  // -1: not computed
+    std::size_t bytesPerState = 0;
+    std::vector<PropertyResult> properties;
+    bool violated() const;
+    nlohmann::json toJson() const;
+};
+
+/// The names `--property` accepts for a system: its declared properties and "deadlock".
+std::vector<std::string> checkableProperties(const rules::System& system);
+
+/// The engine and the explored graph, kept after a check for drawing and export.
+struct Exploration {
+    std::unique_ptr<rules::Engine> engine;
+    std::unique_ptr<Explorer> explorer;
+};
+
+/// Runs the exploration and every selected property. Throws InputError for bad input (an unknown
+/// property, an illegal initial configuration).
+CheckReport check(const rules::Model& model, const rules::Region& region, const CheckOptions& options, Exploration* keep = nullptr);
+
+}  // namespace holon::checker

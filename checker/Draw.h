@@ -1,0 +1,20 @@
+#pragma once
+// Pictures of configurations and traces for a person: ASCII for the terminal, SVG for a file.
+
+#include "checker/Trace.h"
+
+#include <string>
+
+namespace holon::checker {
+
+/// One character per cell: the state's one-character name, an arrow for a square-lattice pointer
+/// (a P shows where its parent is), else the first letter of its name; '.' for empty.
+char cellChar(const rules::Engine& engine, int cell, CellValue v);
+std::string drawAscii(const rules::Engine& engine, const std::vector<CellValue>& cells);
+/// Every state of the trace with the rule that led to it and the cells that changed.
+std::string drawTraceAscii(const Trace& trace, const rules::Engine& engine);
+/// Frames left to right; changed cells outlined in red, the rule's other cells (context, blocking)
+/// dashed, marked cells crossed; 3D regions drawn as z slices.
+std::string drawTraceSvg(const Trace& trace, const rules::Engine& engine, const std::string& title);
+
+}  // namespace holon::checker

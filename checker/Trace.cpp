@@ -1,0 +1,108 @@
+// Counterexample traces in the Informal Trace Format of Apalache (ITF: a JSON object with "vars",
+// "states" and an optional "loop"), so other tools can read them. Every trace holon produces can be
+// replayed through the reference interpreter, which is independent of the engine and explorer that
+// found it: the certificate is checked by something other than its producer (CaDiCaL's discipline).
+
+#include "checker/Trace.h"
+
+#include <algorithm>
+
+namespace holon::checker {
+
+Trace traceTo(const Explorer& ex, StateId id) {
+    Trace t;
+    for (auto [s, via] : ex.pathTo(id)) t.steps.push_back({ex.cells(s), ex.isInitial(s) ? -1 : via});
+    return t;
+}
+
+Trace traceAlong(const Explorer& ex, const std::vector<StateId>& states) {
+    Trace t;
+    const auto& row = ex.rowStart();
+    for (std::size_t k = 0; k < states.size(); ++k) {
+        int via = -1;
+        if (k > 0)
+            for (std::uint64_t e = row[states[k - 1]]; e < row[states[k - 1] + 1]; ++e)
+                if (ex.successors()[e] == states[k]) via = ex.successorVia()[e];
+        t.steps.push_back({ex.cells(states[k]), via});
+    }
+    return t;
+}
+
+namespace {
+
+nlohmann::json position(const rules::Region& region, int cell) {
+    const rules::Vec v = region.cell(cell);
+    if (region.lattice().dimension() == 3) return {v.x, v.y, v.z};
+    return {v.x, v.y};
+}
+
+}  // namespace
+
+nlohmann::json toItf(const Trace& trace, const rules::Engine& engine, const std::string& source) {
+    const rules::Region& region = engine.region();
+    const rules::Model& model = engine.model();
+    const rules::System& system = model.system();
+    nlohmann::json states = nlohmann::json::array();
+    for (std::size_t k = 0; k < trace.steps.size(); ++k) {
+        const auto& step = trace.steps[k];
+        nlohmann::json meta{{"index", k}};
+        if (step.placed >= 0) {
+            const auto& p = engine.instances()[step.placed];
+            meta["rule"] = model.rules()[p.rule].name;
+            nlohmann::json cells = nlohmann::json::array();
+            for (int c = 0; c < p.size; ++c) cells.push_back(position(region, p.cells[c]));
+            meta["cells"] = cells;
+        }
+        nlohmann::json map = nlohmann::json::array();
+        for (int i = 0; i < region.size(); ++i) {
+            if (!step.cells[i]) continue;
+            nlohmann::json record = nlohmann::json::object();
+            const auto& fields = model.alphabet().fields(step.cells[i]);
+            for (std::size_t f = 0; f < fields.size(); ++f) {
+                if (fields[f] == rules::kAbsent) continue;
+                const rules::Field& field = system.fields[f];
+                if (field.kind == rules::FieldKind::Enum) record[field.name] = field.values[fields[f]];
+                else if (field.kind == rules::FieldKind::Dir) record[field.name] = region.lattice().directionName(fields[f]);
+                else record[field.name] = fields[f];
+            }
+            map.push_back({{{"#tup", position(region, i)}}, record});
+        }
+        nlohmann::json state{{"#meta", meta}, {"cells", {{"#map", map}}}};
+        states.push_back(state);
+    }
+    nlohmann::json itf{{"#meta",
+                        {{"format", "ITF"},
+                         {"format-description", "https://apalache-mc.org/docs/adr/015adr-trace.html"},
+                         {"source", source},
+                         {"system", system.name},
+                         {"region", region.spec()},
+                         {"property", trace.property},
+                         {"description", trace.description}}},
+                       {"vars", {"cells"}},
+                       {"states", states}};
+    if (trace.loop) itf["loop"] = *trace.loop;
+    return itf;
+}
+
+bool replay(const Trace& trace, const rules::Engine& engine, const rules::Interpreter& in, std::string* why) {
+    auto fail = [&](const std::string& message) {
+        if (why) *why = message;
+        return false;
+    };
+    if (trace.steps.empty()) return fail("empty trace");
+    rules::Configuration c = in.empty();
+    c.inputs = engine.inputs();
+    c.cells = trace.steps[0].cells;
+    if (!in.legal(c)) return fail("the first state violates a constraint");
+    for (std::size_t k = 1; k < trace.steps.size(); ++k) {
+        const int placed = trace.steps[k].placed;
+        if (placed < 0) return fail("step " + std::to_string(k) + " names no rule instance");
+        auto next = in.successor(c, engine.instance(placed));
+        if (!next) return fail("step " + std::to_string(k) + ": the instance is not enabled");
+        if (next->cells != trace.steps[k].cells) return fail("step " + std::to_string(k) + ": the successor differs");
+        c = *next;
+    }
+    return true;
+}
+
+}  // namespace holon::checker

@@ -1,0 +1,38 @@
+#pragma once
+// Counterexample traces: a sequence of configurations, each reached by one rule instance, written
+// in Apalache's Informal Trace Format and replayable through the reference interpreter.
+
+#include "checker/Explorer.h"
+#include "rules/Interpreter.h"
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace holon::checker {
+
+struct Trace {
+    struct Step {
+        std::vector<CellValue> cells;
+        int placed = -1;  // the engine instance that led here; -1 for the first state
+    };
+    std::vector<Step> steps;
+    std::optional<int> loop;  // index the last state loops back to (lassos: livelocks)
+    std::string property, description;
+    /// Cells to point out in the last state (a blocking cell, the cut-off part).
+    std::vector<int> marked;
+};
+
+/// The BFS-tree path to a state, as a trace.
+Trace traceTo(const Explorer& explorer, StateId id);
+/// A trace along a list of states, choosing for each step an instance that leads to the next.
+Trace traceAlong(const Explorer& explorer, const std::vector<StateId>& states);
+
+/// ITF: {"#meta", "vars": ["cells"], "states": [{"#meta": {"index", "rule", "anchor", "cells"}, "cells": {"#map": ...}}], "loop"}.
+nlohmann::json toItf(const Trace& trace, const rules::Engine& engine, const std::string& source);
+/// Replays every step through the reference interpreter: true when each step is an enabled instance
+/// whose successor is exactly the next state (and the first state is legal).
+bool replay(const Trace& trace, const rules::Engine& engine, const rules::Interpreter& in, std::string* why = nullptr);
+
+}  // namespace holon::checker

@@ -1,0 +1,145 @@
+// `holon check FILE --region SPEC [--all | --from CONFIG]`: explore the reconfiguration graph on a
+// bounded region and report each property with a verdict and evidence; a violation comes with a
+// shortest counterexample trace, replayed through the reference interpreter before it is shown.
+
+#include "checker/Check.h"
+#include "checker/Draw.h"
+#include "checker/Graph.h"
+#include "cli/Commands.h"
+#include "cli/Inputs.h"
+#include "rules/ConfigIo.h"
+#include "rules/Error.h"
+#include "rules/Library.h"
+
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <unistd.h>
+
+namespace holon::cli {
+
+namespace {
+
+struct CheckArgs {
+    std::string file, region, traceOut, svg, dot;
+    std::vector<std::string> from, inputs, properties, noWarnings;
+    bool all = false, json = false;
+    std::uint64_t maxStates = 50'000'000;
+    double timeout = 0;
+    std::uint64_t memoryMiB = 16384;
+    int threads = 2;
+};
+
+void writeFile(const std::string& path, const std::string& text) {
+    std::ofstream out(path);
+    if (!out) throw InputError("cannot write '" + path + "'");
+    out << text;
+}
+
+int run(const CheckArgs& a) {
+    auto system = loadRules(a.file, a.noWarnings);
+    if (!system) return 2;
+    const rules::Region region = rules::Region::parse(a.region, 1u << 22);
+    rules::Model model(*system, region.lattice());
+    rules::Interpreter in(model, region);
+
+    checker::CheckOptions options;
+    options.limits.maxStates = a.maxStates;
+    options.limits.timeoutSeconds = a.timeout;
+    options.limits.memoryBytes = a.memoryMiB << 20;
+    options.limits.threads = std::max(1, a.threads);
+    options.all = a.all;
+    options.properties = a.properties;
+    if (a.all && !a.from.empty()) throw InputError("give either --all or --from, not both");
+    if (!a.all && a.from.empty()) throw InputError("say where to start: --from CONFIG (JSON or ASCII art), or --all for every legal configuration");
+    options.inputs = readInputs(in, a.inputs);
+    for (const std::string& path : a.from) {
+        rules::Configuration c = rules::readConfigFile(in, path);
+        for (int i = 0; i < region.size(); ++i) c.inputs[i] |= options.inputs[i];
+        if (!in.legal(c)) throw InputError(path + ": this configuration violates a constraint of '" + system->name + "'");
+        options.initial.push_back(c);
+    }
+    const bool terminal = isatty(2) && !a.json;
+    if (terminal)
+        options.onProgress = [](const checker::ExploreStats& s) {
+            std::cerr << "\r  exploring: " << s.states << " states, " << s.edges << " edges, frontier " << s.frontier << ", depth "
+                      << s.depth << ", " << std::fixed << std::setprecision(1) << s.seconds << " s   " << std::flush;
+        };
+    checker::Exploration kept;
+    checker::CheckReport report = checker::check(model, region, options, &kept);
+    if (terminal) std::cerr << "\r" << std::string(90, ' ') << "\r";
+    const rules::Engine& engine = *kept.engine;
+
+    // Every trace is replayed through the reference interpreter before anyone sees it.
+    for (checker::PropertyResult& p : report.properties) {
+        if (!p.trace) continue;
+        std::string why;
+        const bool ok = checker::replay(*p.trace, engine, in, &why);
+        if (p.witness.is_object() || p.witness.is_null()) p.witness["replayed"] = ok;
+        if (!ok) std::cerr << "holon check: internal error: the trace for '" << p.name << "' does not replay: " << why << '\n';
+    }
+    const checker::PropertyResult* shown = nullptr;
+    for (const auto& p : report.properties)
+        if (p.trace && p.verdict == checker::Verdict::Violated) {
+            shown = &p;
+            break;
+        }
+    if (!a.traceOut.empty() && shown) writeFile(a.traceOut, checker::toItf(*shown->trace, engine, a.file).dump(2) + "\n");
+    if (!a.svg.empty() && shown)
+        writeFile(a.svg, checker::drawTraceSvg(*shown->trace, engine, system->name + " on " + region.spec() + ": " + shown->name + " " +
+                                                                          checker::verdictName(shown->verdict) + " -- " + shown->trace->description));
+    if (!a.dot.empty()) {
+        if (report.stats.states > 5000) std::cerr << "holon check: --dot skipped: " << report.stats.states << " states is too many to draw (at most 5000)\n";
+        else {
+            std::ofstream out(a.dot);
+            if (!out) throw InputError("cannot write '" + a.dot + "'");
+            checker::writeDot(*kept.explorer, in, out);
+        }
+    }
+
+    if (a.json) {
+        std::cout << report.toJson().dump(2) << '\n';
+        return report.violated() ? 1 : 0;
+    }
+    const auto& s = report.stats;
+    std::cout << system->name << " on " << region.spec() << (a.all ? ", every legal configuration" : ", reachable from " + std::to_string(a.from.size()) + " configuration(s)") << '\n';
+    std::cout << "  " << s.states << " states, " << s.edges << " edges, "
+              << (report.components < 0 ? std::string("? components") : std::to_string(report.components) + (report.components == 1 ? " component" : " components"))
+              << ", depth " << s.depth << ", " << std::fixed << std::setprecision(2) << s.seconds << " s, " << report.bytesPerState << " bytes/state";
+    if (s.stopped != checker::StopReason::Finished) std::cout << "\n  stopped by " << checker::stopReasonName(s.stopped) << ": explored " << s.states << ", frontier " << s.frontier;
+    std::cout << "\n\n  " << std::left << std::setw(20) << "property" << std::setw(10) << "verdict" << std::setw(10) << "time" << "evidence\n";
+    for (const auto& p : report.properties)
+        std::cout << "  " << std::setw(20) << p.name << std::setw(10) << checker::verdictName(p.verdict) << std::setw(10)
+                  << (std::to_string(static_cast<int>(p.seconds * 1000)) + " ms") << p.summary << '\n';
+    if (shown) {
+        std::cout << "\ncounterexample for '" << shown->name << "'" << (shown->trace->description.empty() ? "" : ": " + shown->trace->description)
+                  << " (replayed through the reference interpreter)\n"
+                  << checker::drawTraceAscii(*shown->trace, engine);
+    }
+    return report.violated() ? 1 : 0;
+}
+
+}  // namespace
+
+Run addCheckCommand(CLI::App& app) {
+    auto a = std::make_shared<CheckArgs>();
+    CLI::App* sub = app.add_subcommand("check", "Explore the reconfiguration graph on a bounded region and check properties");
+    sub->add_option("file", a->file, "rule file (.holon)")->required();
+    sub->add_option("--region", a->region, "bounded region: square:WxH, cubic:WxHxD or hex:rR")->required();
+    sub->add_flag("--all", a->all, "explore every legal configuration of the region");
+    sub->add_option("--from", a->from, "initial configuration (JSON or ASCII art); repeatable");
+    sub->add_option("--input", a->inputs, "set an input from an ASCII mask: NAME=FILE (any character but '.' marks a cell)");
+    sub->add_option("--property", a->properties, "check only this property (repeatable); 'deadlock' is built in");
+    sub->add_option("--max-states", a->maxStates, "stop after this many states (default 50000000)");
+    sub->add_option("--timeout", a->timeout, "stop after this many seconds");
+    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB (default 16384)");
+    sub->add_option("--threads", a->threads, "worker threads (default 2)");
+    sub->add_flag("--json", a->json, "print the report as JSON");
+    sub->add_option("--trace-out", a->traceOut, "write the counterexample as an ITF JSON trace");
+    sub->add_option("--svg", a->svg, "draw the counterexample as SVG");
+    sub->add_option("--dot", a->dot, "write the explored graph as Graphviz (small graphs)");
+    sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
+    return [a] { return run(*a); };
+}
+
+}  // namespace holon::cli

@@ -1,0 +1,49 @@
+// Shared CLI plumbing: rule loading with -W handling, and --input NAME=FILE masks.
+
+#include "cli/Inputs.h"
+
+#include "rules/ConfigIo.h"
+#include "rules/Diagnostics.h"
+#include "rules/Error.h"
+#include "rules/Library.h"
+#include "rules/Parser.h"
+
+#include <algorithm>
+#include <iostream>
+
+namespace holon::cli {
+
+std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings) {
+    rules::LoadOptions load;
+    for (const std::string& w : noWarnings) {
+        const std::string name = w.rfind("no-", 0) == 0 ? w.substr(3) : w;
+        const auto& known = rules::Diagnostics::warningNames();
+        if (std::find(known.begin(), known.end(), name) == known.end())
+            throw InputError("unknown warning '" + w + "'; try -W no-unused-value");
+        load.silencedWarnings.push_back(name);
+    }
+    return rules::loadSystem(file, std::cerr, load);
+}
+
+std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::vector<std::string>& specs) {
+    const rules::Region& region = in.region();
+    std::vector<std::uint32_t> bits(region.size(), 0);
+    for (const std::string& spec : specs) {
+        const auto eq = spec.find('=');
+        if (eq == std::string::npos) throw InputError("--input takes NAME=FILE, as in --input target=target.txt");
+        const std::string name = spec.substr(0, eq), path = spec.substr(eq + 1);
+        const int k = in.model().system().inputIndex(name);
+        if (k < 0) throw InputError("--input " + spec + ": system '" + in.model().system().name + "' has no input '" + name + "'");
+        std::vector<bool> mask;
+        try {
+            mask = rules::maskFromAscii(region, rules::readTextFile(path));
+        } catch (const InputError& e) {
+            throw InputError(path + ": " + e.what());
+        }
+        for (int i = 0; i < region.size(); ++i)
+            if (mask[i]) bits[i] |= 1u << k;
+    }
+    return bits;
+}
+
+}  // namespace holon::cli
