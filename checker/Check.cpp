@@ -176,6 +176,8 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
             r.trace->marked = cutOff(region, ex->cells(best));
             r.witness = {{"state", best}, {"distance", r.trace->steps.size() - 1}};
             r.summary = "violated after " + std::to_string(r.trace->steps.size() - 1) + " steps";
+            r.trace->description = "invariant '" + p.name + "' fails after " + std::to_string(r.trace->steps.size() - 1) + " steps" +
+                                   (r.trace->marked.empty() ? "" : "; crossed cells are cut off");
             break;
         }
         case rules::Property::Kind::Conserves: {
@@ -193,6 +195,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
                         r.trace = traceWithStep(*ex, s, k);
                         const auto& rule = e.model().rules()[e.instances()[ex->successorVia()[k]].rule];
                         r.summary = "rule '" + rule.name + "' changes the " + (byMass ? "mass" : "count");
+                        r.trace->description = r.summary;
                         r.witness = {{"rule", rule.name}, {"before", rules::Rational(amount[s], byMass ? e.massDenominator() : 1).str()},
                                      {"after", rules::Rational(amount[succ[k]], byMass ? e.massDenominator() : 1).str()}};
                     }
@@ -233,6 +236,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
             if (cycleAt == kNoState) {
                 r.trace = traceWithStep(*ex, firstFrom, firstBad);
                 r.summary = std::to_string(badEdges) + " steps do not decrease it (no cycle: still terminating here)";
+                r.trace->description = "the last step does not decrease '" + p.name + "'";
                 r.witness = {{"non_decreasing_steps", badEdges}, {"livelock", false}};
             } else {
                 // Lasso: reach the cycle, go round it once (a successor in the same component, then back).
@@ -249,6 +253,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
                 t.steps.insert(t.steps.end(), cycle.steps.begin() + 1, cycle.steps.end() - 1);
                 r.trace = t;
                 r.summary = "livelock: a cycle of " + std::to_string(loop.size() - 1) + " steps on which it never decreases";
+                r.trace->description = r.summary;
                 r.witness = {{"non_decreasing_steps", badEdges}, {"livelock", true}, {"cycle", loop.size() - 1}};
             }
             break;
@@ -262,6 +267,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
                 r.verdict = Verdict::Violated;
                 r.trace = traceTo(*ex, s);
                 r.summary = "no rule is enabled in a state outside the goal, after " + std::to_string(r.trace->steps.size() - 1) + " steps";
+                r.trace->description = "stuck outside the goal";
                 r.witness = {{"state", s}, {"distance", r.trace->steps.size() - 1}};
                 break;
             }
@@ -299,6 +305,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
             r.trace = traceTo(*ex, first);
             r.trace->property = "deadlock";
             r.summary = std::to_string(count) + " states with no enabled rule outside the goal";
+            r.trace->description = "a deadlock: no rule is enabled and the goal is not reached";
             r.witness = {{"deadlocks", count}, {"state", first}, {"distance", r.trace->steps.size() - 1}};
         }
         r.seconds = since(t0);

@@ -118,7 +118,7 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
         auto [x, y] = rawCentre(v);
         return std::pair<double, double>{x - minX + s / 2, y - minY + s / 2};
     };
-    double frameW = maxX - minX + s + 24, frameH = maxY - minY + s + 44;
+    double frameW = std::max(170.0, maxX - minX + s + 24), frameH = maxY - minY + s + 44;
     const int perRow = std::max(1, std::min<int>(5, static_cast<int>(t.steps.size())));
     const int rows = (static_cast<int>(t.steps.size()) + perRow - 1) / perRow;
     // Colour by the state's first enum value, so U/P/F or D/C/B1 keep one colour each.

@@ -48,7 +48,7 @@ PropertyResult finish(const Explorer& ex, const GraphView& graph, PropertyResult
                       const std::string& adjacency) {
     if (violations == 0) {
         r.verdict = ex.stats().stopped == StopReason::Finished ? Verdict::Holds : Verdict::Unknown;
-        r.summary = r.verdict == Verdict::Holds ? "every " + adjacency + "-adjacent pair is one step apart or unreachable"
+        r.summary = r.verdict == Verdict::Holds ? "configurations one " + adjacency + " apart are one rule step apart, or unreachable"
                                                 : "no violation among the states explored before the limit";
         return r;
     }
@@ -89,7 +89,7 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
     const rules::Alphabet& alphabet = e.model().alphabet();
     const StateLayout& layout = ex.store().layout();
     const bool byMove = property.adjacency == rules::Property::Adjacency::Move;
-    const bool projected = !byMove && alphabet.size() > 2;
+    const bool projected = !byMove && (alphabet.size() > 2 || !property.exprs.empty());
     const bool symmetricGraph = symmetric(ex);
     std::uint64_t violations = 0;
     Witnesses best;
@@ -143,14 +143,23 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
         r.seconds = seconds();
         return r;
     }
+    // Occupancy: the cells holding a complete metamodule (`of P`, default every occupied cell). A
+    // configuration is clean when it has no partial metamodule; pixel steps go between clean ones.
+    const rules::CellPredicate* complete = property.exprs.empty() ? nullptr : &property.exprs[0].pred;
     const auto ids = ex.ids();
     const std::size_t n = ex.store().capacityUsed();
     std::vector<std::uint64_t> occupancy(n, 0);
     std::vector<std::int64_t> mass(n, 0);
+    std::vector<char> clean(n, 0);
     for (StateId c : ids) {
         ex.unpack(c, cells.data());
-        for (int i = 0; i < region.size(); ++i)
-            if (cells[i]) occupancy[c] |= std::uint64_t{1} << i;
+        std::uint64_t occupied = 0;
+        for (int i = 0; i < region.size(); ++i) {
+            if (!cells[i]) continue;
+            occupied |= std::uint64_t{1} << i;
+            if (!complete || e.cellMatches(*complete, i, cells[i])) occupancy[c] |= std::uint64_t{1} << i;
+        }
+        clean[c] = occupied == occupancy[c];
         mass[c] = e.massUnits(cells.data());
     }
     // Transfer classes: union-find over the edges that keep the occupancy.
@@ -165,16 +174,22 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
     for (StateId c : ids)
         for (std::uint64_t k = row[c]; k < row[c + 1]; ++k)
             if (occupancy[succ[k]] == occupancy[c]) root[find(c)] = find(succ[k]);
-    // For each class, the occupancies one occupancy-changing edge away.
+    std::vector<char> classHasClean(n, 0);
+    for (StateId c : ids)
+        if (clean[c]) classHasClean[find(c)] = 1;
+    // For each class, the occupancies one occupancy-changing edge away whose class reaches a clean
+    // configuration: a pixel step realised by transfers, one change, and transfers again.
     std::map<StateId, std::set<std::uint64_t>> reach;
     for (StateId c : ids)
         for (std::uint64_t k = row[c]; k < row[c + 1]; ++k)
-            if (occupancy[succ[k]] != occupancy[c]) reach[find(c)].insert(occupancy[succ[k]]);
-    // Occupancy patterns present per (occupancy, mass), with a representative per component.
+            if (occupancy[succ[k]] != occupancy[c] && classHasClean[find(succ[k])]) reach[find(c)].insert(occupancy[succ[k]]);
+    // Clean configurations per (occupancy, mass), with a representative per component.
     std::map<std::pair<std::uint64_t, std::int64_t>, std::map<int, StateId>> present;
-    for (StateId c : ids) present[{occupancy[c], mass[c]}].emplace(comps.of[c], c);
+    for (StateId c : ids)
+        if (clean[c]) present[{occupancy[c], mass[c]}].emplace(comps.of[c], c);
     std::set<StateId> classesDone;
     for (StateId c : ids) {
+        if (!clean[c]) continue;
         const StateId cls = find(c);
         if (!classesDone.insert(cls).second) continue;
         const auto& reachable = reach[cls];
@@ -189,7 +204,7 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
             best.add(c, same->second, std::popcount(occupancy[c]));
         }
     }
-    PropertyResult out = finish(ex, graph, r, violations, best, "occupancy toggle (modulo resource moves)");
+    PropertyResult out = finish(ex, graph, r, violations, best, "occupancy toggle (modulo transfers)");
     out.seconds = seconds();
     return out;
 }

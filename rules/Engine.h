@@ -50,6 +50,8 @@ public:
     /// Evaluate a non-local expression of this system (a constraint, the goal, a property) on a
     /// configuration. Thread-safe: every predicate is compiled in the constructor.
     bool holds(const Expr& e, const CellValue* cells) const;
+    /// Whether one cell in state v satisfies a predicate of this system's expressions.
+    bool cellMatches(const CellPredicate& pred, int cell, CellValue v) const { return test(predicateMask(pred), combo_[cell], v); }
     Rational number(const Expr& e, const CellValue* cells) const;
 
 private:

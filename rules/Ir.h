@@ -115,7 +115,9 @@ struct Constraint {
 struct Property {
     enum class Kind { Invariant, Progress, Ranking, Holonomic, Conserves } kind = Kind::Invariant;
     std::string name;
-    std::vector<Expr> exprs;  // Invariant: {expr}; Progress: {assumption} or {}; Ranking: the components
+    std::vector<Expr> exprs;  // Invariant: {expr}; Progress: {assumption} or {}; Ranking: the components;
+                              // Holonomic: {count(P)} where P says which cells hold a complete
+                              // metamodule (`by occupancy of D | C`), or {}
     enum class Adjacency { Occupancy, Move } adjacency = Adjacency::Occupancy;  // Holonomic
     enum class Quantity { Mass, Count } quantity = Quantity::Mass;              // Conserves
     SourceLoc loc;

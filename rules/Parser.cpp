@@ -22,7 +22,7 @@ namespace {
 const std::set<std::string> kReserved{"system", "lattice", "field", "states", "input", "mass", "rule", "constraint",
                                       "goal", "invariant", "ranking", "progress", "holonomic", "conserves", "if",
                                       "and", "or", "not", "implies", "assuming", "by", "nbr", "none", "dir", "true",
-                                      "false", "count", "all", "some", "no", "connected", "reaches", "any"};
+                                      "false", "count", "all", "some", "no", "connected", "reaches", "any", "of"};
 
 int editDistance(const std::string& a, const std::string& b) {
     std::vector<int> row(b.size() + 1);
@@ -520,6 +520,11 @@ private:
                 const Token& how = identifier("'occupancy' or 'move'");
                 if (how.text == "move") p.adjacency = Property::Adjacency::Move;
                 else if (how.text != "occupancy") fail(how.loc, "holonomy is 'by occupancy' or 'by move'");
+                else if (peek().is("of")) {
+                    Expr count = node(Expr::Kind::Count, next().loc);
+                    count.pred = predicate();
+                    p.exprs.push_back(std::move(count));
+                }
             }
         } else {
             p.kind = Property::Kind::Conserves;

@@ -181,6 +181,7 @@ std::string printSystem(const System& s) {
             break;
         case Property::Kind::Holonomic:
             out << "holonomic " << (p.name == "holonomy" ? "" : p.name + " ") << "by " << (p.adjacency == Property::Adjacency::Move ? "move" : "occupancy");
+            if (!p.exprs.empty()) out << " of " << printPredicate(s, p.exprs[0].pred);
             break;
         case Property::Kind::Conserves:
             out << "conserves " << (p.quantity == Property::Quantity::Mass ? "mass" : "count");

@@ -1,0 +1,53 @@
+#pragma once
+// Running checks from tests: a system, a region, and the kept exploration.
+
+#include "checker/Check.h"
+#include "checker/Trace.h"
+#include "rules/Error.h"
+#include "TestSupport.h"
+
+namespace holon::test {
+
+struct Checked {
+    World world;
+    checker::CheckReport report;
+    checker::Exploration kept;
+    const checker::PropertyResult& property(const std::string& name) const {
+        for (const auto& p : report.properties)
+            if (p.name == name) return p;
+        FAIL("no property " << name);
+        return report.properties.front();
+    }
+    /// Every trace in the report replays through the reference interpreter.
+    void replayAll() const {
+        for (const auto& p : report.properties) {
+            if (!p.trace) continue;
+            std::string why;
+            INFO(p.name << ": " << why);
+            CHECK(checker::replay(*p.trace, *kept.engine, *world.in, &why));
+        }
+    }
+};
+
+inline Checked checkAll(rules::System system, const std::string& spec, checker::Limits limits = {}) {
+    Checked c{World(std::move(system), spec), {}, {}};
+    checker::CheckOptions o;
+    o.all = true;
+    o.limits = limits;
+    c.report = checker::check(*c.world.model, c.world.region, o, &c.kept);
+    return c;
+}
+
+inline Checked checkFrom(rules::System system, const std::string& spec, const std::string& start, const std::string& target,
+                         checker::Limits limits = {}) {
+    Checked c{World(std::move(system), spec), {}, {}};
+    checker::CheckOptions o;
+    o.limits = limits;
+    auto config = c.world.ascii(start);
+    if (!target.empty()) c.world.mark(config, "target", target);
+    o.initial.push_back(config);
+    c.report = checker::check(*c.world.model, c.world.region, o, &c.kept);
+    return c;
+}
+
+}  // namespace holon::test

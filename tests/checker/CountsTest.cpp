@@ -1,0 +1,69 @@
+// State-count oracles: the explorer's counts of legal configurations, edges and components for
+// pixel with connectivity are compared with an independent brute force (every subset, flood fill,
+// union-find) on square regions up to 4x4 and small hex and cubic regions.
+
+#include "BruteForce.h"
+#include <set>
+#include "CheckSupport.h"
+#include "checker/Graph.h"
+
+using namespace holon;
+
+TEST_CASE("explorer counts agree with brute force for pixel with connectivity") {
+    for (const char* spec : {"square:2x2", "square:3x2", "square:3x3", "square:4x3", "square:4x4", "hex:r1", "hex:r2", "cubic:2x2x2", "cubic:3x2x2"}) {
+        CAPTURE(spec);
+        auto c = test::checkAll(rules::librarySystem("pixel"), spec);
+        const auto oracle = test::pixelBruteForce(c.world.region);
+        CHECK(c.report.stats.states == oracle.legal);
+        CHECK(c.report.stats.edges == oracle.edges);
+        CHECK(c.report.components == static_cast<int>(oracle.components));
+    }
+}
+
+TEST_CASE("the explored graph is the same on one thread and on two") {
+    checker::Limits one, two;
+    one.threads = 1, two.threads = 2;
+    for (const char* stem : {"intermediate", "general2"}) {
+        auto a = test::checkAll(rules::librarySystem(stem), "square:3x2", one);
+        auto b = test::checkAll(rules::librarySystem(stem), "square:3x2", two);
+        CHECK(a.report.stats.states == b.report.stats.states);
+        CHECK(a.report.stats.edges == b.report.stats.edges);
+        CHECK(a.report.components == b.report.components);
+    }
+}
+
+TEST_CASE("reachable exploration: the explorer's successors are the interpreter's") {
+    auto c = test::checkFrom(rules::librarySystem("planner_intermediate"), "square:4x2", "UFU.\nUUU.", ".###\n.###");
+    const checker::Explorer& ex = *c.kept.explorer;
+    std::size_t checked = 0;
+    for (checker::StateId s : ex.ids()) {
+        rules::Configuration config = c.world.in->empty();
+        config.inputs = ex.engine().inputs();
+        config.cells = ex.cells(s);
+        std::set<std::vector<rules::CellValue>> mine, reference;
+        for (std::uint64_t e = ex.rowStart()[s]; e < ex.rowStart()[s + 1]; ++e) mine.insert(ex.cells(ex.successors()[e]));
+        for (const auto& i : c.world.in->enabled(config)) reference.insert(c.world.in->successor(config, i)->cells);
+        CHECK(mine == reference);
+        if (++checked > 2000) break;
+    }
+    CHECK(checked > 100);
+}
+
+TEST_CASE("limits stop the search cleanly with a partial report") {
+    checker::Limits limits;
+    limits.maxStates = 1000;
+    auto c = test::checkFrom(rules::librarySystem("planner_intermediate"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###", limits);
+    CHECK(c.report.stats.stopped == checker::StopReason::MaxStates);
+    CHECK(c.report.stats.frontier > 0);
+    CHECK(c.report.stats.states >= 1000);
+    CHECK(c.report.components == -1);
+    for (const auto& p : c.report.properties) CHECK(p.verdict == checker::Verdict::Unknown);
+    limits = {};
+    limits.timeoutSeconds = 1e-9;
+    auto t = test::checkAll(rules::librarySystem("intermediate"), "square:4x3", limits);
+    CHECK(t.report.stats.stopped == checker::StopReason::Timeout);
+}
+
+TEST_CASE("a region too large for --all is refused with a message") {
+    CHECK_THROWS_WITH_AS(test::checkAll(rules::librarySystem("general2"), "square:8x8"), doctest::Contains("too many to enumerate"), holon::InputError);
+}
