@@ -127,9 +127,7 @@ void Explorer::expand(StateId id, rules::Engine::Evaluator& ev, std::vector<Cell
     thread_local std::vector<std::uint64_t> batch, hashes;
     thread_local std::vector<std::int32_t> batchVia;
     batch.clear(), hashes.clear(), batchVia.clear();
-    const int count = static_cast<int>(engine_->instances().size());
-    for (int p = 0; p < count; ++p) {
-        if (!engine_->matches(ev.cells(), p)) continue;
+    engine_->forEachMatch(ev.cells(), [&](int p) {
         ev.apply(p, saved);
         if (ev.legal()) {
             const std::size_t at = batch.size();
@@ -139,7 +137,7 @@ void Explorer::expand(StateId id, rules::Engine::Evaluator& ev, std::vector<Cell
             batchVia.push_back(p);
         }
         ev.undo(p, saved);
-    }
+    });
     for (std::size_t k = 0; k < batchVia.size(); ++k) hashes.push_back(store_.prefetch(&batch[k * words]));
     thread_local std::vector<StateId> seen;
     seen.clear();
@@ -224,6 +222,11 @@ const ExploreStats& Explorer::explore() {
     }
     std::sort(terminal_.begin(), terminal_.end());
     stats_.states = store_.size();
+    store_.shrinkToFit();
+    parent_.resize(store_.capacityUsed());
+    parent_.shrink_to_fit();
+    via_.resize(store_.capacityUsed());
+    via_.shrink_to_fit();
     if (options_.recordEdges) buildRows(edges);
     stats_.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     stats_.bytes = store_.bytes() + parent_.size() * 8 + succ_.size() * 8 + rowStart_.size() * 8;

@@ -77,6 +77,28 @@ bool sameWords(const std::uint64_t* a, const std::uint64_t* b, int words) {
 }
 }  // namespace
 
+void StateStore::shrinkToFit() {
+    const std::size_t used = capacityUsed();
+    capacity_ = std::max<std::size_t>(used, 1);
+    arena_.resize(capacity_ * layout_.words());
+    arena_.shrink_to_fit();
+    holeFlags_.resize(capacity_);
+    holeFlags_.shrink_to_fit();
+    std::size_t want = 1024;
+    while (want < 2 * used) want <<= 1;
+    auto slots = std::make_unique<std::atomic<StateId>[]>(want);
+    for (std::size_t i = 0; i < want; ++i) slots[i].store(0, std::memory_order_relaxed);
+    for (std::size_t i = 0; i < slotCount_; ++i) {
+        const StateId s = slots_[i].load(std::memory_order_relaxed);
+        if (!s) continue;
+        std::size_t pos = layout_.hash(state(s - 1)) & (want - 1);
+        while (slots[pos].load(std::memory_order_relaxed)) pos = (pos + 1) & (want - 1);
+        slots[pos].store(s, std::memory_order_relaxed);
+    }
+    slots_ = std::move(slots);
+    slotCount_ = want;
+}
+
 std::pair<StateId, bool> StateStore::insert(const std::uint64_t* packed, std::uint64_t hash) {
     const int words = layout_.words();
     const std::size_t mask = slotCount_ - 1;

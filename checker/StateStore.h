@@ -46,6 +46,9 @@ public:
     std::uint64_t size() const { return capacityUsed() - holes_.load(std::memory_order_relaxed); }
     /// Makes room for `more` new states without reallocating; call only while no thread inserts.
     void reserve(std::uint64_t more);
+    /// Releases the headroom reserve() kept: the table is rebuilt at most half full and the arena cut
+    /// to the states stored. Call only while no thread inserts.
+    void shrinkToFit();
     /// Thread-safe: the id of the state, and whether this call added it.
     std::pair<StateId, bool> insert(const std::uint64_t* packed) { return insert(packed, layout_.hash(packed)); }
     std::pair<StateId, bool> insert(const std::uint64_t* packed, std::uint64_t hash);

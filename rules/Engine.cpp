@@ -141,6 +141,14 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
             placed_.push_back(p);
         }
     }
+    shapesByFirst_.assign(combos_.size() * alphabet_, {});
+    for (std::size_t c = 0; c < combos_.size(); ++c)
+        for (int v = 0; v < alphabet_; ++v)
+            for (int sh = 0; sh < static_cast<int>(shapes_.size()); ++sh)
+                if (test(shapes_[sh].lhs[0], static_cast<int>(c), static_cast<CellValue>(v))) shapesByFirst_[c * alphabet_ + v].push_back(sh);
+    placedIndex_.assign(static_cast<std::size_t>(region.size()) * shapes_.size(), -1);
+    for (int p = 0; p < static_cast<int>(placed_.size()); ++p)
+        placedIndex_[static_cast<std::size_t>(placed_[p].cells[0]) * shapes_.size() + placed_[p].shape] = p;
     // Masses as integers over the least common denominator.
     for (int v = 0; v < alphabet_; ++v) massDen_ = std::lcm(massDen_, model.alphabet().mass(static_cast<CellValue>(v)).den());
     for (int v = 0; v < alphabet_; ++v) {

@@ -36,6 +36,18 @@ public:
 
     /// Left side and guard hold.
     bool matches(const CellValue* cells, int placed) const;
+    /// Calls f(placed) for every instance whose left side and guard hold, cell by cell: only the
+    /// shapes whose first cell accepts that cell's state are tried.
+    template <class F>
+    void forEachMatch(const CellValue* cells, F&& f) const {
+        const int shapes = static_cast<int>(model_->shapes().size());
+        for (int c = 0; c < region_->size(); ++c) {
+            for (std::int32_t s : shapesByFirst_[static_cast<std::size_t>(combo_[c]) * alphabet_ + cells[c]]) {
+                const std::int32_t p = placedIndex_[static_cast<std::size_t>(c) * shapes + s];
+                if (p >= 0 && matches(cells, p)) f(p);
+            }
+        }
+    }
     /// Rewrites the instance's cells in place; `saved` receives their old values for undo().
     void apply(CellValue* cells, int placed, CellValue* saved) const;
     void undo(CellValue* cells, int placed, const CellValue* saved) const;
@@ -111,6 +123,8 @@ private:
     int emptyCombo_ = 0;
     std::vector<ShapeTables> shapes_;
     std::vector<Placed> placed_;
+    std::vector<std::vector<std::int32_t>> shapesByFirst_;  // [combo * alphabet + state]: shapes whose first cell accepts it
+    std::vector<std::int32_t> placedIndex_;                // [cell * shapes + shape]: the instance anchored there, or -1
     std::vector<std::vector<std::int32_t>> byCell_;
     std::vector<std::int64_t> mass_;
     std::int64_t massDen_ = 1;

@@ -14,8 +14,14 @@ public:
     std::int64_t num() const { return num_; }
     std::int64_t den() const { return den_; }
     bool isInteger() const { return den_ == 1; }
-    friend Rational operator+(Rational a, Rational b) { return {a.num_ * b.den_ + b.num_ * a.den_, a.den_ * b.den_}; }
-    friend Rational operator-(Rational a, Rational b) { return {a.num_ * b.den_ - b.num_ * a.den_, a.den_ * b.den_}; }
+    friend Rational operator+(Rational a, Rational b) {
+        if (a.den_ == 1 && b.den_ == 1) return Rational(a.num_ + b.num_);
+        return {a.num_ * b.den_ + b.num_ * a.den_, a.den_ * b.den_};
+    }
+    friend Rational operator-(Rational a, Rational b) {
+        if (a.den_ == 1 && b.den_ == 1) return Rational(a.num_ - b.num_);
+        return {a.num_ * b.den_ - b.num_ * a.den_, a.den_ * b.den_};
+    }
     friend Rational operator*(Rational a, Rational b) { return {a.num_ * b.num_, a.den_ * b.den_}; }
     Rational operator-() const { return {-num_, den_}; }
     Rational& operator+=(Rational b) { return *this = *this + b; }
@@ -26,6 +32,7 @@ public:
 
 private:
     constexpr void normalise() {
+        if (den_ == 1) return;  // integers, the common case in counts, need no gcd
         if (den_ < 0) num_ = -num_, den_ = -den_;
         const std::int64_t g = std::gcd(num_, den_);
         if (g > 1) num_ /= g, den_ /= g;
