@@ -251,10 +251,18 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
                 t.loop = static_cast<int>(t.steps.size()) - 1;
                 // ITF: the last state steps back to states[loop], so the repeated state is not written twice.
                 t.steps.insert(t.steps.end(), cycle.steps.begin() + 1, cycle.steps.end() - 1);
+                // Can a fair scheduler leave? Only if some step out of the cycle's strong component
+                // (in the whole graph) decreases the ranking.
+                const Components whole = strongComponents(*ex, std::vector<char>(succ.size(), 1));
+                bool escapable = false;
+                for (StateId s : ids)
+                    if (whole.of[s] == whole.of[cycleAt])
+                        for (std::uint64_t k = row[s]; k < row[s + 1] && !escapable; ++k) escapable = !flat[k];
                 r.trace = t;
-                r.summary = "livelock: a cycle of " + std::to_string(loop.size() - 1) + " steps on which it never decreases";
+                r.summary = "livelock: a cycle of " + std::to_string(loop.size() - 1) + " steps on which it never decreases" +
+                            (escapable ? " (a fair scheduler can leave it)" : " (trapped: no step out of it decreases it)");
                 r.trace->description = r.summary;
-                r.witness = {{"non_decreasing_steps", badEdges}, {"livelock", true}, {"cycle", loop.size() - 1}};
+                r.witness = {{"non_decreasing_steps", badEdges}, {"livelock", true}, {"cycle", loop.size() - 1}, {"escapable", escapable}};
             }
             break;
         }

@@ -48,7 +48,10 @@ PropertyResult finish(const Explorer& ex, const GraphView& graph, PropertyResult
                       const std::string& adjacency) {
     if (violations == 0) {
         r.verdict = ex.stats().stopped == StopReason::Finished ? Verdict::Holds : Verdict::Unknown;
-        r.summary = r.verdict == Verdict::Holds ? "configurations one " + adjacency + " apart are one rule step apart, or unreachable"
+        r.summary = r.verdict == Verdict::Holds
+                        ? (adjacency.find("transfers") != std::string::npos
+                               ? "every pixel step is one occupancy change plus transfers, or unreachable"
+                               : "configurations one " + adjacency + " apart are one rule step apart, or unreachable")
                                                 : "no violation among the states explored before the limit";
         return r;
     }

@@ -107,3 +107,18 @@ TEST_CASE("an unknown property is bad input") {
     o.properties = {"liveness"};
     CHECK_THROWS_WITH_AS(checker::check(*w.model, w.region, o), doctest::Contains("has no property 'liveness'"), holon::InputError);
 }
+
+TEST_CASE("general-lock_2: transfers can cycle with a creation half done, and a fair scheduler escapes") {
+    test::Checked c{test::World(broken("general_lock2_ranked"), "square:3x2"), {}, {}};
+    checker::CheckOptions o;
+    auto start = c.world.in->empty();
+    c.world.set(start, 0, 0, "C"), c.world.set(start, 1, 0, "C"), c.world.set(start, 0, 1, "D");
+    o.initial.push_back(start);
+    c.report = checker::check(*c.world.model, c.world.region, o, &c.kept);
+    const auto& r = c.property("partial");
+    REQUIRE(r.verdict == Verdict::Violated);
+    CHECK(r.witness["livelock"] == true);
+    CHECK(r.witness["escapable"] == true);
+    CHECK(c.property("deadlock").verdict == Verdict::Holds);
+    c.replayAll();
+}
