@@ -229,20 +229,6 @@ Rational Engine::guardNumber(const GuardNode& g, const CellValue* cells, const P
     }
 }
 
-namespace {
-bool compare(CmpOp op, const Rational& a, const Rational& b) {
-    switch (op) {
-    case CmpOp::Eq: return a == b;
-    case CmpOp::Ne: return a != b;
-    case CmpOp::Lt: return a < b;
-    case CmpOp::Le: return a <= b;
-    case CmpOp::Gt: return a > b;
-    case CmpOp::Ge: return a >= b;
-    }
-    return false;
-}
-}  // namespace
-
 bool Engine::guard(const GuardNode& g, const CellValue* cells, const Placed& p) const {
     switch (g.kind) {
     case Expr::Kind::Bool: return g.value.num() != 0;
@@ -442,6 +428,8 @@ bool Engine::holds(const Expr& e, const CellValue* cells) const {
     }
     case Expr::Kind::Connected: return connected(predicateMask(e.pred), cells);
     case Expr::Kind::Reaches: {
+        // The same walk as Interpreter::reaches, written again on purpose: the engine is tested
+        // against the interpreter, and a shared helper would hide a bug in both.
         const Mask& from = predicateMask(e.pred);
         const Mask& to = predicateMask(e.target);
         const int n = region_->size();

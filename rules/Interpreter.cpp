@@ -137,24 +137,13 @@ int Interpreter::countCells(const Expr& e, const Configuration& c, const Placeme
 }
 
 bool Interpreter::holdsAt(const Expr& e, const Configuration& c, const Placement* at) const {
-    auto cmp = [](CmpOp op, const Rational& a, const Rational& b) {
-        switch (op) {
-        case CmpOp::Eq: return a == b;
-        case CmpOp::Ne: return a != b;
-        case CmpOp::Lt: return a < b;
-        case CmpOp::Le: return a <= b;
-        case CmpOp::Gt: return a > b;
-        case CmpOp::Ge: return a >= b;
-        }
-        return false;
-    };
     switch (e.kind) {
     case Expr::Kind::Bool: return e.value.num() != 0;
     case Expr::Kind::And: return holdsAt(e.kids[0], c, at) && holdsAt(e.kids[1], c, at);
     case Expr::Kind::Or: return holdsAt(e.kids[0], c, at) || holdsAt(e.kids[1], c, at);
     case Expr::Kind::Implies: return !holdsAt(e.kids[0], c, at) || holdsAt(e.kids[1], c, at);
     case Expr::Kind::Not: return !holdsAt(e.kids[0], c, at);
-    case Expr::Kind::Compare: return cmp(e.op, numberAt(e.kids[0], c, at), numberAt(e.kids[1], c, at));
+    case Expr::Kind::Compare: return compare(e.op, numberAt(e.kids[0], c, at), numberAt(e.kids[1], c, at));
     case Expr::Kind::Some: return countCells(e, c, at) > 0;
     case Expr::Kind::No: return countCells(e, c, at) == 0;
     case Expr::Kind::All: {

@@ -73,6 +73,18 @@ using CellPredicate = std::vector<CellTerm>;
 
 enum class CmpOp { Eq, Ne, Lt, Le, Gt, Ge };
 
+inline bool compare(CmpOp op, const Rational& a, const Rational& b) {
+    switch (op) {
+    case CmpOp::Eq: return a == b;
+    case CmpOp::Ne: return a != b;
+    case CmpOp::Lt: return a < b;
+    case CmpOp::Le: return a <= b;
+    case CmpOp::Gt: return a > b;
+    case CmpOp::Ge: return a >= b;
+    }
+    return false;
+}
+
 /// Configuration-level and guard expressions.
 struct Expr {
     enum class Kind {
