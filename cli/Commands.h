@@ -11,5 +11,6 @@ using Run = std::function<int()>;
 
 Run addRulesCommand(CLI::App& app);
 Run addCheckCommand(CLI::App& app);
+Run addVerifyCommand(CLI::App& app);
 
 }  // namespace holon::cli

@@ -17,15 +17,6 @@
 
 namespace holon::rules {
 
-struct Engine::GuardNode {
-    Expr::Kind kind = Expr::Kind::Bool;
-    CmpOp op = CmpOp::Eq;
-    Rational value;
-    std::vector<GuardNode> kids;
-    int around = -1;
-    std::vector<Mask> perDirection;  // quantifiers: the predicate for the neighbour in direction d
-};
-
 struct Engine::ShapeTables {
     std::vector<Mask> lhs;
     std::vector<std::vector<CellValue>> rhs;  // empty for a copy term
@@ -77,11 +68,15 @@ Engine::Mask Engine::compilePredicate(const CellPredicate& pred, const std::vect
     return m;
 }
 
-Engine::Engine(const Model& model, const Region& region, const std::vector<std::uint32_t>& inputs)
+Engine::Engine(const Model& model, const Region& region, const std::vector<std::uint32_t>& inputs, bool everyInputCombination)
     : model_(&model), region_(&region), inputs_(inputs), alphabet_(model.alphabet().size()) {
     if (static_cast<int>(inputs_.size()) != region.size()) inputs_.assign(region.size(), 0);
     // Input combinations actually present, so masks stay small whatever the number of inputs.
     combos_.push_back(0);
+    if (everyInputCombination) {
+        if (model.system().inputs.size() > 8) throw InputError("more than 8 inputs cannot be left open");
+        for (std::uint32_t c = 1; c < (1u << model.system().inputs.size()); ++c) combos_.push_back(c);
+    }
     combo_.resize(region.size());
     for (int i = 0; i < region.size(); ++i) {
         auto it = std::find(combos_.begin(), combos_.end(), inputs_[i]);
@@ -97,7 +92,7 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
         for (const Expr& k : e.kids) g.kids.push_back(compileGuard(k, shape));
         if (e.around >= 0)
             for (int d = 0; d < lattice.degree(); ++d)
-                g.perDirection.push_back(compilePredicate(e.pred, &shape.offsets, shape.offsets[e.around] + lattice.direction(d)));
+                g.perDirection.push_back(compilePredicate(e.pred, &shape.offsets, shape.offsets[e.around] + lattice.direction(d)).bits);
         return g;
     };
     for (const RuleShape& shape : model.shapes()) {
@@ -177,6 +172,18 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     }
 }
 
+bool Engine::lhsAccepts(int placed, int k, int combo, CellValue v) const { return test(shapes_[placed_[placed].shape].lhs[k], combo, v); }
+int Engine::rhsCopyFrom(int placed, int k) const { return shapes_[placed_[placed].shape].copyFrom[k]; }
+CellValue Engine::rhsValue(int placed, int k, CellValue v) const { return shapes_[placed_[placed].shape].rhs[k][v]; }
+const Engine::GuardNode* Engine::guardOf(int placed) const {
+    const ShapeTables& t = shapes_[placed_[placed].shape];
+    return t.hasGuard ? &t.guard : nullptr;
+}
+bool Engine::guardAccepts(const GuardNode& node, int direction, int combo, CellValue v) const {
+    const std::size_t i = static_cast<std::size_t>(combo) * alphabet_ + v;
+    return (node.perDirection[direction][i >> 6] >> (i & 63)) & 1u;
+}
+
 Engine::~Engine() = default;
 Engine::Engine(Engine&&) noexcept = default;
 
@@ -213,7 +220,7 @@ int Engine::guardCount(const GuardNode& g, const CellValue* cells, const Placed&
     int n = 0;
     for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) {
         const int nb = region_->neighbour(centre, d);
-        n += test(g.perDirection[d], comboOf(nb), nb < 0 ? 0 : cells[nb]);
+        n += guardAccepts(g, d, comboOf(nb), nb < 0 ? 0 : cells[nb]);
     }
     return n;
 }

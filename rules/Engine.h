@@ -23,8 +23,9 @@ public:
         std::int32_t cells[kMaxCells] = {};
     };
 
-    /// `inputs`: per region cell, the input bits of the problem.
-    Engine(const Model& model, const Region& region, const std::vector<std::uint32_t>& inputs);
+    /// `inputs`: per region cell, the input bits of the problem. With `everyInputCombination`, the
+    /// tables cover all 2^k combinations of the k inputs, for encodings where inputs are unknown.
+    Engine(const Model& model, const Region& region, const std::vector<std::uint32_t>& inputs, bool everyInputCombination = false);
     ~Engine();
     Engine(Engine&&) noexcept;
     const Model& model() const { return *model_; }
@@ -59,11 +60,33 @@ public:
 
     const std::vector<std::uint32_t>& inputs() const { return inputs_; }
 
+    // ---- read access to the compiled tables, per (input combination, state), for encoders ----
+    /// A guard compiled for one shape: quantifier nodes hold one mask per lattice direction.
+    struct GuardNode {
+        Expr::Kind kind = Expr::Kind::Bool;
+        CmpOp op = CmpOp::Eq;
+        Rational value;
+        std::vector<GuardNode> kids;
+        int around = -1;
+        std::vector<std::vector<std::uint64_t>> perDirection;
+    };
+    int comboCount() const { return static_cast<int>(combos_.size()); }
+    std::uint32_t comboInputs(int combo) const { return combos_[combo]; }
+    int comboOfCell(int cell) const { return combo_[cell]; }
+    bool lhsAccepts(int placed, int k, int combo, CellValue v) const;
+    /// The pattern cell whose old state cell k takes (a move), or -1.
+    int rhsCopyFrom(int placed, int k) const;
+    CellValue rhsValue(int placed, int k, CellValue v) const;
+    const GuardNode* guardOf(int placed) const;
+    bool guardAccepts(const GuardNode& node, int direction, int combo, CellValue v) const;
+    bool predicateAccepts(const CellPredicate& pred, int combo, CellValue v) const { return test(predicateMask(pred), combo, v); }
+    std::int64_t massUnitsOf(CellValue v) const { return mass_[v]; }
+
     /// Evaluate a non-local expression of this system (a constraint, the goal, a property) on a
     /// configuration. Thread-safe: every predicate is compiled in the constructor.
     bool holds(const Expr& e, const CellValue* cells) const;
     /// Whether one cell in state v satisfies a predicate of this system's expressions.
-    bool cellMatches(const CellPredicate& pred, int cell, CellValue v) const { return test(predicateMask(pred), combo_[cell], v); }
+    bool cellMatches(const CellPredicate& pred, int cell, CellValue v) const { return predicateAccepts(pred, combo_[cell], v); }
     Rational number(const Expr& e, const CellValue* cells) const;
 
 private:
@@ -105,7 +128,6 @@ private:
     }
     Mask compileTerm(const CellTerm& term, const std::vector<Vec>* pattern, Vec position, const CellTerm* alsoInputs) const;
     Mask compilePredicate(const CellPredicate& pred, const std::vector<Vec>* pattern, Vec position) const;
-    struct GuardNode;
     struct ShapeTables;
     int comboOf(int cell) const { return cell < 0 ? emptyCombo_ : combo_[cell]; }
     bool guard(const GuardNode& g, const CellValue* cells, const Placed& p) const;

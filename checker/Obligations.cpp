@@ -1,0 +1,435 @@
+// Proof obligations (issue: Z3 proofs; seed 000 §IV-C). Each property becomes a satisfiability
+// query whose models are counterexamples, so UNSAT is a proof for every configuration of the region,
+// not only the reachable ones:
+//   conserves     for each rule: left side, rewrite, and different mass before and after
+//   invariant     inductive: I(c), legal(c), one step to c', not I(c')  (Lemma 1, Safety)
+//   progress      I(c) for every invariant, not goal(c), the assumption, and no instance enabled (Lemma 2)
+//   ranking       one step from c to c' that does not decrease the ranking lexicographically (Lemma 3)
+//   holonomic     legal c and c' one toggle (or one module move) apart, and no instance from c to c'
+//   bmc           from the given configurations, k steps, some state violating an invariant
+// Every query can be written as SMT-LIB2 for independent re-checking (proofs/).
+
+#include "checker/Obligations.h"
+
+#include "checker/SmtEncoding.h"
+#include "rules/Error.h"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+namespace holon::checker {
+
+std::string proofVerdictName(Verdict v) {
+    switch (v) {
+    case Verdict::Holds: return "proved";
+    case Verdict::Violated: return "counterexample";
+    case Verdict::Unknown: return "unknown";
+    }
+    return "";
+}
+
+bool VerifyReport::counterexample() const {
+    for (const Obligation& o : obligations)
+        if (o.result.verdict == Verdict::Violated) return true;
+    return false;
+}
+
+nlohmann::json VerifyReport::toJson() const {
+    nlohmann::json props = nlohmann::json::array();
+    for (const Obligation& o : obligations)
+        props.push_back({{"name", o.result.name}, {"kind", o.result.kind}, {"verdict", proofVerdictName(o.result.verdict)},
+                         {"summary", o.result.summary}, {"witness", o.result.witness}, {"seconds", o.result.seconds},
+                         {"smt_file", o.smtFile.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.smtFile)}});
+    return {{"system", system}, {"region", region}, {"properties", props}};
+}
+
+namespace {
+
+std::string fileSafe(std::string s) {
+    for (char& c : s)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '_';
+    return s;
+}
+
+class Runner {
+public:
+    Runner(const rules::Model& model, const rules::Region& region, const VerifyOptions& options)
+        : model_(model), region_(region), options_(options), engine_(model, region, {}, true) {}
+
+    /// Solves `query` (after the encoding's domain facts); a model becomes a counterexample via
+    /// `decode`.
+    Obligation solve(const std::string& name, const std::string& kind, z3::context& ctx, SmtEncoding& enc, const z3::expr& query,
+                     const std::function<void(const z3::model&, PropertyResult&)>& decode, const std::string& provedText) {
+        const auto start = std::chrono::steady_clock::now();
+        Obligation o;
+        o.result.name = name;
+        o.result.kind = kind;
+        o.expected = "unsat";
+        z3::solver solver(ctx);
+        z3::params p(ctx);
+        p.set("timeout", static_cast<unsigned>(options_.timeoutSeconds * 1000));
+        solver.set(p);
+        for (const z3::expr& f : enc.facts()) solver.add(f);
+        solver.add(query);
+        if (!options_.smtOut.empty()) write(name, solver, o);
+        const z3::check_result r = solver.check();
+        o.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (r == z3::unsat) {
+            o.result.verdict = Verdict::Holds;
+            o.result.summary = provedText;
+        } else if (r == z3::sat) {
+            o.result.verdict = Verdict::Violated;
+            decode(solver.get_model(), o.result);
+            if (o.result.trace) o.result.trace->property = name;
+        } else {
+            o.result.verdict = Verdict::Unknown;
+            o.result.summary = "the solver gave up: " + solver.reason_unknown();
+        }
+        return o;
+    }
+
+    const rules::Engine& engine() const { return engine_; }
+
+    /// A step obligation solved instance by instance on one incremental solver: `base` holds for
+    /// every instance, `perInstance(p)` is guarded by an activation literal, and each instance is
+    /// checked under its literal. The SMT-LIB2 export is the equivalent single query "base and
+    /// exactly one instance".
+    Obligation stepwise(const std::string& name, const std::string& kind, z3::context& ctx, SmtEncoding& enc, const z3::expr& base,
+                        const std::function<z3::expr(int)>& perInstance,
+                        const std::function<void(const z3::model&, int, PropertyResult&)>& decode, const std::string& provedText) {
+        const auto start = std::chrono::steady_clock::now();
+        Obligation o;
+        o.result.name = name;
+        o.result.kind = kind;
+        o.expected = "unsat";
+        const int count = static_cast<int>(engine_.instances().size());
+        z3::solver solver(ctx);
+        z3::params params(ctx);
+        params.set("timeout", static_cast<unsigned>(options_.timeoutSeconds * 1000));
+        solver.set(params);
+        for (const z3::expr& f : enc.facts()) solver.add(f);
+        solver.add(base);
+        std::vector<z3::expr> act;
+        z3::expr_vector acts(ctx);
+        for (int p = 0; p < count; ++p) {
+            act.push_back(ctx.bool_const(("instance_" + std::to_string(p)).c_str()));
+            acts.push_back(act.back());
+            solver.add(z3::implies(act.back(), perInstance(p)));
+        }
+        if (!options_.smtOut.empty()) {
+            z3::solver exported(ctx);
+            for (const z3::expr& f : enc.facts()) exported.add(f);
+            exported.add(base);
+            for (int p = 0; p < count; ++p) exported.add(z3::implies(act[p], perInstance(p)));
+            exported.add(z3::atleast(acts, 1));
+            write(name, exported, o);
+        }
+        o.result.verdict = Verdict::Holds;
+        o.result.summary = provedText;
+        for (int p = 0; p < count; ++p) {
+            const double left = options_.timeoutSeconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (left <= 0) {
+                o.result.verdict = Verdict::Unknown;
+                o.result.summary = "timeout after " + std::to_string(p) + " of " + std::to_string(count) + " instances";
+                break;
+            }
+            z3::expr_vector assume(ctx);
+            assume.push_back(act[p]);
+            const z3::check_result r = solver.check(assume);
+            if (r == z3::sat) {
+                o.result.verdict = Verdict::Violated;
+                decode(solver.get_model(), p, o.result);
+                if (o.result.trace) o.result.trace->property = name;
+                break;
+            }
+            if (r == z3::unknown) {
+                o.result.verdict = Verdict::Unknown;
+                o.result.summary = "the solver gave up on instance " + std::to_string(p) + ": " + solver.reason_unknown();
+                break;
+            }
+        }
+        o.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return o;
+    }
+
+    void write(const std::string& name, z3::solver& solver, Obligation& o) {
+        const std::filesystem::path dir(options_.smtOut);
+        std::filesystem::create_directories(dir);
+        const std::filesystem::path file = dir / (fileSafe(model_.system().name) + "." + fileSafe(region_.spec()) + "." + fileSafe(name) + ".smt2");
+        std::ofstream out(file);
+        if (!out) throw InputError("cannot write '" + file.string() + "'");
+        out << "; holon proof obligation: system " << model_.system().name << ", region " << region_.spec() << ", property " << name
+            << "\n; expected: unsat (the property holds for every configuration of the region)\n(set-logic ALL)\n"
+            << solver.to_smt2();
+        o.smtFile = file.string();
+    }
+
+    int placedFrom(const z3::model& m, const z3::expr& selector) const { return m.eval(selector, true).get_numeral_int(); }
+
+    const rules::Model& model_;
+    const rules::Region& region_;
+    const VerifyOptions& options_;
+    rules::Engine engine_;
+};
+
+std::vector<std::uint32_t> inputsOf(const z3::model& m, z3::context& ctx, const rules::Engine& e) {
+    std::vector<std::uint32_t> in(e.region().size(), 0);
+    for (int i = 0; i < e.region().size(); ++i)
+        for (std::size_t k = 0; k < e.model().system().inputs.size(); ++k) {
+            z3::expr b = ctx.bool_const(("in_" + e.model().system().inputs[k] + "_" + std::to_string(i)).c_str());
+            if (m.eval(b, true).is_true()) in[i] |= 1u << k;
+        }
+    return in;
+}
+
+}  // namespace
+
+VerifyReport verify(const rules::Model& model, const rules::Region& region, const VerifyOptions& options,
+                    const std::function<void(const std::string&)>& onObligation) {
+    const rules::System& system = model.system();
+    VerifyReport report;
+    report.system = system.name;
+    report.region = region.spec();
+    Runner run(model, region, options);
+    const rules::Engine& e = run.engine();
+    auto selected = [&](const std::string& name) {
+        return options.properties.empty() || std::find(options.properties.begin(), options.properties.end(), name) != options.properties.end();
+    };
+    for (const std::string& name : options.properties)
+        if (!system.property(name)) throw InputError("system '" + system.name + "' has no property '" + name + "'");
+    std::vector<const rules::Property*> invariants;
+    for (const rules::Property& p : system.properties)
+        if (p.kind == rules::Property::Kind::Invariant) invariants.push_back(&p);
+    auto announce = [&](const std::string& name) {
+        if (onObligation) onObligation(name);
+    };
+    // Counterexamples carry the inputs Z3 chose in the trace's first step (as the problem's inputs).
+    auto twoStates = [&](z3::context& ctx, SmtEncoding& enc, const SmtEncoding::State& a, const SmtEncoding::State& b, const z3::expr* selector,
+                         const std::string& description) {
+        return [&, selector, description](const z3::model& m, PropertyResult& r) {
+            Trace t;
+            t.steps.push_back({enc.decode(m, a), -1});
+            t.steps.push_back({enc.decode(m, b), selector ? run.placedFrom(m, *selector) : -1});
+            t.description = description;
+            r.trace = t;
+            r.witness = {{"inputs", inputsOf(m, ctx, e)}};
+            r.summary = description;
+        };
+    };
+
+    for (const rules::Property& p : system.properties) {
+        if (!selected(p.name)) continue;
+        announce(p.name);
+        z3::context ctx;
+        SmtEncoding enc(ctx, e);
+        switch (p.kind) {
+        case rules::Property::Kind::Conserves: {
+            // Region-independent: each rule's own cells, before and after, at one placement.
+            const bool byMass = p.quantity == rules::Property::Quantity::Mass;
+            auto before = enc.state("c"), after = enc.state("d");
+            z3::expr anyRule = ctx.bool_val(false);
+            std::vector<int> firstPlaced(model.rules().size(), -1);
+            for (int q = 0; q < static_cast<int>(e.instances().size()); ++q)
+                if (firstPlaced[e.instances()[q].rule] < 0) firstPlaced[e.instances()[q].rule] = q;
+            z3::expr selector = ctx.int_const("rule_instance");
+            for (int q : firstPlaced) {
+                if (q < 0) continue;
+                const auto& placed = e.instances()[q];
+                z3::expr lhs = enc.legal(before) && enc.fires(q, before, after) && enc.legal(after);
+                z3::expr amountBefore = ctx.int_val(0), amountAfter = ctx.int_val(0);
+                for (int k = 0; k < placed.size; ++k) {
+                    const int c = placed.cells[k];
+                    for (int v = 0; v < model.alphabet().size(); ++v) {
+                        const std::int64_t w = byMass ? e.massUnitsOf(static_cast<rules::CellValue>(v)) : (v != 0);
+                        amountBefore = amountBefore + z3::ite(before.is[c][v], ctx.int_val(static_cast<int64_t>(w)), ctx.int_val(0));
+                        amountAfter = amountAfter + z3::ite(after.is[c][v], ctx.int_val(static_cast<int64_t>(w)), ctx.int_val(0));
+                    }
+                }
+                anyRule = anyRule || (selector == q && lhs && amountBefore != amountAfter);
+            }
+            auto decode = [&](const z3::model& m, PropertyResult& r) {
+                const int q = run.placedFrom(m, selector);
+                const std::string rule = model.rules()[e.instances()[q].rule].name;
+                Trace t;
+                t.steps.push_back({enc.decode(m, before), -1});
+                t.steps.push_back({enc.decode(m, after), q});
+                t.description = "rule '" + rule + "' changes the " + (byMass ? "mass" : "count");
+                r.trace = t;
+                r.summary = t.description;
+                r.witness = {{"rule", rule}, {"inputs", inputsOf(m, ctx, e)}};
+            };
+            report.obligations.push_back(run.solve(p.name, "conserves", ctx, enc, anyRule, decode, "every rule keeps it"));
+            break;
+        }
+        case rules::Property::Kind::Invariant: {
+            auto c = enc.state("c"), d = enc.state("d");
+            const z3::expr base = enc.legal(c) && enc.holds(p.exprs[0], c, true) && enc.legal(d) && !enc.holds(p.exprs[0], d, false);
+            report.obligations.push_back(run.stepwise(
+                p.name, "invariant", ctx, enc, base, [&](int q) { return enc.fires(q, c, d); },
+                [&](const z3::model& m, int q, PropertyResult& r) {
+                    r.trace = Trace{{{enc.decode(m, c), -1}, {enc.decode(m, d), q}}, {}, {}, "a step from a state where it holds to one where it fails: not inductive", {}};
+                    r.summary = r.trace->description;
+                    r.witness = {{"inputs", inputsOf(m, ctx, e)}, {"rule", model.rules()[e.instances()[q].rule].name}};
+                },
+                "inductive: every step from a state where it holds keeps it"));
+            break;
+        }
+        case rules::Property::Kind::Ranking: {
+            auto c = enc.state("c"), d = enc.state("d");
+            report.obligations.push_back(run.stepwise(
+                p.name, "ranking", ctx, enc, enc.legal(c) && enc.legal(d),
+                [&](int q) { return enc.fires(q, c, d) && !enc.lexLessAfter(p.exprs, q, d, c); },
+                [&](const z3::model& m, int q, PropertyResult& r) {
+                    r.trace = Trace{{{enc.decode(m, c), -1}, {enc.decode(m, d), q}}, {}, {}, "a step that does not decrease it", {}};
+                    r.summary = "rule '" + model.rules()[e.instances()[q].rule].name + "' does not decrease it";
+                    r.witness = {{"inputs", inputsOf(m, ctx, e)}, {"rule", model.rules()[e.instances()[q].rule].name}};
+                },
+                "every step decreases it lexicographically"));
+            break;
+        }
+        case rules::Property::Kind::Progress: {
+            if (!system.constraints.empty()) {
+                Obligation o;
+                o.result.name = p.name;
+                o.result.kind = "progress";
+                o.result.summary = "not encoded for systems with non-local constraints (enabledness would need a successor per instance); use holon check";
+                report.obligations.push_back(o);
+                break;
+            }
+            auto c = enc.state("c");
+            z3::expr q = ctx.bool_val(true);
+            for (const rules::Property* inv : invariants) q = q && enc.holds(inv->exprs[0], c, true);
+            if (system.goal) q = q && !enc.holds(*system.goal, c, false);
+            if (!p.exprs.empty()) q = q && enc.holds(p.exprs[0], c, true);
+            for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) q = q && !enc.matches(placed, c);
+            auto decode = [&](const z3::model& m, PropertyResult& r) {
+                Trace t;
+                t.steps.push_back({enc.decode(m, c), -1});
+                t.description = "every invariant holds, the goal is not reached, and no rule is enabled";
+                r.trace = t;
+                r.summary = t.description;
+                r.witness = {{"inputs", inputsOf(m, ctx, e)}};
+            };
+            report.obligations.push_back(run.solve(p.name, "progress", ctx, enc, q, decode, "outside the goal, some rule is enabled wherever the invariants hold"));
+            break;
+        }
+        case rules::Property::Kind::Holonomic: {
+            const bool byMove = p.adjacency == rules::Property::Adjacency::Move;
+            if (!byMove && (model.alphabet().size() > 2 || !p.exprs.empty())) {
+                Obligation o;
+                o.result.name = p.name;
+                o.result.kind = "holonomic";
+                o.result.summary = "holonomy modulo transfers is checked by holon check (it needs reachability)";
+                report.obligations.push_back(o);
+                break;
+            }
+            auto c = enc.state("c"), d = enc.state("d");
+            const int n = region.size();
+            z3::expr adjacent = ctx.bool_val(false);
+            auto same = [&](int i, int j) {
+                z3::expr all = ctx.bool_val(true);
+                for (int v = 0; v < model.alphabet().size(); ++v) all = all && c.is[i][v] == d.is[j][v];
+                return all;
+            };
+            if (!byMove) {
+                // Exactly one cell differs (its occupancy toggles: one occupied state).
+                for (int i = 0; i < n; ++i) {
+                    z3::expr only = !same(i, i);
+                    for (int j = 0; j < n; ++j)
+                        if (j != i) only = only && same(j, j);
+                    adjacent = adjacent || only;
+                }
+            } else {
+                // One module moves to an empty neighbour, keeping its state.
+                for (int i = 0; i < n; ++i)
+                    for (int dir = 0; dir < region.lattice().degree(); ++dir) {
+                        const int j = region.neighbour(i, dir);
+                        if (j < 0) continue;
+                        z3::expr move = !c.is[i][0] && c.is[j][0] && d.is[i][0] && same(i, j);
+                        for (int k = 0; k < n; ++k)
+                            if (k != i && k != j) move = move && same(k, k);
+                        adjacent = adjacent || move;
+                    }
+            }
+            z3::expr q = enc.legal(c) && enc.legal(d) && adjacent;
+            for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) q = q && !enc.fires(placed, c, d);
+            report.obligations.push_back(run.solve(p.name, "holonomic", ctx, enc, q,
+                                                   twoStates(ctx, enc, c, d, nullptr, "two legal configurations one " + std::string(byMove ? "module move" : "toggle") +
+                                                                                          " apart with no single rule step between them"),
+                                                   "every adjacent pair of legal configurations is one rule step apart"));
+            break;
+        }
+        }
+    }
+
+    // Bounded model checking of every invariant from the given configurations.
+    if (options.depth > 0 && !options.initial.empty())
+        for (const rules::Property* inv : invariants) {
+            if (!selected(inv->name)) continue;
+            const std::string name = inv->name + "@bmc" + std::to_string(options.depth);
+            announce(name);
+            z3::context ctx;
+            SmtEncoding enc(ctx, e);
+            std::vector<SmtEncoding::State> path{enc.state("s0")};
+            std::vector<z3::expr> selectors;
+            z3::expr start = ctx.bool_val(false);
+            for (const rules::Configuration& c : options.initial) start = start || (enc.configurationIs(path[0], c.cells) && enc.inputsAre(c.inputs));
+            z3::expr steps = ctx.bool_val(true), someBad = !enc.holds(inv->exprs[0], path[0], false);
+            for (int k = 1; k <= options.depth; ++k) {
+                path.push_back(enc.state("s" + std::to_string(k)));
+                selectors.push_back(ctx.int_const(("step" + std::to_string(k)).c_str()));
+                steps = steps && enc.step(path[k - 1], path[k], selectors.back());
+                someBad = someBad || !enc.holds(inv->exprs[0], path[k], false);
+            }
+            // Shortest violation first: look for the first bad state at each depth in turn.
+            const z3::expr q = start && steps && someBad;
+            const rules::Engine concrete(model, region, options.initial.front().inputs);
+            auto decode = [&](const z3::model& m, PropertyResult& r) {
+                Trace t;
+                for (std::size_t k = 0; k < path.size(); ++k) {
+                    t.steps.push_back({enc.decode(m, path[k]), k ? run.placedFrom(m, selectors[k - 1]) : -1});
+                    if (!concrete.holds(inv->exprs[0], t.steps.back().cells.data())) break;
+                }
+                t.description = "invariant '" + inv->name + "' fails after " + std::to_string(t.steps.size() - 1) + " steps";
+                r.trace = t;
+                r.summary = t.description;
+                r.witness = {{"depth", t.steps.size() - 1}};
+            };
+            report.obligations.push_back(run.solve(name, "bmc", ctx, enc, q, decode,
+                                                   "holds on every path of up to " + std::to_string(options.depth) + " steps from the given configurations"));
+        }
+    return report;
+}
+
+bool confirmCounterexample(const PropertyResult& r, const rules::Model& model, const rules::Region& region, std::string* why) {
+    if (!r.trace || r.trace->steps.empty()) return false;
+    std::vector<std::uint32_t> inputs(region.size(), 0);
+    if (r.witness.is_object() && r.witness.contains("inputs")) inputs = r.witness["inputs"].get<std::vector<std::uint32_t>>();
+    const rules::Engine engine(model, region, inputs);
+    rules::Interpreter in(model, region);
+    rules::Configuration c = in.empty();
+    c.inputs = inputs;
+    c.cells = r.trace->steps.front().cells;
+    auto fail = [&](const std::string& m) {
+        if (why) *why = m;
+        return false;
+    };
+    if (r.kind == "progress") {
+        if (!in.legal(c)) return fail("the state is not legal");
+        if (in.atGoal(c)) return fail("the state is a goal");
+        if (!in.enabled(c).empty()) return fail("a rule is enabled");
+        return true;
+    }
+    if (r.kind == "holonomic") {
+        rules::Configuration d = c;
+        d.cells = r.trace->steps.back().cells;
+        if (!in.legal(c) || !in.legal(d)) return fail("a state is not legal");
+        for (const auto& i : in.enabled(c))
+            if (in.successor(c, i)->cells == d.cells) return fail("a rule step does connect them");
+        return true;
+    }
+    return replay(*r.trace, engine, in, why);
+}
+
+}  // namespace holon::checker

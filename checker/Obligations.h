@@ -1,0 +1,49 @@
+#pragma once
+// `holon verify`: proof obligations for every configuration of a bounded region, discharged by Z3.
+
+#include "checker/Trace.h"
+#include "checker/Verdict.h"
+#include "rules/Engine.h"
+#include "rules/Interpreter.h"
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace holon::checker {
+
+struct VerifyOptions {
+    double timeoutSeconds = 120;                // per obligation
+    int depth = 0;                              // > 0: bounded model checking from `initial`
+    std::vector<rules::Configuration> initial;
+    std::vector<std::string> properties;        // empty: all
+    std::string smtOut;                         // directory for SMT-LIB2 files, or empty
+};
+
+struct Obligation {
+    PropertyResult result;          // verdict Holds = proved, Violated = counterexample
+    std::string smtFile;            // written file, if any
+    std::string expected;           // "unsat" when the proof succeeds
+};
+
+struct VerifyReport {
+    std::string system, region;
+    std::vector<Obligation> obligations;
+    bool counterexample() const;
+    nlohmann::json toJson() const;
+};
+
+std::string proofVerdictName(Verdict v);
+
+/// Checks a counterexample with the reference interpreter: a trace replays step by step; a
+/// progress witness is legal, outside the goal, with nothing enabled; a holonomy witness is two legal
+/// configurations no single step connects.
+bool confirmCounterexample(const PropertyResult& r, const rules::Model& model, const rules::Region& region, std::string* why = nullptr);
+
+/// Builds and discharges every obligation of the system's properties on the region. Counterexample
+/// traces are decoded from the model and replayed through the reference interpreter by the caller.
+VerifyReport verify(const rules::Model& model, const rules::Region& region, const VerifyOptions& options,
+                    const std::function<void(const std::string&)>& onObligation = {});
+
+}  // namespace holon::checker

@@ -1,0 +1,401 @@
+// The SMT encoding of a system on a bounded region (issue: Z3 proofs). A configuration is one-hot:
+// a Boolean per (cell, state), exactly one true per cell, which keeps matching, rewriting and the
+// frame propositional (integer cells with if-then-else chains were an order of magnitude slower). Every test of a cell -- a rule's left side, a guard's neighbour, a
+// predicate of a constraint -- comes from the compiled engine's tables as the set of (input
+// combination, state) pairs it accepts, so the encoding cannot drift from the reference semantics
+// the engine is tested against. The transition relation is interleaving: a selector picks one placed
+// instance, whose cells are rewritten while every other cell keeps its state (frame condition),
+// and the successor must satisfy the non-local constraints. Connectivity and pointer reachability
+// are existential: ranks that strictly decrease towards a root (or along pointers to a target) when
+// they must hold; a cut, or a set of pointer cells closed under following, when they must fail.
+
+#include "checker/SmtEncoding.h"
+
+#include "rules/Error.h"
+
+namespace holon::checker {
+
+using rules::CellValue;
+using rules::Expr;
+
+SmtEncoding::SmtEncoding(z3::context& ctx, const rules::Engine& engine)
+    : ctx_(ctx), engine_(engine), alphabet_(engine.model().alphabet().size()) {
+    const int inputs = static_cast<int>(engine.model().system().inputs.size());
+    for (int i = 0; i < engine.region().size(); ++i) {
+        std::vector<z3::expr> bits;
+        for (int k = 0; k < inputs; ++k)
+            bits.push_back(ctx_.bool_const(("in_" + engine.model().system().inputs[k] + "_" + std::to_string(i)).c_str()));
+        inputBits_.push_back(bits);
+    }
+}
+
+z3::expr SmtEncoding::fresh(const std::string& prefix, const z3::sort& sort) {
+    return ctx_.constant((prefix + "_" + std::to_string(counter_++)).c_str(), sort);
+}
+
+SmtEncoding::State SmtEncoding::state(const std::string& name) {
+    State s;
+    for (int i = 0; i < engine_.region().size(); ++i) {
+        std::vector<z3::expr> row;
+        z3::expr_vector vec(ctx_);
+        for (int v = 0; v < alphabet_; ++v) {
+            row.push_back(ctx_.bool_const((name + "_" + std::to_string(i) + "_" + std::to_string(v)).c_str()));
+            vec.push_back(row.back());
+        }
+        facts_.push_back(z3::atleast(vec, 1) && z3::atmost(vec, 1));
+        s.is.push_back(row);
+    }
+    return s;
+}
+
+z3::expr SmtEncoding::sameCell(const State& a, int i, const State& b, int j) const {
+    z3::expr all = ctx_.bool_val(true);
+    for (int v = 0; v < alphabet_; ++v) all = all && a.is[i][v] == b.is[j][v];
+    return all;
+}
+
+z3::expr SmtEncoding::inputsAre(const std::vector<std::uint32_t>& inputs) const {
+    z3::expr all = ctx_.bool_val(true);
+    for (std::size_t i = 0; i < inputBits_.size(); ++i)
+        for (std::size_t k = 0; k < inputBits_[i].size(); ++k) all = all && (((inputs[i] >> k) & 1u) ? inputBits_[i][k] : !inputBits_[i][k]);
+    return all;
+}
+
+z3::expr SmtEncoding::configurationIs(const State& s, const std::vector<CellValue>& cells) const {
+    z3::expr all = ctx_.bool_val(true);
+    for (std::size_t i = 0; i < cells.size(); ++i) all = all && s.is[i][cells[i]];
+    return all;
+}
+
+z3::expr SmtEncoding::inputCombo(int cell, int combo) const {
+    const std::uint32_t bits = engine_.comboInputs(combo);
+    z3::expr all = ctx_.bool_val(true);
+    for (std::size_t k = 0; k < inputBits_[cell].size(); ++k) all = all && (((bits >> k) & 1u) ? inputBits_[cell][k] : !inputBits_[cell][k]);
+    return all;
+}
+
+z3::expr SmtEncoding::member(const State& s, int cell, const std::function<bool(int, CellValue)>& accepts) {
+    // A cell outside the region (cell < 0) is empty with no inputs.
+    if (cell < 0) return ctx_.bool_val(accepts(0, 0));
+    z3::expr any = ctx_.bool_val(false);
+    const int combos = engine_.comboCount();
+    for (int v = 0; v < alphabet_; ++v) {
+        std::vector<int> yes;
+        for (int c = 0; c < combos; ++c)
+            if (accepts(c, static_cast<CellValue>(v))) yes.push_back(c);
+        if (yes.empty()) continue;
+        const z3::expr& is = s.is[cell][v];
+        if (static_cast<int>(yes.size()) == combos) {
+            any = any || is;
+            continue;
+        }
+        z3::expr when = ctx_.bool_val(false);
+        for (int c : yes) when = when || inputCombo(cell, c);
+        any = any || (is && when);
+    }
+    return any.simplify();
+}
+
+z3::expr SmtEncoding::memberPred(const State& s, int cell, const rules::CellPredicate& pred) {
+    return member(s, cell, [&](int c, CellValue v) { return engine_.predicateAccepts(pred, c, v); });
+}
+
+z3::expr SmtEncoding::massUnits(const State& s) {
+    z3::expr total = ctx_.int_val(0);
+    for (std::size_t i = 0; i < s.is.size(); ++i)
+        for (int v = 0; v < alphabet_; ++v)
+            if (const std::int64_t m = engine_.massUnitsOf(static_cast<CellValue>(v)))
+                total = total + z3::ite(s.is[i][v], ctx_.int_val(static_cast<int64_t>(m)), ctx_.int_val(0));
+    return total;
+}
+
+z3::expr SmtEncoding::number(const Expr& e, const State& s) {
+    switch (e.kind) {
+    case Expr::Kind::Number: return ctx_.real_val(static_cast<int64_t>(e.value.num()), static_cast<int64_t>(e.value.den()));
+    case Expr::Kind::Mass: return z3::to_real(massUnits(s)) / ctx_.real_val(static_cast<int64_t>(engine_.massDenominator()));
+    case Expr::Kind::Add: return number(e.kids[0], s) + number(e.kids[1], s);
+    case Expr::Kind::Sub: return number(e.kids[0], s) - number(e.kids[1], s);
+    case Expr::Kind::Neg: return -number(e.kids[0], s);
+    case Expr::Kind::Count: {
+        z3::expr n = ctx_.int_val(0);
+        for (int i = 0; i < engine_.region().size(); ++i) n = n + z3::ite(memberPred(s, i, e.pred), ctx_.int_val(1), ctx_.int_val(0));
+        return z3::to_real(n);
+    }
+    default: throw InputError("internal: not a number expression");
+    }
+}
+
+namespace {
+z3::expr compareExprs(rules::CmpOp op, const z3::expr& a, const z3::expr& b) {
+    switch (op) {
+    case rules::CmpOp::Eq: return a == b;
+    case rules::CmpOp::Ne: return a != b;
+    case rules::CmpOp::Lt: return a < b;
+    case rules::CmpOp::Le: return a <= b;
+    case rules::CmpOp::Gt: return a > b;
+    case rules::CmpOp::Ge: return a >= b;
+    }
+    return a == b;
+}
+}  // namespace
+
+z3::expr SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
+    const int n = engine_.region().size();
+    switch (e.kind) {
+    case Expr::Kind::Bool: return ctx_.bool_val(e.value.num() != 0);
+    case Expr::Kind::And: return holds(e.kids[0], s, positive) && holds(e.kids[1], s, positive);
+    case Expr::Kind::Or: return holds(e.kids[0], s, positive) || holds(e.kids[1], s, positive);
+    case Expr::Kind::Implies: return !holds(e.kids[0], s, !positive) || holds(e.kids[1], s, positive);
+    case Expr::Kind::Not: return !holds(e.kids[0], s, !positive);
+    case Expr::Kind::Compare: return compareExprs(e.op, number(e.kids[0], s), number(e.kids[1], s));
+    case Expr::Kind::Some:
+    case Expr::Kind::No:
+    case Expr::Kind::All: {
+        z3::expr any = ctx_.bool_val(false), all = ctx_.bool_val(true);
+        for (int i = 0; i < n; ++i) {
+            z3::expr m = memberPred(s, i, e.pred);
+            any = any || m, all = all && m;
+        }
+        return e.kind == Expr::Kind::Some ? any : e.kind == Expr::Kind::No ? !any : all;
+    }
+    case Expr::Kind::Connected: return connected(e.pred, s, positive);
+    case Expr::Kind::Reaches: return reaches(e, s, positive);
+    default: throw InputError("internal: not a condition");
+    }
+}
+
+z3::expr SmtEncoding::connected(const rules::CellPredicate& pred, const State& s, bool positive) {
+    const rules::Region& region = engine_.region();
+    const int n = region.size();
+    std::vector<z3::expr> m;
+    for (int i = 0; i < n; ++i) m.push_back(memberPred(s, i, pred));
+    if (positive) {
+        // One root among the members; every other member has a member neighbour of lower rank.
+        z3::expr f = ctx_.bool_val(true), someMember = ctx_.bool_val(false), someRoot = ctx_.bool_val(false);
+        z3::expr roots = ctx_.int_val(0);
+        std::vector<z3::expr> rank, root;
+        for (int i = 0; i < n; ++i) rank.push_back(fresh("rank", ctx_.int_sort())), root.push_back(fresh("root", ctx_.bool_sort()));
+        for (int i = 0; i < n; ++i) {
+            someMember = someMember || m[i];
+            someRoot = someRoot || root[i];
+            roots = roots + z3::ite(root[i], ctx_.int_val(1), ctx_.int_val(0));
+            f = f && z3::implies(root[i], m[i]);
+            z3::expr down = ctx_.bool_val(false);
+            for (int d = 0; d < region.lattice().degree(); ++d)
+                if (int j = region.neighbour(i, d); j >= 0) down = down || (m[j] && rank[j] < rank[i]);
+            f = f && z3::implies(m[i] && !root[i], down);
+        }
+        return f && z3::implies(someMember, someRoot) && roots <= 1;
+    }
+    // Refutation: a cut. A non-empty proper subset of the members closed under adjacency.
+    std::vector<z3::expr> in;
+    for (int i = 0; i < n; ++i) in.push_back(fresh("cut", ctx_.bool_sort()));
+    z3::expr cut = ctx_.bool_val(true), inside = ctx_.bool_val(false), outside = ctx_.bool_val(false);
+    for (int i = 0; i < n; ++i) {
+        cut = cut && z3::implies(in[i], m[i]);
+        inside = inside || in[i];
+        outside = outside || (m[i] && !in[i]);
+        for (int d = 0; d < region.lattice().degree(); ++d)
+            if (int j = region.neighbour(i, d); j >= 0) cut = cut && z3::implies(in[i] && m[j], in[j]);
+    }
+    return !(cut && inside && outside);
+}
+
+z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
+    const rules::Region& region = engine_.region();
+    const rules::Alphabet& alphabet = engine_.model().alphabet();
+    const int n = region.size(), degree = region.lattice().degree();
+    std::vector<z3::expr> from, to;
+    for (int i = 0; i < n; ++i) from.push_back(memberPred(s, i, e.pred)), to.push_back(memberPred(s, i, e.target));
+    auto pointsTo = [&](int i, int d) {
+        return member(s, i, [&](int, CellValue v) { return v != 0 && alphabet.fields(v)[e.field] == d; });
+    };
+    if (positive) {
+        // Ranks fall along pointers until a target cell.
+        std::vector<z3::expr> rank;
+        for (int i = 0; i < n; ++i) rank.push_back(fresh("prank", ctx_.int_sort()));
+        z3::expr f = ctx_.bool_val(true);
+        for (int i = 0; i < n; ++i) {
+            z3::expr ok = ctx_.bool_val(false);
+            for (int d = 0; d < degree; ++d) {
+                const int j = region.neighbour(i, d);
+                if (j < 0) continue;
+                ok = ok || (pointsTo(i, d) && (to[j] || (from[j] && rank[j] < rank[i])));
+            }
+            f = f && z3::implies(from[i], ok);
+        }
+        return f;
+    }
+    // Refutation: a non-empty set of pointer cells, each pointing nowhere good or into the set.
+    std::vector<z3::expr> bad;
+    for (int i = 0; i < n; ++i) bad.push_back(fresh("stray", ctx_.bool_sort()));
+    z3::expr f = ctx_.bool_val(true), some = ctx_.bool_val(false);
+    for (int i = 0; i < n; ++i) {
+        some = some || bad[i];
+        z3::expr next = ctx_.bool_val(true);
+        for (int d = 0; d < degree; ++d) {
+            const int j = region.neighbour(i, d);
+            if (j < 0) continue;  // pointing out of the region is bad in itself
+            next = next && z3::implies(pointsTo(i, d), !to[j] && (!from[j] || bad[j]));
+        }
+        f = f && z3::implies(bad[i], from[i] && next);
+    }
+    return !(f && some);
+}
+
+z3::expr SmtEncoding::legal(const State& s) {
+    z3::expr all = ctx_.bool_val(true);
+    for (const rules::Constraint& c : engine_.model().system().constraints) all = all && holds(c.expr, s, true);
+    return all;
+}
+
+z3::expr SmtEncoding::guardNumber(const rules::Engine::GuardNode& g, int placed, const State& s) {
+    switch (g.kind) {
+    case Expr::Kind::Number: return ctx_.real_val(static_cast<int64_t>(g.value.num()), static_cast<int64_t>(g.value.den()));
+    case Expr::Kind::Add: return guardNumber(g.kids[0], placed, s) + guardNumber(g.kids[1], placed, s);
+    case Expr::Kind::Sub: return guardNumber(g.kids[0], placed, s) - guardNumber(g.kids[1], placed, s);
+    case Expr::Kind::Neg: return -guardNumber(g.kids[0], placed, s);
+    case Expr::Kind::Count: {
+        const int centre = engine_.instances()[placed].cells[g.around];
+        z3::expr count = ctx_.int_val(0);
+        for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) {
+            const int nb = engine_.region().neighbour(centre, d);
+            count = count + z3::ite(member(s, nb, [&](int c, CellValue v) { return engine_.guardAccepts(g, d, c, v); }), ctx_.int_val(1), ctx_.int_val(0));
+        }
+        return z3::to_real(count);
+    }
+    default: throw InputError("internal: not a guard number");
+    }
+}
+
+z3::expr SmtEncoding::guard(const rules::Engine::GuardNode& g, int placed, const State& s) {
+    switch (g.kind) {
+    case Expr::Kind::Bool: return ctx_.bool_val(g.value.num() != 0);
+    case Expr::Kind::And: return guard(g.kids[0], placed, s) && guard(g.kids[1], placed, s);
+    case Expr::Kind::Or: return guard(g.kids[0], placed, s) || guard(g.kids[1], placed, s);
+    case Expr::Kind::Implies: return !guard(g.kids[0], placed, s) || guard(g.kids[1], placed, s);
+    case Expr::Kind::Not: return !guard(g.kids[0], placed, s);
+    case Expr::Kind::Compare: return compareExprs(g.op, guardNumber(g.kids[0], placed, s), guardNumber(g.kids[1], placed, s));
+    case Expr::Kind::Some:
+    case Expr::Kind::No:
+    case Expr::Kind::All: {
+        rules::Engine::GuardNode count = g;
+        count.kind = Expr::Kind::Count;
+        z3::expr c = guardNumber(count, placed, s);
+        const int degree = static_cast<int>(g.perDirection.size());
+        return g.kind == Expr::Kind::Some ? c > 0 : g.kind == Expr::Kind::No ? c == 0 : c == degree;
+    }
+    default: throw InputError("internal: not a guard condition");
+    }
+}
+
+z3::expr SmtEncoding::matches(int placed, const State& s) {
+    const auto& p = engine_.instances()[placed];
+    z3::expr all = ctx_.bool_val(true);
+    for (int k = 0; k < p.size; ++k)
+        all = all && member(s, p.cells[k], [&](int c, CellValue v) { return engine_.lhsAccepts(placed, k, c, v); });
+    if (const auto* g = engine_.guardOf(placed)) all = all && guard(*g, placed, s);
+    return all;
+}
+
+z3::expr SmtEncoding::rewritten(int placed, int k, const State& before, int fromCell, const State& after, int toCell) const {
+    // One implication per old state: that state's rewrite is the new state.
+    z3::expr all = ctx_.bool_val(true);
+    for (int v = 0; v < alphabet_; ++v) {
+        const int w = engine_.rhsValue(placed, k, static_cast<CellValue>(v));
+        all = all && z3::implies(before.is[fromCell][v], after.is[toCell][w]);
+    }
+    return all;
+}
+
+z3::expr SmtEncoding::fires(int placed, const State& from, const State& to) {
+    const auto& p = engine_.instances()[placed];
+    z3::expr f = matches(placed, from);
+    std::vector<char> touched(from.is.size(), 0);
+    for (int k = 0; k < p.size; ++k) {
+        touched[p.cells[k]] = 1;
+        const int copy = engine_.rhsCopyFrom(placed, k);
+        f = f && (copy >= 0 ? sameCell(from, p.cells[copy], to, p.cells[k]) : rewritten(placed, k, from, p.cells[k], to, p.cells[k]));
+    }
+    for (std::size_t i = 0; i < from.is.size(); ++i)
+        if (!touched[i]) f = f && sameCell(from, static_cast<int>(i), to, static_cast<int>(i));
+    return f;
+}
+
+z3::expr SmtEncoding::step(const State& from, const State& to, const z3::expr& selector) {
+    // The selected instance matches and rewrites its cells; a cell no selected instance touches
+    // keeps its state.
+    const int count = static_cast<int>(engine_.instances().size());
+    z3::expr f = selector >= 0 && selector < count;
+    std::vector<z3::expr> touchedBy(from.is.size(), ctx_.bool_val(false));
+    for (int placed = 0; placed < count; ++placed) {
+        const auto& p = engine_.instances()[placed];
+        z3::expr body = matches(placed, from);
+        for (int k = 0; k < p.size; ++k) {
+            const int copy = engine_.rhsCopyFrom(placed, k);
+            body = body && (copy >= 0 ? sameCell(from, p.cells[copy], to, p.cells[k]) : rewritten(placed, k, from, p.cells[k], to, p.cells[k]));
+            touchedBy[p.cells[k]] = touchedBy[p.cells[k]] || selector == placed;
+        }
+        f = f && z3::implies(selector == placed, body);
+    }
+    for (std::size_t i = 0; i < from.is.size(); ++i) f = f && (touchedBy[i] || sameCell(from, static_cast<int>(i), to, static_cast<int>(i)));
+    return f && legal(to);
+}
+
+z3::expr SmtEncoding::lexLess(const std::vector<Expr>& ranking, const State& a, const State& b) {
+    z3::expr less = ctx_.bool_val(false);
+    for (int k = static_cast<int>(ranking.size()) - 1; k >= 0; --k) {
+        z3::expr x = number(ranking[k], a), y = number(ranking[k], b);
+        less = x < y || (x == y && less);
+    }
+    return less;
+}
+
+z3::expr SmtEncoding::delta(const Expr& e, int placed, const State& after, const State& before) {
+    const auto& p = engine_.instances()[placed];
+    switch (e.kind) {
+    case Expr::Kind::Number: return ctx_.real_val(0);
+    case Expr::Kind::Add: return delta(e.kids[0], placed, after, before) + delta(e.kids[1], placed, after, before);
+    case Expr::Kind::Sub: return delta(e.kids[0], placed, after, before) - delta(e.kids[1], placed, after, before);
+    case Expr::Kind::Neg: return -delta(e.kids[0], placed, after, before);
+    case Expr::Kind::Count: {
+        z3::expr d = ctx_.int_val(0);
+        for (int k = 0; k < p.size; ++k)
+            d = d + z3::ite(memberPred(after, p.cells[k], e.pred), ctx_.int_val(1), ctx_.int_val(0)) -
+                z3::ite(memberPred(before, p.cells[k], e.pred), ctx_.int_val(1), ctx_.int_val(0));
+        return z3::to_real(d);
+    }
+    case Expr::Kind::Mass: {
+        z3::expr d = ctx_.int_val(0);
+        for (int k = 0; k < p.size; ++k)
+            for (int v = 0; v < alphabet_; ++v)
+                if (const std::int64_t m = engine_.massUnitsOf(static_cast<CellValue>(v)))
+                    d = d + z3::ite(after.is[p.cells[k]][v], ctx_.int_val(static_cast<int64_t>(m)), ctx_.int_val(0)) -
+                        z3::ite(before.is[p.cells[k]][v], ctx_.int_val(static_cast<int64_t>(m)), ctx_.int_val(0));
+        return z3::to_real(d) / ctx_.real_val(static_cast<int64_t>(engine_.massDenominator()));
+    }
+    default: throw InputError("internal: not a number expression");
+    }
+}
+
+z3::expr SmtEncoding::lexLessAfter(const std::vector<Expr>& ranking, int placed, const State& after, const State& before) {
+    z3::expr less = ctx_.bool_val(false);
+    for (int k = static_cast<int>(ranking.size()) - 1; k >= 0; --k) {
+        z3::expr d = delta(ranking[k], placed, after, before);
+        less = d < 0 || (d == 0 && less);
+    }
+    return less;
+}
+
+std::vector<CellValue> SmtEncoding::decode(const z3::model& m, const State& s) const {
+    std::vector<CellValue> cells;
+    for (const auto& row : s.is) {
+        CellValue value = 0;
+        for (int v = 0; v < alphabet_; ++v)
+            if (m.eval(row[v], true).is_true()) value = static_cast<CellValue>(v);
+        cells.push_back(value);
+    }
+    return cells;
+}
+
+}  // namespace holon::checker

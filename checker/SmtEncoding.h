@@ -1,0 +1,75 @@
+#pragma once
+// The one translation from the rule IR (through the engine's compiled tables) to Z3 expressions.
+// Z3 appears only here and in Obligations.cpp.
+
+#include "rules/Engine.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+#include <z3++.h>
+
+namespace holon::checker {
+
+class SmtEncoding {
+public:
+    /// `engine` must cover every input combination (Engine(..., true)) when inputs are left open.
+    SmtEncoding(z3::context& ctx, const rules::Engine& engine);
+
+    /// A configuration, one-hot: is[i][v] says cell i holds state v; exactly one per cell (the
+    /// domain constraints go to `facts()`).
+    struct State {
+        std::vector<std::vector<z3::expr>> is;
+    };
+    State state(const std::string& name);
+    /// Facts every query asserts: domains of all states made so far.
+    const std::vector<z3::expr>& facts() const { return facts_; }
+    /// Fixes the inputs to the problem's (otherwise each cell's inputs are free booleans).
+    z3::expr inputsAre(const std::vector<std::uint32_t>& inputs) const;
+    z3::expr configurationIs(const State& s, const std::vector<rules::CellValue>& cells) const;
+
+    /// A non-local expression of the system. `positive`: the expression occurs under an even number
+    /// of negations; connectivity and pointer reachability are then encoded by existential
+    /// witnesses (ranks), and under odd negations by refutations (a cut, a pointer-closed set).
+    z3::expr holds(const rules::Expr& e, const State& s, bool positive = true);
+    z3::expr number(const rules::Expr& e, const State& s);
+    z3::expr legal(const State& s);
+    /// Placed instance p fires from `from` to `to` (left side, guard, rewrite, and frame).
+    z3::expr fires(int placed, const State& from, const State& to);
+    /// Left side and guard of placed instance p hold (locally enabled).
+    z3::expr matches(int placed, const State& s);
+    /// One step: `selector` picks the instance; the successor must be legal.
+    z3::expr step(const State& from, const State& to, const z3::expr& selector);
+    /// (rank of a) <lex (rank of b).
+    z3::expr lexLess(const std::vector<rules::Expr>& ranking, const State& a, const State& b);
+    /// The same when b steps to a by placed instance p: numbers are linear in counts and mass, so
+    /// with the frame condition their change is a sum over the instance's own cells.
+    z3::expr lexLessAfter(const std::vector<rules::Expr>& ranking, int placed, const State& after, const State& before);
+    z3::expr massUnits(const State& s);
+
+    /// Decodes a configuration from a model.
+    std::vector<rules::CellValue> decode(const z3::model& m, const State& s) const;
+
+private:
+    z3::expr member(const State& s, int cell, const std::function<bool(int combo, rules::CellValue v)>& accepts);
+    z3::expr memberPred(const State& s, int cell, const rules::CellPredicate& pred);
+    z3::expr inputCombo(int cell, int combo) const;
+    z3::expr guard(const rules::Engine::GuardNode& g, int placed, const State& s);
+    z3::expr guardNumber(const rules::Engine::GuardNode& g, int placed, const State& s);
+    z3::expr connected(const rules::CellPredicate& pred, const State& s, bool positive);
+    z3::expr reaches(const rules::Expr& e, const State& s, bool positive);
+    /// Cell `to` of the successor takes the rewrite of cell `from` of the predecessor.
+    z3::expr rewritten(int placed, int k, const State& before, int fromCell, const State& after, int toCell) const;
+    z3::expr sameCell(const State& a, int i, const State& b, int j) const;
+    z3::expr fresh(const std::string& prefix, const z3::sort& sort);
+    z3::expr delta(const rules::Expr& e, int placed, const State& after, const State& before);
+
+    z3::context& ctx_;
+    const rules::Engine& engine_;
+    int alphabet_;
+    std::vector<std::vector<z3::expr>> inputBits_;  // [cell][input]
+    std::vector<z3::expr> facts_;
+    int counter_ = 0;
+};
+
+}  // namespace holon::checker

@@ -1,0 +1,125 @@
+// `holon verify FILE --region SPEC`: prove a system's properties for every configuration of a
+// bounded region with Z3, print a table of obligations, and confirm each counterexample with the
+// reference interpreter before showing it.
+
+#include "checker/Draw.h"
+#include "checker/Obligations.h"
+#include "cli/Commands.h"
+#include "cli/Inputs.h"
+#include "rules/ConfigIo.h"
+#include "rules/Error.h"
+
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <unistd.h>
+
+namespace holon::cli {
+
+namespace {
+
+struct VerifyArgs {
+    std::string file, region, traceOut, svg, smtOut;
+    std::vector<std::string> from, inputs, properties, noWarnings;
+    int depth = 0;
+    double timeout = 120;
+    bool json = false;
+};
+
+int run(const VerifyArgs& a) {
+    auto system = loadRules(a.file, a.noWarnings);
+    if (!system) return 2;
+    const rules::Region region = rules::Region::parse(a.region, 4096);
+    rules::Model model(*system, region.lattice());
+    rules::Interpreter in(model, region);
+    checker::VerifyOptions options;
+    options.timeoutSeconds = a.timeout;
+    options.depth = a.depth;
+    options.properties = a.properties;
+    options.smtOut = a.smtOut;
+    if (a.depth > 0 && a.from.empty()) throw InputError("--depth needs initial configurations: --from CONFIG");
+    const auto inputs = readInputs(in, a.inputs);
+    for (const std::string& path : a.from) {
+        rules::Configuration c = rules::readConfigFile(in, path);
+        for (int i = 0; i < region.size(); ++i) c.inputs[i] |= inputs[i];
+        if (!in.legal(c)) throw InputError(path + ": this configuration violates a constraint of '" + system->name + "'");
+        options.initial.push_back(c);
+    }
+    const bool terminal = isatty(2) && !a.json;
+    auto report = checker::verify(model, region, options, [&](const std::string& name) {
+        if (terminal) std::cerr << "\r  proving " << name << "...                    " << std::flush;
+    });
+    if (terminal) std::cerr << "\r" << std::string(60, ' ') << "\r";
+
+    const checker::PropertyResult* shown = nullptr;
+    for (auto& o : report.obligations) {
+        if (o.result.verdict != checker::Verdict::Violated) continue;
+        std::string why;
+        const bool ok = checker::confirmCounterexample(o.result, model, region, &why);
+        o.result.witness["confirmed"] = ok;
+        if (!ok) std::cerr << "holon verify: internal error: the counterexample for '" << o.result.name << "' is not confirmed: " << why << '\n';
+        if (!shown) shown = &o.result;
+    }
+    std::vector<std::uint32_t> shownInputs(region.size(), 0);
+    if (shown && shown->witness.contains("inputs")) shownInputs = shown->witness["inputs"].get<std::vector<std::uint32_t>>();
+    else if (!options.initial.empty()) shownInputs = options.initial.front().inputs;
+    const rules::Engine drawing(model, region, shownInputs);
+    if (shown && !a.traceOut.empty()) {
+        std::ofstream out(a.traceOut);
+        if (!out) throw InputError("cannot write '" + a.traceOut + "'");
+        out << checker::toItf(*shown->trace, drawing, a.file).dump(2) << '\n';
+    }
+    if (shown && !a.svg.empty()) {
+        std::ofstream out(a.svg);
+        if (!out) throw InputError("cannot write '" + a.svg + "'");
+        out << checker::drawTraceSvg(*shown->trace, drawing, system->name + " on " + region.spec() + ": " + shown->name + " -- " + shown->trace->description);
+    }
+    if (a.json) {
+        std::cout << report.toJson().dump(2) << '\n';
+        return report.counterexample() ? 1 : 0;
+    }
+    std::cout << system->name << " on " << region.spec() << ": every configuration of the region\n\n  " << std::left << std::setw(22)
+              << "obligation" << std::setw(16) << "verdict" << std::setw(10) << "time" << "evidence\n";
+    for (const auto& o : report.obligations)
+        std::cout << "  " << std::setw(22) << o.result.name << std::setw(16) << checker::proofVerdictName(o.result.verdict) << std::setw(10)
+                  << (std::to_string(static_cast<int>(o.result.seconds * 1000)) + " ms") << o.result.summary << '\n';
+    if (shown) {
+        std::cout << "\ncounterexample for '" << shown->name << "' (confirmed by the reference interpreter)\n"
+                  << checker::drawTraceAscii(*shown->trace, drawing);
+        if (!shownInputs.empty() && !system->inputs.empty()) {
+            std::vector<rules::CellValue> mask(region.size());
+            for (int i = 0; i < region.size(); ++i) mask[i] = shownInputs[i] ? 1 : 0;
+            std::cout << "-- inputs set (" << system->inputs[0] << (system->inputs.size() > 1 ? ", ..." : "") << "):\n";
+            for (int i = 0; i < region.size(); ++i) mask[i] = static_cast<rules::CellValue>(shownInputs[i] != 0);
+            rules::Configuration c = in.empty();
+            std::string picture = checker::drawAscii(drawing, std::vector<rules::CellValue>(region.size(), 0));
+            int k = 0;
+            for (char& ch : picture)
+                if (ch == '.') ch = mask[k++] ? '#' : '.';
+            std::cout << picture;
+        }
+    }
+    return report.counterexample() ? 1 : 0;
+}
+
+}  // namespace
+
+Run addVerifyCommand(CLI::App& app) {
+    auto a = std::make_shared<VerifyArgs>();
+    CLI::App* sub = app.add_subcommand("verify", "Prove properties for every configuration of a bounded region with Z3");
+    sub->add_option("file", a->file, "rule file (.holon)")->required();
+    sub->add_option("--region", a->region, "bounded region: square:WxH, cubic:WxHxD or hex:rR")->required();
+    sub->add_option("--property", a->properties, "prove only this property (repeatable)");
+    sub->add_option("--depth", a->depth, "also bounded model checking of the invariants to this depth from --from");
+    sub->add_option("--from", a->from, "initial configuration for --depth (JSON or ASCII art); repeatable");
+    sub->add_option("--input", a->inputs, "inputs of the initial configurations: NAME=FILE (ASCII mask)");
+    sub->add_option("--timeout", a->timeout, "seconds per obligation (default 120)");
+    sub->add_flag("--json", a->json, "print the report as JSON");
+    sub->add_option("--smt-out", a->smtOut, "write every obligation as SMT-LIB2 into this directory");
+    sub->add_option("--trace-out", a->traceOut, "write the first counterexample as an ITF JSON trace");
+    sub->add_option("--svg", a->svg, "draw the first counterexample as SVG");
+    sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
+    return [a] { return run(*a); };
+}
+
+}  // namespace holon::cli
