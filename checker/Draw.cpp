@@ -33,7 +33,7 @@ std::vector<int> changedCells(const Trace& t, std::size_t k) {
 }
 
 std::string stepTitle(const Trace& t, const rules::Engine& e, std::size_t k) {
-    if (t.steps[k].placed < 0) return "initial";
+    if (t.steps[k].placed < 0) return k == 0 ? "initial" : "adjacent, not one rule step away";
     const auto& p = e.instances()[t.steps[k].placed];
     const rules::Vec a = e.region().cell(p.cells[0]);
     std::string title = e.model().rules()[p.rule].name + " at (" + std::to_string(a.x) + "," + std::to_string(a.y);

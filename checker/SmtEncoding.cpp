@@ -37,12 +37,16 @@ SmtEncoding::State SmtEncoding::state(const std::string& name) {
     State s;
     for (int i = 0; i < engine_.region().size(); ++i) {
         std::vector<z3::expr> row;
-        z3::expr_vector vec(ctx_);
+        z3::expr some = ctx_.bool_val(false);
         for (int v = 0; v < alphabet_; ++v) {
             row.push_back(ctx_.bool_const((name + "_" + std::to_string(i) + "_" + std::to_string(v)).c_str()));
-            vec.push_back(row.back());
+            some = some || row.back();
         }
-        facts_.push_back(z3::atleast(vec, 1) && z3::atmost(vec, 1));
+        // Exactly one state per cell, in plain SMT-LIB (no pseudo-Boolean extension) so that
+        // every solver reads the exported obligations.
+        facts_.push_back(some);
+        for (int v = 0; v < alphabet_; ++v)
+            for (int w = v + 1; w < alphabet_; ++w) facts_.push_back(!(row[v] && row[w]));
         s.is.push_back(row);
     }
     return s;
@@ -174,7 +178,10 @@ z3::expr SmtEncoding::connected(const rules::CellPredicate& pred, const State& s
         z3::expr f = ctx_.bool_val(true), someMember = ctx_.bool_val(false), someRoot = ctx_.bool_val(false);
         z3::expr roots = ctx_.int_val(0);
         std::vector<z3::expr> rank, root;
-        for (int i = 0; i < n; ++i) rank.push_back(fresh("rank", ctx_.int_sort())), root.push_back(fresh("root", ctx_.bool_sort()));
+        for (int i = 0; i < n; ++i) {
+            rank.push_back(fresh("rank", ctx_.int_sort())), root.push_back(fresh("root", ctx_.bool_sort()));
+            facts_.push_back(rank.back() >= 0 && rank.back() < n);  // bounded ranks help the solver
+        }
         for (int i = 0; i < n; ++i) {
             someMember = someMember || m[i];
             someRoot = someRoot || root[i];
@@ -213,7 +220,10 @@ z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
     if (positive) {
         // Ranks fall along pointers until a target cell.
         std::vector<z3::expr> rank;
-        for (int i = 0; i < n; ++i) rank.push_back(fresh("prank", ctx_.int_sort()));
+        for (int i = 0; i < n; ++i) {
+            rank.push_back(fresh("prank", ctx_.int_sort()));
+            facts_.push_back(rank.back() >= 0 && rank.back() < n);
+        }
         z3::expr f = ctx_.bool_val(true);
         for (int i = 0; i < n; ++i) {
             z3::expr ok = ctx_.bool_val(false);
