@@ -1,0 +1,59 @@
+// Proof-obligation timing (issue: Z3 proofs): seconds per planner lemma (seed 000 §IV-C) for the
+// U/P/F planner over intermediate, per region, and how it grows. Each cell is the median of the
+// runs; "unknown" means the per-obligation timeout was hit.
+// Usage: verify_bench [--runs N] [--timeout S] [--regions square:2x2,square:3x3,...]
+
+#include "checker/Obligations.h"
+#include "rules/Library.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace holon;
+
+int main(int argc, char** argv) {
+    int runs = 3;
+    double timeout = 60;
+    std::string regions = "square:2x2,square:3x2,square:3x3,square:4x3,square:4x4,hex:r1,cubic:2x2x2";
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string flag = argv[i];
+        if (flag == "--runs") runs = std::atoi(argv[i + 1]);
+        else if (flag == "--timeout") timeout = std::atof(argv[i + 1]);
+        else if (flag == "--regions") regions = argv[i + 1];
+    }
+    const rules::System system = rules::librarySystem("planner_intermediate");
+    std::printf("verify benchmark: planner_intermediate, median of %d runs, timeout %.0f s per obligation\n", runs, timeout);
+    std::printf("%-14s %6s %14s %14s %14s %10s\n", "region", "cells", "safety s", "termination s", "progress s", "total s");
+    std::istringstream list(regions);
+    for (std::string spec; std::getline(list, spec, ',');) {
+        const rules::Region region = rules::Region::parse(spec);
+        const rules::Model model(system, region.lattice());
+        std::vector<std::vector<double>> seconds(3);
+        std::vector<std::string> verdict(3, "proved");
+        for (int r = 0; r < runs; ++r) {
+            checker::VerifyOptions o;
+            o.timeoutSeconds = timeout;
+            const auto report = checker::verify(model, region, o);
+            for (int k = 0; k < 3; ++k) {
+                seconds[k].push_back(report.obligations[k].result.seconds);
+                if (report.obligations[k].result.verdict != checker::Verdict::Holds) verdict[k] = checker::proofVerdictName(report.obligations[k].result.verdict);
+            }
+        }
+        double total = 0;
+        std::string cells[3];
+        for (int k = 0; k < 3; ++k) {
+            std::sort(seconds[k].begin(), seconds[k].end());
+            const double m = seconds[k][seconds[k].size() / 2];
+            total += m;
+            char buf[64];
+            std::snprintf(buf, sizeof buf, verdict[k] == "proved" ? "%.2f" : "%.0f %s", m, verdict[k] == "proved" ? "" : verdict[k].c_str());
+            cells[k] = buf;
+        }
+        std::printf("%-14s %6d %14s %14s %14s %10.2f\n", spec.c_str(), region.size(), cells[0].c_str(), cells[1].c_str(), cells[2].c_str(), total);
+    }
+    return 0;
+}
