@@ -16,15 +16,6 @@
 
 namespace holon::checker {
 
-std::string verdictName(Verdict v) {
-    switch (v) {
-    case Verdict::Holds: return "holds";
-    case Verdict::Violated: return "violated";
-    case Verdict::Unknown: return "unknown";
-    }
-    return "";
-}
-
 namespace {
 
 /// Candidate witnesses: violating pairs among the configurations with the three smallest module

@@ -20,15 +20,6 @@
 
 namespace holon::checker {
 
-std::string proofVerdictName(Verdict v) {
-    switch (v) {
-    case Verdict::Holds: return "proved";
-    case Verdict::Violated: return "counterexample";
-    case Verdict::Unknown: return "unknown";
-    }
-    return "";
-}
-
 bool VerifyReport::counterexample() const {
     for (const Obligation& o : obligations)
         if (o.result.verdict == Verdict::Violated) return true;
@@ -57,20 +48,31 @@ public:
     Runner(const rules::Model& model, const rules::Region& region, const VerifyOptions& options)
         : model_(model), region_(region), options_(options), engine_(model, region, {}, true) {}
 
+    static Obligation named(const std::string& name, const std::string& kind) {
+        Obligation o;
+        o.result.name = name;
+        o.result.kind = kind;
+        o.expected = "unsat";
+        return o;
+    }
+
+    /// A solver with the per-obligation timeout and the encoding's domain facts.
+    z3::solver newSolver(z3::context& ctx, SmtEncoding& enc) const {
+        z3::solver solver(ctx);
+        z3::params params(ctx);
+        params.set("timeout", static_cast<unsigned>(options_.timeoutSeconds * 1000));
+        solver.set(params);
+        for (const z3::expr& f : enc.facts()) solver.add(f);
+        return solver;
+    }
+
     /// Solves `query` (after the encoding's domain facts); a model becomes a counterexample via
     /// `decode`.
     Obligation solve(const std::string& name, const std::string& kind, z3::context& ctx, SmtEncoding& enc, const z3::expr& query,
                      const std::function<void(const z3::model&, PropertyResult&)>& decode, const std::string& provedText) {
         const auto start = std::chrono::steady_clock::now();
-        Obligation o;
-        o.result.name = name;
-        o.result.kind = kind;
-        o.expected = "unsat";
-        z3::solver solver(ctx);
-        z3::params p(ctx);
-        p.set("timeout", static_cast<unsigned>(options_.timeoutSeconds * 1000));
-        solver.set(p);
-        for (const z3::expr& f : enc.facts()) solver.add(f);
+        Obligation o = named(name, kind);
+        z3::solver solver = newSolver(ctx, enc);
         solver.add(query);
         if (!options_.smtOut.empty()) write(name, solver, o);
         const z3::check_result r = solver.check();
@@ -99,16 +101,9 @@ public:
                         const std::function<z3::expr(int)>& perInstance,
                         const std::function<void(const z3::model&, int, PropertyResult&)>& decode, const std::string& provedText) {
         const auto start = std::chrono::steady_clock::now();
-        Obligation o;
-        o.result.name = name;
-        o.result.kind = kind;
-        o.expected = "unsat";
+        Obligation o = named(name, kind);
         const int count = static_cast<int>(engine_.instances().size());
-        z3::solver solver(ctx);
-        z3::params params(ctx);
-        params.set("timeout", static_cast<unsigned>(options_.timeoutSeconds * 1000));
-        solver.set(params);
-        for (const z3::expr& f : enc.facts()) solver.add(f);
+        z3::solver solver = newSolver(ctx, enc);
         solver.add(base);
         std::vector<z3::expr> act;
         z3::expr_vector acts(ctx);

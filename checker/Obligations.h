@@ -34,8 +34,6 @@ struct VerifyReport {
     nlohmann::json toJson() const;
 };
 
-std::string proofVerdictName(Verdict v);
-
 /// Checks a counterexample with the reference interpreter: a trace replays step by step; a
 /// progress witness is legal, outside the goal, with nothing enabled; a holonomy witness is two legal
 /// configurations no single step connects.

@@ -10,7 +10,15 @@
 namespace holon::checker {
 
 enum class Verdict { Holds, Violated, Unknown };
-std::string verdictName(Verdict v);
+
+/// As the explorer says it: holds, violated, unknown.
+inline std::string verdictName(Verdict v) {
+    return v == Verdict::Holds ? "holds" : v == Verdict::Violated ? "violated" : "unknown";
+}
+/// As a proof says it: proved, counterexample, unknown.
+inline std::string proofVerdictName(Verdict v) {
+    return v == Verdict::Holds ? "proved" : v == Verdict::Violated ? "counterexample" : "unknown";
+}
 
 struct PropertyResult {
     std::string name, kind;
