@@ -55,7 +55,10 @@ char cellChar(const rules::Engine& e, int, CellValue v) {
 }
 
 std::string drawAscii(const rules::Engine& e, const std::vector<CellValue>& cells) {
-    const rules::Region& r = e.region();
+    return drawCells(e.region(), [&](int i) { return cellChar(e, i, cells[i]); });
+}
+
+std::string drawCells(const rules::Region& r, const std::function<char(int)>& charOf) {
     const rules::Vec lo = r.lower(), ext = r.extent();
     const bool hex = r.lattice().kind() == rules::LatticeKind::Hex2D;
     std::ostringstream out;
@@ -68,7 +71,7 @@ std::string drawAscii(const rules::Engine& e, const std::vector<CellValue>& cell
                 const int i = r.indexOf({lo.x + x, lo.y + y, lo.z + z});
                 if (i < 0) continue;
                 if (hex && !first) out << ' ';
-                out << cellChar(e, i, cells[i]);
+                out << charOf(i);
                 first = false;
             }
         }

@@ -3,6 +3,7 @@
 
 #include "checker/Trace.h"
 
+#include <functional>
 #include <string>
 
 namespace holon::checker {
@@ -11,6 +12,8 @@ namespace holon::checker {
 /// (a P shows where its parent is), else the first letter of its name; '.' for empty.
 char cellChar(const rules::Engine& engine, int cell, CellValue v);
 std::string drawAscii(const rules::Engine& engine, const std::vector<CellValue>& cells);
+/// The region's layout with one character per cell from `charOf(cell)` (3D: z slices side by side).
+std::string drawCells(const rules::Region& region, const std::function<char(int cell)>& charOf);
 /// Every state of the trace with the rule that led to it and the cells that changed.
 std::string drawTraceAscii(const Trace& trace, const rules::Engine& engine);
 /// Frames left to right; changed cells outlined in red, the rule's other cells (context, blocking)

@@ -36,13 +36,10 @@ bool isSuccessor(const Explorer& ex, StateId from, StateId to) {
 }
 
 PropertyResult finish(const Explorer& ex, const GraphView& graph, PropertyResult r, std::uint64_t violations, const Witnesses& w,
-                      const std::string& adjacency) {
+                      const std::string& adjacency, const std::string& holdsText) {
     if (violations == 0) {
         r.verdict = ex.stats().stopped == StopReason::Finished ? Verdict::Holds : Verdict::Unknown;
-        r.summary = r.verdict == Verdict::Holds
-                        ? (adjacency.find("transfers") != std::string::npos
-                               ? "every pixel step is one occupancy change plus transfers, or unreachable"
-                               : "configurations one " + adjacency + " apart are one rule step apart, or unreachable")
+        r.summary = r.verdict == Verdict::Holds ? holdsText
                                                 : "no violation among the states explored before the limit";
         return r;
     }
@@ -126,7 +123,9 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
                 }
             }
         }
-        PropertyResult out = finish(ex, graph, r, violations, best, byMove ? "module move" : "occupancy toggle");
+        const std::string adjacency = byMove ? "module move" : "occupancy toggle";
+        PropertyResult out = finish(ex, graph, r, violations, best, adjacency,
+                                    "configurations one " + adjacency + " apart are one rule step apart, or unreachable");
         out.seconds = seconds();
         return out;
     }
@@ -198,7 +197,8 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
             best.add(c, same->second, std::popcount(occupancy[c]));
         }
     }
-    PropertyResult out = finish(ex, graph, r, violations, best, "occupancy toggle (modulo transfers)");
+    PropertyResult out = finish(ex, graph, r, violations, best, "occupancy toggle (modulo transfers)",
+                                "every pixel step is one occupancy change plus transfers, or unreachable");
     out.seconds = seconds();
     return out;
 }

@@ -168,6 +168,15 @@ public:
     rules::Engine engine_;
 };
 
+/// An obligation holon does not encode: verdict unknown, with the reason.
+Obligation notEncoded(const std::string& name, const std::string& kind, const std::string& why) {
+    Obligation o;
+    o.result.name = name;
+    o.result.kind = kind;
+    o.result.summary = why;
+    return o;
+}
+
 std::vector<std::uint32_t> inputsOf(const z3::model& m, z3::context& ctx, const rules::Engine& e) {
     std::vector<std::uint32_t> in(e.region().size(), 0);
     for (int i = 0; i < e.region().size(); ++i)
@@ -314,11 +323,8 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         }
         case rules::Property::Kind::Progress: {
             if (!system.constraints.empty()) {
-                Obligation o;
-                o.result.name = p.name;
-                o.result.kind = "progress";
-                o.result.summary = "not encoded for systems with non-local constraints (enabledness would need a successor per instance); use holon check";
-                report.obligations.push_back(o);
+                report.obligations.push_back(notEncoded(p.name, "progress",
+                                                        "not encoded for systems with non-local constraints (enabledness would need a successor per instance); use holon check"));
                 break;
             }
             auto c = enc.state("c");
@@ -341,11 +347,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         case rules::Property::Kind::Holonomic: {
             const bool byMove = p.adjacency == rules::Property::Adjacency::Move;
             if (!byMove && (model.alphabet().size() > 2 || !p.exprs.empty())) {
-                Obligation o;
-                o.result.name = p.name;
-                o.result.kind = "holonomic";
-                o.result.summary = "holonomy modulo transfers is checked by holon check (it needs reachability)";
-                report.obligations.push_back(o);
+                report.obligations.push_back(notEncoded(p.name, "holonomic", "holonomy modulo transfers is checked by holon check (it needs reachability)"));
                 break;
             }
             auto c = enc.state("c"), d = enc.state("d");

@@ -352,15 +352,6 @@ z3::expr SmtEncoding::step(const State& from, const State& to, const z3::expr& s
     return f && legal(to);
 }
 
-z3::expr SmtEncoding::lexLess(const std::vector<Expr>& ranking, const State& a, const State& b) {
-    z3::expr less = ctx_.bool_val(false);
-    for (int k = static_cast<int>(ranking.size()) - 1; k >= 0; --k) {
-        z3::expr x = number(ranking[k], a), y = number(ranking[k], b);
-        less = x < y || (x == y && less);
-    }
-    return less;
-}
-
 z3::expr SmtEncoding::delta(const Expr& e, int placed, const State& after, const State& before) {
     const auto& p = engine_.instances()[placed];
     switch (e.kind) {

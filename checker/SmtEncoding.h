@@ -40,9 +40,7 @@ public:
     z3::expr matches(int placed, const State& s);
     /// One step: `selector` picks the instance; the successor must be legal.
     z3::expr step(const State& from, const State& to, const z3::expr& selector);
-    /// (rank of a) <lex (rank of b).
-    z3::expr lexLess(const std::vector<rules::Expr>& ranking, const State& a, const State& b);
-    /// The same when b steps to a by placed instance p: numbers are linear in counts and mass, so
+    /// (rank of a) <lex (rank of b) when b steps to a by placed instance p: numbers are linear in counts and mass, so
     /// with the frame condition their change is a sum over the instance's own cells.
     z3::expr lexLessAfter(const std::vector<rules::Expr>& ranking, int placed, const State& after, const State& before);
     z3::expr massUnits(const State& s);

@@ -87,16 +87,8 @@ int run(const VerifyArgs& a) {
         std::cout << "\ncounterexample for '" << shown->name << "' (confirmed by the reference interpreter)\n"
                   << checker::drawTraceAscii(*shown->trace, drawing);
         if (!shownInputs.empty() && !system->inputs.empty()) {
-            std::vector<rules::CellValue> mask(region.size());
-            for (int i = 0; i < region.size(); ++i) mask[i] = shownInputs[i] ? 1 : 0;
-            std::cout << "-- inputs set (" << system->inputs[0] << (system->inputs.size() > 1 ? ", ..." : "") << "):\n";
-            for (int i = 0; i < region.size(); ++i) mask[i] = static_cast<rules::CellValue>(shownInputs[i] != 0);
-            rules::Configuration c = in.empty();
-            std::string picture = checker::drawAscii(drawing, std::vector<rules::CellValue>(region.size(), 0));
-            int k = 0;
-            for (char& ch : picture)
-                if (ch == '.') ch = mask[k++] ? '#' : '.';
-            std::cout << picture;
+            std::cout << "-- inputs set (" << system->inputs[0] << (system->inputs.size() > 1 ? ", ..." : "") << "):\n"
+                      << checker::drawCells(region, [&](int i) { return shownInputs[i] ? '#' : '.'; });
         }
     }
     return report.counterexample() ? 1 : 0;

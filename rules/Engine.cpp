@@ -309,8 +309,6 @@ bool Engine::Evaluator::legal() const {
     return true;
 }
 
-bool Engine::Evaluator::holds(const Expr& e) const { return engine_->holds(e, cells_.data()); }
-
 Rational Engine::Evaluator::fastNumber(const CompiledExpr& e) const {
     auto kid = [&](int k) -> const CompiledExpr& { return e.kids[k]; };
     switch (e.kind) {

@@ -106,7 +106,6 @@ public:
         void undo(int placed, const CellValue* saved);
         void set(int cell, CellValue value);
         bool legal() const;
-        bool holds(const Expr& e) const;
 
     private:
         bool fastHolds(const CompiledExpr& n) const;

@@ -24,18 +24,21 @@ bool continuesLine(const Token& t) {
 }
 
 bool startsDeclaration(std::string_view rest) {
-    static constexpr std::array<std::string_view, 13> keywords{"system",     "lattice",   "field",     "states",  "input",
-                                                               "mass",       "rule",      "constraint", "goal",   "invariant",
-                                                               "ranking",    "progress",  "holonomic"};
-    for (auto k : keywords)
+    for (const std::string& k : declarationKeywords())
         if (rest.substr(0, k.size()) == k && (rest.size() == k.size() || rest[k.size()] == ' ')) return true;
-    return rest.substr(0, 10) == "conserves ";
+    return false;
 }
 
 bool identStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
 bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
 
 }  // namespace
+
+const std::vector<std::string>& declarationKeywords() {
+    static const std::vector<std::string> words{"system",     "lattice", "field",     "states",  "input",     "mass",      "rule",
+                                                "constraint", "goal",    "invariant", "ranking", "progress", "holonomic", "conserves"};
+    return words;
+}
 
 std::vector<Token> tokenize(std::string_view src, Diagnostics& diagnostics) {
     std::vector<Token> tokens;

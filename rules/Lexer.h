@@ -17,6 +17,9 @@ struct Token {
     bool is(std::string_view t) const { return (kind == Kind::Punct || kind == Kind::Ident) && text == t; }
 };
 
+/// The words that start a declaration, in the order the README lists them.
+const std::vector<std::string>& declarationKeywords();
+
 std::vector<Token> tokenize(std::string_view source, Diagnostics& diagnostics);
 
 }  // namespace holon::rules

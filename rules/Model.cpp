@@ -140,8 +140,8 @@ Model::Model(const System& system, const Lattice& lattice)
             std::string key;
             for (const std::string& c : cells) key += c + ";";
             if (const Expr* g = dr.guard()) {
-                // Guards name cells by index; print them relative to the lowest cell too. nbr@k is
-                // written with its cell's offset by rewriting around-indices through the ref printer.
+                // Guards name pattern cells by index (nbr@k), so the key also lists the offsets in
+                // index order: two orientations merge only when they agree cell by cell.
                 key += "if" + printExpr(system, *g, refFrom(low));
                 for (std::size_t i = 0; i < offsets.size(); ++i) key += vecText(offsets[i] - low);
             }

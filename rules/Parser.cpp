@@ -19,8 +19,7 @@ namespace holon::rules {
 
 namespace {
 
-const std::set<std::string> kReserved{"system", "lattice", "field", "states", "input", "mass", "rule", "constraint",
-                                      "goal", "invariant", "ranking", "progress", "holonomic", "conserves", "if",
+const std::set<std::string> kReserved{"if",
                                       "and", "or", "not", "implies", "assuming", "by", "nbr", "none", "dir", "true",
                                       "false", "count", "all", "some", "no", "connected", "reaches", "any", "of"};
 
@@ -122,9 +121,13 @@ private:
         if (tok.kind != Token::Kind::Ident) fail(tok.loc, "expected " + std::string(what) + ", found " + describe(tok));
         return next();
     }
+    static bool reserved(const std::string& word) {
+        const auto& decl = declarationKeywords();
+        return kReserved.count(word) || std::find(decl.begin(), decl.end(), word) != decl.end();
+    }
     const Token& freshName(std::string_view what) {
         const Token& tok = identifier(what);
-        if (kReserved.count(tok.text)) fail(tok.loc, "'" + tok.text + "' is a keyword and cannot name " + std::string(what));
+        if (reserved(tok.text)) fail(tok.loc, "'" + tok.text + "' is a keyword and cannot name " + std::string(what));
         return tok;
     }
     int integer(std::string_view what) {
@@ -188,8 +191,7 @@ private:
         }
         if (k == "invariant" || k == "ranking" || k == "progress" || k == "holonomic" || k == "conserves")
             return propertyDecl(kw);
-        const std::string hint = suggestion(k, {"system", "lattice", "field", "states", "input", "mass", "rule", "constraint",
-                                                "goal", "invariant", "ranking", "progress", "holonomic", "conserves"});
+        const std::string hint = suggestion(k, declarationKeywords());
         if (!hint.empty()) fail(kw.loc, "unknown declaration '" + k + "'" + hint);
         fail(kw.loc, "unknown declaration '" + k +
                          "'; expected system, lattice, field, states, input, mass, rule, constraint, goal, invariant, "
@@ -333,7 +335,6 @@ private:
     CellTerm cellTerm(bool allowOffset) {
         CellTerm c;
         c.loc = peek().loc;
-        bool explicitBase = true;
         if (allowOffset && at("@") && peek(1).kind == Token::Kind::Int) {
             next();
             c.copyFrom = integer("a pattern cell index");
@@ -343,7 +344,6 @@ private:
         else if (accept("*")) c.base = CellTerm::Base::Any;
         else if (accept("#")) c.base = CellTerm::Base::Occupied;
         else {
-            explicitBase = false;
             c.atoms.push_back(atom());
         }
         while (accept("&")) c.atoms.push_back(atom());
@@ -352,7 +352,6 @@ private:
             if (c.base == CellTerm::Base::Empty) fail(a.loc, "an empty cell '_' has no fields to test");
             c.base = CellTerm::Base::Occupied;
         }
-        (void)explicitBase;
         if (at("@") && peek(1).is("(")) {
             if (!allowOffset) fail(peek().loc, "positions '@(...)' belong in rule patterns only");
             next(), next();
@@ -494,7 +493,7 @@ private:
         p.loc = kw.loc;
         const std::string& k = kw.text;
         auto optionalName = [&](const std::string& fallback) {
-            if (peek().kind == Token::Kind::Ident && !kReserved.count(peek().text)) return next().text;
+            if (peek().kind == Token::Kind::Ident && !reserved(peek().text)) return next().text;
             return fallback;
         };
         if (k == "invariant") {
