@@ -17,17 +17,7 @@
 
 namespace holon::rules {
 
-struct Engine::ShapeTables {
-    std::vector<Mask> lhs;
-    std::vector<std::vector<CellValue>> rhs;  // empty for a copy term
-    std::vector<int> copyFrom;
-    bool hasGuard = false;
-    GuardNode guard;
-};
-
 namespace {
-
-void setBit(std::vector<std::uint64_t>& bits, std::size_t i) { bits[i >> 6] |= std::uint64_t{1} << (i & 63); }
 
 void collectPredicates(const Expr& e, std::vector<const CellPredicate*>& out) {
     if (!e.pred.empty()) out.push_back(&e.pred);
@@ -35,90 +25,39 @@ void collectPredicates(const Expr& e, std::vector<const CellPredicate*>& out) {
     for (const Expr& k : e.kids) collectPredicates(k, out);
 }
 
-}  // namespace
-
-Engine::Mask Engine::compileTerm(const CellTerm& term, const std::vector<Vec>* pattern, Vec position,
-                                 const CellTerm* alsoInputs) const {
-    Mask m;
-    m.bits.assign((combos_.size() * alphabet_ + 63) / 64, 0);
-    for (std::size_t c = 0; c < combos_.size(); ++c) {
-        CellContext at{&model_->alphabet(), &model_->lattice(), position, combos_[c], pattern, false};
-        for (int v = 0; v < alphabet_; ++v) {
-            bool ok = matchesTerm(term, static_cast<CellValue>(v), at);
-            if (ok && alsoInputs)
-                for (const Atom& a : alsoInputs->atoms)
-                    if (a.kind == Atom::Kind::Input) {
-                        CellTerm only;
-                        only.atoms = {a};
-                        ok = ok && matchesTerm(only, static_cast<CellValue>(v), at);
-                    }
-            if (ok) setBit(m.bits, c * alphabet_ + v);
-        }
-    }
-    return m;
-}
-
-Engine::Mask Engine::compilePredicate(const CellPredicate& pred, const std::vector<Vec>* pattern, Vec position) const {
-    Mask m;
-    m.bits.assign((combos_.size() * alphabet_ + 63) / 64, 0);
-    for (const CellTerm& t : pred) {
-        Mask one = compileTerm(t, pattern, position, nullptr);
-        for (std::size_t i = 0; i < m.bits.size(); ++i) m.bits[i] |= one.bits[i];
-    }
-    return m;
-}
-
-Engine::Engine(const Model& model, const Region& region, const std::vector<std::uint32_t>& inputs, bool everyInputCombination)
-    : model_(&model), region_(&region), inputs_(inputs), alphabet_(model.alphabet().size()) {
-    if (static_cast<int>(inputs_.size()) != region.size()) inputs_.assign(region.size(), 0);
-    // Input combinations actually present, so masks stay small whatever the number of inputs.
-    combos_.push_back(0);
+/// The input combinations the tables must cover: those present in the region, or all of them.
+std::vector<std::uint32_t> combosFor(const Model& model, const std::vector<std::uint32_t>& inputs, bool everyInputCombination) {
+    std::vector<std::uint32_t> combos;
     if (everyInputCombination) {
         if (model.system().inputs.size() > 8) throw InputError("more than 8 inputs cannot be left open");
-        for (std::uint32_t c = 1; c < (1u << model.system().inputs.size()); ++c) combos_.push_back(c);
+        for (std::uint32_t c = 1; c < (1u << model.system().inputs.size()); ++c) combos.push_back(c);
     }
-    combo_.resize(region.size());
-    for (int i = 0; i < region.size(); ++i) {
-        auto it = std::find(combos_.begin(), combos_.end(), inputs_[i]);
-        if (it == combos_.end()) it = combos_.insert(combos_.end(), inputs_[i]);
-        combo_[i] = static_cast<int>(it - combos_.begin());
+    std::vector<bool> seen;
+    for (std::uint32_t in : inputs) {
+        if (in >= seen.size()) seen.resize(in + 1, false);
+        if (!seen[in]) seen[in] = true, combos.push_back(in);
     }
-    emptyCombo_ = 0;
+    return combos;
+}
 
+/// Region cells as seen by a compiled guard.
+struct RegionCells {
+    const Region* region;
+    const CellValue* cells;
+    const int* combos;
+    CellValue value(int i) const { return cells[i]; }
+    int combo(int i) const { return combos[i]; }
+    int neighbour(int i, int d) const { return region->neighbour(i, d); }
+};
+
+}  // namespace
+
+Engine::Engine(const Model& model, const Region& region, const std::vector<std::uint32_t>& inputs, bool everyInputCombination)
+    : model_(&model), region_(&region), inputs_(inputs.size() == static_cast<std::size_t>(region.size()) ? inputs : std::vector<std::uint32_t>(region.size(), 0)),
+      tables_(model, combosFor(model, inputs_, everyInputCombination)) {
+    combo_.resize(region.size());
+    for (int i = 0; i < region.size(); ++i) combo_[i] = tables_.comboIndex(inputs_[i]);
     const Lattice& lattice = model.lattice();
-    std::function<GuardNode(const Expr&, const RuleShape&)> compileGuard = [&](const Expr& e, const RuleShape& shape) {
-        GuardNode g;
-        g.kind = e.kind, g.op = e.op, g.value = e.value, g.around = e.around;
-        for (const Expr& k : e.kids) g.kids.push_back(compileGuard(k, shape));
-        if (e.around >= 0)
-            for (int d = 0; d < lattice.degree(); ++d)
-                g.perDirection.push_back(compilePredicate(e.pred, &shape.offsets, shape.offsets[e.around] + lattice.direction(d)).bits);
-        return g;
-    };
-    for (const RuleShape& shape : model.shapes()) {
-        const DirectedRule& rule = model.rules()[shape.rule];
-        if (shape.offsets.size() > kMaxCells) throw InputError("rule '" + rule.name + "' has more than 8 cells");
-        ShapeTables t;
-        for (std::size_t k = 0; k < shape.offsets.size(); ++k) {
-            t.lhs.push_back(compileTerm(rule.lhs()[k], &shape.offsets, shape.offsets[k], rule.reversed ? &rule.rhs()[k] : nullptr));
-            const CellTerm& rhs = rule.rhs()[k];
-            t.copyFrom.push_back(rhs.copyFrom);
-            std::vector<CellValue> table;
-            if (rhs.copyFrom < 0) {
-                CellContext at{&model.alphabet(), &lattice, shape.offsets[k], 0, &shape.offsets, false};
-                for (int v = 0; v < alphabet_; ++v) {
-                    const int w = rewriteTerm(rhs, static_cast<CellValue>(v), at);
-                    table.push_back(static_cast<CellValue>(w < 0 ? v : w));
-                }
-            }
-            t.rhs.push_back(std::move(table));
-        }
-        if (const Expr* g = rule.guard()) {
-            t.hasGuard = true;
-            t.guard = compileGuard(*g, shape);
-        }
-        shapes_.push_back(std::move(t));
-    }
     byCell_.resize(region.size());
     for (int s = 0; s < static_cast<int>(model.shapes().size()); ++s) {
         const RuleShape& shape = model.shapes()[s];
@@ -136,20 +75,9 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
             placed_.push_back(p);
         }
     }
-    shapesByFirst_.assign(combos_.size() * alphabet_, {});
-    for (std::size_t c = 0; c < combos_.size(); ++c)
-        for (int v = 0; v < alphabet_; ++v)
-            for (int sh = 0; sh < static_cast<int>(shapes_.size()); ++sh)
-                if (test(shapes_[sh].lhs[0], static_cast<int>(c), static_cast<CellValue>(v))) shapesByFirst_[c * alphabet_ + v].push_back(sh);
-    placedIndex_.assign(static_cast<std::size_t>(region.size()) * shapes_.size(), -1);
+    placedIndex_.assign(static_cast<std::size_t>(region.size()) * tables_.shapeCount(), -1);
     for (int p = 0; p < static_cast<int>(placed_.size()); ++p)
-        placedIndex_[static_cast<std::size_t>(placed_[p].cells[0]) * shapes_.size() + placed_[p].shape] = p;
-    // Masses as integers over the least common denominator.
-    for (int v = 0; v < alphabet_; ++v) massDen_ = std::lcm(massDen_, model.alphabet().mass(static_cast<CellValue>(v)).den());
-    for (int v = 0; v < alphabet_; ++v) {
-        Rational m = model.alphabet().mass(static_cast<CellValue>(v));
-        mass_.push_back(m.num() * (massDen_ / m.den()));
-    }
+        placedIndex_[static_cast<std::size_t>(placed_[p].cells[0]) * tables_.shapeCount() + placed_[p].shape] = p;
     std::vector<const CellPredicate*> preds;
     const System& s = model.system();
     for (const Constraint& c : s.constraints) collectPredicates(c.expr, preds);
@@ -160,7 +88,7 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     for (const CellPredicate* p : preds) {
         const std::string text = printPredicate(s, *p);
         auto [it, fresh] = byText.emplace(text, static_cast<int>(predicateMasks_.size()));
-        if (fresh) predicateMasks_.push_back(compilePredicate(*p, nullptr, {}));
+        if (fresh) predicateMasks_.push_back(tables_.compilePredicate(*p, nullptr, {}));
         predicateIndex_.emplace(p, it->second);
     }
     for (const Constraint& c : s.constraints) compiledConstraints_.push_back(compileExpr(c.expr));
@@ -172,17 +100,14 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     }
 }
 
-bool Engine::lhsAccepts(int placed, int k, int combo, CellValue v) const { return test(shapes_[placed_[placed].shape].lhs[k], combo, v); }
-int Engine::rhsCopyFrom(int placed, int k) const { return shapes_[placed_[placed].shape].copyFrom[k]; }
-CellValue Engine::rhsValue(int placed, int k, CellValue v) const { return shapes_[placed_[placed].shape].rhs[k][v]; }
+bool Engine::lhsAccepts(int placed, int k, int combo, CellValue v) const { return test(tables_.shape(placed_[placed].shape).lhs[k], combo, v); }
+int Engine::rhsCopyFrom(int placed, int k) const { return tables_.shape(placed_[placed].shape).copyFrom[k]; }
+CellValue Engine::rhsValue(int placed, int k, CellValue v) const { return tables_.shape(placed_[placed].shape).rhs[k][v]; }
 const Engine::GuardNode* Engine::guardOf(int placed) const {
-    const ShapeTables& t = shapes_[placed_[placed].shape];
+    const RuleTables::Shape& t = tables_.shape(placed_[placed].shape);
     return t.hasGuard ? &t.guard : nullptr;
 }
-bool Engine::guardAccepts(const GuardNode& node, int direction, int combo, CellValue v) const {
-    const std::size_t i = static_cast<std::size_t>(combo) * alphabet_ + v;
-    return (node.perDirection[direction][i >> 6] >> (i & 63)) & 1u;
-}
+bool Engine::guardAccepts(const GuardNode& node, int direction, int combo, CellValue v) const { return tables_.guardAccepts(node, direction, combo, v); }
 
 Engine::~Engine() = default;
 Engine::Engine(Engine&&) noexcept = default;
@@ -196,15 +121,15 @@ Engine::CompiledExpr Engine::compileExpr(const Expr& e) const {
 
 bool Engine::matches(const CellValue* cells, int placed) const {
     const Placed& p = placed_[placed];
-    const ShapeTables& t = shapes_[p.shape];
+    const RuleTables::Shape& t = tables_.shape(p.shape);
     for (int k = 0; k < p.size; ++k)
         if (!test(t.lhs[k], combo_[p.cells[k]], cells[p.cells[k]])) return false;
-    return !t.hasGuard || guard(t.guard, cells, p);
+    return !t.hasGuard || tables_.guard(t.guard, RegionCells{region_, cells, combo_.data()}, p.cells);
 }
 
 void Engine::apply(CellValue* cells, int placed, CellValue* saved) const {
     const Placed& p = placed_[placed];
-    const ShapeTables& t = shapes_[p.shape];
+    const RuleTables::Shape& t = tables_.shape(p.shape);
     for (int k = 0; k < p.size; ++k) saved[k] = cells[p.cells[k]];
     for (int k = 0; k < p.size; ++k)
         cells[p.cells[k]] = t.copyFrom[k] >= 0 ? saved[t.copyFrom[k]] : t.rhs[k][saved[k]];
@@ -213,42 +138,6 @@ void Engine::apply(CellValue* cells, int placed, CellValue* saved) const {
 void Engine::undo(CellValue* cells, int placed, const CellValue* saved) const {
     const Placed& p = placed_[placed];
     for (int k = 0; k < p.size; ++k) cells[p.cells[k]] = saved[k];
-}
-
-int Engine::guardCount(const GuardNode& g, const CellValue* cells, const Placed& p) const {
-    const int centre = p.cells[g.around];
-    int n = 0;
-    for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) {
-        const int nb = region_->neighbour(centre, d);
-        n += guardAccepts(g, d, comboOf(nb), nb < 0 ? 0 : cells[nb]);
-    }
-    return n;
-}
-
-Rational Engine::guardNumber(const GuardNode& g, const CellValue* cells, const Placed& p) const {
-    switch (g.kind) {
-    case Expr::Kind::Number: return g.value;
-    case Expr::Kind::Add: return guardNumber(g.kids[0], cells, p) + guardNumber(g.kids[1], cells, p);
-    case Expr::Kind::Sub: return guardNumber(g.kids[0], cells, p) - guardNumber(g.kids[1], cells, p);
-    case Expr::Kind::Neg: return -guardNumber(g.kids[0], cells, p);
-    case Expr::Kind::Count: return guardCount(g, cells, p);
-    default: return 0;
-    }
-}
-
-bool Engine::guard(const GuardNode& g, const CellValue* cells, const Placed& p) const {
-    switch (g.kind) {
-    case Expr::Kind::Bool: return g.value.num() != 0;
-    case Expr::Kind::And: return guard(g.kids[0], cells, p) && guard(g.kids[1], cells, p);
-    case Expr::Kind::Or: return guard(g.kids[0], cells, p) || guard(g.kids[1], cells, p);
-    case Expr::Kind::Implies: return !guard(g.kids[0], cells, p) || guard(g.kids[1], cells, p);
-    case Expr::Kind::Not: return !guard(g.kids[0], cells, p);
-    case Expr::Kind::Compare: return compare(g.op, guardNumber(g.kids[0], cells, p), guardNumber(g.kids[1], cells, p));
-    case Expr::Kind::Some: return guardCount(g, cells, p) > 0;
-    case Expr::Kind::No: return guardCount(g, cells, p) == 0;
-    case Expr::Kind::All: return guardCount(g, cells, p) == static_cast<int>(g.perDirection.size());
-    default: return false;
-    }
 }
 
 const Engine::Mask& Engine::predicateMask(const CellPredicate& pred) const {
@@ -266,7 +155,7 @@ Engine::Evaluator::Evaluator(const Engine& engine)
 void Engine::Evaluator::load(const CellValue* cells) {
     std::copy(cells, cells + cells_.size(), cells_.begin());
     mass_ = 0;
-    for (std::size_t i = 0; i < cells_.size(); ++i) mass_ += engine_->mass_[cells_[i]];
+    for (std::size_t i = 0; i < cells_.size(); ++i) mass_ += engine_->tables_.massUnitsOf(cells_[i]);
     if (!small_) return;
     for (std::size_t k = 0; k < members_.size(); ++k) {
         std::uint64_t bits = 0;
@@ -279,7 +168,7 @@ void Engine::Evaluator::load(const CellValue* cells) {
 void Engine::Evaluator::set(int cell, CellValue value) {
     const CellValue old = cells_[cell];
     if (old == value) return;
-    mass_ += engine_->mass_[value] - engine_->mass_[old];
+    mass_ += engine_->tables_.massUnitsOf(value) - engine_->tables_.massUnitsOf(old);
     cells_[cell] = value;
     if (!small_) return;
     const std::uint64_t bit = std::uint64_t{1} << cell;
@@ -292,7 +181,7 @@ void Engine::Evaluator::set(int cell, CellValue value) {
 
 void Engine::Evaluator::apply(int placed, CellValue* saved) {
     const Placed& p = engine_->placed_[placed];
-    const ShapeTables& t = engine_->shapes_[p.shape];
+    const RuleTables::Shape& t = engine_->tables_.shape(p.shape);
     for (int k = 0; k < p.size; ++k) saved[k] = cells_[p.cells[k]];
     for (int k = 0; k < p.size; ++k) set(p.cells[k], t.copyFrom[k] >= 0 ? saved[t.copyFrom[k]] : t.rhs[k][saved[k]]);
 }
@@ -314,7 +203,7 @@ Rational Engine::Evaluator::fastNumber(const CompiledExpr& e) const {
     switch (e.kind) {
     case Expr::Kind::Number: return e.value;
     case Expr::Kind::Count: return std::popcount(members_[e.predicate]);
-    case Expr::Kind::Mass: return Rational(mass_, engine_->massDen_);
+    case Expr::Kind::Mass: return Rational(mass_, engine_->tables_.massDenominator());
     case Expr::Kind::Add: return fastNumber(kid(0)) + fastNumber(kid(1));
     case Expr::Kind::Sub: return fastNumber(kid(0)) - fastNumber(kid(1));
     case Expr::Kind::Neg: return -fastNumber(kid(0));
@@ -394,14 +283,14 @@ bool Engine::legal(const CellValue* cells) const {
 
 std::int64_t Engine::massUnits(const CellValue* cells) const {
     std::int64_t m = 0;
-    for (int i = 0; i < region_->size(); ++i) m += mass_[cells[i]];
+    for (int i = 0; i < region_->size(); ++i) m += tables_.massUnitsOf(cells[i]);
     return m;
 }
 
 Rational Engine::number(const Expr& e, const CellValue* cells) const {
     switch (e.kind) {
     case Expr::Kind::Number: return e.value;
-    case Expr::Kind::Mass: return Rational(massUnits(cells), massDen_);
+    case Expr::Kind::Mass: return Rational(massUnits(cells), tables_.massDenominator());
     case Expr::Kind::Add: return number(e.kids[0], cells) + number(e.kids[1], cells);
     case Expr::Kind::Sub: return number(e.kids[0], cells) - number(e.kids[1], cells);
     case Expr::Kind::Neg: return -number(e.kids[0], cells);

@@ -4,6 +4,7 @@
 // tests hold it to the reference interpreter's semantics.
 
 #include "rules/Interpreter.h"
+#include "rules/RuleTables.h"
 
 #include <cstdint>
 #include <unordered_map>
@@ -13,7 +14,8 @@ namespace holon::rules {
 
 class Engine {
 public:
-    static constexpr int kMaxCells = 8;  // pattern cells per rule
+    static constexpr int kMaxCells = RuleTables::kMaxCells;
+    using GuardNode = RuleTables::GuardNode;
 
     /// One rule shape anchored in the region, with the region indices of its cells.
     struct Placed {
@@ -43,7 +45,7 @@ public:
     void forEachMatch(const CellValue* cells, F&& f) const {
         const int shapes = static_cast<int>(model_->shapes().size());
         for (int c = 0; c < region_->size(); ++c) {
-            for (std::int32_t s : shapesByFirst_[static_cast<std::size_t>(combo_[c]) * alphabet_ + cells[c]]) {
+            for (std::int32_t s : tables_.shapesByFirst(combo_[c], cells[c])) {
                 const std::int32_t p = placedIndex_[static_cast<std::size_t>(c) * shapes + s];
                 if (p >= 0 && matches(cells, p)) f(p);
             }
@@ -56,22 +58,14 @@ public:
     bool legal(const CellValue* cells) const;
     /// Mass of a configuration in units of 1/massDenominator().
     std::int64_t massUnits(const CellValue* cells) const;
-    std::int64_t massDenominator() const { return massDen_; }
+    std::int64_t massDenominator() const { return tables_.massDenominator(); }
+    const RuleTables& tables() const { return tables_; }
 
     const std::vector<std::uint32_t>& inputs() const { return inputs_; }
 
     // ---- read access to the compiled tables, per (input combination, state), for encoders ----
-    /// A guard compiled for one shape: quantifier nodes hold one mask per lattice direction.
-    struct GuardNode {
-        Expr::Kind kind = Expr::Kind::Bool;
-        CmpOp op = CmpOp::Eq;
-        Rational value;
-        std::vector<GuardNode> kids;
-        int around = -1;
-        std::vector<std::vector<std::uint64_t>> perDirection;
-    };
-    int comboCount() const { return static_cast<int>(combos_.size()); }
-    std::uint32_t comboInputs(int combo) const { return combos_[combo]; }
+    int comboCount() const { return tables_.comboCount(); }
+    std::uint32_t comboInputs(int combo) const { return tables_.comboInputs(combo); }
     int comboOfCell(int cell) const { return combo_[cell]; }
     bool lhsAccepts(int placed, int k, int combo, CellValue v) const;
     /// The pattern cell whose old state cell k takes (a move), or -1.
@@ -79,8 +73,8 @@ public:
     CellValue rhsValue(int placed, int k, CellValue v) const;
     const GuardNode* guardOf(int placed) const;
     bool guardAccepts(const GuardNode& node, int direction, int combo, CellValue v) const;
-    bool predicateAccepts(const CellPredicate& pred, int combo, CellValue v) const { return test(predicateMask(pred), combo, v); }
-    std::int64_t massUnitsOf(CellValue v) const { return mass_[v]; }
+    bool predicateAccepts(const CellPredicate& pred, int combo, CellValue v) const { return tables_.test(predicateMask(pred), combo, v); }
+    std::int64_t massUnitsOf(CellValue v) const { return tables_.massUnitsOf(v); }
 
     /// Evaluate a non-local expression of this system (a constraint, the goal, a property) on a
     /// configuration. Thread-safe: every predicate is compiled in the constructor.
@@ -118,37 +112,19 @@ public:
     };
 
 private:
-    struct Mask {
-        std::vector<std::uint64_t> bits;  // over (input combination, cell value)
-    };
-    bool test(const Mask& m, int combo, CellValue v) const {
-        const std::size_t i = static_cast<std::size_t>(combo) * alphabet_ + v;
-        return (m.bits[i >> 6] >> (i & 63)) & 1u;
-    }
-    Mask compileTerm(const CellTerm& term, const std::vector<Vec>* pattern, Vec position, const CellTerm* alsoInputs) const;
-    Mask compilePredicate(const CellPredicate& pred, const std::vector<Vec>* pattern, Vec position) const;
-    struct ShapeTables;
-    int comboOf(int cell) const { return cell < 0 ? emptyCombo_ : combo_[cell]; }
-    bool guard(const GuardNode& g, const CellValue* cells, const Placed& p) const;
-    int guardCount(const GuardNode& g, const CellValue* cells, const Placed& p) const;
-    Rational guardNumber(const GuardNode& g, const CellValue* cells, const Placed& p) const;
+    using Mask = RuleTables::Mask;
+    bool test(const Mask& m, int combo, CellValue v) const { return tables_.test(m, combo, v); }
     const Mask& predicateMask(const CellPredicate& pred) const;
     bool connected(const Mask& m, const CellValue* cells) const;
 
     const Model* model_;
     const Region* region_;
     std::vector<std::uint32_t> inputs_;
-    int alphabet_ = 0;
-    std::vector<int> combo_;             // per cell: index of its input combination
-    std::vector<std::uint32_t> combos_;  // the distinct input combinations present (plus 0)
-    int emptyCombo_ = 0;
-    std::vector<ShapeTables> shapes_;
+    RuleTables tables_;
+    std::vector<int> combo_;  // per cell: index of its input combination in tables_
     std::vector<Placed> placed_;
-    std::vector<std::vector<std::int32_t>> shapesByFirst_;  // [combo * alphabet + state]: shapes whose first cell accepts it
     std::vector<std::int32_t> placedIndex_;                // [cell * shapes + shape]: the instance anchored there, or -1
     std::vector<std::vector<std::int32_t>> byCell_;
-    std::vector<std::int64_t> mass_;
-    std::int64_t massDen_ = 1;
     std::unordered_map<const CellPredicate*, int> predicateIndex_;
     std::vector<Mask> predicateMasks_;  // distinct predicates only: equal text, one mask
     /// The constraints as trees whose predicates are already indices (the Evaluator's input).

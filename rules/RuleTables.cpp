@@ -1,0 +1,108 @@
+// Compiles every rule shape of a system into decision tables (see RuleTables.h). The cell
+// semantics come from rules/Cells (matchesTerm, rewriteTerm), the same functions the reference
+// interpreter calls, so a table entry is the interpreter's answer for that (inputs, state) pair.
+
+#include "rules/RuleTables.h"
+
+#include "rules/Cells.h"
+#include "rules/Error.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace holon::rules {
+
+namespace {
+void setBit(std::vector<std::uint64_t>& bits, std::size_t i) { bits[i >> 6] |= std::uint64_t{1} << (i & 63); }
+}  // namespace
+
+RuleTables::Mask RuleTables::compileTerm(const CellTerm& term, const std::vector<Vec>* pattern, Vec position,
+                                         const CellTerm* alsoInputs) const {
+    Mask m;
+    m.bits.assign((combos_.size() * alphabet_ + 63) / 64, 0);
+    for (std::size_t c = 0; c < combos_.size(); ++c) {
+        CellContext at{&model_->alphabet(), &model_->lattice(), position, combos_[c], pattern, false};
+        for (int v = 0; v < alphabet_; ++v) {
+            bool ok = matchesTerm(term, static_cast<CellValue>(v), at);
+            if (ok && alsoInputs)
+                for (const Atom& a : alsoInputs->atoms)
+                    if (a.kind == Atom::Kind::Input) {
+                        CellTerm only;
+                        only.atoms = {a};
+                        ok = ok && matchesTerm(only, static_cast<CellValue>(v), at);
+                    }
+            if (ok) setBit(m.bits, c * alphabet_ + v);
+        }
+    }
+    return m;
+}
+
+RuleTables::Mask RuleTables::compilePredicate(const CellPredicate& pred, const std::vector<Vec>* pattern, Vec position) const {
+    Mask m;
+    m.bits.assign((combos_.size() * alphabet_ + 63) / 64, 0);
+    for (const CellTerm& t : pred) {
+        Mask one = compileTerm(t, pattern, position, nullptr);
+        for (std::size_t i = 0; i < m.bits.size(); ++i) m.bits[i] |= one.bits[i];
+    }
+    return m;
+}
+
+RuleTables::GuardNode RuleTables::compileGuard(const Expr& e, const RuleShape& shape) const {
+    GuardNode g;
+    g.kind = e.kind, g.op = e.op, g.value = e.value, g.around = e.around;
+    for (const Expr& k : e.kids) g.kids.push_back(compileGuard(k, shape));
+    if (e.around >= 0)
+        for (int d = 0; d < model_->lattice().degree(); ++d)
+            g.perDirection.push_back(compilePredicate(e.pred, &shape.offsets, shape.offsets[e.around] + model_->lattice().direction(d)).bits);
+    return g;
+}
+
+int RuleTables::comboIndex(std::uint32_t inputs) const {
+    auto it = std::find(combos_.begin(), combos_.end(), inputs);
+    return it == combos_.end() ? -1 : static_cast<int>(it - combos_.begin());
+}
+
+RuleTables::RuleTables(const Model& model, std::vector<std::uint32_t> combos)
+    : model_(&model), alphabet_(model.alphabet().size()) {
+    combos_.push_back(0);
+    for (std::uint32_t c : combos)
+        if (std::find(combos_.begin(), combos_.end(), c) == combos_.end()) combos_.push_back(c);
+    const Lattice& lattice = model.lattice();
+    for (const RuleShape& shape : model.shapes()) {
+        const DirectedRule& rule = model.rules()[shape.rule];
+        if (shape.offsets.size() > kMaxCells) throw InputError("rule '" + rule.name + "' has more than 8 cells");
+        Shape t;
+        for (std::size_t k = 0; k < shape.offsets.size(); ++k) {
+            t.lhs.push_back(compileTerm(rule.lhs()[k], &shape.offsets, shape.offsets[k], rule.reversed ? &rule.rhs()[k] : nullptr));
+            const CellTerm& rhs = rule.rhs()[k];
+            t.copyFrom.push_back(rhs.copyFrom);
+            std::vector<CellValue> table;
+            if (rhs.copyFrom < 0) {
+                CellContext at{&model.alphabet(), &lattice, shape.offsets[k], 0, &shape.offsets, false};
+                for (int v = 0; v < alphabet_; ++v) {
+                    const int w = rewriteTerm(rhs, static_cast<CellValue>(v), at);
+                    table.push_back(static_cast<CellValue>(w < 0 ? v : w));
+                }
+            }
+            t.rhs.push_back(std::move(table));
+        }
+        if (const Expr* g = rule.guard()) {
+            t.hasGuard = true;
+            t.guard = compileGuard(*g, shape);
+        }
+        shapes_.push_back(std::move(t));
+    }
+    shapesByFirst_.assign(combos_.size() * alphabet_, {});
+    for (std::size_t c = 0; c < combos_.size(); ++c)
+        for (int v = 0; v < alphabet_; ++v)
+            for (int sh = 0; sh < static_cast<int>(shapes_.size()); ++sh)
+                if (test(shapes_[sh].lhs[0], static_cast<int>(c), static_cast<CellValue>(v))) shapesByFirst_[c * alphabet_ + v].push_back(sh);
+    // Masses as integers over the least common denominator.
+    for (int v = 0; v < alphabet_; ++v) massDen_ = std::lcm(massDen_, model.alphabet().mass(static_cast<CellValue>(v)).den());
+    for (int v = 0; v < alphabet_; ++v) {
+        Rational m = model.alphabet().mass(static_cast<CellValue>(v));
+        mass_.push_back(m.num() * (massDen_ / m.den()));
+    }
+}
+
+}  // namespace holon::rules

@@ -1,0 +1,123 @@
+#pragma once
+// A system's rules compiled into decision tables, independent of where they are placed: for every
+// rule shape and pattern cell a bit mask over (input combination, cell state) for the left side, a
+// state -> state table for the right side, and guards as per-direction masks. The explorer's
+// Engine places these tables on a region; the planner places them on a padded box by index
+// arithmetic. Both therefore run exactly the same compiled rules.
+
+#include "rules/Model.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace holon::rules {
+
+class RuleTables {
+public:
+    static constexpr int kMaxCells = 8;  // pattern cells per rule
+
+    /// A bit set over (input combination, cell state).
+    struct Mask {
+        std::vector<std::uint64_t> bits;
+    };
+    /// A guard compiled for one shape: quantifier nodes hold one mask per lattice direction.
+    struct GuardNode {
+        Expr::Kind kind = Expr::Kind::Bool;
+        CmpOp op = CmpOp::Eq;
+        Rational value;
+        std::vector<GuardNode> kids;
+        int around = -1;
+        std::vector<std::vector<std::uint64_t>> perDirection;
+    };
+    struct Shape {
+        std::vector<Mask> lhs;
+        std::vector<std::vector<CellValue>> rhs;  // empty for a copy term
+        std::vector<int> copyFrom;                 // pattern cell whose old state is copied, or -1
+        bool hasGuard = false;
+        GuardNode guard;
+    };
+
+    /// `combos`: the input combinations (bit sets over the system's inputs) the tables must cover;
+    /// combination 0 (no input set) is always index 0, used for cells outside the region.
+    RuleTables(const Model& model, std::vector<std::uint32_t> combos);
+
+    const Model& model() const { return *model_; }
+    int alphabet() const { return alphabet_; }
+    int comboCount() const { return static_cast<int>(combos_.size()); }
+    std::uint32_t comboInputs(int combo) const { return combos_[combo]; }
+    /// Index of an input combination, or -1 when the tables do not cover it.
+    int comboIndex(std::uint32_t inputs) const;
+    int shapeCount() const { return static_cast<int>(shapes_.size()); }
+    const Shape& shape(int s) const { return shapes_[s]; }
+    /// Shapes whose first pattern cell accepts state v under input combination `combo`.
+    const std::vector<std::int32_t>& shapesByFirst(int combo, CellValue v) const {
+        return shapesByFirst_[static_cast<std::size_t>(combo) * alphabet_ + v];
+    }
+
+    bool test(const Mask& m, int combo, CellValue v) const { return bit(m.bits, combo, v); }
+    bool guardAccepts(const GuardNode& node, int direction, int combo, CellValue v) const {
+        return bit(node.perDirection[direction], combo, v);
+    }
+    Mask compilePredicate(const CellPredicate& pred, const std::vector<Vec>* pattern, Vec position) const;
+
+    std::int64_t massUnitsOf(CellValue v) const { return mass_[v]; }
+    std::int64_t massDenominator() const { return massDen_; }
+
+    /// Evaluates a compiled guard. `at` gives the cells around the instance: `at.value(i)`,
+    /// `at.combo(i)` and `at.neighbour(i, d)` (-1 outside), where i is a pattern cell's index as
+    /// listed in `cells`.
+    template <class Cells>
+    bool guard(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
+        switch (g.kind) {
+        case Expr::Kind::Bool: return g.value.num() != 0;
+        case Expr::Kind::And: return guard(g.kids[0], at, cells) && guard(g.kids[1], at, cells);
+        case Expr::Kind::Or: return guard(g.kids[0], at, cells) || guard(g.kids[1], at, cells);
+        case Expr::Kind::Implies: return !guard(g.kids[0], at, cells) || guard(g.kids[1], at, cells);
+        case Expr::Kind::Not: return !guard(g.kids[0], at, cells);
+        case Expr::Kind::Compare: return compare(g.op, guardNumber(g.kids[0], at, cells), guardNumber(g.kids[1], at, cells));
+        case Expr::Kind::Some: return guardCount(g, at, cells) > 0;
+        case Expr::Kind::No: return guardCount(g, at, cells) == 0;
+        case Expr::Kind::All: return guardCount(g, at, cells) == static_cast<int>(g.perDirection.size());
+        default: return false;
+        }
+    }
+
+private:
+    bool bit(const std::vector<std::uint64_t>& bits, int combo, CellValue v) const {
+        const std::size_t i = static_cast<std::size_t>(combo) * alphabet_ + v;
+        return (bits[i >> 6] >> (i & 63)) & 1u;
+    }
+    template <class Cells>
+    int guardCount(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
+        const auto centre = cells[g.around];
+        int n = 0;
+        for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) {
+            const auto nb = at.neighbour(centre, d);
+            n += nb < 0 ? guardAccepts(g, d, 0, 0) : guardAccepts(g, d, at.combo(nb), at.value(nb));
+        }
+        return n;
+    }
+    template <class Cells>
+    Rational guardNumber(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
+        switch (g.kind) {
+        case Expr::Kind::Number: return g.value;
+        case Expr::Kind::Add: return guardNumber(g.kids[0], at, cells) + guardNumber(g.kids[1], at, cells);
+        case Expr::Kind::Sub: return guardNumber(g.kids[0], at, cells) - guardNumber(g.kids[1], at, cells);
+        case Expr::Kind::Neg: return -guardNumber(g.kids[0], at, cells);
+        case Expr::Kind::Count: return guardCount(g, at, cells);
+        default: return 0;
+        }
+    }
+    Mask compileTerm(const CellTerm& term, const std::vector<Vec>* pattern, Vec position, const CellTerm* alsoInputs) const;
+    GuardNode compileGuard(const Expr& e, const RuleShape& shape) const;
+
+    const Model* model_;
+    int alphabet_;
+    std::vector<std::uint32_t> combos_;
+    std::vector<Shape> shapes_;
+    std::vector<std::vector<std::int32_t>> shapesByFirst_;
+    std::vector<std::int64_t> mass_;
+    std::int64_t massDen_ = 1;
+};
+
+}  // namespace holon::rules
