@@ -5,6 +5,8 @@
 
 #include "checker/Trace.h"
 
+#include "rules/ConfigIo.h"
+
 #include <algorithm>
 
 namespace holon::checker {
@@ -30,11 +32,7 @@ Trace traceAlong(const Explorer& ex, const std::vector<StateId>& states) {
 
 namespace {
 
-nlohmann::json position(const rules::Region& region, int cell) {
-    const rules::Vec v = region.cell(cell);
-    if (region.lattice().dimension() == 3) return {v.x, v.y, v.z};
-    return {v.x, v.y};
-}
+nlohmann::json position(const rules::Region& region, int cell) { return rules::pointJson(region.lattice(), region.cell(cell)); }
 
 }  // namespace
 
@@ -56,16 +54,7 @@ nlohmann::json toItf(const Trace& trace, const rules::Engine& engine, const std:
         nlohmann::json map = nlohmann::json::array();
         for (int i = 0; i < region.size(); ++i) {
             if (!step.cells[i]) continue;
-            nlohmann::json record = nlohmann::json::object();
-            const auto& fields = model.alphabet().fields(step.cells[i]);
-            for (std::size_t f = 0; f < fields.size(); ++f) {
-                if (fields[f] == rules::kAbsent) continue;
-                const rules::Field& field = system.fields[f];
-                if (field.kind == rules::FieldKind::Enum) record[field.name] = field.values[fields[f]];
-                else if (field.kind == rules::FieldKind::Dir) record[field.name] = region.lattice().directionName(fields[f]);
-                else record[field.name] = fields[f];
-            }
-            map.push_back({{{"#tup", position(region, i)}}, record});
+            map.push_back({{{"#tup", position(region, i)}}, rules::stateFields(model, step.cells[i])});
         }
         nlohmann::json state{{"#meta", meta}, {"cells", {{"#map", map}}}};
         states.push_back(state);

@@ -12,5 +12,6 @@ using Run = std::function<int()>;
 Run addRulesCommand(CLI::App& app);
 Run addCheckCommand(CLI::App& app);
 Run addVerifyCommand(CLI::App& app);
+Run addPlanCommand(CLI::App& app);
 
 }  // namespace holon::cli

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     add(holon::cli::addRulesCommand);
     add(holon::cli::addCheckCommand);
     add(holon::cli::addVerifyCommand);
+    add(holon::cli::addPlanCommand);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -16,10 +16,7 @@ namespace holon::rules {
 
 namespace {
 
-nlohmann::json position(const Region& region, Vec v) {
-    if (region.lattice().dimension() == 3) return {v.x, v.y, v.z};
-    return {v.x, v.y};
-}
+nlohmann::json position(const Region& region, Vec v) { return pointJson(region.lattice(), v); }
 
 std::string posText(const nlohmann::json& at) { return at.dump(); }
 
@@ -59,6 +56,25 @@ std::vector<std::string> rowTokens(const Region& region, const std::string& line
 
 }  // namespace
 
+nlohmann::json stateFields(const Model& model, CellValue v) {
+    nlohmann::json record = nlohmann::json::object();
+    if (v == 0) return record;
+    const auto& fields = model.alphabet().fields(v);
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+        if (fields[f] == kAbsent) continue;
+        const Field& field = model.system().fields[f];
+        if (field.kind == FieldKind::Enum) record[field.name] = field.values[fields[f]];
+        else if (field.kind == FieldKind::Dir) record[field.name] = model.lattice().directionName(fields[f]);
+        else record[field.name] = fields[f];
+    }
+    return record;
+}
+
+nlohmann::json pointJson(const Lattice& lattice, Vec v) {
+    if (lattice.dimension() == 3) return {v.x, v.y, v.z};
+    return {v.x, v.y};
+}
+
 nlohmann::json configToJson(const Interpreter& in, const Configuration& c) {
     const Region& region = in.region();
     const Model& model = in.model();
@@ -66,16 +82,8 @@ nlohmann::json configToJson(const Interpreter& in, const Configuration& c) {
     nlohmann::json cells = nlohmann::json::array();
     for (int i = 0; i < region.size(); ++i) {
         if (!c.cells[i]) continue;
-        nlohmann::json cell;
+        nlohmann::json cell = stateFields(model, c.cells[i]);
         cell["at"] = position(region, region.cell(i));
-        const auto& fields = model.alphabet().fields(c.cells[i]);
-        for (std::size_t f = 0; f < fields.size(); ++f) {
-            if (fields[f] == kAbsent) continue;
-            const Field& field = system.fields[f];
-            if (field.kind == FieldKind::Enum) cell[field.name] = field.values[fields[f]];
-            else if (field.kind == FieldKind::Dir) cell[field.name] = region.lattice().directionName(fields[f]);
-            else cell[field.name] = fields[f];
-        }
         cells.push_back(cell);
     }
     nlohmann::json j{{"system", system.name}, {"region", region.spec()}, {"cells", cells}};

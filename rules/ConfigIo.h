@@ -10,6 +10,10 @@
 namespace holon::rules {
 
 nlohmann::json configToJson(const Interpreter& in, const Configuration& c);
+/// A cell state's fields by name ({"label": "P", "parent": "+x"}); empty for the vacuum.
+nlohmann::json stateFields(const Model& model, CellValue v);
+/// A lattice point as [x, y] or [x, y, z].
+nlohmann::json pointJson(const Lattice& lattice, Vec v);
 /// Throws InputError naming the offending cell or value.
 Configuration configFromJson(const Interpreter& in, const nlohmann::json& j);
 

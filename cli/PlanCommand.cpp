@@ -1,0 +1,138 @@
+// `holon plan --rules FILE --from SHAPE --to SHAPE`: run seed 000's U/P/F planner, compiled from
+// a verified rule file, on a start and a target shape, with a resource allocator for general_n.
+
+#include "cli/Commands.h"
+#include "cli/Inputs.h"
+#include "planner/Execution.h"
+#include "planner/Monitor.h"
+#include "planner/Report.h"
+#include "rules/Error.h"
+#include "rules/Library.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <unistd.h>
+
+namespace holon::cli {
+
+namespace {
+
+struct PlanArgs {
+    std::string rules = "planner_intermediate", from, to, allocator = "random", scheduler = "sync", out, planOut, seedCell;
+    std::vector<std::string> noWarnings;
+    int scale = 1, threads = 2;
+    std::uint64_t seed = 1;
+    std::int64_t maxSteps = 0, maxRounds = 0;
+    double timeout = 0;
+    bool check = false, json = false, quiet = false;
+};
+
+std::string rulePath(const std::string& name) {
+    if (std::filesystem::exists(name)) return name;
+    const std::string bundled = rules::libraryDir() + "/" + name + ".holon";
+    if (std::filesystem::exists(bundled)) return bundled;
+    throw InputError("--rules '" + name + "': no such file, and no bundled system of that name (try planner_intermediate or planner_general1)");
+}
+
+std::optional<planner::Vec> parseCell(const std::string& text) {
+    if (text.empty()) return std::nullopt;
+    planner::Vec v;
+    char c1 = 0, c2 = 0;
+    std::istringstream in(text);
+    if (!(in >> v.x >> c1 >> v.y) || c1 != ',') throw InputError("--seed-cell '" + text + "': expected x,y or x,y,z");
+    if (in >> c2) {
+        if (c2 != ',' || !(in >> v.z)) throw InputError("--seed-cell '" + text + "': expected x,y or x,y,z");
+    }
+    return v;
+}
+
+int run(const PlanArgs& a) {
+    auto system = loadRules(rulePath(a.rules), a.noWarnings);
+    if (!system) return 2;
+    planner::Shape from = planner::parseShape(a.from, a.scale), to = planner::parseShape(a.to, a.scale);
+    const rules::Lattice& lattice = rules::Lattice::get(from.dimension == 3 ? rules::LatticeKind::Cubic3D : rules::LatticeKind::Square2D);
+    rules::Model model(*system, lattice);
+    planner::Problem problem = planner::makeProblem(model, std::move(from), std::move(to), parseCell(a.seedCell), a.seed);
+    std::unique_ptr<planner::Allocator> allocator = planner::makeAllocator(a.allocator, problem);
+
+    planner::RunOptions options;
+    if (a.scheduler == "sync") options.scheduler = planner::Scheduler::Sync;
+    else if (a.scheduler == "async") options.scheduler = planner::Scheduler::Async;
+    else if (a.scheduler == "adversarial") options.scheduler = planner::Scheduler::Adversarial;
+    else throw InputError("--scheduler '" + a.scheduler + "': choose sync, async or adversarial");
+    options.seed = a.seed, options.maxSteps = a.maxSteps, options.maxRounds = a.maxRounds, options.timeoutSeconds = a.timeout;
+    options.threads = std::max(1, a.threads);
+
+    planner::Execution execution(problem, *allocator, options);
+    planner::Report report(problem, execution, {a.out, a.planOut, !a.quiet && isatty(STDERR_FILENO) != 0});
+    std::unique_ptr<planner::Monitor> monitor = a.check ? std::make_unique<planner::Monitor>(problem, execution) : nullptr;
+    planner::RunObserver observer;
+    observer.fired = [&](std::int64_t anchor, int shape, const planner::BoxEngine::Value* old) {
+        report.fired(anchor, shape, old);
+        if (monitor) monitor->fired(anchor, shape, old);
+    };
+    observer.roundEnd = [&](const planner::RunStats& stats) {
+        report.roundEnd(stats);
+        return !monitor || monitor->roundEnd(stats);
+    };
+    const planner::RunStats stats = execution.run(observer);
+    const std::int64_t lowerBound = planner::transferLowerBound(problem);
+    report.finish(stats, lowerBound);
+
+    if (a.json) {
+        nlohmann::json j = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions},
+                            {"transfers", stats.transfers}, {"transfer_lower_bound", lowerBound >= 0 ? nlohmann::json(lowerBound) : nlohmann::json()},
+                            {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete},
+                            {"relabels", stats.relabels}, {"evaluations", stats.evaluations}, {"stopped", stats.stopped},
+                            {"system", system->name}, {"allocator", allocator->name()}, {"scheduler", a.scheduler}, {"seed", a.seed}};
+        std::cout << j.dump(2) << '\n';
+    } else {
+        std::cout << "plan " << problem.start.name << " -> " << problem.target.name << " with " << system->name << " (" << a.scheduler
+                  << ", allocator " << allocator->name() << ", seed " << a.seed << ")\n"
+                  << "  start " << problem.start.cells.size() << " metamodules, target " << problem.target.cells.size() << ", seed cell ("
+                  << problem.seed.x << "," << problem.seed.y << (lattice.dimension() == 3 ? "," + std::to_string(problem.seed.z) : "") << ")\n"
+                  << "  creations " << stats.creations << ", deletions " << stats.deletions << ", transfers " << stats.transfers;
+        if (lowerBound >= 0) std::cout << " (lower bound " << lowerBound << ")";
+        std::cout << ", relabels " << stats.relabels << "\n  " << stats.rounds << " rounds, " << stats.steps << " steps, " << stats.evaluations
+                  << " rule evaluations, " << std::fixed << std::setprecision(3) << stats.seconds << " s\n"
+                  << "  " << (stats.complete ? "complete: the target is reached" : "NOT complete: stopped by " + stats.stopped) << '\n';
+        if (monitor) std::cout << "  monitor: " << monitor->summary() << '\n';
+        if (!a.out.empty()) std::cout << "  wrote " << a.out << "/ (summary.json, completion.csv, snapshots)\n";
+    }
+    if (monitor && monitor->violated()) return 1;
+    return stats.complete ? 0 : 1;
+}
+
+}  // namespace
+
+Run addPlanCommand(CLI::App& app) {
+    auto a = std::make_shared<PlanArgs>();
+    CLI::App* sub = app.add_subcommand("plan", "run the U/P/F planner compiled from a rule file, from a start shape to a target shape");
+    std::string shapes;
+    for (const auto& [name, what] : planner::shapeGenerators()) shapes += "\n    " + name + ": " + what;
+    sub->footer("SHAPE is a generator or a file (.json cell list, .xyz voxels, ASCII art):" + shapes);
+    sub->add_option("--rules", a->rules, "planner rule file, or a bundled name (default planner_intermediate)");
+    sub->add_option("--from", a->from, "start shape")->required();
+    sub->add_option("--to", a->to, "target shape")->required();
+    sub->add_option("--scale", a->scale, "every cell becomes a KxK (3D: KxKxK) block");
+    sub->add_option("--allocator", a->allocator, "resource allocator for general_n: random, gradient or optimal (default random)");
+    sub->add_option("--scheduler", a->scheduler, "sync (rounds, default), async (one instance at a time) or adversarial");
+    sub->add_option("--seed", a->seed, "random seed (default 1)");
+    sub->add_option("--seed-cell", a->seedCell, "the seed metamodule x,y[,z] (default: the overlap cell nearest its centre)");
+    sub->add_flag("--check", a->check, "monitor connectivity, mass and the system's constraints after every step or round");
+    sub->add_flag("--json", a->json, "print the summary as JSON");
+    sub->add_option("--out", a->out, "write summary.json, completion.csv and SVG snapshots into this folder");
+    sub->add_option("--plan-out", a->planOut, "write the plan as JSON Lines (one fired instance per line)");
+    sub->add_option("--max-steps", a->maxSteps, "stop after this many steps");
+    sub->add_option("--max-rounds", a->maxRounds, "stop after this many rounds");
+    sub->add_option("--timeout", a->timeout, "stop after this many seconds");
+    sub->add_option("--threads", a->threads, "worker threads (default 2)");
+    sub->add_flag("--quiet", a->quiet, "no progress bar");
+    sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
+    return [a] { return run(*a); };
+}
+
+}  // namespace holon::cli

@@ -1,0 +1,35 @@
+#pragma once
+// Resource allocators (seed 000 §IV-B): the planner marks where creations and deletions are
+// pending; an allocator decides which resource transfers (C D <=> D C and the like) fire. The
+// planner and the allocator only meet through the cells, as in the paper's separation of concerns.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace holon::planner {
+
+class Execution;
+
+class Allocator {
+public:
+    virtual ~Allocator() = default;
+    virtual std::string name() const = 0;
+    /// Called once per round before instances are chosen; returns whether the allocator's own
+    /// state changed (a round that fires nothing and changes no allocator state ends the run).
+    virtual bool update(const Execution&) { return false; }
+    /// Whether this enabled transfer instance should fire now.
+    virtual bool wants(const Execution&, std::int64_t anchor, int shape) const = 0;
+};
+
+struct Problem;
+
+/// "random", "gradient" or "optimal"; throws InputError for any other name.
+std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem& problem);
+
+/// The least number of transfers any plan for the problem needs (a transport bound, see
+/// Transport.cpp), or -1 when the system has no transfers.
+std::int64_t transferLowerBound(const Problem& problem);
+
+}  // namespace holon::planner

@@ -1,0 +1,113 @@
+// The compiled rule engine of the planner (issue: compiled rules). It runs the same decision
+// tables as the explorer's Engine (rules/RuleTables), placed by index steps on a padded box
+// instead of per-instance lists, which is what lets seed 000's U/P/F planner (§IV-A) run on 10^6
+// metamodules in a few bytes per cell. tests/planner/CompiledVsInterpreterTest.cpp holds it to
+// the reference interpreter step for step.
+
+#include "planner/BoxEngine.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace holon::planner {
+
+namespace {
+
+/// Cells of the board as seen by a compiled guard.
+struct BoardCells {
+    const BoxEngine::Value* cells;
+    const std::uint8_t* combos;
+    const Board* board;
+    BoxEngine::Value value(std::int64_t i) const { return cells[i]; }
+    int combo(std::int64_t i) const { return combos[i]; }
+    std::int64_t neighbour(std::int64_t i, int d) const {
+        const std::int64_t j = i + board->step(d);
+        return combos[j] == BoxEngine::kOutside ? -1 : j;
+    }
+};
+
+ShapeKind classify(const rules::RuleTables& tables, int shape) {
+    const rules::RuleTables::Shape& t = tables.shape(shape);
+    bool massMoves = false;
+    for (std::size_t k = 0; k < t.lhs.size(); ++k) {
+        if (t.copyFrom[k] >= 0) return ShapeKind::Motion;
+        for (int c = 0; c < tables.comboCount(); ++c)
+            for (int v = 0; v < tables.alphabet(); ++v) {
+                const auto value = static_cast<rules::CellValue>(v);
+                if (!tables.test(t.lhs[k], c, value)) continue;
+                const rules::CellValue w = t.rhs[k][value];
+                if ((v == 0) != (w == 0)) return ShapeKind::Motion;
+                if (tables.massUnitsOf(value) != tables.massUnitsOf(w)) massMoves = true;
+            }
+    }
+    return massMoves ? ShapeKind::Transfer : ShapeKind::Relabel;
+}
+
+}  // namespace
+
+int BoxEngine::reach(const rules::RuleTables& tables) {
+    int r = 0;
+    const auto& shapes = tables.model().shapes();
+    for (int s = 0; s < tables.shapeCount(); ++s) {
+        const int extra = tables.shape(s).hasGuard ? 1 : 0;
+        for (Vec v : shapes[s].offsets) r = std::max({r, std::abs(v.x) + extra, std::abs(v.y) + extra, std::abs(v.z) + extra});
+    }
+    return std::max(r, 1);
+}
+
+BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::vector<std::uint8_t> combo)
+    : tables_(&tables), board_(&board), combo_(std::move(combo)) {
+    if (tables.alphabet() > 255)
+        throw InputError("system '" + tables.model().system().name + "' has " + std::to_string(tables.alphabet()) +
+                         " cell states; the planner stores at most 255 per cell");
+    const rules::Lattice& lattice = board.lattice();
+    for (int s = 0; s < tables.shapeCount(); ++s) {
+        const rules::RuleShape& shape = tables.model().shapes()[s];
+        ruleOf_.push_back(shape.rule);
+        kinds_.push_back(classify(tables, s));
+        std::vector<std::int64_t> cells, writes, reads;
+        for (Vec v : shape.offsets) cells.push_back(board.offset(v));
+        const rules::RuleTables::Shape& t = tables.shape(s);
+        for (std::size_t k = 0; k < shape.offsets.size(); ++k) {
+            bool identity = t.copyFrom[k] < 0 || t.copyFrom[k] == static_cast<int>(k);
+            for (int c = 0; c < tables.comboCount() && t.copyFrom[k] < 0; ++c)
+                for (int v = 0; v < tables.alphabet(); ++v)
+                    if (tables.test(t.lhs[k], c, static_cast<rules::CellValue>(v)) && t.rhs[k][v] != v) identity = false;
+            if (!identity) writes.push_back(cells[k]);
+        }
+        reads = cells;
+        if (tables.shape(s).hasGuard)
+            for (Vec v : shape.offsets)
+                for (int d = 0; d < lattice.degree(); ++d) reads.push_back(board.offset(v + lattice.direction(d)));
+        std::sort(reads.begin(), reads.end());
+        reads.erase(std::unique(reads.begin(), reads.end()), reads.end());
+        influence_.insert(influence_.end(), reads.begin(), reads.end());
+        cellSteps_.push_back(std::move(cells));
+        writeSteps_.push_back(std::move(writes));
+        readSteps_.push_back(std::move(reads));
+    }
+    std::sort(influence_.begin(), influence_.end());
+    influence_.erase(std::unique(influence_.begin(), influence_.end()), influence_.end());
+}
+
+bool BoxEngine::matches(const Value* cells, std::int64_t anchor, int shape) const {
+    const rules::RuleTables::Shape& t = tables_->shape(shape);
+    const std::vector<std::int64_t>& steps = cellSteps_[shape];
+    std::int32_t at[rules::RuleTables::kMaxCells];
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+        const std::int64_t i = anchor + steps[k];
+        if (combo_[i] == kOutside || !tables_->test(t.lhs[k], combo_[i], cells[i])) return false;
+        at[k] = static_cast<std::int32_t>(i);
+    }
+    return !t.hasGuard || tables_->guard(t.guard, BoardCells{cells, combo_.data(), board_}, at);
+}
+
+void BoxEngine::apply(Value* cells, std::int64_t anchor, int shape, Value* old) const {
+    const rules::RuleTables::Shape& t = tables_->shape(shape);
+    const std::vector<std::int64_t>& steps = cellSteps_[shape];
+    for (std::size_t k = 0; k < steps.size(); ++k) old[k] = cells[anchor + steps[k]];
+    for (std::size_t k = 0; k < steps.size(); ++k)
+        cells[anchor + steps[k]] = static_cast<Value>(t.copyFrom[k] >= 0 ? old[t.copyFrom[k]] : t.rhs[k][old[k]]);
+}
+
+}  // namespace holon::planner

@@ -1,0 +1,240 @@
+// Execution of seed 000's U/P/F planner (§IV-A) and a resource allocator (§IV-B) from compiled
+// rules. The enabled set is exact: an instance's status can only change when a cell it reads
+// changes, so after every firing the anchors within the rules' read stencil of each changed cell
+// are re-evaluated, and nothing else.
+//
+// Synchronous rounds: instances are taken in random order and one is kept when the cells it
+// changes are read by no instance kept before and the cells it reads are changed by none. Kept
+// instances therefore neither disable nor alter each other, so firing them together gives the
+// same configuration as firing them one after another in any order: a round is an interleaving,
+// and everything proved about the asynchronous semantics holds for it. Each round is maximal: an
+// enabled instance left out conflicts with one that was kept.
+
+#include "planner/Execution.h"
+
+#include "rules/Error.h"
+
+#include <algorithm>
+#include <bit>
+
+namespace holon::planner {
+
+namespace {
+constexpr int kShapeBits = 6;  // instance key = anchor << 6 | shape
+std::int64_t anchorOf(std::uint64_t key) { return static_cast<std::int64_t>(key >> kShapeBits); }
+int shapeOf(std::uint64_t key) { return static_cast<int>(key & ((1u << kShapeBits) - 1)); }
+std::uint64_t keyOf(std::int64_t anchor, int shape) { return (static_cast<std::uint64_t>(anchor) << kShapeBits) | static_cast<std::uint64_t>(shape); }
+}  // namespace
+
+Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions options)
+    : problem_(&problem), allocator_(&allocator), options_(options), random_(options.seed), shapes_(problem.engine->shapeCount()),
+      cells_(problem.cells) {
+    if (shapes_ > 64)
+        throw InputError("system '" + problem.model->system().name + "' has " + std::to_string(shapes_) +
+                         " rule orientations; the planner handles at most 64");
+    const std::size_t n = cells_.size();
+    enabled_.assign(n, 0), listed_.assign(n, 0);
+    stamp_.assign(n, 0), readMark_.assign(n, 0), writeMark_.assign(n, 0);
+    const BoxEngine& engine = *problem.engine;
+    for (std::int64_t a = 0; a < static_cast<std::int64_t>(n); ++a)
+        if (engine.combo(a) != BoxEngine::kOutside && cells_[a] != 0) recheck(a);
+}
+
+void Execution::recheck(std::int64_t anchor) {
+    std::uint64_t now = 0;
+    stats_.evaluations += engine().forEachMatchAt(cells_.data(), anchor, [&](int s) { now |= std::uint64_t{1} << s; });
+    enabled_[anchor] = now;
+    std::uint64_t fresh = now & ~listed_[anchor];
+    listed_[anchor] |= fresh;
+    while (fresh) {
+        const int s = std::countr_zero(fresh);
+        fresh &= fresh - 1;
+        (engine().kind(s) == ShapeKind::Transfer ? transferList_ : plannerList_).push_back(keyOf(anchor, s));
+    }
+}
+
+void Execution::recheckAround(const std::vector<std::int64_t>& changed) {
+    if (++clock_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), clock_ = 1;
+    anchors_.clear();
+    const BoxEngine& engine = this->engine();
+    for (std::int64_t c : changed)
+        for (std::int64_t r : engine.influence()) {
+            const std::int64_t a = c - r;
+            if (stamp_[a] != clock_ && engine.combo(a) != BoxEngine::kOutside) stamp_[a] = clock_, anchors_.push_back(a);
+        }
+    for (std::int64_t a : anchors_) recheck(a);
+}
+
+void Execution::compact(std::vector<std::uint64_t>& list) {
+    std::size_t out = 0;
+    for (std::uint64_t key : list) {
+        const std::int64_t a = anchorOf(key);
+        const std::uint64_t bit = std::uint64_t{1} << shapeOf(key);
+        if (enabled_[a] & bit) list[out++] = key;
+        else listed_[a] &= ~bit;
+    }
+    list.resize(out);
+}
+
+bool Execution::takeIfFree(std::int64_t anchor, int shape) {
+    const std::uint32_t round = static_cast<std::uint32_t>(stats_.rounds);
+    const BoxEngine& engine = this->engine();
+    for (std::int64_t r : engine.readSteps(shape))
+        if (writeMark_[anchor + r] == round) return false;
+    for (std::int64_t w : engine.writeSteps(shape))
+        if (readMark_[anchor + w] == round) return false;
+    for (std::int64_t r : engine.readSteps(shape)) readMark_[anchor + r] = round;
+    for (std::int64_t w : engine.writeSteps(shape)) writeMark_[anchor + w] = round;
+    return true;
+}
+
+void Execution::fire(std::int64_t anchor, int shape, const RunObserver& observer, std::vector<std::int64_t>& changed) {
+    BoxEngine::Value old[rules::RuleTables::kMaxCells];
+    const BoxEngine& engine = this->engine();
+    engine.apply(cells_.data(), anchor, shape, old);
+    const std::vector<std::int64_t>& steps = engine.cellSteps(shape);
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+        const std::int64_t i = anchor + steps[k];
+        if (old[k] == cells_[i]) continue;
+        changed.push_back(i);
+        stats_.creations += old[k] == 0;
+        stats_.deletions += cells_[i] == 0;
+    }
+    const ShapeKind kind = engine.kind(shape);
+    stats_.transfers += kind == ShapeKind::Transfer;
+    stats_.relabels += kind == ShapeKind::Relabel;
+    ++stats_.steps;
+    if (observer.fired) observer.fired(anchor, shape, old);
+}
+
+bool Execution::asyncStep(const RunObserver& observer, std::vector<std::int64_t>& changed) {
+    // Uniform over the enabled planner instances and the transfers the allocator wants, by
+    // rejection from the two lists; after many rejections the candidates are listed explicitly.
+    for (int attempt = 0; attempt < 64; ++attempt) {
+        const std::size_t total = plannerList_.size() + transferList_.size();
+        if (total == 0) return false;
+        const std::size_t i = random_.below(total);
+        const bool planner = i < plannerList_.size();
+        std::vector<std::uint64_t>& list = planner ? plannerList_ : transferList_;
+        const std::size_t at = planner ? i : i - plannerList_.size();
+        const std::uint64_t key = list[at];
+        if (!enabled(anchorOf(key), shapeOf(key))) {
+            listed_[anchorOf(key)] &= ~(std::uint64_t{1} << shapeOf(key));
+            list[at] = list.back();
+            list.pop_back();
+            continue;
+        }
+        if (!planner && !allocator_->wants(*this, anchorOf(key), shapeOf(key))) continue;
+        fire(anchorOf(key), shapeOf(key), observer, changed);
+        return true;
+    }
+    compact(plannerList_);
+    compact(transferList_);
+    std::vector<std::uint64_t> candidates = plannerList_;
+    for (std::uint64_t key : transferList_)
+        if (allocator_->wants(*this, anchorOf(key), shapeOf(key))) candidates.push_back(key);
+    if (candidates.empty()) return false;
+    const std::uint64_t key = candidates[random_.below(candidates.size())];
+    fire(anchorOf(key), shapeOf(key), observer, changed);
+    return true;
+}
+
+bool Execution::adversarialStep(const RunObserver& observer, std::vector<std::int64_t>& changed) {
+    // Deterministic and unfair: the latest-declared rule first, then the highest anchor; transfers
+    // only when no planner rule is enabled (an allocator that never lets the planner move would
+    // defeat any planner, as §IV-B notes).
+    auto worst = [&](std::vector<std::uint64_t>& list, bool transfers) -> bool {
+        compact(list);
+        std::uint64_t best = 0;
+        bool found = false;
+        for (std::uint64_t key : list) {
+            if (transfers && !allocator_->wants(*this, anchorOf(key), shapeOf(key))) continue;
+            auto rank = [&](std::uint64_t k) { return std::pair(engine().ruleOf(shapeOf(k)), k); };
+            if (!found || rank(best) < rank(key)) best = key, found = true;
+        }
+        if (found) fire(anchorOf(best), shapeOf(best), observer, changed);
+        return found;
+    };
+    return worst(plannerList_, false) || worst(transferList_, true);
+}
+
+bool Execution::syncRound(const RunObserver& observer, std::vector<std::int64_t>& changed) {
+    std::vector<std::uint64_t> chosen;
+    compact(plannerList_);
+    random_.shuffle(plannerList_);
+    for (std::uint64_t key : plannerList_)
+        if (takeIfFree(anchorOf(key), shapeOf(key))) chosen.push_back(key);
+    compact(transferList_);
+    random_.shuffle(transferList_);
+    for (std::uint64_t key : transferList_)
+        if (allocator_->wants(*this, anchorOf(key), shapeOf(key)) && takeIfFree(anchorOf(key), shapeOf(key))) chosen.push_back(key);
+    for (std::uint64_t key : chosen) fire(anchorOf(key), shapeOf(key), observer, changed);
+    return !chosen.empty();
+}
+
+bool Execution::goalReached() const {
+    const PlannerSchema& schema = problem_->schema;
+    const rules::Alphabet& alphabet = problem_->model->alphabet();
+    std::vector<char> isFinal(static_cast<std::size_t>(alphabet.size()), 0);
+    for (int v = 1; v < alphabet.size(); ++v) isFinal[v] = alphabet.fields(static_cast<rules::CellValue>(v))[schema.label] == schema.final;
+    const int inTarget = problem_->tables->comboIndex(1u << schema.target);
+    for (std::size_t i = 0; i < cells_.size(); ++i) {
+        const std::uint8_t combo = engine().combo(static_cast<std::int64_t>(i));
+        if (combo == BoxEngine::kOutside) continue;
+        if (combo == inTarget ? !isFinal[cells_[i]] : cells_[i] != 0) return false;
+    }
+    return true;
+}
+
+RunStats Execution::run(const RunObserver& observer) {
+    const auto begin = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(); };
+    std::vector<std::int64_t> changed;
+    std::int64_t sinceUpdate = 0, updateEvery = 1;
+    for (std::uint64_t iteration = 0;; ++iteration) {
+        if (options_.maxRounds && stats_.rounds >= options_.maxRounds) {
+            stats_.stopped = "max-rounds";
+            break;
+        }
+        if (options_.maxSteps && stats_.steps >= options_.maxSteps) {
+            stats_.stopped = "max-steps";
+            break;
+        }
+        if (options_.timeoutSeconds > 0 && (iteration & 255) == 0 && elapsed() > options_.timeoutSeconds) {
+            stats_.stopped = "timeout";
+            break;
+        }
+        changed.clear();
+        bool allocatorMoved = false;
+        bool fired;
+        if (options_.scheduler == Scheduler::Sync) {
+            ++stats_.rounds;
+            allocatorMoved = allocator_->update(*this);
+            fired = syncRound(observer, changed);
+        } else {
+            // An asynchronous round: as many steps as there were candidates when it began.
+            if (++sinceUpdate >= updateEvery) {
+                allocatorMoved = allocator_->update(*this);
+                sinceUpdate = 0;
+                updateEvery = std::max<std::int64_t>(1, static_cast<std::int64_t>(plannerList_.size() + transferList_.size()));
+                ++stats_.rounds;
+            }
+            fired = options_.scheduler == Scheduler::Async ? asyncStep(observer, changed) : adversarialStep(observer, changed);
+        }
+        if (!fired && !allocatorMoved) {
+            stats_.stopped = goalReached() ? "goal" : "stuck";
+            break;
+        }
+        recheckAround(changed);
+        if (observer.roundEnd && !observer.roundEnd(stats_)) {
+            stats_.stopped = "monitor";
+            break;
+        }
+    }
+    stats_.complete = stats_.stopped == "goal";
+    stats_.metamodules = std::count_if(cells_.begin(), cells_.end(), [](BoxEngine::Value v) { return v != 0; });
+    stats_.seconds = elapsed();
+    return stats_;
+}
+
+}  // namespace holon::planner

@@ -1,0 +1,81 @@
+#pragma once
+// Running a planning problem: the set of enabled rule instances kept exactly up to date as cells
+// change, and the schedulers that choose from it — asynchronous (one instance at a time, uniformly
+// at random: the semantics the proofs speak about), synchronous rounds (a maximal set of
+// non-interfering instances fires together) and an adversarial one for tests.
+
+#include "planner/Allocator.h"
+#include "planner/Problem.h"
+#include "planner/Random.h"
+
+#include <chrono>
+#include <functional>
+#include <string>
+
+namespace holon::planner {
+
+enum class Scheduler { Async, Sync, Adversarial };
+
+struct RunOptions {
+    Scheduler scheduler = Scheduler::Sync;
+    std::uint64_t seed = 1;
+    std::int64_t maxSteps = 0;   // 0: no limit (async and adversarial count steps, sync rounds)
+    std::int64_t maxRounds = 0;  // 0: no limit
+    double timeoutSeconds = 0;   // 0: no limit
+    int threads = 2;
+};
+
+struct RunStats {
+    std::int64_t metamodules = 0;  // occupied cells at the end
+    std::int64_t creations = 0, deletions = 0, transfers = 0, relabels = 0;
+    std::int64_t rounds = 0, steps = 0;
+    std::int64_t evaluations = 0;  // rule instances tested against the decision tables
+    double seconds = 0;
+    bool complete = false;  // the goal (every target cell F, nothing outside) was reached
+    std::string stopped;    // why the run ended: "goal", "stuck", "max-steps", "max-rounds", "timeout", "monitor"
+};
+
+/// Hooks for output while a plan runs; every hook is optional.
+struct RunObserver {
+    /// An instance fired in the current step or round; `old` holds its cells' previous values.
+    std::function<void(std::int64_t anchor, int shape, const BoxEngine::Value* old)> fired;
+    /// A step (async) or round (sync) ended; returning false stops the run (the monitor's veto).
+    std::function<bool(const RunStats&)> roundEnd;
+};
+
+class Execution {
+public:
+    Execution(const Problem& problem, Allocator& allocator, RunOptions options);
+    RunStats run(const RunObserver& observer = {});
+
+    const Problem& problem() const { return *problem_; }
+    const BoxEngine& engine() const { return *problem_->engine; }
+    const std::vector<BoxEngine::Value>& cells() const { return cells_; }
+    bool enabled(std::int64_t anchor, int shape) const { return (enabled_[anchor] >> shape) & 1u; }
+
+private:
+    void recheck(std::int64_t anchor);
+    void recheckAround(const std::vector<std::int64_t>& changed);
+    bool takeIfFree(std::int64_t anchor, int shape);
+    void fire(std::int64_t anchor, int shape, const RunObserver& observer, std::vector<std::int64_t>& changed);
+    void compact(std::vector<std::uint64_t>& list);
+    bool asyncStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
+    bool adversarialStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
+    bool syncRound(const RunObserver& observer, std::vector<std::int64_t>& changed);
+    bool goalReached() const;
+
+    const Problem* problem_;
+    Allocator* allocator_;
+    RunOptions options_;
+    Random random_;
+    int shapes_;
+    std::vector<BoxEngine::Value> cells_;
+    std::vector<std::uint64_t> enabled_, listed_;  // per cell: bit s for the instance of shape s anchored there
+    std::vector<std::uint64_t> plannerList_, transferList_;  // instance keys anchor * 64 + shape; may hold stale keys
+    std::vector<std::uint32_t> stamp_, readMark_, writeMark_;
+    std::uint32_t clock_ = 0;
+    std::vector<std::int64_t> anchors_;
+    RunStats stats_;
+};
+
+}  // namespace holon::planner

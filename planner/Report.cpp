@@ -1,0 +1,134 @@
+// Output of `holon plan`: the plan (JSON Lines), completion over time like seed 000 Fig. 8
+// (creations and deletions done as a fraction of |T \ S| and |S \ T|), and snapshots like Fig. 5
+// (U white, P black, F blue; a dot marks a creator resource C).
+
+#include "planner/Report.h"
+
+#include "rules/ConfigIo.h"
+#include "rules/Error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace holon::planner {
+
+namespace {
+
+std::unique_ptr<std::ofstream> openFile(const std::string& path) {
+    auto out = std::make_unique<std::ofstream>(path);
+    if (!*out) throw InputError("cannot write '" + path + "'");
+    return out;
+}
+
+double fraction(std::int64_t done, std::int64_t total) { return total == 0 ? 1.0 : double(done) / double(total); }
+
+}  // namespace
+
+Report::Report(const Problem& problem, const Execution& execution, ReportOptions options)
+    : problem_(&problem), execution_(&execution), options_(std::move(options)) {
+    if (!options_.planOut.empty()) plan_ = openFile(options_.planOut);
+    if (!options_.outDir.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(options_.outDir, ec);
+        if (ec) throw InputError("cannot create folder '" + options_.outDir + "': " + ec.message());
+        csv_ = openFile(options_.outDir + "/completion.csv");
+        *csv_ << "round,steps,creations,deletions,transfers,creation_completion,deletion_completion\n";
+        snapshot("start");
+    }
+}
+
+Report::~Report() = default;
+
+void Report::fired(std::int64_t anchor, int shape, const BoxEngine::Value*) {
+    if (!plan_) return;
+    const rules::Model& model = *problem_->model;
+    const BoxEngine& engine = *problem_->engine;
+    nlohmann::json cells = nlohmann::json::array(), states = nlohmann::json::array();
+    for (std::int64_t s : engine.cellSteps(shape)) {
+        cells.push_back(rules::pointJson(model.lattice(), problem_->board->point(anchor + s)));
+        states.push_back(rules::stateFields(model, execution_->cells()[anchor + s]));
+    }
+    *plan_ << nlohmann::json{{"round", lastRound_ + 1}, {"rule", model.rules()[engine.ruleOf(shape)].name}, {"cells", cells}, {"after", states}}.dump() << '\n';
+}
+
+void Report::roundEnd(const RunStats& stats) {
+    lastRound_ = stats.rounds;
+    const double created = fraction(stats.creations, problem_->toCreate), deleted = fraction(stats.deletions, problem_->toDelete);
+    if (csv_ && (stats.steps != lastStep_)) {
+        *csv_ << stats.rounds << ',' << stats.steps << ',' << stats.creations << ',' << stats.deletions << ',' << stats.transfers << ',' << created << ','
+              << deleted << '\n';
+        lastStep_ = stats.steps;
+    }
+    const double done = fraction(stats.creations + stats.deletions, problem_->toCreate + problem_->toDelete);
+    if (!options_.outDir.empty() && nextQuarter_ < 4 && done >= nextQuarter_ * 0.25) snapshot(std::to_string(25 * nextQuarter_++) + "pct");
+    if (options_.progressBar && done - lastBar_ >= 0.01) {
+        lastBar_ = done;
+        const int width = 40, filled = static_cast<int>(done * width);
+        std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << static_cast<int>(done * 100) << "% round "
+                  << stats.rounds << std::flush;
+    }
+}
+
+void Report::finish(const RunStats& stats, std::int64_t transferLowerBound) {
+    if (options_.progressBar) std::cerr << "\r" << std::string(70, ' ') << "\r" << std::flush;
+    if (options_.outDir.empty()) return;
+    snapshot("end");
+    nlohmann::json summary = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions},
+                              {"transfers", stats.transfers}, {"transfer_lower_bound", transferLowerBound >= 0 ? nlohmann::json(transferLowerBound) : nlohmann::json()},
+                              {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}};
+    *openFile(options_.outDir + "/summary.json") << summary.dump(2) << '\n';
+}
+
+void Report::snapshot(const std::string& label) {
+    *openFile(options_.outDir + "/snapshot-" + label + ".svg") << drawBoard(*problem_, execution_->cells(), label);
+}
+
+std::string drawBoard(const Problem& problem, const std::vector<BoxEngine::Value>& cells, const std::string& title) {
+    const Board& board = *problem.board;
+    const rules::Alphabet& alphabet = problem.model->alphabet();
+    const PlannerSchema& schema = problem.schema;
+    const bool is3d = board.lattice().dimension() == 3;
+    const Vec ext = board.extent();
+    const int slices = is3d ? std::min(ext.z, 12) : 1;
+    // Large boards are sampled: at most ~600 cells across per slice.
+    const int sample = std::max(1, std::max(ext.x, ext.y) * slices / 600 + 1);
+    const double px = std::clamp(600.0 / (double(std::max(ext.x, ext.y)) / sample * slices), 2.0, 24.0);
+    const int w = (ext.x + sample - 1) / sample, h = (ext.y + sample - 1) / sample;
+    const double gap = is3d ? px * 2 : 0;
+    std::ostringstream svg;
+    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << (w * px + gap) * slices + 10 << "\" height=\"" << h * px + 30 << "\">\n"
+        << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"5\" y=\"16\" font-family=\"sans-serif\" font-size=\"13\">" << title
+        << "</text>\n";
+    const int inTarget = problem.tables->comboIndex(1u << schema.target);
+    for (int s = 0; s < slices; ++s) {
+        const int z = is3d ? s * ext.z / slices : 0;
+        const double ox = 5 + s * (w * px + gap), oy = 25;
+        for (int y = 0; y < ext.y; y += sample)
+            for (int x = 0; x < ext.x; x += sample) {
+                const std::int64_t i = board.index(board.lower() + Vec{x, y, z});
+                const double cx = ox + (x / sample) * px, cy = oy + (h - 1 - y / sample) * px;
+                const bool target = problem.engine->combo(i) == inTarget;
+                const BoxEngine::Value v = cells[i];
+                if (!v) {
+                    if (target) svg << "<rect x=\"" << cx << "\" y=\"" << cy << "\" width=\"" << px << "\" height=\"" << px << "\" fill=\"#e8eef6\"/>\n";
+                    continue;
+                }
+                const auto& f = alphabet.fields(v);
+                const int label = f[schema.label];
+                const char* fill = label == schema.final ? "#3d6fb0" : label == schema.path ? "#222222" : "#ffffff";
+                svg << "<rect x=\"" << cx << "\" y=\"" << cy << "\" width=\"" << px << "\" height=\"" << px << "\" fill=\"" << fill
+                    << "\" stroke=\"#888\" stroke-width=\"" << (px > 4 ? 0.5 : 0) << "\"/>\n";
+                if (schema.resource >= 0 && f[schema.resource] != schema.full && px >= 4)
+                    svg << "<circle cx=\"" << cx + px / 2 << "\" cy=\"" << cy + px / 2 << "\" r=\"" << px / 4 << "\" fill=\"#e07020\"/>\n";
+            }
+        if (is3d) svg << "<text x=\"" << ox << "\" y=\"" << oy + h * px + 0 << "\" font-size=\"10\" font-family=\"sans-serif\">z=" << z + board.lower().z << "</text>\n";
+    }
+    svg << "</svg>\n";
+    return svg.str();
+}
+
+}  // namespace holon::planner

@@ -1,0 +1,268 @@
+// Shapes for planning problems (issue: start and target shapes in 2D and 3D). The block shapes
+// reproduce seed 000 §V (6x3x2 -> 3x3x4, scaled); the others are the usual test shapes of the
+// shape-formation literature: a T, a disc, a ring and a chair (seed 001's chair, as voxels).
+
+#include "planner/Shape.h"
+
+#include "rules/Error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <sstream>
+
+namespace holon::planner {
+
+namespace {
+
+[[noreturn]] void bad(std::string_view argument, const std::string& why) {
+    throw InputError("shape '" + std::string(argument) + "': " + why);
+}
+
+std::vector<int> numbers(std::string_view argument, std::string_view text, char separator, std::size_t minCount, std::size_t maxCount) {
+    std::vector<int> out;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t end = text.find(separator, start);
+        const std::string_view part = text.substr(start, end == std::string_view::npos ? text.npos : end - start);
+        int v = 0;
+        auto [p, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
+        if (part.empty() || ec != std::errc{} || p != part.data() + part.size() || v < 1 || v > 1000000)
+            bad(argument, "'" + std::string(part) + "' is not a size between 1 and 1000000");
+        out.push_back(v);
+        if (end == std::string_view::npos) break;
+        start = end + 1;
+    }
+    if (out.size() < minCount || out.size() > maxCount)
+        bad(argument, "expected " + std::to_string(minCount) + (minCount == maxCount ? "" : " or " + std::to_string(maxCount)) + " numbers");
+    return out;
+}
+
+void checkSize(std::string_view argument, std::size_t cells, std::size_t maxCells) {
+    if (cells > maxCells)
+        bad(argument, std::to_string(cells) + " cells is more than the limit of " + std::to_string(maxCells) + "; choose a smaller shape or --scale");
+}
+
+Shape box(std::string_view argument, std::string_view dims, std::size_t maxCells) {
+    const std::vector<int> n = numbers(argument, dims, 'x', 2, 3);
+    Shape s;
+    s.dimension = static_cast<int>(n.size());
+    const int depth = s.dimension == 3 ? n[2] : 1;
+    checkSize(argument, std::size_t(n[0]) * n[1] * depth, maxCells);
+    s.cells.reserve(std::size_t(n[0]) * n[1] * depth);
+    for (int x = 0; x < n[0]; ++x)
+        for (int y = 0; y < n[1]; ++y)
+            for (int z = 0; z < depth; ++z) s.cells.push_back({x, y, z});
+    return s;
+}
+
+/// A T of width N: a bar N wide and ceil(N/3) thick on top of a centred stem ceil(N/3) wide and N tall.
+Shape tee(std::string_view argument, std::string_view size, std::size_t maxCells) {
+    const int n = numbers(argument, size, ',', 1, 1)[0];
+    const int t = (n + 2) / 3;
+    checkSize(argument, std::size_t(n) * t * 2, maxCells);
+    Shape s;
+    const int stem = (n - t) / 2;
+    for (int x = 0; x < n; ++x)
+        for (int y = 0; y < n + t; ++y)
+            if (y >= n || (x >= stem && x < stem + t)) s.cells.push_back({x, y, 0});
+    return s;
+}
+
+/// Cells whose centre lies at distance r with r1 <= r <= r2 from the centre (R2, R2).
+Shape annulus(std::string_view argument, int r1, int r2, std::size_t maxCells) {
+    checkSize(argument, std::size_t(2 * r2 + 1) * (2 * r2 + 1), maxCells);
+    Shape s;
+    for (int x = 0; x <= 2 * r2; ++x)
+        for (int y = 0; y <= 2 * r2; ++y) {
+            const long d2 = long(x - r2) * (x - r2) + long(y - r2) * (y - r2);
+            if (d2 <= long(r2) * r2 && d2 >= long(r1) * r1) s.cells.push_back({x, y, 0});
+        }
+    return s;
+}
+
+/// A chair of size N: an NxN seat at height N on four 1x1 legs, a backrest N high on the back edge.
+Shape chair(std::string_view argument, std::string_view size, std::size_t maxCells) {
+    const int n = numbers(argument, size, ',', 1, 1)[0];
+    if (n < 2) bad(argument, "a chair needs N >= 2");
+    checkSize(argument, std::size_t(n) * n * 3, maxCells);
+    Shape s;
+    s.dimension = 3;
+    for (int x = 0; x < n; ++x)
+        for (int y = 0; y < n; ++y)
+            for (int z = 0; z <= 2 * n; ++z) {
+                const bool leg = z < n && (x == 0 || x == n - 1) && (y == 0 || y == n - 1);
+                const bool seat = z == n;
+                const bool back = z > n && y == n - 1;
+                if (leg || seat || back) s.cells.push_back({x, y, z});
+            }
+    return s;
+}
+
+Shape fromJson(std::string_view argument, std::istream& in) {
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::parse_error& e) {
+        bad(argument, std::string("not valid JSON: ") + e.what());
+    }
+    const nlohmann::json& list = j.is_object() && j.contains("cells") ? j["cells"] : j;
+    if (!list.is_array()) bad(argument, "expected a JSON array of cells, or an object with a \"cells\" array");
+    Shape s;
+    s.dimension = 0;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const nlohmann::json& c = list[i];
+        if (!c.is_array() || c.size() < 2 || c.size() > 3 || !std::all_of(c.begin(), c.end(), [](auto& v) { return v.is_number_integer(); }))
+            bad(argument, "cell " + std::to_string(i) + " is not [x, y] or [x, y, z] with integer coordinates");
+        const int dim = static_cast<int>(c.size());
+        if (s.dimension && dim != s.dimension) bad(argument, "cell " + std::to_string(i) + " has " + std::to_string(dim) + " coordinates, earlier cells " + std::to_string(s.dimension));
+        s.dimension = dim;
+        s.cells.push_back({c[0].get<int>(), c[1].get<int>(), dim == 3 ? c[2].get<int>() : 0});
+    }
+    if (!s.dimension) s.dimension = 2;
+    return s;
+}
+
+/// Lines "x y z"; '#' starts a comment.
+Shape fromVoxels(std::string_view argument, std::istream& in) {
+    Shape s;
+    s.dimension = 3;
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+        std::istringstream fields(line);
+        Vec v;
+        std::string extra;
+        if (!(fields >> v.x)) continue;
+        if (!(fields >> v.y >> v.z) || (fields >> extra))
+            bad(argument, "line " + std::to_string(number) + ": expected three integers 'x y z'");
+        s.cells.push_back(v);
+    }
+    return s;
+}
+
+/// ASCII art: '#', 'X', 'x', 'O', 'o', '@', '*' or '1' is a cell, '.', ' ', '_' or '0' is empty;
+/// the first line is the top row.
+Shape fromAscii(std::string_view argument, std::istream& in) {
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        lines.push_back(line);
+    }
+    while (!lines.empty() && lines.back().find_first_not_of(' ') == std::string::npos) lines.pop_back();
+    Shape s;
+    const int rows = static_cast<int>(lines.size());
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < static_cast<int>(lines[r].size()); ++c) {
+            const char ch = lines[r][c];
+            if (std::string_view("#XxOo@*1").find(ch) != std::string_view::npos) s.cells.push_back({c, rows - 1 - r, 0});
+            else if (std::string_view(". _0\t").find(ch) == std::string_view::npos)
+                bad(argument, "line " + std::to_string(r + 1) + ", column " + std::to_string(c + 1) + ": '" + std::string(1, ch) +
+                                  "' is neither a cell ('#') nor empty ('.')");
+        }
+    return s;
+}
+
+Shape fromFile(std::string_view argument) {
+    const std::string path(argument);
+    std::ifstream in(path);
+    if (!in) {
+        std::string known;
+        for (const auto& [name, what] : shapeGenerators()) known += (known.empty() ? "" : ", ") + name;
+        bad(argument, "neither a shape generator (" + known + ") nor a readable file");
+    }
+    auto endsWith = [&](std::string_view suffix) { return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0; };
+    if (endsWith(".json")) return fromJson(argument, in);
+    if (endsWith(".xyz") || endsWith(".vox")) return fromVoxels(argument, in);
+    return fromAscii(argument, in);
+}
+
+}  // namespace
+
+const std::vector<std::pair<std::string, std::string>>& shapeGenerators() {
+    static const std::vector<std::pair<std::string, std::string>> list = {
+        {"box:WxH", "a W by H rectangle"},
+        {"box:WxHxD", "a W by H by D block"},
+        {"T:N", "a T, N wide"},
+        {"disc:R", "a disc of radius R"},
+        {"ring:R1,R2", "a ring between radii R1 and R2"},
+        {"chair:N", "a 3D chair with an NxN seat"},
+    };
+    return list;
+}
+
+Shape scaled(const Shape& shape, int k, std::size_t maxCells) {
+    if (k < 1) bad(shape.name, "--scale must be at least 1");
+    if (k == 1) return shape;
+    const std::size_t block = shape.dimension == 3 ? std::size_t(k) * k * k : std::size_t(k) * k;
+    checkSize(shape.name, shape.cells.size() * block, maxCells);
+    Shape out;
+    out.dimension = shape.dimension, out.name = shape.name;
+    out.cells.reserve(shape.cells.size() * block);
+    const int kz = shape.dimension == 3 ? k : 1;
+    for (Vec c : shape.cells)
+        for (int dx = 0; dx < k; ++dx)
+            for (int dy = 0; dy < k; ++dy)
+                for (int dz = 0; dz < kz; ++dz) out.cells.push_back({c.x * k + dx, c.y * k + dy, c.z * kz + dz});
+    std::sort(out.cells.begin(), out.cells.end());
+    return out;
+}
+
+Shape parseShape(std::string_view argument, int scale, std::size_t maxCells) {
+    const std::size_t colon = argument.find(':');
+    const std::string_view kind = colon == std::string_view::npos ? std::string_view() : argument.substr(0, colon);
+    const std::string_view rest = colon == std::string_view::npos ? std::string_view() : argument.substr(colon + 1);
+    Shape s;
+    if (kind == "box") s = box(argument, rest, maxCells);
+    else if (kind == "T") s = tee(argument, rest, maxCells);
+    else if (kind == "disc") s = annulus(argument, 0, numbers(argument, rest, ',', 1, 1)[0], maxCells);
+    else if (kind == "ring") {
+        const std::vector<int> r = numbers(argument, rest, ',', 2, 2);
+        if (r[0] >= r[1]) bad(argument, "the inner radius must be smaller than the outer one");
+        s = annulus(argument, r[0], r[1], maxCells);
+    } else if (kind == "chair") s = chair(argument, rest, maxCells);
+    else s = fromFile(argument);
+    s.name = std::string(argument);
+    std::sort(s.cells.begin(), s.cells.end());
+    s.cells.erase(std::unique(s.cells.begin(), s.cells.end()), s.cells.end());
+    if (s.cells.empty()) bad(argument, "the shape has no cells");
+    checkSize(argument, s.cells.size(), maxCells);
+    return scaled(s, scale, maxCells);
+}
+
+std::vector<std::vector<Vec>> components(const std::vector<Vec>& cells, int dimension) {
+    std::vector<std::vector<Vec>> out;
+    if (cells.empty()) return out;
+    Vec lo = cells[0], hi = cells[0];
+    for (Vec c : cells) {
+        lo = {std::min(lo.x, c.x), std::min(lo.y, c.y), std::min(lo.z, c.z)};
+        hi = {std::max(hi.x, c.x), std::max(hi.y, c.y), std::max(hi.z, c.z)};
+    }
+    const long w = hi.x - lo.x + 3, h = hi.y - lo.y + 3, d = hi.z - lo.z + 3;
+    auto index = [&](Vec c) { return ((c.z - lo.z + 1) * h + (c.y - lo.y + 1)) * w + (c.x - lo.x + 1); };
+    std::vector<std::int32_t> mark(static_cast<std::size_t>(w * h * d), -1);  // -1 absent, -2 unvisited, else component
+    for (Vec c : cells) mark[index(c)] = -2;
+    const long steps[6] = {1, -1, w, -w, w * h, -w * h};
+    const int degree = dimension == 3 ? 6 : 4;
+    std::vector<long> stack;
+    for (Vec c : cells) {
+        if (mark[index(c)] != -2) continue;
+        const int id = static_cast<int>(out.size());
+        out.emplace_back();
+        stack.assign(1, index(c));
+        mark[index(c)] = id;
+        while (!stack.empty()) {
+            const long i = stack.back();
+            stack.pop_back();
+            out[id].push_back({static_cast<int>(i % w) + lo.x - 1, static_cast<int>(i / w % h) + lo.y - 1, static_cast<int>(i / (w * h)) + lo.z - 1});
+            for (int k = 0; k < degree; ++k)
+                if (mark[i + steps[k]] == -2) mark[i + steps[k]] = id, stack.push_back(i + steps[k]);
+        }
+        std::sort(out[id].begin(), out[id].end());
+    }
+    return out;
+}
+
+}  // namespace holon::planner
