@@ -50,7 +50,10 @@ int BoxEngine::reach(const rules::RuleTables& tables) {
     const auto& shapes = tables.model().shapes();
     for (int s = 0; s < tables.shapeCount(); ++s) {
         const int extra = tables.shape(s).hasGuard ? 1 : 0;
-        for (Vec v : shapes[s].offsets) r = std::max({r, std::abs(v.x) + extra, std::abs(v.y) + extra, std::abs(v.z) + extra});
+        for (Vec w : shapes[s].offsets) {
+            const Vec v = w - shapes[s].offsets[0];
+            r = std::max({r, std::abs(v.x) + extra, std::abs(v.y) + extra, std::abs(v.z) + extra});
+        }
     }
     return std::max(r, 1);
 }
@@ -66,7 +69,9 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
         ruleOf_.push_back(shape.rule);
         kinds_.push_back(classify(tables, s));
         std::vector<std::int64_t> cells, writes, reads;
-        for (Vec v : shape.offsets) cells.push_back(board.offset(v));
+        // Steps are taken from pattern cell 0, the anchor: the first-cell index then applies.
+        const Vec origin = shape.offsets[0];
+        for (Vec v : shape.offsets) cells.push_back(board.offset(v - origin));
         const rules::RuleTables::Shape& t = tables.shape(s);
         for (std::size_t k = 0; k < shape.offsets.size(); ++k) {
             bool identity = t.copyFrom[k] < 0 || t.copyFrom[k] == static_cast<int>(k);
@@ -78,7 +83,7 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
         reads = cells;
         if (tables.shape(s).hasGuard)
             for (Vec v : shape.offsets)
-                for (int d = 0; d < lattice.degree(); ++d) reads.push_back(board.offset(v + lattice.direction(d)));
+                for (int d = 0; d < lattice.degree(); ++d) reads.push_back(board.offset(v - origin + lattice.direction(d)));
         std::sort(reads.begin(), reads.end());
         reads.erase(std::unique(reads.begin(), reads.end()), reads.end());
         influence_.insert(influence_.end(), reads.begin(), reads.end());

@@ -1,7 +1,8 @@
 #pragma once
 // The planner's compiled rule engine: the system's RuleTables placed on a Board by index
 // arithmetic, so an ensemble of millions of cells costs one byte of state and one byte of input
-// combination per cell and no per-instance tables. Instances are (anchor cell, rule shape) pairs.
+// combination per cell and no per-instance tables. Instances are (anchor, rule shape) pairs, the
+// anchor being the board index of the shape's first pattern cell.
 
 #include "planner/Board.h"
 #include "rules/RuleTables.h"

@@ -36,8 +36,15 @@ Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions op
     enabled_.assign(n, 0), listed_.assign(n, 0);
     stamp_.assign(n, 0), readMark_.assign(n, 0), writeMark_.assign(n, 0);
     const BoxEngine& engine = *problem.engine;
-    for (std::int64_t a = 0; a < static_cast<std::int64_t>(n); ++a)
+    const PlannerSchema& schema = problem.schema;
+    const rules::Alphabet& alphabet = problem.model->alphabet();
+    isFinal_.assign(static_cast<std::size_t>(alphabet.size()), 0);
+    for (int v = 1; v < alphabet.size(); ++v) isFinal_[v] = alphabet.fields(static_cast<rules::CellValue>(v))[schema.label] == schema.final;
+    inTarget_ = problem.tables->comboIndex(1u << schema.target);
+    for (std::int64_t a = 0; a < static_cast<std::int64_t>(n); ++a) {
+        offGoal_ += !atGoal(a, cells_[a]);
         if (engine.combo(a) != BoxEngine::kOutside && cells_[a] != 0) recheck(a);
+    }
 }
 
 void Execution::recheck(std::int64_t anchor) {
@@ -97,6 +104,7 @@ void Execution::fire(std::int64_t anchor, int shape, const RunObserver& observer
         const std::int64_t i = anchor + steps[k];
         if (old[k] == cells_[i]) continue;
         changed.push_back(i);
+        offGoal_ += static_cast<int>(atGoal(i, old[k])) - static_cast<int>(atGoal(i, cells_[i]));
         stats_.creations += old[k] == 0;
         stats_.deletions += cells_[i] == 0;
     }
@@ -140,22 +148,18 @@ bool Execution::asyncStep(const RunObserver& observer, std::vector<std::int64_t>
 }
 
 bool Execution::adversarialStep(const RunObserver& observer, std::vector<std::int64_t>& changed) {
-    // Deterministic and unfair: the latest-declared rule first, then the highest anchor; transfers
-    // only when no planner rule is enabled (an allocator that never lets the planner move would
-    // defeat any planner, as §IV-B notes).
-    auto worst = [&](std::vector<std::uint64_t>& list, bool transfers) -> bool {
-        compact(list);
-        std::uint64_t best = 0;
-        bool found = false;
-        for (std::uint64_t key : list) {
-            if (transfers && !allocator_->wants(*this, anchorOf(key), shapeOf(key))) continue;
-            auto rank = [&](std::uint64_t k) { return std::pair(engine().ruleOf(shapeOf(k)), k); };
-            if (!found || rank(best) < rank(key)) best = key, found = true;
-        }
-        if (found) fire(anchorOf(best), shapeOf(best), observer, changed);
-        return found;
-    };
-    return worst(plannerList_, false) || worst(transferList_, true);
+    // Deterministic and unfair to the planner: the latest-declared rule first, then the highest
+    // anchor. Transfers stay the allocator's choice (uniform among those it wants) and fire only
+    // when no planner rule is enabled: an adversary that also picked the transfers could swap one
+    // pair back and forth forever, the "purposely malicious resource allocator" of §IV-B.
+    compact(plannerList_);
+    if (!plannerList_.empty()) {
+        auto rank = [&](std::uint64_t k) { return std::pair(engine().ruleOf(shapeOf(k)), k); };
+        const std::uint64_t worst = *std::max_element(plannerList_.begin(), plannerList_.end(), [&](auto a, auto b) { return rank(a) < rank(b); });
+        fire(anchorOf(worst), shapeOf(worst), observer, changed);
+        return true;
+    }
+    return asyncStep(observer, changed);
 }
 
 bool Execution::syncRound(const RunObserver& observer, std::vector<std::int64_t>& changed) {
@@ -172,18 +176,9 @@ bool Execution::syncRound(const RunObserver& observer, std::vector<std::int64_t>
     return !chosen.empty();
 }
 
-bool Execution::goalReached() const {
-    const PlannerSchema& schema = problem_->schema;
-    const rules::Alphabet& alphabet = problem_->model->alphabet();
-    std::vector<char> isFinal(static_cast<std::size_t>(alphabet.size()), 0);
-    for (int v = 1; v < alphabet.size(); ++v) isFinal[v] = alphabet.fields(static_cast<rules::CellValue>(v))[schema.label] == schema.final;
-    const int inTarget = problem_->tables->comboIndex(1u << schema.target);
-    for (std::size_t i = 0; i < cells_.size(); ++i) {
-        const std::uint8_t combo = engine().combo(static_cast<std::int64_t>(i));
-        if (combo == BoxEngine::kOutside) continue;
-        if (combo == inTarget ? !isFinal[cells_[i]] : cells_[i] != 0) return false;
-    }
-    return true;
+bool Execution::atGoal(std::int64_t cell, BoxEngine::Value v) const {
+    const std::uint8_t combo = engine().combo(cell);
+    return combo == BoxEngine::kOutside || (combo == inTarget_ ? isFinal_[v] != 0 : v == 0);
 }
 
 RunStats Execution::run(const RunObserver& observer) {
@@ -192,6 +187,11 @@ RunStats Execution::run(const RunObserver& observer) {
     std::vector<std::int64_t> changed;
     std::int64_t sinceUpdate = 0, updateEvery = 1;
     for (std::uint64_t iteration = 0;; ++iteration) {
+        // Reaching the goal ends the run even while transfers are still enabled.
+        if (offGoal_ == 0) {
+            stats_.stopped = "goal";
+            break;
+        }
         if (options_.maxRounds && stats_.rounds >= options_.maxRounds) {
             stats_.stopped = "max-rounds";
             break;
@@ -222,7 +222,7 @@ RunStats Execution::run(const RunObserver& observer) {
             fired = options_.scheduler == Scheduler::Async ? asyncStep(observer, changed) : adversarialStep(observer, changed);
         }
         if (!fired && !allocatorMoved) {
-            stats_.stopped = goalReached() ? "goal" : "stuck";
+            stats_.stopped = "stuck";
             break;
         }
         recheckAround(changed);

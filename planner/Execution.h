@@ -62,7 +62,8 @@ private:
     bool asyncStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
     bool adversarialStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
     bool syncRound(const RunObserver& observer, std::vector<std::int64_t>& changed);
-    bool goalReached() const;
+    /// Whether a cell in state v is as the goal wants it (target cells F, the rest empty).
+    bool atGoal(std::int64_t cell, BoxEngine::Value v) const;
 
     const Problem* problem_;
     Allocator* allocator_;
@@ -75,6 +76,9 @@ private:
     std::vector<std::uint32_t> stamp_, readMark_, writeMark_;
     std::uint32_t clock_ = 0;
     std::vector<std::int64_t> anchors_;
+    std::vector<char> isFinal_;
+    int inTarget_ = -1;
+    std::int64_t offGoal_ = 0;  // cells not as the goal wants them
     RunStats stats_;
 };
 

@@ -65,6 +65,9 @@ PlannerSchema PlannerSchema::of(const rules::System& system) {
     for (std::size_t i = 0; i < system.inputs.size(); ++i)
         if (system.inputs[i] == "target") s.target = static_cast<int>(i);
     if (s.target < 0) throw InputError("system '" + system.name + "' has no input 'target'" + fix);
+    if (!system.constraints.empty())
+        throw InputError("system '" + system.name + "' declares a non-local constraint (line " + std::to_string(system.constraints.front().loc.line) +
+                         "); the planner is distributed and only runs local rules: state the property as an invariant and prove it with holon verify");
     if (!system.masses.empty()) {
         s.resource = system.masses.front().field;
         Rational best(-1);
