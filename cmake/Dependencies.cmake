@@ -5,4 +5,6 @@ find_package(CLI11 REQUIRED)
 find_package(doctest REQUIRED)
 find_package(Threads REQUIRED)
 pkg_check_modules(Z3 REQUIRED IMPORTED_TARGET z3)
+# LEMON's network simplex solves the planner's transport bound (min-cost flow).
+pkg_check_modules(LEMON REQUIRED IMPORTED_TARGET lemon)
 find_package(Boost 1.74 REQUIRED)

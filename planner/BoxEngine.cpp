@@ -18,7 +18,9 @@ struct BoardCells {
     const BoxEngine::Value* cells;
     const std::uint8_t* combos;
     const Board* board;
-    BoxEngine::Value value(std::int64_t i) const { return cells[i]; }
+    std::int64_t overridden;
+    BoxEngine::Value replacement;
+    BoxEngine::Value value(std::int64_t i) const { return i == overridden ? replacement : cells[i]; }
     int combo(std::int64_t i) const { return combos[i]; }
     std::int64_t neighbour(std::int64_t i, int d) const {
         const std::int64_t j = i + board->step(d);
@@ -95,16 +97,16 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
     influence_.erase(std::unique(influence_.begin(), influence_.end()), influence_.end());
 }
 
-bool BoxEngine::matches(const Value* cells, std::int64_t anchor, int shape) const {
+bool BoxEngine::matches(const Value* cells, std::int64_t anchor, int shape, std::int64_t cell, Value value) const {
     const rules::RuleTables::Shape& t = tables_->shape(shape);
     const std::vector<std::int64_t>& steps = cellSteps_[shape];
     std::int32_t at[rules::RuleTables::kMaxCells];
     for (std::size_t k = 0; k < steps.size(); ++k) {
         const std::int64_t i = anchor + steps[k];
-        if (combo_[i] == kOutside || !tables_->test(t.lhs[k], combo_[i], cells[i])) return false;
+        if (combo_[i] == kOutside || !tables_->test(t.lhs[k], combo_[i], i == cell ? value : cells[i])) return false;
         at[k] = static_cast<std::int32_t>(i);
     }
-    return !t.hasGuard || tables_->guard(t.guard, BoardCells{cells, combo_.data(), board_}, at);
+    return !t.hasGuard || tables_->guard(t.guard, BoardCells{cells, combo_.data(), board_, cell, value}, at);
 }
 
 void BoxEngine::apply(Value* cells, std::int64_t anchor, int shape, Value* old) const {

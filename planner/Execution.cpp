@@ -221,6 +221,11 @@ RunStats Execution::run(const RunObserver& observer) {
             }
             fired = options_.scheduler == Scheduler::Async ? asyncStep(observer, changed) : adversarialStep(observer, changed);
         }
+        // Nothing fired between two asynchronous allocator updates: let the allocator look again.
+        if (!fired && !allocatorMoved && options_.scheduler != Scheduler::Sync && sinceUpdate != 0) {
+            sinceUpdate = 0;
+            allocatorMoved = allocator_->update(*this);
+        }
         if (!fired && !allocatorMoved) {
             stats_.stopped = "stuck";
             break;

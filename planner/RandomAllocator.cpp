@@ -4,8 +4,6 @@
 
 #include "planner/Allocator.h"
 
-#include "rules/Error.h"
-
 namespace holon::planner {
 
 namespace {
@@ -16,11 +14,6 @@ public:
 };
 }  // namespace
 
-std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem&) {
-    if (name == "random") return std::make_unique<RandomAllocator>();
-    throw InputError("--allocator '" + name + "': choose random, gradient or optimal");
-}
-
-std::int64_t transferLowerBound(const Problem&) { return -1; }
+std::unique_ptr<Allocator> randomAllocator() { return std::make_unique<RandomAllocator>(); }
 
 }  // namespace holon::planner

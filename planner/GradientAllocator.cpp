@@ -1,0 +1,118 @@
+// The gradient allocator: a distributed resource manager for general_n (seed 000 §IV-B asks for
+// one that sends "the D to regions of anticipated deletion and the C to regions of anticipated
+// creation"; §V blames the random one's slow diffusion for general_1's long deletion phase).
+//
+// Every metamodule learns, from its own cells only, whether it is a demand: a creation or deletion
+// instance it takes part in would fire if its resource were heavier (it needs a C) or lighter (it
+// needs a D). Demands seed two hop-count fields, relaxed by one message exchange between lattice
+// neighbours per round (distance-vector routing, as in the hormone/gradient fields of the modular
+// robotics literature). A transfer fires only when it moves the heavy resource down the "needs C"
+// field or the light one down the "needs D" field, i.e. when it lowers their sum.
+// Which resource is heavy or light, and which rules create or delete, is read off the compiled
+// rule tables: nothing here names a rule of a particular system.
+
+#include "planner/Allocator.h"
+#include "planner/Execution.h"
+
+#include <algorithm>
+
+namespace holon::planner {
+
+std::unique_ptr<Allocator> gradientAllocator(const Problem& problem);
+
+namespace {
+
+constexpr std::uint32_t kFar = 1u << 30;
+
+class GradientAllocator final : public Allocator {
+public:
+    explicit GradientAllocator(const Problem& problem) : problem_(&problem) {
+        const rules::Alphabet& alphabet = problem.model->alphabet();
+        const PlannerSchema& s = problem.schema;
+        heavier_.assign(static_cast<std::size_t>(alphabet.size()), 0);
+        lighter_.assign(static_cast<std::size_t>(alphabet.size()), 0);
+        for (int v = 1; v < alphabet.size() && s.resource >= 0; ++v) {
+            std::vector<int> f = alphabet.fields(static_cast<rules::CellValue>(v));
+            f[s.resource] = s.creator;
+            heavier_[v] = static_cast<BoxEngine::Value>(std::max(0, alphabet.find(f)));
+            f[s.resource] = s.full;
+            lighter_[v] = static_cast<BoxEngine::Value>(std::max(0, alphabet.find(f)));
+        }
+        const BoxEngine& engine = *problem.engine;
+        for (int sh = 0; sh < engine.shapeCount(); ++sh)
+            if (engine.kind(sh) == ShapeKind::Motion) motions_.push_back(sh);
+        needC_.assign(problem.cells.size(), kFar), needD_.assign(problem.cells.size(), kFar);
+    }
+    std::string name() const override { return "gradient"; }
+
+    bool update(const Execution& ex) override {
+        const auto& cells = ex.cells();
+        const BoxEngine& engine = ex.engine();
+        const Board& board = *problem_->board;
+        const int degree = board.lattice().degree();
+        std::vector<std::uint32_t> nextC(cells.size(), kFar), nextD(cells.size(), kFar);
+        bool moved = false;
+        for (std::size_t x = 0; x < cells.size(); ++x) {
+            const BoxEngine::Value v = cells[x];
+            if (!v) continue;
+            const auto i = static_cast<std::int64_t>(x);
+            std::uint32_t bestC = kFar, bestD = kFar;
+            for (int d = 0; d < degree; ++d) {
+                const std::int64_t j = i + board.step(d);
+                if (!cells[j]) continue;
+                bestC = std::min(bestC, needC_[j]), bestD = std::min(bestD, needD_[j]);
+            }
+            nextC[x] = wouldEnable(ex, engine, i, heavier_[v]) ? 0 : std::min(kFar, bestC + 1);
+            nextD[x] = wouldEnable(ex, engine, i, lighter_[v]) ? 0 : std::min(kFar, bestD + 1);
+            moved = moved || nextC[x] != needC_[x] || nextD[x] != needD_[x];
+        }
+        needC_.swap(nextC), needD_.swap(nextD);
+        return moved;
+    }
+
+    bool wants(const Execution& ex, std::int64_t anchor, int shape) const override {
+        // The cell that loses mass gives its heavy resource to the one that gains it.
+        const BoxEngine& engine = ex.engine();
+        const auto& t = engine.tables().shape(shape);
+        const auto& steps = engine.cellSteps(shape);
+        std::int64_t from = -1, to = -1;
+        for (std::size_t k = 0; k < steps.size(); ++k) {
+            const std::int64_t i = anchor + steps[k];
+            const BoxEngine::Value v = ex.cells()[i], w = static_cast<BoxEngine::Value>(t.rhs[k][v]);
+            const auto before = engine.tables().massUnitsOf(v), after = engine.tables().massUnitsOf(w);
+            if (after < before) from = i;
+            if (after > before) to = i;
+        }
+        if (from < 0 || to < 0) return false;
+        // The heavy resource goes down the creators' field; where that field is flat, the light
+        // one goes down the destroyers' field.
+        if (needC_[to] != needC_[from]) return needC_[to] < needC_[from];
+        return needD_[from] < needD_[to];
+    }
+
+private:
+    /// Whether a motion instance that cell i takes part in is disabled now but would be enabled
+    /// with i in state `instead`.
+    bool wouldEnable(const Execution& ex, const BoxEngine& engine, std::int64_t i, BoxEngine::Value instead) const {
+        const BoxEngine::Value v = ex.cells()[i];
+        if (!instead || instead == v) return false;
+        for (int sh : motions_)
+            for (std::int64_t step : engine.cellSteps(sh)) {
+                const std::int64_t anchor = i - step;
+                if (engine.combo(anchor) == BoxEngine::kOutside || ex.enabled(anchor, sh)) continue;
+                if (engine.matches(ex.cells().data(), anchor, sh, i, instead)) return true;
+            }
+        return false;
+    }
+
+    const Problem* problem_;
+    std::vector<BoxEngine::Value> heavier_, lighter_;
+    std::vector<int> motions_;
+    std::vector<std::uint32_t> needC_, needD_;
+};
+
+}  // namespace
+
+std::unique_ptr<Allocator> gradientAllocator(const Problem& problem) { return std::make_unique<GradientAllocator>(problem); }
+
+}  // namespace holon::planner
