@@ -21,9 +21,9 @@ namespace holon::cli {
 namespace {
 
 struct PlanArgs {
-    std::string rules = "planner_intermediate", from, to, allocator = "random", scheduler = "sync", out, planOut, seedCell;
+    std::string rules = "planner_intermediate", from, to, allocator = "random", scheduler = "sync", out, planOut, seedCell, traceOut;
     std::vector<std::string> noWarnings;
-    int scale = 1, threads = 2;
+    int scale = 1;
     std::uint64_t seed = 1;
     std::int64_t maxSteps = 0, maxRounds = 0;
     double timeout = 0;
@@ -64,7 +64,6 @@ int run(const PlanArgs& a) {
     else if (a.scheduler == "adversarial") options.scheduler = planner::Scheduler::Adversarial;
     else throw InputError("--scheduler '" + a.scheduler + "': choose sync, async or adversarial");
     options.seed = a.seed, options.maxSteps = a.maxSteps, options.maxRounds = a.maxRounds, options.timeoutSeconds = a.timeout;
-    options.threads = std::max(1, a.threads);
 
     planner::Execution execution(problem, *allocator, options);
     planner::Report report(problem, execution, {a.out, a.planOut, !a.quiet && isatty(STDERR_FILENO) != 0});
@@ -102,7 +101,14 @@ int run(const PlanArgs& a) {
         if (monitor) std::cout << "  monitor: " << monitor->summary() << '\n';
         if (!a.out.empty()) std::cout << "  wrote " << a.out << "/ (summary.json, completion.csv, snapshots)\n";
     }
-    if (monitor && monitor->violated()) return 1;
+    if (monitor && monitor->violated()) {
+        const std::string trace = !a.traceOut.empty() ? a.traceOut : !a.out.empty() ? a.out + "/violation.itf.json" : "";
+        if (!trace.empty()) {
+            monitor->writeTrace(trace);
+            std::cout << "  the violating step is in " << trace << '\n';
+        }
+        return 1;
+    }
     return stats.complete ? 0 : 1;
 }
 
@@ -129,7 +135,7 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--max-steps", a->maxSteps, "stop after this many steps");
     sub->add_option("--max-rounds", a->maxRounds, "stop after this many rounds");
     sub->add_option("--timeout", a->timeout, "stop after this many seconds");
-    sub->add_option("--threads", a->threads, "worker threads (default 2)");
+    sub->add_option("--trace-out", a->traceOut, "with --check: write the violating round as an ITF JSON trace (default DIR/violation.itf.json with --out)");
     sub->add_flag("--quiet", a->quiet, "no progress bar");
     sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
     return [a] { return run(*a); };

@@ -22,7 +22,6 @@ struct RunOptions {
     std::int64_t maxSteps = 0;   // 0: no limit (async and adversarial count steps, sync rounds)
     std::int64_t maxRounds = 0;  // 0: no limit
     double timeoutSeconds = 0;   // 0: no limit
-    int threads = 2;
 };
 
 struct RunStats {
