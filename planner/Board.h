@@ -32,14 +32,8 @@ public:
     std::int64_t size() const { return size_; }
     Vec lower() const { return lower_; }
     Vec extent() const { return extent_; }
-    int pad() const { return pad_; }
     std::int64_t step(int d) const { return steps_[d]; }
     std::int64_t offset(Vec v) const { return v.x + std::int64_t(padded_.x) * (v.y + std::int64_t(padded_.y) * v.z); }
-    /// Whether a lattice point lies inside the (unpadded) box.
-    bool contains(Vec v) const {
-        const Vec r = v - lower_;
-        return r.x >= 0 && r.y >= 0 && r.z >= 0 && r.x < extent_.x && r.y < extent_.y && r.z < (lattice_->dimension() == 3 ? extent_.z : 1);
-    }
     std::int64_t index(Vec v) const {
         const Vec r = v - lower_;
         const int zp = lattice_->dimension() == 3 ? pad_ : 0;

@@ -36,11 +36,6 @@ Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions op
     enabled_.assign(n, 0), listed_.assign(n, 0);
     stamp_.assign(n, 0), readMark_.assign(n, 0), writeMark_.assign(n, 0);
     const BoxEngine& engine = *problem.engine;
-    const PlannerSchema& schema = problem.schema;
-    const rules::Alphabet& alphabet = problem.model->alphabet();
-    isFinal_.assign(static_cast<std::size_t>(alphabet.size()), 0);
-    for (int v = 1; v < alphabet.size(); ++v) isFinal_[v] = alphabet.fields(static_cast<rules::CellValue>(v))[schema.label] == schema.final;
-    inTarget_ = problem.tables->comboIndex(1u << schema.target);
     for (std::int64_t a = 0; a < static_cast<std::int64_t>(n); ++a) {
         offGoal_ += !atGoal(a, cells_[a]);
         if (engine.combo(a) != BoxEngine::kOutside && cells_[a] != 0) recheck(a);
@@ -178,7 +173,7 @@ bool Execution::syncRound(const RunObserver& observer, std::vector<std::int64_t>
 
 bool Execution::atGoal(std::int64_t cell, BoxEngine::Value v) const {
     const std::uint8_t combo = engine().combo(cell);
-    return combo == BoxEngine::kOutside || (combo == inTarget_ ? isFinal_[v] != 0 : v == 0);
+    return combo == BoxEngine::kOutside || problem_->tables->test(problem_->goal, combo, v);
 }
 
 RunStats Execution::run(const RunObserver& observer) {

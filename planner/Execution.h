@@ -19,7 +19,7 @@ enum class Scheduler { Async, Sync, Adversarial };
 struct RunOptions {
     Scheduler scheduler = Scheduler::Sync;
     std::uint64_t seed = 1;
-    std::int64_t maxSteps = 0;   // 0: no limit (async and adversarial count steps, sync rounds)
+    std::int64_t maxSteps = 0;   // 0: no limit; every fired instance is a step
     std::int64_t maxRounds = 0;  // 0: no limit
     double timeoutSeconds = 0;   // 0: no limit
 };
@@ -30,7 +30,7 @@ struct RunStats {
     std::int64_t rounds = 0, steps = 0;
     std::int64_t evaluations = 0;  // rule instances tested against the decision tables
     double seconds = 0;
-    bool complete = false;  // the goal (every target cell F, nothing outside) was reached
+    bool complete = false;  // the system's goal was reached
     std::string stopped;    // why the run ended: "goal", "stuck", "max-steps", "max-rounds", "timeout", "monitor"
 };
 
@@ -47,7 +47,6 @@ public:
     Execution(const Problem& problem, Allocator& allocator, RunOptions options);
     RunStats run(const RunObserver& observer = {});
 
-    const Problem& problem() const { return *problem_; }
     const BoxEngine& engine() const { return *problem_->engine; }
     const std::vector<BoxEngine::Value>& cells() const { return cells_; }
     bool enabled(std::int64_t anchor, int shape) const { return (enabled_[anchor] >> shape) & 1u; }
@@ -61,7 +60,7 @@ private:
     bool asyncStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
     bool adversarialStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
     bool syncRound(const RunObserver& observer, std::vector<std::int64_t>& changed);
-    /// Whether a cell in state v is as the goal wants it (target cells F, the rest empty).
+    /// Whether a cell in state v satisfies the system's goal predicate (padding always does).
     bool atGoal(std::int64_t cell, BoxEngine::Value v) const;
 
     const Problem* problem_;
@@ -75,8 +74,6 @@ private:
     std::vector<std::uint32_t> stamp_, readMark_, writeMark_;
     std::uint32_t clock_ = 0;
     std::vector<std::int64_t> anchors_;
-    std::vector<char> isFinal_;
-    int inTarget_ = -1;
     std::int64_t offGoal_ = 0;  // cells not as the goal wants them
     RunStats stats_;
 };

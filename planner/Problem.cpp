@@ -76,6 +76,7 @@ PlannerSchema PlannerSchema::of(const rules::System& system) {
             if (m.mass == Rational(1)) s.full = m.value;
             if (best < m.mass) best = m.mass, s.creator = m.value;
         }
+        s.extra = best - Rational(1);
         if (s.full < 0) throw InputError("system '" + system.name + "': no resource value has mass 1 (a full metamodule, D)");
     }
     return s;
@@ -114,11 +115,7 @@ Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::o
     const rules::Alphabet& alphabet = model.alphabet();
     const PlannerSchema& schema = p.schema;
     if (schema.resource >= 0) {
-        const Rational extra = [&] {
-            for (const rules::MassEntry& m : model.system().masses)
-                if (m.value == schema.creator) return m.mass - Rational(1);
-            return Rational(0);
-        }();
+        const Rational extra = schema.extra;
         const Rational deficit = Rational(t - s);
         if (Rational(0) < deficit) {
             if (!(Rational(0) < extra)) throw InputError("the start has less mass than the target needs and no resource value carries more than 1");
@@ -136,6 +133,10 @@ Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::o
 
     // The board: the bounding box of start and target, padded so every rule reaches only board cells.
     p.tables = std::make_unique<rules::RuleTables>(model, std::vector<std::uint32_t>{1u << schema.target});
+    const auto& goal = model.system().goal;
+    if (!goal || goal->kind != rules::Expr::Kind::All)
+        throw InputError("system '" + model.system().name + "' needs a goal of the form all(P), as in 'goal all(F&target | _&!target)'; the planner stops when every cell satisfies P");
+    p.goal = p.tables->compilePredicate(goal->pred, nullptr, {});
     Vec lo = start.cells[0], hi = start.cells[0];
     for (const Shape* sh : {&start, &target})
         for (Vec v : sh->cells) lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)}, hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};

@@ -18,6 +18,7 @@ struct PlannerSchema {
     int target = -1;                                     // input index
     int resource = -1;                                   // the field that carries mass, or -1
     int full = -1, creator = -1;                         // resource values of mass 1 (D) and the most mass (C)
+    rules::Rational extra;                               // mass(C) - 1: what a creator carries beyond a metamodule
     /// Reads the schema of a system; throws InputError naming what is missing.
     static PlannerSchema of(const rules::System& system);
 };
@@ -28,6 +29,8 @@ struct Problem {
     Shape start, target;
     Vec seed;
     std::unique_ptr<rules::RuleTables> tables;
+    /// The system's goal `all(P)`, compiled: a cell is as the goal wants it when P accepts it.
+    rules::RuleTables::Mask goal;
     std::unique_ptr<Board> board;
     std::unique_ptr<BoxEngine> engine;
     std::vector<BoxEngine::Value> cells;  // the initial configuration on the board
@@ -38,7 +41,8 @@ struct Problem {
 
 /// Validates and lays out a problem; throws InputError (exit 2) for a target that is not
 /// connected, a start that is not connected, no overlap, a mass the target cannot hold, a shape of
-/// the wrong dimension for the lattice, or a seed outside start and target.
+/// the wrong dimension for the lattice, a seed outside start and target, or a system whose goal is
+/// not of the form all(P) (the planner stops when every cell satisfies P).
 Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::optional<Vec> seed, std::uint64_t randomSeed);
 
 }  // namespace holon::planner

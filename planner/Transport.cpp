@@ -34,9 +34,7 @@ std::int64_t transferLowerBound(const Problem& problem) {
     if (schema.resource < 0 || !hasTransfers) return -1;
 
     // Tokens per metamodule: 1 / (mass(C) - 1).
-    rules::Rational extra;
-    for (const rules::MassEntry& m : problem.model->system().masses)
-        if (m.value == schema.creator) extra = m.mass - rules::Rational(1);
+    const rules::Rational extra = schema.extra;
     if (!(rules::Rational(0) < extra) || extra.num() != 1) return -1;
     const std::int64_t n = extra.den();
 

@@ -40,6 +40,9 @@ TEST_CASE("bad problems are refused with a message naming the fix") {
     CHECK_THROWS_WITH_AS(make(g1, "box:10x10", "box:3x3"), doctest::Contains("too much mass"), InputError);
     CHECK_THROWS_WITH_AS(planner::makeProblem(*sys.model, planner::parseShape("box:3x3"), planner::parseShape("box:3x3"), planner::Vec{7, 7, 0}, 1),
                          doctest::Contains("not in both start and target"), InputError);
+    PlannerSystem goalless("planner_intermediate", 2);
+    goalless.system.goal.reset();
+    CHECK_THROWS_WITH_AS(make(goalless, "box:3x3", "box:3x3"), doctest::Contains("needs a goal of the form all(P)"), InputError);
     PlannerSystem plain("intermediate", 2);
     CHECK_THROWS_WITH_AS(make(plain, "box:3x3", "box:3x3"), doctest::Contains("needs a field 'label"), InputError);
 }
