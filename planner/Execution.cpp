@@ -20,20 +20,21 @@
 namespace holon::planner {
 
 namespace {
-constexpr int kShapeBits = 6;  // instance key = anchor << 6 | shape
+constexpr int kShapeBits = 7;  // instance key = anchor << 7 | shape
+constexpr int kMaxShapes = 1 << kShapeBits;
 std::int64_t anchorOf(std::uint64_t key) { return static_cast<std::int64_t>(key >> kShapeBits); }
 int shapeOf(std::uint64_t key) { return static_cast<int>(key & ((1u << kShapeBits) - 1)); }
 std::uint64_t keyOf(std::int64_t anchor, int shape) { return (static_cast<std::uint64_t>(anchor) << kShapeBits) | static_cast<std::uint64_t>(shape); }
 }  // namespace
 
 Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions options)
-    : problem_(&problem), allocator_(&allocator), options_(options), random_(options.seed), shapes_(problem.engine->shapeCount()),
+    : problem_(&problem), allocator_(&allocator), options_(options), random_(options.seed), shapes_(problem.engine->shapeCount()), words_((shapes_ + 63) / 64),
       cells_(problem.cells) {
-    if (shapes_ > 64)
-        throw InputError("system '" + problem.model->system().name + "' has " + std::to_string(shapes_) +
-                         " rule orientations; the planner handles at most 64");
+    if (shapes_ > kMaxShapes)
+        throw InputError("system '" + problem.model->system().name + "' has " + std::to_string(shapes_) + " rule orientations; the planner handles at most " +
+                         std::to_string(kMaxShapes) + ": split rules that never fire together into separate systems");
     const std::size_t n = cells_.size();
-    enabled_.assign(n, 0), listed_.assign(n, 0);
+    enabled_.assign(n * static_cast<std::size_t>(words_), 0), listed_.assign(n * static_cast<std::size_t>(words_), 0);
     stamp_.assign(n, 0), readMark_.assign(n, 0), writeMark_.assign(n, 0);
     const BoxEngine& engine = *problem.engine;
     for (std::int64_t a = 0; a < static_cast<std::int64_t>(n); ++a) {
@@ -43,15 +44,18 @@ Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions op
 }
 
 void Execution::recheck(std::int64_t anchor) {
-    std::uint64_t now = 0;
-    stats_.evaluations += engine().forEachMatchAt(cells_.data(), anchor, [&](int s) { now |= std::uint64_t{1} << s; });
-    enabled_[anchor] = now;
-    std::uint64_t fresh = now & ~listed_[anchor];
-    listed_[anchor] |= fresh;
-    while (fresh) {
-        const int s = std::countr_zero(fresh);
-        fresh &= fresh - 1;
-        (engine().kind(s) == ShapeKind::Transfer ? transferList_ : plannerList_).push_back(keyOf(anchor, s));
+    std::uint64_t now[kMaxShapes / 64] = {};
+    stats_.evaluations += engine().forEachMatchAt(cells_.data(), anchor, [&](int s) { now[s >> 6] |= std::uint64_t{1} << (s & 63); });
+    const std::size_t at = static_cast<std::size_t>(anchor) * static_cast<std::size_t>(words_);
+    for (int w = 0; w < words_; ++w) {
+        enabled_[at + w] = now[w];
+        std::uint64_t fresh = now[w] & ~listed_[at + w];
+        listed_[at + w] |= fresh;
+        while (fresh) {
+            const int s = w * 64 + std::countr_zero(fresh);
+            fresh &= fresh - 1;
+            (engine().kind(s) == ShapeKind::Transfer ? transferList_ : plannerList_).push_back(keyOf(anchor, s));
+        }
     }
 }
 
@@ -70,10 +74,9 @@ void Execution::recheckAround(const std::vector<std::int64_t>& changed) {
 void Execution::compact(std::vector<std::uint64_t>& list) {
     std::size_t out = 0;
     for (std::uint64_t key : list) {
-        const std::int64_t a = anchorOf(key);
-        const std::uint64_t bit = std::uint64_t{1} << shapeOf(key);
-        if (enabled_[a] & bit) list[out++] = key;
-        else listed_[a] &= ~bit;
+        const auto [word, bit] = bitOf(anchorOf(key), shapeOf(key));
+        if (enabled_[word] & bit) list[out++] = key;
+        else listed_[word] &= ~bit;
     }
     list.resize(out);
 }
@@ -122,7 +125,8 @@ bool Execution::asyncStep(const RunObserver& observer, std::vector<std::int64_t>
         const std::size_t at = planner ? i : i - plannerList_.size();
         const std::uint64_t key = list[at];
         if (!enabled(anchorOf(key), shapeOf(key))) {
-            listed_[anchorOf(key)] &= ~(std::uint64_t{1} << shapeOf(key));
+            const auto [word, bit] = bitOf(anchorOf(key), shapeOf(key));
+            listed_[word] &= ~bit;
             list[at] = list.back();
             list.pop_back();
             continue;

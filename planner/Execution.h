@@ -9,6 +9,7 @@
 #include "planner/Random.h"
 
 #include <chrono>
+#include <utility>
 #include <functional>
 #include <string>
 
@@ -49,9 +50,16 @@ public:
 
     const BoxEngine& engine() const { return *problem_->engine; }
     const std::vector<BoxEngine::Value>& cells() const { return cells_; }
-    bool enabled(std::int64_t anchor, int shape) const { return (enabled_[anchor] >> shape) & 1u; }
+    bool enabled(std::int64_t anchor, int shape) const {
+        const auto [word, bit] = bitOf(anchor, shape);
+        return (enabled_[word] & bit) != 0;
+    }
 
 private:
+    /// Where the bit of an instance lives in enabled_ and listed_: word index and mask.
+    std::pair<std::size_t, std::uint64_t> bitOf(std::int64_t anchor, int shape) const {
+        return {static_cast<std::size_t>(anchor) * static_cast<std::size_t>(words_) + static_cast<std::size_t>(shape >> 6), std::uint64_t{1} << (shape & 63)};
+    }
     void recheck(std::int64_t anchor);
     void recheckAround(const std::vector<std::int64_t>& changed);
     bool takeIfFree(std::int64_t anchor, int shape);
@@ -68,9 +76,10 @@ private:
     RunOptions options_;
     Random random_;
     int shapes_;
+    int words_;  // 64-bit words of instance bits per cell: one up to 64 rule orientations
     std::vector<BoxEngine::Value> cells_;
-    std::vector<std::uint64_t> enabled_, listed_;  // per cell: bit s for the instance of shape s anchored there
-    std::vector<std::uint64_t> plannerList_, transferList_;  // instance keys anchor * 64 + shape; may hold stale keys
+    std::vector<std::uint64_t> enabled_, listed_;  // per cell, words_ words: bit s for the instance of shape s anchored there
+    std::vector<std::uint64_t> plannerList_, transferList_;  // instance keys anchor * 128 + shape; may hold stale keys
     std::vector<std::uint32_t> stamp_, readMark_, writeMark_;
     std::uint32_t clock_ = 0;
     std::vector<std::int64_t> anchors_;
