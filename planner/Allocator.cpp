@@ -1,6 +1,7 @@
-// Allocator selection by name.
+// Allocator selection by name, and what every allocator needs to know about a transfer.
 
 #include "planner/Allocator.h"
+#include "planner/Execution.h"
 
 #include "rules/Error.h"
 
@@ -8,12 +9,28 @@ namespace holon::planner {
 
 std::unique_ptr<Allocator> randomAllocator();
 std::unique_ptr<Allocator> gradientAllocator(const Problem& problem);
+std::unique_ptr<Allocator> optimalAllocator(const Problem& problem);
+
+std::pair<std::int64_t, std::int64_t> transferEnds(const Execution& ex, std::int64_t anchor, int shape) {
+    const BoxEngine& engine = ex.engine();
+    const auto& t = engine.tables().shape(shape);
+    const auto& steps = engine.cellSteps(shape);
+    std::int64_t from = -1, to = -1;
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+        const std::int64_t i = anchor + steps[k];
+        const BoxEngine::Value v = ex.cells()[i], w = static_cast<BoxEngine::Value>(t.rhs[k][v]);
+        const auto before = engine.tables().massUnitsOf(v), after = engine.tables().massUnitsOf(w);
+        if (after < before) from = i;
+        if (after > before) to = i;
+    }
+    if (from < 0 || to < 0) return {-1, -1};
+    return {from, to};
+}
 
 std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem& problem) {
     if (name == "random") return randomAllocator();
     if (name == "gradient") return gradientAllocator(problem);
-    if (name == "optimal")
-        throw InputError("--allocator optimal does not run plans yet; use gradient (every run still reports transfer_lower_bound, the transport optimum)");
+    if (name == "optimal") return optimalAllocator(problem);
     throw InputError("--allocator '" + name + "': choose random, gradient or optimal");
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace holon::planner {
@@ -21,7 +22,12 @@ public:
     virtual bool update(const Execution&) { return false; }
     /// Whether this enabled transfer instance should fire now.
     virtual bool wants(const Execution&, std::int64_t anchor, int shape) const = 0;
+    /// Told just before a transfer instance fires.
+    virtual void firing(const Execution&, std::int64_t /*anchor*/, int /*shape*/) {}
 };
+
+/// The board cells a transfer instance takes mass from and gives it to, or {-1, -1}.
+std::pair<std::int64_t, std::int64_t> transferEnds(const Execution& ex, std::int64_t anchor, int shape);
 
 struct Problem;
 

@@ -96,6 +96,7 @@ bool Execution::takeIfFree(std::int64_t anchor, int shape) {
 void Execution::fire(std::int64_t anchor, int shape, const RunObserver& observer, std::vector<std::int64_t>& changed) {
     BoxEngine::Value old[rules::RuleTables::kMaxCells];
     const BoxEngine& engine = this->engine();
+    if (engine.kind(shape) == ShapeKind::Transfer) allocator_->firing(*this, anchor, shape);
     engine.apply(cells_.data(), anchor, shape, old);
     const std::vector<std::int64_t>& steps = engine.cellSteps(shape);
     for (std::size_t k = 0; k < steps.size(); ++k) {
@@ -220,8 +221,8 @@ RunStats Execution::run(const RunObserver& observer) {
             }
             fired = options_.scheduler == Scheduler::Async ? asyncStep(observer, changed) : adversarialStep(observer, changed);
         }
-        // Nothing fired between two asynchronous allocator updates: let the allocator look again.
-        if (!fired && !allocatorMoved && options_.scheduler != Scheduler::Sync && sinceUpdate != 0) {
+        // Nothing fired: let the allocator look again before calling the run stuck.
+        if (!fired && !allocatorMoved) {
             sinceUpdate = 0;
             allocatorMoved = allocator_->update(*this);
         }

@@ -50,6 +50,7 @@ public:
 
     const BoxEngine& engine() const { return *problem_->engine; }
     const std::vector<BoxEngine::Value>& cells() const { return cells_; }
+    const RunStats& stats() const { return stats_; }
     bool enabled(std::int64_t anchor, int shape) const {
         const auto [word, bit] = bitOf(anchor, shape);
         return (enabled_[word] & bit) != 0;

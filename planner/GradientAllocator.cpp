@@ -72,18 +72,8 @@ public:
 
     bool wants(const Execution& ex, std::int64_t anchor, int shape) const override {
         // The cell that loses mass gives its heavy resource to the one that gains it.
-        const BoxEngine& engine = ex.engine();
-        const auto& t = engine.tables().shape(shape);
-        const auto& steps = engine.cellSteps(shape);
-        std::int64_t from = -1, to = -1;
-        for (std::size_t k = 0; k < steps.size(); ++k) {
-            const std::int64_t i = anchor + steps[k];
-            const BoxEngine::Value v = ex.cells()[i], w = static_cast<BoxEngine::Value>(t.rhs[k][v]);
-            const auto before = engine.tables().massUnitsOf(v), after = engine.tables().massUnitsOf(w);
-            if (after < before) from = i;
-            if (after > before) to = i;
-        }
-        if (from < 0 || to < 0) return false;
+        const auto [from, to] = transferEnds(ex, anchor, shape);
+        if (from < 0) return false;
         // The heavy resource goes down the creators' field; where that field is flat, the light
         // one goes down the destroyers' field.
         if (needC_[to] != needC_[from]) return needC_[to] < needC_[from];

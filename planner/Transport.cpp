@@ -1,93 +1,106 @@
-// The transport lower bound on resource transfers for general_n plans (seed 000 §IV-B; the
-// issue's `transfer_lower_bound`). Resources move in tokens of the creator's extra mass (1/n):
-// a transfer C D <=> D C moves one token one lattice step; a creation consumes n tokens that
-// arrive from a neighbour of the new cell (that last step is free: the creation rule takes it); a
-// deletion frees n tokens onto a neighbour (free as well); every token left over rests in a target
-// cell, at most one per cell (a C). Tokens never leave start ∪ target, the only cells that are
-// ever occupied. So every plan's transfers pay at least the minimum cost of a flow from the
-// supplies (initial creators, deleted cells) to the demands (created cells, leftover places) on
-// the lattice graph of start ∪ target — a min-cost flow solved exactly with LEMON's network
-// simplex. The bound ignores timing (a token may pass a cell before it exists), so it can be lower
-// than what any real plan achieves, never higher.
+// The transport bound on resource transfers for general_n plans (seed 000 §IV-B; the issue's
+// `transfer_lower_bound`) and the flow the optimal allocator follows. Resources move in tokens of
+// the creator's extra mass (1/n of a metamodule, the rules' mass unit): a transfer C D <=> D C
+// moves one token one lattice step. From any configuration, every cell of the target must end
+// with n tokens (a D) or n + 1 (a C): a missing or partial one takes what it lacks from a
+// neighbour (that last step is free: the creation rule takes it); every cell outside the target
+// is deleted, its n tokens (or what a partial has left) going onto a neighbour for free, while
+// a creator's extra token must be transferred away first; tokens left over rest in target cells,
+// at most one per cell. Tokens never leave the occupied cells and the target. So every plan's
+// transfers pay at least the minimum cost of a flow from the supplies to the demands on that
+// lattice graph — a min-cost flow solved exactly with LEMON's network simplex. The bound ignores
+// timing (a token may pass a cell before it exists), so it can be lower than what any real plan
+// achieves, never higher.
+
+#include "planner/Transport.h"
 
 #include "planner/Allocator.h"
-#include "planner/Problem.h"
-
 #include "rules/Error.h"
 
 #include <lemon/network_simplex.h>
 #include <lemon/smart_graph.h>
 
-#include <unordered_map>
-
 namespace holon::planner {
 
 namespace {
 constexpr std::int64_t kUnlimited = std::int64_t{1} << 40;
+
+bool movesResources(const Problem& problem) {
+    const BoxEngine& engine = *problem.engine;
+    bool transfers = false;
+    for (int s = 0; s < engine.shapeCount(); ++s) transfers = transfers || engine.kind(s) == ShapeKind::Transfer;
+    return problem.schema.resource >= 0 && transfers;
+}
 }  // namespace
 
-std::int64_t transferLowerBound(const Problem& problem) {
-    const PlannerSchema& schema = problem.schema;
-    const BoxEngine& engine = *problem.engine;
-    bool hasTransfers = false;
-    for (int s = 0; s < engine.shapeCount(); ++s) hasTransfers = hasTransfers || engine.kind(s) == ShapeKind::Transfer;
-    if (schema.resource < 0 || !hasTransfers) return -1;
-
-    // Tokens per metamodule: 1 / (mass(C) - 1).
-    const rules::Rational extra = schema.extra;
-    if (!(rules::Rational(0) < extra) || extra.num() != 1) return -1;
-    const std::int64_t n = extra.den();
+std::optional<TransportPlan> planTransport(const Problem& problem, const std::vector<BoxEngine::Value>& cells) {
+    if (!movesResources(problem)) return std::nullopt;
+    const rules::RuleTables& tables = *problem.tables;
+    const std::int64_t n = tables.massDenominator();  // tokens in a full metamodule
 
     const Board& board = *problem.board;
     const int degree = board.lattice().degree();
+    std::vector<char> inTarget(static_cast<std::size_t>(board.size()), 0);
+    for (Vec v : problem.target.cells) inTarget[board.index(v)] = 1;
+    auto used = [&](std::int64_t i) { return cells[i] != 0 || inTarget[i]; };
+
     lemon::SmartDigraph g;
     using Node = lemon::SmartDigraph::Node;
+    using Arc = lemon::SmartDigraph::Arc;
     std::unordered_map<std::int64_t, Node> node;
-    std::vector<char> inStart(static_cast<std::size_t>(board.size()), 0), inTarget(static_cast<std::size_t>(board.size()), 0);
-    for (Vec v : problem.start.cells) inStart[board.index(v)] = 1;
-    for (Vec v : problem.target.cells) inTarget[board.index(v)] = 1;
-    auto nodeOf = [&](std::int64_t i) {
-        auto it = node.find(i);
-        if (it == node.end()) it = node.emplace(i, g.addNode()).first;
-        return it->second;
-    };
-    for (const Shape* s : {&problem.start, &problem.target})
-        for (Vec v : s->cells) nodeOf(board.index(v));
-    lemon::SmartDigraph::ArcMap<std::int64_t> cost(g);
+    std::vector<std::int64_t> cellOf;
+    board.forEachInside([&](std::int64_t i, Vec) {
+        if (!used(i)) return;
+        node.emplace(i, g.addNode());
+        cellOf.push_back(i);
+    });
+    lemon::SmartDigraph::ArcMap<std::int64_t> cost(g), capacity(g);
     lemon::SmartDigraph::NodeMap<std::int64_t> supply(g, 0);
-    lemon::SmartDigraph::ArcMap<std::int64_t> capacity(g);  // entries of arcs added later start at 0: set on each
+    std::vector<std::pair<Arc, std::int64_t>> lattice;  // transfer arcs and their key i * degree + d
     auto arc = [&](Node from, Node to, std::int64_t c, std::int64_t cap = kUnlimited) {
-        const auto a = g.addArc(from, to);
+        const Arc a = g.addArc(from, to);
         cost[a] = c, capacity[a] = cap;
+        return a;
     };
     const Node sink = g.addNode();
     std::int64_t leftover = 0;
-    for (const auto& [i, x] : std::vector<std::pair<std::int64_t, Node>>(node.begin(), node.end())) {
-        for (int d = 0; d < degree; ++d) {
-            const std::int64_t j = i + board.step(d);
-            if (inStart[j] || inTarget[j]) arc(x, node.at(j), 1);
+    // A node for tokens that neighbours hand over for free, or take for free.
+    auto freeNode = [&](std::int64_t i, std::int64_t tokens) {
+        const Node x = g.addNode();
+        supply[x] = tokens, leftover += tokens;
+        for (int d = 0; d < degree; ++d)
+            if (const std::int64_t j = i + board.step(d); used(j)) tokens > 0 ? arc(x, node.at(j), 0) : arc(node.at(j), x, 0);
+    };
+    for (std::int64_t i : cellOf) {
+        const Node x = node.at(i);
+        for (int d = 0; d < degree; ++d)
+            if (const std::int64_t j = i + board.step(d); used(j)) lattice.push_back({arc(x, node.at(j), 1), i * degree + d});
+        const std::int64_t m = cells[i] ? tables.massUnitsOf(cells[i]) : 0;
+        const std::int64_t extra = std::max<std::int64_t>(0, m - n);
+        supply[x] += extra, leftover += extra;
+        if (inTarget[i]) {
+            if (m < n) freeNode(i, -(n - m));
+            arc(x, sink, 0, 1);
+        } else if (m > 0) {
+            freeNode(i, std::min(m, n));
         }
-        const BoxEngine::Value v = problem.cells[i];
-        if (v && problem.model->alphabet().fields(v)[schema.resource] == schema.creator) supply[x] += 1, leftover += 1;
-        if (inStart[i] && !inTarget[i]) {  // deleted: n tokens freed onto a neighbour
-            const Node freed = g.addNode();
-            supply[freed] = n, leftover += n;
-            for (int d = 0; d < degree; ++d)
-                if (const std::int64_t j = i + board.step(d); inStart[j] || inTarget[j]) arc(freed, node.at(j), 0);
-        }
-        if (inTarget[i] && !inStart[i]) {  // created: n tokens taken from a neighbour
-            const Node needed = g.addNode();
-            supply[needed] = -n, leftover -= n;
-            for (int d = 0; d < degree; ++d)
-                if (const std::int64_t j = i + board.step(d); inStart[j] || inTarget[j]) arc(node.at(j), needed, 0);
-        }
-        if (inTarget[i]) arc(x, sink, 0, 1);
     }
     supply[sink] = -leftover;
     lemon::NetworkSimplex<lemon::SmartDigraph, std::int64_t, std::int64_t> simplex(g);
     simplex.costMap(cost).upperMap(capacity).supplyMap(supply);
-    if (simplex.run() != decltype(simplex)::OPTIMAL) throw InputError("internal: the transport problem has no solution; the mass check should have refused this problem");
-    return simplex.totalCost();
+    if (simplex.run() != decltype(simplex)::OPTIMAL) return std::nullopt;
+    TransportPlan plan;
+    plan.cost = simplex.totalCost();
+    for (const auto& [a, key] : lattice)
+        if (const std::int64_t f = simplex.flow(a); f > 0) plan.flow[key] = static_cast<std::int32_t>(f);
+    return plan;
+}
+
+std::int64_t transferLowerBound(const Problem& problem) {
+    if (!movesResources(problem)) return -1;
+    const std::optional<TransportPlan> plan = planTransport(problem, problem.cells);
+    if (!plan) throw InputError("internal: the transport problem has no solution; the mass check should have refused this problem");
+    return plan->cost;
 }
 
 }  // namespace holon::planner

@@ -6,13 +6,15 @@
 #include "planner/Monitor.h"
 
 #include <filesystem>
+#include <map>
 #include <fstream>
 
 namespace holon::test {
 
 namespace {
-planner::RunStats plan(const planner::Problem& problem, planner::Scheduler scheduler, std::uint64_t seed, bool check = true) {
-    auto allocator = planner::makeAllocator("random", problem);
+planner::RunStats plan(const planner::Problem& problem, planner::Scheduler scheduler, std::uint64_t seed, bool check = true,
+                       const std::string& allocatorName = "random") {
+    auto allocator = planner::makeAllocator(allocatorName, problem);
     planner::RunOptions options;
     options.scheduler = scheduler, options.seed = seed;
     planner::Execution ex(problem, *allocator, options);
@@ -66,6 +68,26 @@ TEST_CASE("the block experiment of seed 000: the creations and deletions the sha
             CHECK(stats.relabels >= static_cast<std::int64_t>(p.start.cells.size()) - 1);
         }
     }
+}
+
+TEST_CASE("every allocator completes every general system, never below the transport bound; optimal beats random") {
+    for (const char* stem : {"planner_general1", "planner_general2", "planner_general3", "planner_general_lock2", "planner_general_lock3"})
+        for (int dimension : {2, 3}) {
+            PlannerSystem sys(stem, dimension);
+            const std::string from = dimension == 3 ? "box:6x3x2" : "box:8x4", to = dimension == 3 ? "box:3x3x4" : "box:4x8";
+            const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape(from), planner::parseShape(to), std::nullopt, 2);
+            const std::int64_t bound = planner::transferLowerBound(p);
+            CHECK(bound > 0);
+            std::map<std::string, std::int64_t> transfers;
+            for (const char* allocator : {"random", "gradient", "optimal"}) {
+                const planner::RunStats stats = plan(p, planner::Scheduler::Sync, 3, true, allocator);
+                INFO(stem << " " << dimension << "D " << allocator);
+                CHECK(stats.complete);
+                CHECK(stats.transfers >= bound);
+                transfers[allocator] = stats.transfers;
+            }
+            CHECK(transfers["optimal"] < transfers["random"]);
+        }
 }
 
 TEST_CASE("runs are deterministic for a seed and differ across seeds") {

@@ -1,0 +1,83 @@
+// The optimal allocator: offline transport (seed 000 §IV-B leaves the allocator open; this is the
+// min-cost-flow one). It solves the transport problem of Transport.cpp from the start and fires a
+// transfer only along an arc where the optimal flow still has tokens to move, so a plan that
+// follows the flow to its end pays exactly the lower bound. The flow ignores timing and which
+// neighbour a deletion hands its tokens to; when the plan drifts from it (a round in which
+// nothing fires), the flow is solved again from the current configuration — optimal for what
+// remains. Unlike the gradient allocator it is centralised: the comparison shows what the
+// distributed one leaves on the table.
+
+#include "planner/Allocator.h"
+#include "planner/Execution.h"
+#include "planner/Transport.h"
+
+namespace holon::planner {
+
+std::unique_ptr<Allocator> optimalAllocator(const Problem& problem);
+std::unique_ptr<Allocator> gradientAllocator(const Problem& problem);
+
+namespace {
+
+class OptimalAllocator final : public Allocator {
+public:
+    explicit OptimalAllocator(const Problem& problem)
+        : problem_(&problem), degree_(problem.board->lattice().degree()), fallback_(gradientAllocator(problem)) {
+        if (std::optional<TransportPlan> plan = planTransport(problem, problem.cells)) flow_ = std::move(plan->flow);
+    }
+    std::string name() const override { return "optimal"; }
+
+    bool update(const Execution& ex) override {
+        const bool fieldsMoved = fallback_->update(ex);
+        const RunStats& st = ex.stats();
+        const bool stalled = st.steps == stepsAtUpdate_;
+        const std::int64_t motions = st.creations + st.deletions;
+        stepsAtUpdate_ = st.steps;
+        if (motions != motionsAtSolve_) falling_ = false;
+        if (!stalled && motions == motionsAtSolve_) return fieldsMoved;
+        motionsAtSolve_ = motions;
+        std::optional<TransportPlan> plan = planTransport(*problem_, ex.cells());
+        if (plan && plan->flow != flow_) {
+            flow_ = std::move(plan->flow);
+            return true;
+        }
+        if (stalled && !falling_) {
+            falling_ = true;
+            return true;
+        }
+        return fieldsMoved;
+    }
+
+    bool wants(const Execution& ex, std::int64_t anchor, int shape) const override {
+        const std::int64_t key = arcKey(ex, anchor, shape);
+        if (key >= 0 && flow_.count(key)) return true;
+        return falling_ && fallback_->wants(ex, anchor, shape);
+    }
+
+    void firing(const Execution& ex, std::int64_t anchor, int shape) override {
+        const auto it = flow_.find(arcKey(ex, anchor, shape));
+        if (it != flow_.end() && --it->second == 0) flow_.erase(it);
+    }
+
+private:
+    /// The flow key of the arc a token takes in this enabled transfer.
+    std::int64_t arcKey(const Execution& ex, std::int64_t anchor, int shape) const {
+        const auto [from, to] = transferEnds(ex, anchor, shape);
+        if (from < 0) return -1;
+        for (int d = 0; d < degree_; ++d)
+            if (from + problem_->board->step(d) == to) return from * degree_ + d;
+        return -1;
+    }
+
+    const Problem* problem_;
+    int degree_;
+    std::unordered_map<std::int64_t, std::int32_t> flow_;
+    std::unique_ptr<Allocator> fallback_;
+    bool falling_ = false;  // the flow stalled: the gradient allocator moves resources until the next motion
+    std::int64_t stepsAtUpdate_ = -1, motionsAtSolve_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Allocator> optimalAllocator(const Problem& problem) { return std::make_unique<OptimalAllocator>(problem); }
+
+}  // namespace holon::planner
