@@ -2,10 +2,11 @@
 // min-cost-flow one). It solves the transport problem of Transport.cpp from the start and fires a
 // transfer only along an arc where the optimal flow still has tokens to move, so a plan that
 // follows the flow to its end pays exactly the lower bound. The flow ignores timing and which
-// neighbour a deletion hands its tokens to; when the plan drifts from it (a round in which
-// nothing fires), the flow is solved again from the current configuration — optimal for what
-// remains. Unlike the gradient allocator it is centralised: the comparison shows what the
-// distributed one leaves on the table.
+// neighbour a deletion hands its tokens to, and it cannot say that a destroyer needs a D beside
+// it; so the flow is solved again from the current configuration (optimal for what remains) every
+// so many motions and whenever a round fires nothing, and when even the fresh flow moves nothing
+// the gradient allocator moves resources until the next motion. Unlike the gradient allocator it
+// is centralised: the comparison shows what the distributed one leaves on the table.
 
 #include "planner/Allocator.h"
 #include "planner/Execution.h"
@@ -18,10 +19,17 @@ std::unique_ptr<Allocator> gradientAllocator(const Problem& problem);
 
 namespace {
 
+// The flow is solved again after every 1/kSolves of the plan's motions: creations and deletions
+// hand tokens to whichever neighbour their rule picks, so the flow drifts. Solving after every
+// motion gave no fewer transfers on the block experiments (1.31x vs 1.32x of the bound at 2304
+// metamodules) at four times the time.
+constexpr std::int64_t kSolves = 32;
+
 class OptimalAllocator final : public Allocator {
 public:
     explicit OptimalAllocator(const Problem& problem)
-        : problem_(&problem), degree_(problem.board->lattice().degree()), fallback_(gradientAllocator(problem)) {
+        : problem_(&problem), degree_(problem.board->lattice().degree()), fallback_(gradientAllocator(problem)),
+          resolveEvery_(std::max<std::int64_t>(1, (problem.toCreate + problem.toDelete) / kSolves)) {
         if (std::optional<TransportPlan> plan = planTransport(problem, problem.cells)) flow_ = std::move(plan->flow);
     }
     std::string name() const override { return "optimal"; }
@@ -33,7 +41,7 @@ public:
         const std::int64_t motions = st.creations + st.deletions;
         stepsAtUpdate_ = st.steps;
         if (motions != motionsAtSolve_) falling_ = false;
-        if (!stalled && motions == motionsAtSolve_) return fieldsMoved;
+        if (!stalled && motions - motionsAtSolve_ < resolveEvery_) return fieldsMoved;
         motionsAtSolve_ = motions;
         std::optional<TransportPlan> plan = planTransport(*problem_, ex.cells());
         if (plan && plan->flow != flow_) {
@@ -74,6 +82,7 @@ private:
     std::unique_ptr<Allocator> fallback_;
     bool falling_ = false;  // the flow stalled: the gradient allocator moves resources until the next motion
     std::int64_t stepsAtUpdate_ = -1, motionsAtSolve_ = 0;
+    std::int64_t resolveEvery_;
 };
 
 }  // namespace
