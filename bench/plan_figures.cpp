@@ -1,9 +1,11 @@
 // Seed 000 §V reproduced: the 6x3x2 -> 3x3x4 block experiment scaled by K (36 K^3 metamodules),
-// for intermediate and general1 with the random and gradient allocators, synchronous rounds.
-// Prints the table behind Fig. 7 (actions vs ensemble size) and writes into OUT:
+// for intermediate and general1 with the random, gradient and optimal allocators, synchronous
+// rounds; then every general system (general2/3, general-lock2/3) with every allocator.
+// Prints the tables behind Fig. 7 (actions vs ensemble size) and writes into OUT:
 //   fig7.csv, fig7.svg  creations, deletions, transfers and the transport bound vs size (log-log)
 //   fig8.csv, fig8.svg  creation and deletion completion over rounds at 2304 metamodules (log time)
-// Usage: plan_figures [OUT] [--max-k K] [--max-k-random K] [--max-k-gradient K] [--seed N]
+//   systems.csv         transfers per system and allocator at 288 and 2304 metamodules
+// Usage: plan_figures [OUT] [--max-k K] [--max-k-random K] [--max-k-gradient K] [--max-k-optimal K] [--seed N]
 
 #include "PlanSupport.h"
 
@@ -73,13 +75,14 @@ std::string plot(const std::string& title, const std::string& xLabel, const std:
 
 int main(int argc, char** argv) {
     std::string out = "out/plan";
-    int maxK = 30, maxKRandom = 4, maxKGradient = 8;
+    int maxK = 30, maxKRandom = 4, maxKGradient = 8, maxKOptimal = 6;
     std::uint64_t seed = 1;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--max-k" && i + 1 < argc) maxK = std::atoi(argv[++i]);
         else if (a == "--max-k-random" && i + 1 < argc) maxKRandom = std::atoi(argv[++i]);
         else if (a == "--max-k-gradient" && i + 1 < argc) maxKGradient = std::atoi(argv[++i]);
+        else if (a == "--max-k-optimal" && i + 1 < argc) maxKOptimal = std::atoi(argv[++i]);
         else if (a == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
         else out = a;
     }
@@ -93,6 +96,7 @@ int main(int argc, char** argv) {
     series["actions"] = {"intermediate: creations+deletions", "#3d6fb0", {}};
     series["random"] = {"general1 random: transfers", "#c03030", {}};
     series["gradient"] = {"general1 gradient: transfers", "#20a060", {}};
+    series["optimal"] = {"general1 optimal: transfers", "#8040c0", {}};
     series["bound"] = {"transport lower bound", "#888888", {}};
     std::vector<int> ks;
     for (int k : {1, 2, 3, 4, 6, 8, 12, 16, 22, 30})
@@ -103,7 +107,7 @@ int main(int argc, char** argv) {
             int maxK;
         };
         for (const Job& job : {Job{"planner_intermediate", "random", "actions", maxK}, Job{"planner_general1", "random", "random", maxKRandom},
-                               Job{"planner_general1", "gradient", "gradient", maxKGradient}}) {
+                               Job{"planner_general1", "gradient", "gradient", maxKGradient}, Job{"planner_general1", "optimal", "optimal", maxKOptimal}}) {
             if (k > job.maxK) continue;
             const bool general = std::string(job.rules) != "planner_intermediate";
             auto r = bench::runPlan(job.rules, "box:6x3x2", "box:3x3x4", k, job.allocator, planner::Scheduler::Sync, seed, {}, general);
@@ -119,12 +123,37 @@ int main(int argc, char** argv) {
             if (!general) series["actions"].points.push_back({n, double(s.creations + s.deletions)});
             else {
                 series[job.key].points.push_back({n, double(std::max<std::int64_t>(1, s.transfers))});
-                if (std::string(job.allocator) == "gradient" || k > maxKGradient) series["bound"].points.push_back({n, double(std::max<std::int64_t>(1, r->lowerBound))});
+                if (std::string(job.allocator) == "random") series["bound"].points.push_back({n, double(std::max<std::int64_t>(1, r->lowerBound))});
             }
         }
     }
     std::ofstream(out + "/fig7.svg") << plot("actions vs ensemble size (6x3x2 -> 3x3x4)", "metamodules", "actions",
-                                             {series["actions"], series["random"], series["gradient"], series["bound"]}, true);
+                                             {series["actions"], series["random"], series["gradient"], series["optimal"], series["bound"]}, true);
+
+    // Every general system with every allocator (random only at 288 metamodules: it is slow).
+    std::ofstream sys(out + "/systems.csv");
+    sys << "metamodules,system,allocator,transfers,transfer_lower_bound,rounds,seconds,complete\n";
+    std::printf("\nevery general system: transfers (rounds), 6x3x2 -> 3x3x4, sync, seed %llu\n", (unsigned long long)seed);
+    std::printf("%9s %-22s %16s %16s %16s %12s\n", "metamod.", "system", "random", "gradient", "optimal", "lower bound");
+    for (int k : {2, 4})
+        for (const char* rules : {"planner_general1", "planner_general2", "planner_general3", "planner_general_lock2", "planner_general_lock3"}) {
+            std::printf("%9d %-22s", 36 * k * k * k, std::string(rules).substr(8).c_str());
+            std::int64_t bound = 0;
+            for (const char* allocator : {"random", "gradient", "optimal"}) {
+                if (k > 2 && std::string(allocator) == "random") {
+                    std::printf(" %16s", "-");
+                    continue;
+                }
+                auto r = bench::runPlan(rules, "box:6x3x2", "box:3x3x4", k, allocator, planner::Scheduler::Sync, seed, {}, true);
+                const planner::RunStats& st = r->stats;
+                bound = r->lowerBound;
+                const std::string cell = std::to_string(st.transfers) + " (" + std::to_string(st.rounds) + ")" + (st.complete ? "" : "!");
+                std::printf(" %16s", cell.c_str());
+                sys << 36 * k * k * k << ',' << rules << ',' << allocator << ',' << st.transfers << ',' << r->lowerBound << ',' << st.rounds << ',' << st.seconds << ','
+                    << st.complete << '\n';
+            }
+            std::printf(" %12lld\n", (long long)bound);
+        }
 
     // Fig. 8: completion over time at 2304 metamodules (K = 4).
     std::ofstream csv8(out + "/fig8.csv");
@@ -134,7 +163,8 @@ int main(int argc, char** argv) {
         const char *rules, *allocator, *label, *colour;
     };
     for (const Curve& c : {Curve{"planner_intermediate", "random", "intermediate", "#3d6fb0"}, Curve{"planner_general1", "random", "general1 random", "#c03030"},
-                           Curve{"planner_general1", "gradient", "general1 gradient", "#20a060"}}) {
+                           Curve{"planner_general1", "gradient", "general1 gradient", "#20a060"},
+                           Curve{"planner_general1", "optimal", "general1 optimal", "#8040c0"}}) {
         Series create{std::string(c.label) + " create", c.colour, {}}, destroy{std::string(c.label) + " delete", c.colour, {}};
         std::int64_t toCreate = 1152, toDelete = 1152;
         planner::RunObserver observer;
@@ -152,6 +182,6 @@ int main(int argc, char** argv) {
         curves.push_back(destroy);
     }
     std::ofstream(out + "/fig8.svg") << plot("completion at 2304 metamodules (solid: creation, dashed: deletion)", "round", "% complete", curves, false);
-    std::printf("wrote %s/fig7.csv, fig7.svg, fig8.csv, fig8.svg\n", out.c_str());
+    std::printf("wrote %s/fig7.csv, fig7.svg, fig8.csv, fig8.svg, systems.csv (\"!\": not complete)\n", out.c_str());
     return 0;
 }

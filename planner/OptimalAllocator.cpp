@@ -5,7 +5,7 @@
 // neighbour a deletion hands its tokens to, and it cannot say that a destroyer needs a D beside
 // it; so the flow is solved again from the current configuration (optimal for what remains) every
 // so many motions and whenever a round fires nothing, and when even the fresh flow moves nothing
-// the gradient allocator moves resources until the next motion. Unlike the gradient allocator it
+// the gradient allocator, and after it any transfer, moves resources until the next motion. Unlike the gradient allocator it
 // is centralised: the comparison shows what the distributed one leaves on the table.
 
 #include "planner/Allocator.h"
@@ -40,7 +40,7 @@ public:
         const bool stalled = st.steps == stepsAtUpdate_;
         const std::int64_t motions = st.creations + st.deletions;
         stepsAtUpdate_ = st.steps;
-        if (motions != motionsAtSolve_) falling_ = false;
+        if (motions != motionsAtSolve_) level_ = Level::Flow;
         if (!stalled && motions - motionsAtSolve_ < resolveEvery_) return fieldsMoved;
         motionsAtSolve_ = motions;
         std::optional<TransportPlan> plan = planTransport(*problem_, ex.cells());
@@ -48,8 +48,8 @@ public:
             flow_ = std::move(plan->flow);
             return true;
         }
-        if (stalled && !falling_) {
-            falling_ = true;
+        if (stalled && level_ != Level::Any) {
+            level_ = level_ == Level::Flow ? Level::Gradient : Level::Any;
             return true;
         }
         return fieldsMoved;
@@ -58,7 +58,7 @@ public:
     bool wants(const Execution& ex, std::int64_t anchor, int shape) const override {
         const std::int64_t key = arcKey(ex, anchor, shape);
         if (key >= 0 && flow_.count(key)) return true;
-        return falling_ && fallback_->wants(ex, anchor, shape);
+        return level_ == Level::Any || (level_ == Level::Gradient && fallback_->wants(ex, anchor, shape));
     }
 
     void firing(const Execution& ex, std::int64_t anchor, int shape) override {
@@ -80,7 +80,9 @@ private:
     int degree_;
     std::unordered_map<std::int64_t, std::int32_t> flow_;
     std::unique_ptr<Allocator> fallback_;
-    bool falling_ = false;  // the flow stalled: the gradient allocator moves resources until the next motion
+    /// Which transfers fire until the next motion: the flow's; when it stalls, also the gradient
+    /// allocator's; when that stalls too, any (the paper's random allocator, which always completes).
+    enum class Level { Flow, Gradient, Any } level_ = Level::Flow;
     std::int64_t stepsAtUpdate_ = -1, motionsAtSolve_ = 0;
     std::int64_t resolveEvery_;
 };
