@@ -61,7 +61,7 @@ int BoxEngine::reach(const rules::RuleTables& tables) {
 }
 
 BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::vector<std::uint8_t> combo)
-    : tables_(&tables), board_(&board), combo_(std::move(combo)) {
+    : tables_(&tables), board_(&board), combo_(std::move(combo)), alphabet_(static_cast<std::size_t>(tables.alphabet())) {
     if (tables.alphabet() > 255)
         throw InputError("system '" + tables.model().system().name + "' has " + std::to_string(tables.alphabet()) +
                          " cell states; the planner stores at most 255 per cell");
@@ -89,9 +89,23 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
         std::sort(reads.begin(), reads.end());
         reads.erase(std::unique(reads.begin(), reads.end()), reads.end());
         influence_.insert(influence_.end(), reads.begin(), reads.end());
-        cellSteps_.push_back(std::move(cells));
-        writeSteps_.push_back(std::move(writes));
-        readSteps_.push_back(std::move(reads));
+        Program program;
+        program.cells = static_cast<int>(cells.size());
+        program.guard = t.hasGuard;
+        for (std::size_t k = 0; k < cells.size(); ++k) {
+            program.step[k] = cells[k], program.lhs[k] = t.lhs[k].bits.data();
+            program.copyFrom[k] = t.copyFrom[k], program.rhs[k] = t.copyFrom[k] >= 0 ? nullptr : t.rhs[k].data();
+            bool needsCombo = tables.test(t.lhs[k], 0, 0);
+            for (int c = 1; c < tables.comboCount() && !needsCombo; ++c)
+                for (int v = 0; v < tables.alphabet() && !needsCombo; ++v)
+                    needsCombo = tables.test(t.lhs[k], c, static_cast<rules::CellValue>(v)) != tables.test(t.lhs[k], 0, static_cast<rules::CellValue>(v));
+            program.needsCombo[k] = needsCombo;
+        }
+        if (reads.size() > kMaxReads) throw InputError("rule '" + tables.model().rules()[shape.rule].name + "' reads more cells than the planner supports");
+        program.reads = reads.size(), program.writes = writes.size();
+        std::copy(reads.begin(), reads.begin() + static_cast<std::ptrdiff_t>(program.reads), program.read);
+        std::copy(writes.begin(), writes.end(), program.write);
+        programs_.push_back(program);
     }
     std::sort(influence_.begin(), influence_.end());
     influence_.erase(std::unique(influence_.begin(), influence_.end()), influence_.end());
@@ -99,7 +113,7 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
 
 bool BoxEngine::matches(const Value* cells, std::int64_t anchor, int shape, std::int64_t cell, Value value) const {
     const rules::RuleTables::Shape& t = tables_->shape(shape);
-    const std::vector<std::int64_t>& steps = cellSteps_[shape];
+    const std::span<const std::int64_t> steps = cellSteps(shape);
     std::int32_t at[rules::RuleTables::kMaxCells];
     for (std::size_t k = 0; k < steps.size(); ++k) {
         const std::int64_t i = anchor + steps[k];
@@ -109,12 +123,17 @@ bool BoxEngine::matches(const Value* cells, std::int64_t anchor, int shape, std:
     return !t.hasGuard || tables_->guard(t.guard, BoardCells{cells, combo_.data(), board_, cell, value}, at);
 }
 
+bool BoxEngine::guardHolds(const Value* cells, std::int64_t anchor, int shape) const {
+    const Program& p = programs_[shape];
+    std::int32_t at[rules::RuleTables::kMaxCells];
+    for (int k = 0; k < p.cells; ++k) at[k] = static_cast<std::int32_t>(anchor + p.step[k]);
+    return tables_->guard(tables_->shape(shape).guard, BoardCells{cells, combo_.data(), board_, -1, 0}, at);
+}
+
 void BoxEngine::apply(Value* cells, std::int64_t anchor, int shape, Value* old) const {
-    const rules::RuleTables::Shape& t = tables_->shape(shape);
-    const std::vector<std::int64_t>& steps = cellSteps_[shape];
-    for (std::size_t k = 0; k < steps.size(); ++k) old[k] = cells[anchor + steps[k]];
-    for (std::size_t k = 0; k < steps.size(); ++k)
-        cells[anchor + steps[k]] = static_cast<Value>(t.copyFrom[k] >= 0 ? old[t.copyFrom[k]] : t.rhs[k][old[k]]);
+    const Program& p = programs_[shape];
+    for (int k = 0; k < p.cells; ++k) old[k] = cells[anchor + p.step[k]];
+    for (int k = 0; k < p.cells; ++k) cells[anchor + p.step[k]] = static_cast<Value>(p.copyFrom[k] >= 0 ? old[p.copyFrom[k]] : p.rhs[k][old[k]]);
 }
 
 }  // namespace holon::planner

@@ -8,6 +8,7 @@
 #include "rules/RuleTables.h"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace holon::planner {
@@ -38,11 +39,11 @@ public:
     ShapeKind kind(int shape) const { return kinds_[shape]; }
     std::uint8_t combo(std::int64_t cell) const { return combo_[cell]; }
     /// Index steps of a shape's pattern cells from its anchor.
-    const std::vector<std::int64_t>& cellSteps(int shape) const { return cellSteps_[shape]; }
+    std::span<const std::int64_t> cellSteps(int shape) const { return {programs_[shape].step, static_cast<std::size_t>(programs_[shape].cells)}; }
     /// Index steps of the pattern cells an instance of the shape may change.
-    const std::vector<std::int64_t>& writeSteps(int shape) const { return writeSteps_[shape]; }
+    std::span<const std::int64_t> writeSteps(int shape) const { return {programs_[shape].write, programs_[shape].writes}; }
     /// Index steps of every cell a shape's instance reads (pattern and guard neighbourhoods).
-    const std::vector<std::int64_t>& readSteps(int shape) const { return readSteps_[shape]; }
+    std::span<const std::int64_t> readSteps(int shape) const { return {programs_[shape].read, programs_[shape].reads}; }
     /// Union over shapes of readSteps: a change at cell c can only affect anchors c - r.
     const std::vector<std::int64_t>& influence() const { return influence_; }
 
@@ -53,23 +54,57 @@ public:
     /// the anchor's state are evaluated); returns the number of evaluations.
     template <class F>
     int forEachMatchAt(const Value* cells, std::int64_t anchor, F&& f) const {
-        if (combo_[anchor] == kOutside) return 0;
-        const auto& candidates = tables_->shapesByFirst(combo_[anchor], cells[anchor]);
+        const std::uint8_t combo = combo_[anchor];
+        if (combo == kOutside) return 0;
+        const auto& candidates = tables_->shapesByFirst(combo, cells[anchor]);
         for (std::int32_t s : candidates)
-            if (matches(cells, anchor, s)) f(s);
+            if (othersMatch(cells, anchor, programs_[s]) && (!programs_[s].guard || guardHolds(cells, anchor, s))) f(s);
         return static_cast<int>(candidates.size());
     }
     /// Rewrites the instance in place; `old` (kMaxCells entries) receives the previous values.
     void apply(Value* cells, std::int64_t anchor, int shape, Value* old) const;
 
 private:
+    static constexpr int kMaxReads = rules::RuleTables::kMaxCells * 7;  // pattern cells and their neighbours
+    /// A shape flattened for the hot loops: index steps and lhs bit sets side by side, and the
+    /// cells an instance reads and writes (the synchronous scheduler's conflict test).
+    struct Program {
+        int cells = 0;
+        bool guard = false;
+        std::int64_t step[rules::RuleTables::kMaxCells] = {};
+        const std::uint64_t* lhs[rules::RuleTables::kMaxCells] = {};
+        const rules::CellValue* rhs[rules::RuleTables::kMaxCells] = {};  // null for a copy term
+        int copyFrom[rules::RuleTables::kMaxCells] = {};
+        // Whether testing cell k needs its input combination: not when its left side ignores the
+        // inputs and rejects the empty state (padding is empty, so it cannot match either).
+        bool needsCombo[rules::RuleTables::kMaxCells] = {};
+        std::size_t reads = 0, writes = 0;
+        std::int64_t read[kMaxReads] = {}, write[rules::RuleTables::kMaxCells] = {};
+    };
+    /// Pattern cells 1.. accept their states (shapesByFirst already tested cell 0).
+    bool othersMatch(const Value* cells, std::int64_t anchor, const Program& p) const {
+        for (int k = 1; k < p.cells; ++k) {
+            const std::int64_t i = anchor + p.step[k];
+            std::size_t bit = cells[i];
+            if (p.needsCombo[k]) {
+                const std::uint8_t c = combo_[i];
+                if (c == kOutside) return false;
+                bit += static_cast<std::size_t>(c) * alphabet_;
+            }
+            if (!((p.lhs[k][bit >> 6] >> (bit & 63)) & 1u)) return false;
+        }
+        return true;
+    }
+    bool guardHolds(const Value* cells, std::int64_t anchor, int shape) const;
+
     const rules::RuleTables* tables_;
     const Board* board_;
     std::vector<std::uint8_t> combo_;
     std::vector<int> ruleOf_;
     std::vector<ShapeKind> kinds_;
-    std::vector<std::vector<std::int64_t>> cellSteps_, writeSteps_, readSteps_;
     std::vector<std::int64_t> influence_;
+    std::vector<Program> programs_;
+    std::size_t alphabet_;
 };
 
 }  // namespace holon::planner

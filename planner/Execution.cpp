@@ -98,7 +98,7 @@ void Execution::fire(std::int64_t anchor, int shape, const RunObserver& observer
     const BoxEngine& engine = this->engine();
     if (engine.kind(shape) == ShapeKind::Transfer) allocator_->firing(*this, anchor, shape);
     engine.apply(cells_.data(), anchor, shape, old);
-    const std::vector<std::int64_t>& steps = engine.cellSteps(shape);
+    const std::span<const std::int64_t> steps = engine.cellSteps(shape);
     for (std::size_t k = 0; k < steps.size(); ++k) {
         const std::int64_t i = anchor + steps[k];
         if (old[k] == cells_[i]) continue;

@@ -75,8 +75,8 @@ public:
         case Expr::Kind::Implies: return !guard(g.kids[0], at, cells) || guard(g.kids[1], at, cells);
         case Expr::Kind::Not: return !guard(g.kids[0], at, cells);
         case Expr::Kind::Compare: return compare(g.op, guardNumber(g.kids[0], at, cells), guardNumber(g.kids[1], at, cells));
-        case Expr::Kind::Some: return guardCount(g, at, cells) > 0;
-        case Expr::Kind::No: return guardCount(g, at, cells) == 0;
+        case Expr::Kind::Some: return guardAny(g, at, cells);
+        case Expr::Kind::No: return !guardAny(g, at, cells);
         case Expr::Kind::All: return guardCount(g, at, cells) == static_cast<int>(g.perDirection.size());
         default: return false;
         }
@@ -96,6 +96,16 @@ private:
             n += nb < 0 ? guardAccepts(g, d, 0, 0) : guardAccepts(g, d, at.combo(nb), at.value(nb));
         }
         return n;
+    }
+    /// Whether some neighbour is accepted: guardCount(...) > 0, stopping at the first.
+    template <class Cells>
+    bool guardAny(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
+        const auto centre = cells[g.around];
+        for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) {
+            const auto nb = at.neighbour(centre, d);
+            if (nb < 0 ? guardAccepts(g, d, 0, 0) : guardAccepts(g, d, at.combo(nb), at.value(nb))) return true;
+        }
+        return false;
     }
     template <class Cells>
     Rational guardNumber(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
