@@ -30,7 +30,7 @@ inline std::unique_ptr<PlanRun> layoutPlan(const std::string& rules, const std::
 inline std::unique_ptr<PlanRun> runPlan(const std::string& rules, const std::string& from, const std::string& to, int scale, const std::string& allocator,
                                         planner::Scheduler scheduler, std::uint64_t seed, const planner::RunObserver& observer = {}, bool bound = true) {
     auto r = layoutPlan(rules, from, to, scale, seed);
-    auto alloc = planner::makeAllocator(allocator, r->problem);
+    auto alloc = planner::makeAllocator(allocator, r->problem, seed);
     planner::RunOptions options;
     options.scheduler = scheduler, options.seed = seed;
     planner::Execution ex(r->problem, *alloc, options);

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
             auto r = bench::layoutPlan("planner_intermediate", from, to, 1, 1 + k);
             const planner::Problem& p = r->problem;
             auto runCompiled = [&] {
-                auto allocator = planner::makeAllocator("random", p);
+                auto allocator = planner::makeAllocator("random", p, 1 + k);
                 planner::RunOptions options;
                 options.seed = 1 + k;
                 planner::Execution ex(p, *allocator, options);

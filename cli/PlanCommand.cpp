@@ -56,7 +56,7 @@ int run(const PlanArgs& a) {
     const rules::Lattice& lattice = rules::Lattice::get(from.dimension == 3 ? rules::LatticeKind::Cubic3D : rules::LatticeKind::Square2D);
     rules::Model model(*system, lattice);
     planner::Problem problem = planner::makeProblem(model, std::move(from), std::move(to), parseCell(a.seedCell), a.seed);
-    std::unique_ptr<planner::Allocator> allocator = planner::makeAllocator(a.allocator, problem);
+    std::unique_ptr<planner::Allocator> allocator = planner::makeAllocator(a.allocator, problem, a.seed);
 
     planner::RunOptions options;
     if (a.scheduler == "sync") options.scheduler = planner::Scheduler::Sync;

@@ -7,9 +7,9 @@
 
 namespace holon::planner {
 
-std::unique_ptr<Allocator> randomAllocator();
-std::unique_ptr<Allocator> gradientAllocator(const Problem& problem);
-std::unique_ptr<Allocator> optimalAllocator(const Problem& problem);
+std::unique_ptr<Allocator> randomAllocator(std::uint64_t seed);
+std::unique_ptr<Allocator> gradientAllocator(const Problem& problem, std::uint64_t seed);
+std::unique_ptr<Allocator> optimalAllocator(const Problem& problem, std::uint64_t seed);
 
 std::pair<std::int64_t, std::int64_t> transferEnds(const Execution& ex, std::int64_t anchor, int shape) {
     const BoxEngine& engine = ex.engine();
@@ -27,10 +27,10 @@ std::pair<std::int64_t, std::int64_t> transferEnds(const Execution& ex, std::int
     return {from, to};
 }
 
-std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem& problem) {
-    if (name == "random") return randomAllocator();
-    if (name == "gradient") return gradientAllocator(problem);
-    if (name == "optimal") return optimalAllocator(problem);
+std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem& problem, std::uint64_t seed) {
+    if (name == "random") return randomAllocator(seed);
+    if (name == "gradient") return gradientAllocator(problem, seed);
+    if (name == "optimal") return optimalAllocator(problem, seed);
     throw InputError("--allocator '" + name + "': choose random, gradient or optimal");
 }
 

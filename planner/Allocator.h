@@ -31,8 +31,9 @@ std::pair<std::int64_t, std::int64_t> transferEnds(const Execution& ex, std::int
 
 struct Problem;
 
-/// "random", "gradient" or "optimal"; throws InputError for any other name.
-std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem& problem);
+/// "random", "gradient" or "optimal"; throws InputError for any other name. `seed` drives the
+/// allocator's own coin flips (the run's --seed).
+std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem& problem, std::uint64_t seed);
 
 /// The least number of transfers any plan for the problem needs (a transport bound, see
 /// Transport.cpp), or -1 when the system has no transfers.

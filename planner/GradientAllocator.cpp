@@ -18,7 +18,8 @@
 
 namespace holon::planner {
 
-std::unique_ptr<Allocator> gradientAllocator(const Problem& problem);
+std::unique_ptr<Allocator> gradientAllocator(const Problem& problem, std::uint64_t seed);
+std::unique_ptr<Allocator> randomAllocator(std::uint64_t seed);
 
 namespace {
 
@@ -26,7 +27,7 @@ constexpr std::uint32_t kFar = 1u << 30;
 
 class GradientAllocator final : public Allocator {
 public:
-    explicit GradientAllocator(const Problem& problem) : problem_(&problem) {
+    GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), fallback_(randomAllocator(seed)) {
         const rules::Alphabet& alphabet = problem.model->alphabet();
         const PlannerSchema& s = problem.schema;
         heavier_.assign(static_cast<std::size_t>(alphabet.size()), 0);
@@ -42,6 +43,7 @@ public:
         for (int sh = 0; sh < engine.shapeCount(); ++sh)
             if (engine.kind(sh) == ShapeKind::Motion) motions_.push_back(sh);
         needC_.assign(problem.cells.size(), kFar), needD_.assign(problem.cells.size(), kFar);
+        occupied_ = static_cast<std::int64_t>(problem.start.cells.size());
     }
     std::string name() const override { return "gradient"; }
 
@@ -50,11 +52,16 @@ public:
         const BoxEngine& engine = ex.engine();
         const Board& board = *problem_->board;
         const int degree = board.lattice().degree();
+        // No path is longer than the ensemble: capping there stops a field cut off from every
+        // demand from counting up to kFar one round at a time (distance-vector count-to-infinity).
+        const std::uint32_t far = static_cast<std::uint32_t>(std::min<std::int64_t>(kFar, 2 * occupied_ + 2));
         std::vector<std::uint32_t> nextC(cells.size(), kFar), nextD(cells.size(), kFar);
         bool moved = false;
+        occupied_ = 0;
         for (std::size_t x = 0; x < cells.size(); ++x) {
             const BoxEngine::Value v = cells[x];
             if (!v) continue;
+            ++occupied_;
             const auto i = static_cast<std::int64_t>(x);
             std::uint32_t bestC = kFar, bestD = kFar;
             for (int d = 0; d < degree; ++d) {
@@ -62,21 +69,34 @@ public:
                 if (!cells[j]) continue;
                 bestC = std::min(bestC, needC_[j]), bestD = std::min(bestD, needD_[j]);
             }
-            nextC[x] = wouldEnable(ex, engine, i, heavier_[v]) ? 0 : std::min(kFar, bestC + 1);
-            nextD[x] = wouldEnable(ex, engine, i, lighter_[v]) ? 0 : std::min(kFar, bestD + 1);
+            nextC[x] = wouldEnable(ex, engine, i, heavier_[v]) ? 0 : bestC + 1 >= far ? kFar : bestC + 1;
+            nextD[x] = wouldEnable(ex, engine, i, lighter_[v]) ? 0 : bestD + 1 >= far ? kFar : bestD + 1;
             moved = moved || nextC[x] != needC_[x] || nextD[x] != needD_[x];
         }
         needC_.swap(nextC), needD_.swap(nextD);
+        // A round in which nothing fired although the fields had settled: the fields see no way
+        // forward (a destroyer may need a D that only a detour brings), so the paper's randomizer
+        // moves resources until the next creation or deletion.
+        const RunStats& st = ex.stats();
+        const std::int64_t motions = st.creations + st.deletions;
+        if (motions != motionsAtUpdate_) anyTransfer_ = false;
+        if (st.steps == stepsAtUpdate_ && !moved && !anyTransfer_) anyTransfer_ = moved = true;
+        else if (anyTransfer_) moved = fallback_->update(ex) || moved;
+        stepsAtUpdate_ = st.steps, motionsAtUpdate_ = motions;
         return moved;
     }
 
     bool wants(const Execution& ex, std::int64_t anchor, int shape) const override {
+        if (anyTransfer_) return fallback_->wants(ex, anchor, shape);
         // The cell that loses mass gives its heavy resource to the one that gains it.
         const auto [from, to] = transferEnds(ex, anchor, shape);
         if (from < 0) return false;
-        // The heavy resource goes down the creators' field; where that field is flat, the light
-        // one goes down the destroyers' field.
+        // The heavy resource goes down the creators' field. The light one goes down the
+        // destroyers' field only where no creation is in reach: a transfer that brings a D also
+        // takes a C away, and sending C's off from where creations wait cost a third more
+        // transfers on the block experiments.
         if (needC_[to] != needC_[from]) return needC_[to] < needC_[from];
+        if (needC_[to] != kFar) return false;
         return needD_[from] < needD_[to];
     }
 
@@ -99,10 +119,14 @@ private:
     std::vector<BoxEngine::Value> heavier_, lighter_;
     std::vector<int> motions_;
     std::vector<std::uint32_t> needC_, needD_;
+    std::int64_t occupied_ = 0;
+    std::int64_t stepsAtUpdate_ = -1, motionsAtUpdate_ = 0;
+    bool anyTransfer_ = false;
+    std::unique_ptr<Allocator> fallback_;
 };
 
 }  // namespace
 
-std::unique_ptr<Allocator> gradientAllocator(const Problem& problem) { return std::make_unique<GradientAllocator>(problem); }
+std::unique_ptr<Allocator> gradientAllocator(const Problem& problem, std::uint64_t seed) { return std::make_unique<GradientAllocator>(problem, seed); }
 
 }  // namespace holon::planner

@@ -5,7 +5,8 @@
 // neighbour a deletion hands its tokens to, and it cannot say that a destroyer needs a D beside
 // it; so the flow is solved again from the current configuration (optimal for what remains) every
 // so many motions and whenever a round fires nothing, and when even the fresh flow moves nothing
-// the gradient allocator, and after it any transfer, moves resources until the next motion. Unlike the gradient allocator it
+// the gradient allocator (which falls back to any transfer in turn) moves resources until the
+// next motion. Unlike the gradient allocator it
 // is centralised: the comparison shows what the distributed one leaves on the table.
 
 #include "planner/Allocator.h"
@@ -14,8 +15,8 @@
 
 namespace holon::planner {
 
-std::unique_ptr<Allocator> optimalAllocator(const Problem& problem);
-std::unique_ptr<Allocator> gradientAllocator(const Problem& problem);
+std::unique_ptr<Allocator> optimalAllocator(const Problem& problem, std::uint64_t seed);
+std::unique_ptr<Allocator> gradientAllocator(const Problem& problem, std::uint64_t seed);
 
 namespace {
 
@@ -27,8 +28,8 @@ constexpr std::int64_t kSolves = 32;
 
 class OptimalAllocator final : public Allocator {
 public:
-    explicit OptimalAllocator(const Problem& problem)
-        : problem_(&problem), degree_(problem.board->lattice().degree()), fallback_(gradientAllocator(problem)),
+    OptimalAllocator(const Problem& problem, std::uint64_t seed)
+        : problem_(&problem), degree_(problem.board->lattice().degree()), fallback_(gradientAllocator(problem, seed)),
           resolveEvery_(std::max<std::int64_t>(1, (problem.toCreate + problem.toDelete) / kSolves)) {
         if (std::optional<TransportPlan> plan = planTransport(problem, problem.cells)) flow_ = std::move(plan->flow);
     }
@@ -40,7 +41,7 @@ public:
         const bool stalled = st.steps == stepsAtUpdate_;
         const std::int64_t motions = st.creations + st.deletions;
         stepsAtUpdate_ = st.steps;
-        if (motions != motionsAtSolve_) level_ = Level::Flow;
+        if (motions != motionsAtSolve_) falling_ = false;
         if (!stalled && motions - motionsAtSolve_ < resolveEvery_) return fieldsMoved;
         motionsAtSolve_ = motions;
         std::optional<TransportPlan> plan = planTransport(*problem_, ex.cells());
@@ -48,8 +49,8 @@ public:
             flow_ = std::move(plan->flow);
             return true;
         }
-        if (stalled && level_ != Level::Any) {
-            level_ = level_ == Level::Flow ? Level::Gradient : Level::Any;
+        if (stalled && !falling_) {
+            falling_ = true;
             return true;
         }
         return fieldsMoved;
@@ -58,7 +59,7 @@ public:
     bool wants(const Execution& ex, std::int64_t anchor, int shape) const override {
         const std::int64_t key = arcKey(ex, anchor, shape);
         if (key >= 0 && flow_.count(key)) return true;
-        return level_ == Level::Any || (level_ == Level::Gradient && fallback_->wants(ex, anchor, shape));
+        return falling_ && fallback_->wants(ex, anchor, shape);
     }
 
     void firing(const Execution& ex, std::int64_t anchor, int shape) override {
@@ -80,15 +81,15 @@ private:
     int degree_;
     std::unordered_map<std::int64_t, std::int32_t> flow_;
     std::unique_ptr<Allocator> fallback_;
-    /// Which transfers fire until the next motion: the flow's; when it stalls, also the gradient
-    /// allocator's; when that stalls too, any (the paper's random allocator, which always completes).
-    enum class Level { Flow, Gradient, Any } level_ = Level::Flow;
+    /// The flow stalled: until the next motion the gradient allocator's transfers fire too (and,
+    /// when it stalls in turn, any transfer).
+    bool falling_ = false;
     std::int64_t stepsAtUpdate_ = -1, motionsAtSolve_ = 0;
     std::int64_t resolveEvery_;
 };
 
 }  // namespace
 
-std::unique_ptr<Allocator> optimalAllocator(const Problem& problem) { return std::make_unique<OptimalAllocator>(problem); }
+std::unique_ptr<Allocator> optimalAllocator(const Problem& problem, std::uint64_t seed) { return std::make_unique<OptimalAllocator>(problem, seed); }
 
 }  // namespace holon::planner

@@ -78,7 +78,7 @@ int sideBySide(const std::string& stem, int dimension, planner::Scheduler schedu
         } catch (const InputError&) {
             continue;  // a mass the target cannot hold: not a plan
         }
-        auto allocator = planner::makeAllocator("random", problem);
+        auto allocator = planner::makeAllocator("random", problem, static_cast<std::uint64_t>(run));
         planner::RunOptions options;
         options.scheduler = scheduler, options.seed = static_cast<std::uint64_t>(run), options.maxSteps = 200000;
         planner::Execution ex(problem, *allocator, options);

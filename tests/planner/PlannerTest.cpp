@@ -14,9 +14,9 @@ namespace holon::test {
 namespace {
 planner::RunStats plan(const planner::Problem& problem, planner::Scheduler scheduler, std::uint64_t seed, bool check = true,
                        const std::string& allocatorName = "random") {
-    auto allocator = planner::makeAllocator(allocatorName, problem);
+    auto allocator = planner::makeAllocator(allocatorName, problem, seed);
     planner::RunOptions options;
-    options.scheduler = scheduler, options.seed = seed;
+    options.scheduler = scheduler, options.seed = seed, options.maxRounds = 200000;  // a regression fails, it does not hang
     planner::Execution ex(problem, *allocator, options);
     planner::Monitor monitor(problem, ex);
     planner::RunObserver observer;
@@ -88,6 +88,19 @@ TEST_CASE("every allocator completes every general system, never below the trans
             }
             CHECK(transfers["optimal"] < transfers["random"]);
         }
+}
+
+TEST_CASE("tight mass: every allocator completes where every target cell must end a creator") {
+    // These hung: approving every transfer in a synchronous round moved every resource every
+    // round (random), and the gradient fields saw no way forward and counted to infinity.
+    PlannerSystem sys("planner_general1", 2);
+    for (auto [from, to] : {std::pair{"box:8x1", "box:4x1"}, std::pair{"box:6x2", "box:3x2"}, std::pair{"box:4x4", "box:4x2"}})
+        for (const char* allocator : {"random", "gradient", "optimal"})
+            for (std::uint64_t seed : {1, 2, 3}) {
+                const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape(from), planner::parseShape(to), std::nullopt, seed);
+                INFO(from << " -> " << to << " " << allocator << " seed " << seed);
+                CHECK(plan(p, planner::Scheduler::Sync, seed, true, allocator).complete);
+            }
 }
 
 TEST_CASE("runs are deterministic for a seed and differ across seeds") {
