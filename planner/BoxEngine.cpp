@@ -91,16 +91,17 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
         influence_.insert(influence_.end(), reads.begin(), reads.end());
         Program program;
         program.cells = static_cast<int>(cells.size());
-        program.guard = t.hasGuard;
         for (std::size_t k = 0; k < cells.size(); ++k) {
-            program.step[k] = cells[k], program.lhs[k] = t.lhs[k].bits.data();
+            program.step[k] = cells[k];
             program.copyFrom[k] = t.copyFrom[k], program.rhs[k] = t.copyFrom[k] >= 0 ? nullptr : t.rhs[k].data();
+            if (k == 0) continue;
             bool needsCombo = tables.test(t.lhs[k], 0, 0);
             for (int c = 1; c < tables.comboCount() && !needsCombo; ++c)
                 for (int v = 0; v < tables.alphabet() && !needsCombo; ++v)
                     needsCombo = tables.test(t.lhs[k], c, static_cast<rules::CellValue>(v)) != tables.test(t.lhs[k], 0, static_cast<rules::CellValue>(v));
-            program.needsCombo[k] = needsCombo;
+            tests_.push_back({cells[k], t.lhs[k].bits.data(), needsCombo});
         }
+        hot_.push_back({static_cast<std::uint32_t>(tests_.size() - (cells.size() - 1)), static_cast<std::uint32_t>(cells.size() - 1), t.hasGuard});
         if (reads.size() > kMaxReads) throw InputError("rule '" + tables.model().rules()[shape.rule].name + "' reads more cells than the planner supports");
         program.reads = reads.size(), program.writes = writes.size();
         std::copy(reads.begin(), reads.begin() + static_cast<std::ptrdiff_t>(program.reads), program.read);

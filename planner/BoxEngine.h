@@ -57,8 +57,10 @@ public:
         const std::uint8_t combo = combo_[anchor];
         if (combo == kOutside) return 0;
         const auto& candidates = tables_->shapesByFirst(combo, cells[anchor]);
-        for (std::int32_t s : candidates)
-            if (othersMatch(cells, anchor, programs_[s]) && (!programs_[s].guard || guardHolds(cells, anchor, s))) f(s);
+        for (std::int32_t s : candidates) {
+            const Hot h = hot_[s];
+            if (othersMatch(cells, anchor, tests_.data() + h.first, h.count) && (!h.guard || guardHolds(cells, anchor, s))) f(s);
+        }
         return static_cast<int>(candidates.size());
     }
     /// Rewrites the instance in place; `old` (kMaxCells entries) receives the previous values.
@@ -66,32 +68,40 @@ public:
 
 private:
     static constexpr int kMaxReads = rules::RuleTables::kMaxCells * 7;  // pattern cells and their neighbours
-    /// A shape flattened for the hot loops: index steps and lhs bit sets side by side, and the
-    /// cells an instance reads and writes (the synchronous scheduler's conflict test).
+    /// A shape flattened: index steps, right-side tables, and the cells an instance reads and
+    /// writes (the synchronous scheduler's conflict test).
     struct Program {
         int cells = 0;
-        bool guard = false;
         std::int64_t step[rules::RuleTables::kMaxCells] = {};
-        const std::uint64_t* lhs[rules::RuleTables::kMaxCells] = {};
         const rules::CellValue* rhs[rules::RuleTables::kMaxCells] = {};  // null for a copy term
         int copyFrom[rules::RuleTables::kMaxCells] = {};
-        // Whether testing cell k needs its input combination: not when its left side ignores the
-        // inputs and rejects the empty state (padding is empty, so it cannot match either).
-        bool needsCombo[rules::RuleTables::kMaxCells] = {};
         std::size_t reads = 0, writes = 0;
         std::int64_t read[kMaxReads] = {}, write[rules::RuleTables::kMaxCells] = {};
     };
+    /// The test of one pattern cell after the first, packed so that the tests of every shape
+    /// share a few cache lines (the enabled-set updates run them millions of times).
+    struct Test {
+        std::int64_t step;
+        const std::uint64_t* lhs;
+        // Whether the cell's input combination is needed: not when its left side ignores the
+        // inputs and rejects the empty state (padding is empty, so it cannot match either).
+        bool needsCombo;
+    };
+    struct Hot {
+        std::uint32_t first = 0, count = 0;  // the shape's tests in tests_
+        bool guard = false;
+    };
     /// Pattern cells 1.. accept their states (shapesByFirst already tested cell 0).
-    bool othersMatch(const Value* cells, std::int64_t anchor, const Program& p) const {
-        for (int k = 1; k < p.cells; ++k) {
-            const std::int64_t i = anchor + p.step[k];
+    bool othersMatch(const Value* cells, std::int64_t anchor, const Test* t, std::uint32_t count) const {
+        for (std::uint32_t k = 0; k < count; ++k) {
+            const std::int64_t i = anchor + t[k].step;
             std::size_t bit = cells[i];
-            if (p.needsCombo[k]) {
+            if (t[k].needsCombo) {
                 const std::uint8_t c = combo_[i];
                 if (c == kOutside) return false;
                 bit += static_cast<std::size_t>(c) * alphabet_;
             }
-            if (!((p.lhs[k][bit >> 6] >> (bit & 63)) & 1u)) return false;
+            if (!((t[k].lhs[bit >> 6] >> (bit & 63)) & 1u)) return false;
         }
         return true;
     }
@@ -104,6 +114,8 @@ private:
     std::vector<ShapeKind> kinds_;
     std::vector<std::int64_t> influence_;
     std::vector<Program> programs_;
+    std::vector<Hot> hot_;
+    std::vector<Test> tests_;
     std::size_t alphabet_;
 };
 
