@@ -186,6 +186,10 @@ RunStats Execution::run(const RunObserver& observer) {
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(); };
     std::vector<std::int64_t> changed;
     std::int64_t sinceUpdate = 0, updateEvery = 1;
+    const Vec extent = problem_->board->extent();
+    const std::int64_t diameter = std::int64_t{extent.x} + extent.y + extent.z;
+    const std::int64_t maxIdle = options_.maxIdleRounds > 0 ? options_.maxIdleRounds : 1000 + 20 * diameter * diameter;
+    std::int64_t plannerSteps = 0, idleSince = 0;
     for (std::uint64_t iteration = 0;; ++iteration) {
         // Reaching the goal ends the run even while transfers are still enabled.
         if (offGoal_ == 0) {
@@ -194,6 +198,11 @@ RunStats Execution::run(const RunObserver& observer) {
         }
         if (options_.maxRounds && stats_.rounds >= options_.maxRounds) {
             stats_.stopped = "max-rounds";
+            break;
+        }
+        if (stats_.steps - stats_.transfers != plannerSteps) plannerSteps = stats_.steps - stats_.transfers, idleSince = stats_.rounds;
+        if (stats_.rounds - idleSince > maxIdle) {
+            stats_.stopped = "no-progress";
             break;
         }
         if (options_.maxSteps && stats_.steps >= options_.maxSteps) {

@@ -23,6 +23,10 @@ struct RunOptions {
     std::int64_t maxSteps = 0;   // 0: no limit; every fired instance is a step
     std::int64_t maxRounds = 0;  // 0: no limit
     double timeoutSeconds = 0;   // 0: no limit
+    /// Rounds in a row in which only transfers fire before the run stops as "no-progress"
+    /// (an allocator shuffling resources forever); 0: 1000 + 20 D^2 for a board of extents
+    /// summing to D, far above the diffusion time of the random allocator across the board.
+    std::int64_t maxIdleRounds = 0;
 };
 
 struct RunStats {
@@ -32,7 +36,7 @@ struct RunStats {
     std::int64_t evaluations = 0;  // rule instances tested against the decision tables
     double seconds = 0;
     bool complete = false;  // the system's goal was reached
-    std::string stopped;    // why the run ended: "goal", "stuck", "max-steps", "max-rounds", "timeout", "monitor"
+    std::string stopped;    // why the run ended: "goal", "stuck", "no-progress", "max-steps", "max-rounds", "timeout", "monitor"
 };
 
 /// Hooks for output while a plan runs; every hook is optional.

@@ -103,6 +103,18 @@ TEST_CASE("tight mass: every allocator completes where every target cell must en
             }
 }
 
+TEST_CASE("a run where only transfers fire for too long stops as no-progress, it does not hang") {
+    PlannerSystem sys("planner_general1", 2);
+    const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape("box:8x4"), planner::parseShape("box:4x8"), std::nullopt, 1);
+    auto allocator = planner::makeAllocator("random", p, 1);
+    planner::RunOptions options;
+    options.maxIdleRounds = 1;  // two transfer-only rounds in a row end it
+    planner::Execution ex(p, *allocator, options);
+    const planner::RunStats stats = ex.run();
+    CHECK(stats.stopped == "no-progress");
+    CHECK_FALSE(stats.complete);
+}
+
 TEST_CASE("runs are deterministic for a seed and differ across seeds") {
     PlannerSystem sys("planner_general1", 2);
     const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape("box:8x4"), planner::parseShape("box:4x8"), std::nullopt, 1);
