@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
             if (!general) series["actions"].points.push_back({n, double(s.creations + s.deletions)});
             else {
                 series[job.key].points.push_back({n, double(std::max<std::int64_t>(1, s.transfers))});
-                if (std::string(job.allocator) == "random") series["bound"].points.push_back({n, double(std::max<std::int64_t>(1, r->lowerBound))});
+                if (std::string(job.allocator) == "gradient") series["bound"].points.push_back({n, double(std::max<std::int64_t>(1, r->lowerBound))});
             }
         }
     }
