@@ -93,8 +93,8 @@ public:
         if (from < 0) return false;
         // The heavy resource goes down the creators' field. The light one goes down the
         // destroyers' field only where no creation is in reach: a transfer that brings a D also
-        // takes a C away, and sending C's off from where creations wait cost a third more
-        // transfers on the block experiments.
+        // takes a C away, and sending C's off from where creations wait cost a quarter more
+        // transfers on the block experiments (1.62x against 1.32x of the bound at 2304).
         if (needC_[to] != needC_[from]) return needC_[to] < needC_[from];
         if (needC_[to] != kFar) return false;
         return needD_[from] < needD_[to];
