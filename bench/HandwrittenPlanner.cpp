@@ -8,33 +8,18 @@
 
 namespace holon::bench {
 
-namespace {
-planner::Vec lowest(const planner::Shape& a, const planner::Shape& b) {
-    planner::Vec lo = a.cells[0];
-    for (const planner::Shape* s : {&a, &b})
-        for (planner::Vec v : s->cells) lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
-    return lo;
-}
-planner::Vec extentOf(const planner::Shape& a, const planner::Shape& b) {
-    planner::Vec hi = a.cells[0];
-    for (const planner::Shape* s : {&a, &b})
-        for (planner::Vec v : s->cells) hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
-    return hi - lowest(a, b) + planner::Vec{1, 1, 1};
-}
-}  // namespace
-
-HandwrittenPlanner::HandwrittenPlanner(const rules::Lattice& lattice, const planner::Shape& start, const planner::Shape& target, planner::Vec seed,
-                                       std::uint64_t randomSeed)
-    : board_(lattice, lowest(start, target), extentOf(start, target), 2), degree_(lattice.degree()), random_(randomSeed) {
+HandwrittenPlanner::HandwrittenPlanner(const planner::Problem& problem, std::uint64_t randomSeed)
+    : board_(problem.board->lattice(), problem.board->lower(), problem.board->extent(), 2), degree_(problem.board->lattice().degree()), random_(randomSeed) {
     for (int d = 0; d < degree_; ++d)
         for (int e = 0; e < degree_; ++e)
             if (board_.step(d) == -board_.step(e)) opposite_.push_back(e);
     const auto n = static_cast<std::size_t>(board_.size());
     cells_.assign(n, 0), enabled_.assign(n, 0), listed_.assign(n, 0);
     readMark_.assign(n, 0), writeMark_.assign(n, 0), stamp_.assign(n, 0);
-    for (planner::Vec v : target.cells) cells_[board_.index(v)] |= 1 << 5;
-    for (planner::Vec v : start.cells) cells_[board_.index(v)] |= U;
-    cells_[board_.index(seed)] = static_cast<std::uint8_t>((cells_[board_.index(seed)] & ~3) | F);
+    for (planner::Vec v : problem.target.cells) cells_[board_.index(v)] |= 1 << 5;
+    for (planner::Vec v : problem.start.cells) cells_[board_.index(v)] |= U;
+    const std::int64_t seed = board_.index(problem.seed);
+    cells_[seed] = static_cast<std::uint8_t>((cells_[seed] & ~3) | F);
     for (std::int64_t i = 0; i < board_.size(); ++i) {
         offGoal_ += !atGoal(cells_[i]);
         if (kind(cells_[i]) != Empty) recheck(i);

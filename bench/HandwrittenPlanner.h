@@ -6,9 +6,8 @@
 // one writes nor write what it reads; anchors within one step of a changed cell re-evaluated), so
 // the comparison measures decision tables against hand-coded rules, nothing else.
 
-#include "planner/Board.h"
+#include "planner/Problem.h"
 #include "planner/Random.h"
-#include "planner/Shape.h"
 
 #include <cstdint>
 #include <vector>
@@ -17,8 +16,9 @@ namespace holon::bench {
 
 class HandwrittenPlanner {
 public:
-    /// Lays out start and target on a padded box; the seed is in both and starts F.
-    HandwrittenPlanner(const rules::Lattice& lattice, const planner::Shape& start, const planner::Shape& target, planner::Vec seed, std::uint64_t randomSeed);
+    /// Lays out the problem's start, target and seed (F) on its bounding box with its own padding;
+    /// nothing of the problem's compiled rules is used.
+    HandwrittenPlanner(const planner::Problem& problem, std::uint64_t randomSeed);
     /// Runs synchronous rounds until the goal (true) or until nothing is enabled (false).
     bool run();
     std::int64_t rounds() const { return rounds_; }

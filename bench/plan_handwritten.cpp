@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
                 ok = ok && s.complete;
             };
             auto runHand = [&] {
-                bench::HandwrittenPlanner hw(r->model->lattice(), p.start, p.target, p.seed, 1 + k);
+                bench::HandwrittenPlanner hw(p, 1 + k);
                 const auto begin = std::chrono::steady_clock::now();
                 ok = hw.run() && ok;
                 hand.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());

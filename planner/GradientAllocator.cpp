@@ -47,7 +47,7 @@ public:
     }
     std::string name() const override { return "gradient"; }
 
-    bool update(const Execution& ex) override {
+    bool update(const Execution& ex, bool stalled) override {
         const auto& cells = ex.cells();
         const BoxEngine& engine = ex.engine();
         const Board& board = *problem_->board;
@@ -77,12 +77,11 @@ public:
         // A round in which nothing fired although the fields had settled: the fields see no way
         // forward (a destroyer may need a D that only a detour brings), so the paper's randomizer
         // moves resources until the next creation or deletion.
-        const RunStats& st = ex.stats();
-        const std::int64_t motions = st.creations + st.deletions;
+        const std::int64_t motions = ex.stats().creations + ex.stats().deletions;
         if (motions != motionsAtUpdate_) anyTransfer_ = false;
-        if (st.steps == stepsAtUpdate_ && !moved && !anyTransfer_) anyTransfer_ = moved = true;
-        else if (anyTransfer_) moved = fallback_->update(ex) || moved;
-        stepsAtUpdate_ = st.steps, motionsAtUpdate_ = motions;
+        if (stalled && !moved && !anyTransfer_) anyTransfer_ = moved = true;
+        else if (anyTransfer_) moved = fallback_->update(ex, stalled) || moved;
+        motionsAtUpdate_ = motions;
         return moved;
     }
 
@@ -120,7 +119,7 @@ private:
     std::vector<int> motions_;
     std::vector<std::uint32_t> needC_, needD_;
     std::int64_t occupied_ = 0;
-    std::int64_t stepsAtUpdate_ = -1, motionsAtUpdate_ = 0;
+    std::int64_t motionsAtUpdate_ = 0;
     bool anyTransfer_ = false;
     std::unique_ptr<Allocator> fallback_;
 };
