@@ -17,10 +17,9 @@ class Allocator {
 public:
     virtual ~Allocator() = default;
     virtual std::string name() const = 0;
-    /// Called once per round before instances are chosen, and once more (`stalled`) when a round
-    /// fired nothing; returns whether the allocator's own state changed (a stalled round after
-    /// which it did not ends the run as stuck).
-    virtual bool update(const Execution&, bool /*stalled*/) { return false; }
+    /// Called once per round before instances are chosen; returns whether the allocator's own
+    /// state changed (a round that fires nothing and changes no allocator state ends the run).
+    virtual bool update(const Execution&) { return false; }
     /// Whether this enabled transfer instance should fire now.
     virtual bool wants(const Execution&, std::int64_t anchor, int shape) const = 0;
     /// Told just before a transfer instance fires.

@@ -218,12 +218,12 @@ RunStats Execution::run(const RunObserver& observer) {
         bool fired;
         if (options_.scheduler == Scheduler::Sync) {
             ++stats_.rounds;
-            allocatorMoved = allocator_->update(*this, false);
+            allocatorMoved = allocator_->update(*this);
             fired = syncRound(observer, changed);
         } else {
             // An asynchronous round: as many steps as there were candidates when it began.
             if (++sinceUpdate >= updateEvery) {
-                allocatorMoved = allocator_->update(*this, false);
+                allocatorMoved = allocator_->update(*this);
                 sinceUpdate = 0;
                 updateEvery = std::max<std::int64_t>(1, static_cast<std::int64_t>(plannerList_.size() + transferList_.size()));
                 ++stats_.rounds;
@@ -233,7 +233,7 @@ RunStats Execution::run(const RunObserver& observer) {
         // Nothing fired: let the allocator look again before calling the run stuck.
         if (!fired && !allocatorMoved) {
             sinceUpdate = 0;
-            allocatorMoved = allocator_->update(*this, true);
+            allocatorMoved = allocator_->update(*this);
         }
         if (!fired && !allocatorMoved) {
             stats_.stopped = "stuck";

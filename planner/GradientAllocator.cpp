@@ -47,7 +47,7 @@ public:
     }
     std::string name() const override { return "gradient"; }
 
-    bool update(const Execution& ex, bool stalled) override {
+    bool update(const Execution& ex) override {
         const auto& cells = ex.cells();
         const BoxEngine& engine = ex.engine();
         const Board& board = *problem_->board;
@@ -77,11 +77,12 @@ public:
         // A round in which nothing fired although the fields had settled: the fields see no way
         // forward (a destroyer may need a D that only a detour brings), so the paper's randomizer
         // moves resources until the next creation or deletion.
-        const std::int64_t motions = ex.stats().creations + ex.stats().deletions;
+        const RunStats& st = ex.stats();
+        const std::int64_t motions = st.creations + st.deletions;
         if (motions != motionsAtUpdate_) anyTransfer_ = false;
-        if (stalled && !moved && !anyTransfer_) anyTransfer_ = moved = true;
-        else if (anyTransfer_) moved = fallback_->update(ex, stalled) || moved;
-        motionsAtUpdate_ = motions;
+        if (st.steps == stepsAtUpdate_ && !moved && !anyTransfer_) anyTransfer_ = moved = true;
+        else if (anyTransfer_) moved = fallback_->update(ex) || moved;
+        stepsAtUpdate_ = st.steps, motionsAtUpdate_ = motions;
         return moved;
     }
 
@@ -119,7 +120,7 @@ private:
     std::vector<int> motions_;
     std::vector<std::uint32_t> needC_, needD_;
     std::int64_t occupied_ = 0;
-    std::int64_t motionsAtUpdate_ = 0;
+    std::int64_t stepsAtUpdate_ = -1, motionsAtUpdate_ = 0;
     bool anyTransfer_ = false;
     std::unique_ptr<Allocator> fallback_;
 };

@@ -35,9 +35,12 @@ public:
     }
     std::string name() const override { return "optimal"; }
 
-    bool update(const Execution& ex, bool stalled) override {
-        const bool fieldsMoved = fallback_->update(ex, stalled);
-        const std::int64_t motions = ex.stats().creations + ex.stats().deletions;
+    bool update(const Execution& ex) override {
+        const bool fieldsMoved = fallback_->update(ex);
+        const RunStats& st = ex.stats();
+        const bool stalled = st.steps == stepsAtUpdate_;
+        const std::int64_t motions = st.creations + st.deletions;
+        stepsAtUpdate_ = st.steps;
         if (motions != motionsAtSolve_) falling_ = false;
         if (!stalled && motions - motionsAtSolve_ < resolveEvery_) return fieldsMoved;
         motionsAtSolve_ = motions;
@@ -81,7 +84,7 @@ private:
     /// The flow stalled: until the next motion the gradient allocator's transfers fire too (and,
     /// when it stalls in turn, any transfer).
     bool falling_ = false;
-    std::int64_t motionsAtSolve_ = 0;
+    std::int64_t stepsAtUpdate_ = -1, motionsAtSolve_ = 0;
     std::int64_t resolveEvery_;
 };
 

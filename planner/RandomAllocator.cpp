@@ -22,7 +22,7 @@ public:
         return yes;
     }
     /// A round whose coins all came up tails is not stuck: the next round flips again.
-    bool update(const Execution&, bool) override { return std::exchange(declined_, false); }
+    bool update(const Execution&) override { return std::exchange(declined_, false); }
 
 private:
     mutable Random random_;
