@@ -38,6 +38,9 @@ public:
     bool update(const Execution& ex) override {
         const bool fieldsMoved = fallback_->update(ex);
         const RunStats& st = ex.stats();
+        // No step since the previous update: true on the Execution's retry after an empty round and
+        // again on the next round's update, so a stall both hands over to the gradient and solves
+        // the flow once more (told only of the retry, optimal took 40x the rounds on general2).
         const bool stalled = st.steps == stepsAtUpdate_;
         const std::int64_t motions = st.creations + st.deletions;
         stepsAtUpdate_ = st.steps;
