@@ -13,5 +13,6 @@ Run addRulesCommand(CLI::App& app);
 Run addCheckCommand(CLI::App& app);
 Run addVerifyCommand(CLI::App& app);
 Run addPlanCommand(CLI::App& app);
+Run addHexCommand(CLI::App& app);
 
 }  // namespace holon::cli

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     add(holon::cli::addCheckCommand);
     add(holon::cli::addVerifyCommand);
     add(holon::cli::addPlanCommand);
+    add(holon::cli::addHexCommand);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

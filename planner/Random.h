@@ -3,6 +3,7 @@
 // given --seed on every platform (std:: distributions are implementation-defined).
 
 #include <cstdint>
+#include <utility>
 
 namespace holon::planner {
 

@@ -1,0 +1,150 @@
+// `holon hex --from SHAPE --to SHAPE --size N`: seed 003's hole-motion sculpting on an N x N hex
+// array, repeated --reps times with different seeds (in parallel on the machine's cores), reported
+// as the paper's Table I row: modules, maximum compliance (mean, std), islands.
+
+#include "cli/Commands.h"
+#include "planner/hex/SculptRun.h"
+#include "rules/Error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <mutex>
+#include <thread>
+#include <unistd.h>
+
+namespace holon::cli {
+
+namespace {
+
+struct HexArgs {
+    planner::hex::SculptSetup setup;
+    int reps = 1, threads = 0;
+    std::uint64_t seed = 1;
+    std::string out;
+    bool json = false, quiet = false;
+};
+
+struct Stat {
+    double mean = 0, std = 0;
+};
+
+Stat stat(const std::vector<planner::hex::SculptResult>& runs, double (*field)(const planner::hex::SculptResult&)) {
+    Stat s;
+    for (const auto& r : runs) s.mean += field(r);
+    s.mean /= runs.size();
+    for (const auto& r : runs) s.std += (field(r) - s.mean) * (field(r) - s.mean);
+    s.std = runs.size() > 1 ? std::sqrt(s.std / (runs.size() - 1)) : 0.0;
+    return s;
+}
+
+void writeOutputs(const HexArgs& a, const std::vector<planner::hex::SculptResult>& runs) {
+    namespace fs = std::filesystem;
+    fs::create_directories(a.out);
+    std::ofstream csv(fs::path(a.out) / "series.csv");
+    csv << "step";
+    for (std::size_t r = 0; r < runs.size(); ++r) csv << ",completeness" << r << ",stability" << r << ",compliance" << r;
+    csv << '\n';
+    for (int t = 0; t < a.setup.steps; ++t) {
+        csv << t + 1;
+        for (const auto& run : runs) csv << ',' << run.series[t].completeness << ',' << run.series[t].stability << ',' << run.series[t].compliance;
+        csv << '\n';
+    }
+}
+
+int run(HexArgs a) {
+    if (a.reps < 1 || a.reps > 1000) throw InputError("--reps " + std::to_string(a.reps) + ": choose 1 to 1000");
+    if (a.setup.steps < 1) throw InputError("--steps must be positive");
+    std::vector<planner::hex::SculptResult> runs(a.reps);
+    std::atomic<int> next{0}, done{0};
+    std::mutex io;
+    const bool bar = !a.quiet && !a.json && isatty(STDERR_FILENO);
+    std::string firstError;
+    auto worker = [&] {
+        for (int r; (r = next++) < a.reps;) {
+            planner::hex::SculptSetup setup = a.setup;
+            setup.options.seed = a.seed + r;
+            const std::string svgDir = a.out.empty() ? "" : a.out;
+            const int last = setup.steps;
+            try {
+                runs[r] = planner::hex::runSculpt(setup, [&](const planner::hex::HoleSculptor& s) {
+                    if (!svgDir.empty() && r == 0 && (s.time() == 1 || s.time() == last / 10 || s.time() == last)) {
+                        std::filesystem::create_directories(svgDir);
+                        std::ofstream(std::filesystem::path(svgDir) / ("frame_" + std::to_string(s.time()) + ".svg")) << planner::hex::sculptSvg(s);
+                    }
+                });
+            } catch (const std::exception& e) {
+                std::lock_guard lock(io);
+                firstError = e.what();
+                next = a.reps;
+                return;
+            }
+            if (bar) {
+                std::lock_guard lock(io);
+                std::cerr << "\r[" << ++done << "/" << a.reps << " runs]" << std::flush;
+            }
+        }
+    };
+    const int threads = std::max(1, std::min(a.reps, a.threads > 0 ? a.threads : static_cast<int>(std::thread::hardware_concurrency())));
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+    for (auto& t : pool) t.join();
+    if (bar) std::cerr << '\n';
+    if (!firstError.empty()) throw InputError(firstError);
+
+    const Stat compliance = stat(runs, [](const auto& r) { return r.maxCompliance; });
+    const Stat completeness = stat(runs, [](const auto& r) { return r.maxCompleteness; });
+    const Stat stability = stat(runs, [](const auto& r) { return r.maxStability; });
+    const Stat islands = stat(runs, [](const auto& r) { return static_cast<double>(r.islands); });
+    const Stat seconds = stat(runs, [](const auto& r) { return r.seconds; });
+    const Stat modules = stat(runs, [](const auto& r) { return static_cast<double>(r.modules); });
+    if (!a.out.empty()) writeOutputs(a, runs);
+    if (a.json) {
+        auto js = [](Stat s) { return nlohmann::json{{"mean", s.mean}, {"std", s.std}}; };
+        nlohmann::json j{{"from", a.setup.from}, {"to", a.setup.to}, {"size", a.setup.size}, {"reps", a.reps},
+                         {"modules", js(modules)}, {"steps", a.setup.steps}, {"tri_regions", runs[0].triRegions},
+                         {"completeness", js(completeness)}, {"stability", js(stability)}, {"compliance", js(compliance)},
+                         {"islands", js(islands)}, {"seconds", js(seconds)}, {"keep_connected", a.setup.options.keepConnected}};
+        std::cout << j.dump() << '\n';
+    } else {
+        std::cout << std::fixed << std::setprecision(2) << a.setup.from << " -> " << a.setup.to << " on " << a.setup.size << "x" << a.setup.size
+                  << ", " << a.reps << " reps of " << a.setup.steps << " timesteps, " << runs[0].triRegions << " tri-regions"
+                  << (a.setup.options.keepConnected ? ", connectivity-preserving" : "") << '\n'
+                  << "  modules " << std::setprecision(0) << modules.mean << std::setprecision(2) << "\n  max compliance " << 100 * compliance.mean
+                  << "% (std " << 100 * compliance.std << ")\n  max completeness " << 100 * completeness.mean << "% (std " << 100 * completeness.std
+                  << ")\n  max stability " << 100 * stability.mean << "% (std " << 100 * stability.std << ")\n  islands " << islands.mean
+                  << " modules (std " << islands.std << ")\n  seconds per run " << seconds.mean << '\n'
+                  << "  first run: " << runs[0].counts.created << " holes created, " << runs[0].counts.deleted << " deleted, " << runs[0].startHoles
+                  << " at start, " << runs[0].endHoles << " at end; " << runs[0].counts.collapsed << " collapses, " << runs[0].counts.steered << " steered\n";
+    }
+    return 0;
+}
+
+}  // namespace
+
+Run addHexCommand(CLI::App& app) {
+    auto a = std::make_shared<HexArgs>();
+    CLI::App* sub = app.add_subcommand("hex", "sculpt a hex-lattice ensemble by hole motion (seed 003)");
+    sub->add_option("--from", a->setup.from, "source geometry: square, T, rectangle, circle, or a picture file")->required();
+    sub->add_option("--to", a->setup.to, "target geometry: square, T, rectangle, circle, or a picture file")->required();
+    sub->add_option("--size", a->setup.size, "lattice points per side of the array")->required();
+    sub->add_option("--reps", a->reps, "repetitions with seeds seed, seed+1, ...");
+    sub->add_option("--steps", a->setup.steps, "timesteps per run");
+    sub->add_option("--seed", a->seed, "random seed of the first repetition");
+    sub->add_option("--tri", a->setup.triFraction, "tri-region edge as a fraction of the array side");
+    sub->add_option("--decay", a->setup.options.decay, "c_decay of the temperature test");
+    sub->add_option("--hole-density", a->setup.options.holeDensity, "initial holes per source lattice point");
+    sub->add_flag("--keep-connected", a->setup.options.keepConnected, "refuse deletions and collapses that split the mass locally");
+    sub->add_option("--threads", a->threads, "parallel runs (default: the machine's cores)");
+    sub->add_option("--out", a->out, "directory for series.csv and SVG frames of the first run");
+    sub->add_flag("--json", a->json, "print a JSON summary");
+    sub->add_flag("--quiet", a->quiet, "no progress bar");
+    return [a] { return run(*a); };
+}
+
+}  // namespace holon::cli

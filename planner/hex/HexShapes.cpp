@@ -1,0 +1,99 @@
+// The four geometries of seed 003 Fig. 8. The paper does not give their dimensions; ours have the
+// same area (a square of side a = 0.66 of the frame's width, the shorter side, about 60,000 points at N = 400, the
+// paper's "approximately 60,000 modules"), so that a plan between any two needs no net change of
+// volume: the T (height a) has a bar 1.5a wide and 0.3a thick over a stem 0.79a wide, the
+// rectangle is 1.5a by a/1.5, the circle has radius a/sqrt(pi).
+
+#include "planner/hex/HexShapes.h"
+
+#include "rules/Error.h"
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+
+namespace holon::planner::hex {
+
+namespace {
+
+using Inside = std::function<bool(double, double)>;  // relative to the array centre
+
+Inside namedShape(const std::string& name, double a) {
+    if (name == "square") return [a](double x, double y) { return std::abs(x) <= a / 2 && std::abs(y) <= a / 2; };
+    if (name == "T") {
+        const double bar = 0.3 * a, stem = (1.0 - 1.5 * 0.3) / 0.7 * a;  // equal area: 1.5·0.3 + 0.7·stem = 1
+        return [a, bar, stem](double x, double y) {
+            if (std::abs(y) > a / 2) return false;
+            return y >= a / 2 - bar ? std::abs(x) <= 0.75 * a : std::abs(x) <= stem / 2;
+        };
+    }
+    if (name == "rectangle") return [a](double x, double y) { return std::abs(x) <= 0.75 * a && std::abs(y) <= a / 3; };
+    if (name == "circle") {
+        const double r = a / std::sqrt(M_PI);
+        return [r](double x, double y) { return x * x + y * y <= r * r; };
+    }
+    return nullptr;
+}
+
+std::vector<std::uint8_t> readPicture(const HexArray& array, const std::string& path, const std::string& role) {
+    std::ifstream in(path);
+    if (!in) throw InputError(role + " '" + path + "': not square, T, rectangle or circle, and no such file");
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty()) lines.push_back(line);
+    const int n = array.n();
+    if (static_cast<int>(lines.size()) != n)
+        throw InputError(role + " '" + path + "': " + std::to_string(lines.size()) + " rows, but --size is " + std::to_string(n) + "; draw N rows of N characters");
+    std::vector<std::uint8_t> shape(array.size(), 0);
+    for (int r = 0; r < n; ++r) {
+        if (static_cast<int>(lines[r].size()) < n)
+            throw InputError(path + ":" + std::to_string(r + 1) + ": " + std::to_string(lines[r].size()) + " characters, expected " + std::to_string(n));
+        for (int i = 0; i < n; ++i) shape[array.pictureIndex(r, i)] = lines[r][i] == '#';
+    }
+    return shape;
+}
+
+bool connected(const HexArray& array, const std::vector<std::uint8_t>& shape) {
+    std::vector<std::uint8_t> seen(shape.size(), 0);
+    std::vector<std::int64_t> stack;
+    std::int64_t total = 0, reached = 0;
+    for (std::int64_t i : array.points())
+        if (shape[i]) {
+            ++total;
+            if (stack.empty() && !reached) stack.push_back(i), seen[i] = 1;
+            while (!stack.empty()) {
+                const std::int64_t c = stack.back();
+                stack.pop_back();
+                ++reached;
+                for (int d = 0; d < 6; ++d) {
+                    const std::int64_t m = c + array.step(d);
+                    if (shape[m] && !seen[m]) seen[m] = 1, stack.push_back(m);
+                }
+            }
+        }
+    return reached == total;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> sculptShape(const HexArray& array, const std::string& spec, const std::string& role) {
+    std::vector<std::uint8_t> shape;
+    const double a = 0.66 * array.frameWidth(), cx = array.frameWidth() / 2, cy = array.frameHeight() / 2;
+    if (Inside inside = namedShape(spec, a)) {
+        shape.assign(array.size(), 0);
+        for (std::int64_t i : array.points()) shape[i] = inside(array.frameX(i) - cx, array.frameY(i) - cy);
+    } else {
+        shape = readPicture(array, spec, role);
+    }
+    if (filledCount(array, shape) == 0) throw InputError(role + " '" + spec + "' is empty at --size " + std::to_string(array.n()));
+    if (!connected(array, shape)) throw InputError(role + " '" + spec + "' is not connected; holes sculpt one connected mass");
+    return shape;
+}
+
+std::int64_t filledCount(const HexArray& array, const std::vector<std::uint8_t>& shape) {
+    std::int64_t count = 0;
+    for (std::int64_t i : array.points()) count += shape[i];
+    return count;
+}
+
+}  // namespace holon::planner::hex

@@ -1,0 +1,94 @@
+#pragma once
+// Hole-motion shape sculpting, seed 003 §IV: holes (a missing module and its six neighbours,
+// guarded by a 12-module shepherd group) wander through a hex-lattice ensemble; growth nodes on
+// the surface create holes, deletion nodes consume them, and gravity-driven column collapse
+// smooths the surface. One object holds the ensemble and advances it one timestep at a time.
+
+#include "planner/Random.h"
+#include "planner/hex/HexArray.h"
+#include "planner/hex/TriRegions.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace holon::planner::hex {
+
+struct SculptOptions {
+    double decay = 25;            // c_decay of the temperature test (§IV-E), in timesteps per diameter
+    double holeDensity = 0.01;    // initial holes per lattice point of the source
+    int startWindow = 100;        // initial holes start moving at a uniformly random timestep below this
+    bool keepConnected = false;   // holon's improvement: refuse deletions and collapses that split the mass locally
+    std::uint64_t seed = 1;
+};
+
+struct SculptCounts {
+    std::int64_t created = 0, deleted = 0, steered = 0, collapsed = 0, holeMoves = 0, refusedSplits = 0;
+};
+
+class HoleSculptor {
+public:
+    HoleSculptor(const HexArray& array, const std::vector<std::uint8_t>& source, const std::vector<std::uint8_t>& target,
+                 const TriPlan& plan, const SculptOptions& options);
+
+    /// One timestep of §IV-C: holes move, creation/deletion regions activate, smoothing.
+    void step();
+
+    int time() const { return time_; }
+    std::int64_t modules() const { return modules_; }
+    std::int64_t holes() const { return liveHoles_; }
+    const SculptCounts& counts() const { return counts_; }
+    /// §V-A's metrics; a lattice point counts as filled when it holds a module or belongs to a hole.
+    double completeness() const;
+    double stability() const;
+    double compliance() const;
+    /// Modules outside the largest connected mass (modules and hole cells, 6-adjacency).
+    std::int64_t islands() const;
+    bool module(std::int64_t i) const { return module_[i] != 0; }
+    bool holeCell(std::int64_t i) const { return hole_[i] >= 0; }
+    const HexArray& array() const { return *array_; }
+    const std::vector<std::uint8_t>& target() const { return *target_; }
+
+private:
+    struct Hole {
+        std::int64_t centre = 0;
+        int direction = 0, start = 0;
+        bool alive = false;
+    };
+    void set(std::int64_t i, bool module, std::int32_t hole);
+    bool filled(std::int64_t i) const { return module_[i] || hole_[i] >= 0; }
+    bool onSurface(std::int64_t k) const;
+    void placeInitialHoles(Random& random);
+    bool canMove(int id, int d) const;
+    void move(int id, int d);
+    void activate(std::int64_t k);
+    void tryCreate(std::int64_t k);
+    void tryDelete(std::int64_t k, int gravity);
+    void smooth(std::int64_t k, int gravity);
+    int towardSurface(std::int64_t centre, std::int64_t node, int up) const;
+    std::vector<std::int64_t> nearestTheSurface(std::int64_t centre, int toward) const;
+    bool splitsLocally(std::int64_t centre, const std::vector<std::int64_t>& emptied, const std::vector<std::int64_t>& filledNow) const;
+
+    const HexArray* array_;
+    const std::vector<std::uint8_t>* target_;
+    const TriPlan* plan_;
+    SculptOptions options_;
+    Random random_;
+    int time_ = 0;
+    std::vector<std::uint8_t> module_, class_;  // class: 0 stays filled, 1 stays empty, 2 to fill, 3 to empty
+    std::vector<std::int32_t> hole_;            // per cell: the hole it belongs to, or -1
+    std::vector<Hole> holesById_;
+    std::vector<std::int64_t> activePoints_;    // lattice points inside active tri-regions, shuffled once
+    std::vector<double> nearPerimeter_;         // d_near: hops to the target's perimeter
+    double maxDistance_ = 1;                    // d_max
+    std::int64_t classSize_[4] = {}, classCorrect_[4] = {};
+    std::int64_t modules_ = 0, liveHoles_ = 0;
+    SculptCounts counts_;
+    // Offsets (index steps): disk of radius 1 and 2, ring 2, radius-3 disk, and per direction the
+    // leading cells a move empties, the trailing cells it fills, the rest of the new shepherd
+    // group, and the shepherds ordered by how far they lie toward the direction.
+    std::vector<std::int64_t> disk1_, ring2_, disk2_, disk3_;
+    std::vector<int> distance3_;  // hops of each disk3_ cell from the centre
+    std::vector<std::int64_t> leading_[6], trailing_[6], newRing_[6], uppermost_[6];
+};
+
+}  // namespace holon::planner::hex

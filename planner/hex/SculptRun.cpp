@@ -1,0 +1,61 @@
+// The experiment loop of seed 003 §V-A and an SVG view of an ensemble (as the paper's Fig. 10
+// frames): modules grey (black outside the target), hole cells pale blue, target points still empty in
+// red.
+
+#include "planner/hex/SculptRun.h"
+
+#include "planner/hex/HexShapes.h"
+
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+
+namespace holon::planner::hex {
+
+SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame) {
+    const auto begin = std::chrono::steady_clock::now();
+    const HexArray array(setup.size);
+    const auto source = sculptShape(array, setup.from, "--from"), target = sculptShape(array, setup.to, "--to");
+    const TriPlan plan = planTriRegions(array, source, target, std::max(2.0, setup.triFraction * setup.size));
+    HoleSculptor sculptor(array, source, target, plan, setup.options);
+    SculptResult result;
+    result.modules = sculptor.modules();
+    result.startHoles = sculptor.holes();
+    result.triRegions = static_cast<int>(plan.regions.size());
+    result.series.reserve(setup.steps);
+    for (int t = 0; t < setup.steps; ++t) {
+        sculptor.step();
+        const SculptSample s{static_cast<float>(sculptor.completeness()), static_cast<float>(sculptor.stability()),
+                             static_cast<float>(sculptor.compliance())};
+        result.series.push_back(s);
+        result.maxCompleteness = std::max<double>(result.maxCompleteness, s.completeness);
+        result.maxStability = std::max<double>(result.maxStability, s.stability);
+        result.maxCompliance = std::max<double>(result.maxCompliance, s.compliance);
+        if (frame) frame(sculptor);
+    }
+    result.steps = setup.steps;
+    result.finalCompliance = sculptor.compliance();
+    result.endHoles = sculptor.holes();
+    result.islands = sculptor.islands();
+    result.counts = sculptor.counts();
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    return result;
+}
+
+std::string sculptSvg(const HoleSculptor& sculptor) {
+    const HexArray& array = sculptor.array();
+    const double scale = std::max(1.0, 800.0 / array.n()), r = 0.5 * scale;
+    std::ostringstream svg;
+    svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << (array.frameWidth() + 1) * scale << "' height='" << (array.frameHeight() + 1) * scale
+        << "'>\n<rect width='100%' height='100%' fill='white'/>\n";
+    for (std::int64_t i : array.points()) {
+        const char* fill = sculptor.module(i) ? (sculptor.target()[i] ? "#888" : "#222") : sculptor.holeCell(i) ? "#cde" : sculptor.target()[i] ? "#e44" : nullptr;
+        if (!fill) continue;
+        svg << "<circle cx='" << (array.frameX(i) + 0.5) * scale << "' cy='" << (array.frameHeight() - array.frameY(i) + 0.5) * scale << "' r='" << r
+            << "' fill='" << fill << "'/>\n";
+    }
+    svg << "</svg>\n";
+    return svg.str();
+}
+
+}  // namespace holon::planner::hex

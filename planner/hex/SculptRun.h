@@ -1,0 +1,38 @@
+#pragma once
+// One sculpting experiment of seed 003 §V: a source and target geometry on an N x N hex array,
+// run for a number of timesteps, with the three metrics of §V-A recorded every timestep.
+
+#include "planner/hex/HoleSculptor.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace holon::planner::hex {
+
+struct SculptSample {
+    float completeness, stability, compliance;
+};
+
+struct SculptResult {
+    std::int64_t modules = 0, startHoles = 0, endHoles = 0, islands = 0;
+    int steps = 0, triRegions = 0;
+    double maxCompleteness = 0, maxStability = 0, maxCompliance = 0, finalCompliance = 0, seconds = 0;
+    SculptCounts counts;
+    std::vector<SculptSample> series;  // one sample per timestep, after it
+};
+
+struct SculptSetup {
+    std::string from = "square", to = "T";
+    int size = 100, steps = 10000;
+    double triFraction = 0.075;  // tri-region edge as a fraction of the array side
+    SculptOptions options;
+};
+
+/// Runs one experiment. `frame(t, sculptor)` is called after every timestep (may be empty).
+SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame = {});
+
+/// An SVG picture of the ensemble: modules, hole cells, and the target's outline points left empty.
+std::string sculptSvg(const HoleSculptor& sculptor);
+
+}  // namespace holon::planner::hex
