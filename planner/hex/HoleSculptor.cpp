@@ -120,14 +120,19 @@ bool HoleSculptor::canMove(int id, int d) const {
     for (std::int64_t o : leading_[d]) {
         const std::int64_t i = c + o;
         if (!array_->inside(i) || !module_[i]) return false;
-        for (int e = 0; e < 6; ++e) {  // a module next to another hole is one of its shepherds
-            const std::int32_t h = hole_[i + array_->step(e)];
-            if (h >= 0 && h != id) return false;
-        }
+        if (shepherdsAnother(i, id)) return false;
     }
     for (std::int64_t o : newRing_[d])
         if (!array_->inside(c + o) || !module_[c + o]) return false;
     return true;
+}
+
+bool HoleSculptor::shepherdsAnother(std::int64_t i, int id) const {
+    for (int e = 0; e < 6; ++e) {  // a module next to a hole's cell is one of its shepherds
+        const std::int32_t h = hole_[i + array_->step(e)];
+        if (h >= 0 && h != id) return true;
+    }
+    return false;
 }
 
 void HoleSculptor::move(int id, int d) {
@@ -223,7 +228,8 @@ void HoleSculptor::tryDelete(std::int64_t k, int gravity) {
     // longer favour the extremities over a 10,000-step run as §IV-B says it does.
     const double p = 1.0 + std::log(nearPerimeter_[k] / std::max(maxDistance_ - time_ / options_.decay, 1.0));
     if (static_cast<double>(random_.next() >> 11) * 0x1p-53 >= p) return;
-    std::vector<std::int64_t> emptied = nearestTheSurface(c, towardSurface(c, k, up)), filledNow;
+    std::vector<std::int64_t> emptied = nearestTheSurface(id, towardSurface(c, k, up)), filledNow;
+    if (emptied.empty()) return;
     if (options_.keepConnected && splitsLocally(c, emptied, filledNow)) {
         ++counts_.refusedSplits;
         return;
@@ -235,14 +241,17 @@ void HoleSculptor::tryDelete(std::int64_t k, int gravity) {
 }
 
 // Choice: "the portion of the hole's shepherd group closest to the perimeter" is the 7 shepherds
-// fewest hops from an empty cell that is not a hole cell, ties broken toward the deletion node.
+// fewest hops from an empty cell that is not a hole cell, ties broken toward the deletion node;
+// shepherds shared with a neighbouring hole stay (found by the invariant test in HexSculptTest).
 // (Taking the half of the ring facing the node instead empties cells that may be walled in by
 // modules beyond the ring; those bubbles become new surface inside the mass and, measured, turn
 // deletion regions into a sponge.)
-std::vector<std::int64_t> HoleSculptor::nearestTheSurface(std::int64_t centre, int toward) const {
+std::vector<std::int64_t> HoleSculptor::nearestTheSurface(int id, int toward) const {
     std::vector<std::pair<int, int>> rank;  // (hops to the outside, position in uppermost_[toward])
+    const std::int64_t centre = holesById_[id].centre;
     const auto& order = uppermost_[toward];
     for (int j = 0; j < static_cast<int>(order.size()); ++j) {
+        if (shepherdsAnother(centre + order[j], id)) continue;  // shared with a neighbouring hole: stays
         int hops = 4;
         for (std::size_t e = 0; e < disk3_.size(); ++e) {
             const std::int64_t i = centre + order[j] + disk3_[e];
@@ -250,6 +259,7 @@ std::vector<std::int64_t> HoleSculptor::nearestTheSurface(std::int64_t centre, i
         }
         rank.emplace_back(hops, j);
     }
+    if (rank.size() < 7) return {};
     std::stable_sort(rank.begin(), rank.end());
     std::vector<std::int64_t> out;
     for (int j = 0; j < 7; ++j) out.push_back(centre + order[rank[j].second]);
@@ -353,6 +363,13 @@ bool HoleSculptor::splitsLocally(std::int64_t centre, const std::vector<std::int
         return count;
     };
     return pieces(true) > pieces(false);
+}
+
+std::vector<std::int64_t> HoleSculptor::holeCentres() const {
+    std::vector<std::int64_t> out;
+    for (const Hole& h : holesById_)
+        if (h.alive) out.push_back(h.centre);
+    return out;
 }
 
 double HoleSculptor::completeness() const {

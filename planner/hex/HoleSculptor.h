@@ -44,6 +44,8 @@ public:
     /// Modules outside the largest connected mass (modules and hole cells, 6-adjacency).
     std::int64_t islands() const;
     bool module(std::int64_t i) const { return module_[i] != 0; }
+    /// Centres of the holes alive now.
+    std::vector<std::int64_t> holeCentres() const;
     bool holeCell(std::int64_t i) const { return hole_[i] >= 0; }
     const HexArray& array() const { return *array_; }
     const std::vector<std::uint8_t>& target() const { return *target_; }
@@ -65,7 +67,8 @@ private:
     void tryDelete(std::int64_t k, int gravity);
     void smooth(std::int64_t k, int gravity);
     int towardSurface(std::int64_t centre, std::int64_t node, int up) const;
-    std::vector<std::int64_t> nearestTheSurface(std::int64_t centre, int toward) const;
+    std::vector<std::int64_t> nearestTheSurface(int id, int toward) const;
+    bool shepherdsAnother(std::int64_t i, int id) const;
     bool splitsLocally(std::int64_t centre, const std::vector<std::int64_t>& emptied, const std::vector<std::int64_t>& filledNow) const;
 
     const HexArray* array_;

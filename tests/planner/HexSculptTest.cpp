@@ -1,0 +1,96 @@
+// The hex back-end (seed 003): the invariants every local move must keep, checked after every
+// timestep of real runs, and the planner's tri-regions against their definition.
+
+#include "planner/hex/HexShapes.h"
+#include "planner/hex/HoleSculptor.h"
+#include "planner/hex/SculptRun.h"
+#include "rules/Error.h"
+
+#include <doctest/doctest.h>
+
+#include <set>
+
+using namespace holon::planner::hex;
+
+namespace {
+
+/// Every live hole is a centre and its six neighbours, all empty and owned by the hole, inside a
+/// complete shepherd group of 12 modules; no other lattice point is a hole cell.
+void requireHolesIntact(const HoleSculptor& s) {
+    const HexArray& a = s.array();
+    std::set<std::int64_t> holeCells;
+    for (std::int64_t c : s.holeCentres()) {
+        for (holon::planner::Vec v : hexDisk(1)) {
+            const std::int64_t i = c + a.offset(v);
+            REQUIRE(s.holeCell(i));
+            REQUIRE_FALSE(s.module(i));
+            REQUIRE(holeCells.insert(i).second);  // holes never overlap
+        }
+        for (holon::planner::Vec v : hexRing(2)) REQUIRE(s.module(c + a.offset(v)));
+    }
+    for (std::int64_t i : a.points()) REQUIRE(s.holeCell(i) == (holeCells.count(i) == 1));
+}
+
+std::int64_t countModules(const HoleSculptor& s) {
+    std::int64_t n = 0;
+    for (std::int64_t i : s.array().points()) n += s.module(i);
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("every timestep conserves the modules and keeps every hole and its shepherd group intact") {
+    for (const char* plan : {"square T", "T square", "rectangle circle"}) {
+        CAPTURE(plan);
+        const std::string p = plan;
+        const std::string from = p.substr(0, p.find(' ')), to = p.substr(p.find(' ') + 1);
+        for (bool keep : {false, true}) {
+            const HexArray array(60);
+            const auto source = sculptShape(array, from, "--from"), target = sculptShape(array, to, "--to");
+            const TriPlan tri = planTriRegions(array, source, target, 6.0);
+            SculptOptions options;
+            options.keepConnected = keep, options.decay = 5, options.seed = 7;
+            HoleSculptor s(array, source, target, tri, options);
+            const std::int64_t modules = countModules(s);
+            REQUIRE(modules == s.modules());
+            requireHolesIntact(s);
+            for (int t = 0; t < 600; ++t) {
+                s.step();
+                REQUIRE(countModules(s) == modules);
+                requireHolesIntact(s);
+            }
+            // The run did something: holes moved, were created and consumed, columns collapsed.
+            CHECK(s.counts().holeMoves > 1000);
+            CHECK(s.counts().created > 0);
+            CHECK(s.counts().deleted > 0);
+            CHECK(s.counts().collapsed > 0);
+            CHECK(s.completeness() > 0.2);
+        }
+    }
+}
+
+TEST_CASE("tri-regions: growth where filling dominates, every changing point covered") {
+    const HexArray array(80);
+    const auto source = sculptShape(array, "square", "--from"), target = sculptShape(array, "T", "--to");
+    const TriPlan plan = planTriRegions(array, source, target, 8.0);
+    REQUIRE_FALSE(plan.regions.empty());
+    CHECK(plan.gravityFallbacks == 0);
+    for (const TriRegion& r : plan.regions) {
+        CHECK(r.toFill + r.toEmpty > 0);
+        CHECK(r.growth == (r.toFill > r.toEmpty));
+    }
+    for (std::int64_t i : array.points())
+        if (source[i] != target[i]) CHECK(plan.regionOf[i] >= 0);
+}
+
+TEST_CASE("geometries have equal area and bad ones are refused") {
+    const HexArray array(200);
+    const auto square = filledCount(array, sculptShape(array, "square", "--from"));
+    for (const char* name : {"T", "rectangle", "circle"}) {
+        CAPTURE(name);
+        const auto n = filledCount(array, sculptShape(array, name, "--to"));
+        CHECK(std::abs(n - square) < square / 50);
+    }
+    CHECK_THROWS_AS(sculptShape(array, "hexagon", "--to"), holon::InputError);
+    CHECK_THROWS_AS(HexArray(5), holon::InputError);
+}
