@@ -15,6 +15,7 @@
 #include <iomanip>
 #include <iostream>
 #include <mutex>
+#include <sstream>
 #include <thread>
 #include <unistd.h>
 
@@ -43,9 +44,40 @@ Stat stat(const std::vector<planner::hex::SculptResult>& runs, double (*field)(c
     return s;
 }
 
+/// The mean over repetitions of each metric against time, as seed 003 Figs. 9, 11 and 12.
+std::string seriesSvg(const std::vector<planner::hex::SculptResult>& runs, int steps) {
+    const double w = 640, h = 320, left = 40, bottom = 20;
+    std::ostringstream svg;
+    svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << w + left + 10 << "' height='" << h + bottom + 10 << "' font-size='11'>\n"
+        << "<rect width='100%' height='100%' fill='white'/>\n";
+    for (int pct = 0; pct <= 100; pct += 20)
+        svg << "<text x='2' y='" << 5 + h * (1 - pct / 100.0) + 4 << "'>" << pct << "%</text><line x1='" << left << "' x2='" << left + w << "' y1='"
+            << 5 + h * (1 - pct / 100.0) << "' y2='" << 5 + h * (1 - pct / 100.0) << "' stroke='#ddd'/>\n";
+    svg << "<text x='" << left + w - 80 << "' y='" << h + bottom + 5 << "'>" << steps << " timesteps</text>\n";
+    const struct { const char* name; const char* colour; float planner::hex::SculptSample::*field; } metrics[] = {
+        {"completeness", "#1f6fd0", &planner::hex::SculptSample::completeness},
+        {"stability", "#2a9d3a", &planner::hex::SculptSample::stability},
+        {"compliance", "#111", &planner::hex::SculptSample::compliance}};
+    int row = 0;
+    for (const auto& m : metrics) {
+        svg << "<polyline fill='none' stroke='" << m.colour << "' points='";
+        const int stride = std::max(1, steps / 640);
+        for (int t = 0; t < steps; t += stride) {
+            double mean = 0;
+            for (const auto& r : runs) mean += r.series[t].*m.field;
+            mean /= runs.size();
+            svg << left + w * t / steps << ',' << 5 + h * (1 - mean) << ' ';
+        }
+        svg << "'/>\n<text x='" << left + 10 << "' y='" << h - 40 + 14 * row++ << "' fill='" << m.colour << "'>" << m.name << "</text>\n";
+    }
+    svg << "</svg>\n";
+    return svg.str();
+}
+
 void writeOutputs(const HexArgs& a, const std::vector<planner::hex::SculptResult>& runs) {
     namespace fs = std::filesystem;
     fs::create_directories(a.out);
+    std::ofstream(fs::path(a.out) / "series.svg") << seriesSvg(runs, a.setup.steps);
     std::ofstream csv(fs::path(a.out) / "series.csv");
     csv << "step";
     for (std::size_t r = 0; r < runs.size(); ++r) csv << ",completeness" << r << ",stability" << r << ",compliance" << r;
@@ -141,7 +173,7 @@ Run addHexCommand(CLI::App& app) {
     sub->add_option("--hole-density", a->setup.options.holeDensity, "initial holes per source lattice point");
     sub->add_flag("--keep-connected", a->setup.options.keepConnected, "refuse deletions and collapses that split the mass locally");
     sub->add_option("--threads", a->threads, "parallel runs (default: the machine's cores)");
-    sub->add_option("--out", a->out, "directory for series.csv and SVG frames of the first run");
+    sub->add_option("--out", a->out, "directory for series.csv, series.svg (metrics over time) and SVG frames of the first run");
     sub->add_flag("--json", a->json, "print a JSON summary");
     sub->add_flag("--quiet", a->quiet, "no progress bar");
     return [a] { return run(*a); };
