@@ -101,13 +101,12 @@ int run(HexArgs a) {
         for (int r; (r = next++) < a.reps;) {
             planner::hex::SculptSetup setup = a.setup;
             setup.options.seed = a.seed + r;
-            const std::string svgDir = a.out.empty() ? "" : a.out;
             const int last = setup.steps;
             try {
                 runs[r] = planner::hex::runSculpt(setup, [&](const planner::hex::HoleSculptor& s) {
-                    if (!svgDir.empty() && r == 0 && (s.time() == 1 || s.time() == last / 10 || s.time() == last)) {
-                        std::filesystem::create_directories(svgDir);
-                        std::ofstream(std::filesystem::path(svgDir) / ("frame_" + std::to_string(s.time()) + ".svg")) << planner::hex::sculptSvg(s);
+                    if (!a.out.empty() && r == 0 && (s.time() == 1 || s.time() == last / 10 || s.time() == last)) {
+                        std::filesystem::create_directories(a.out);
+                        std::ofstream(std::filesystem::path(a.out) / ("frame_" + std::to_string(s.time()) + ".svg")) << planner::hex::sculptSvg(s);
                     }
                 });
             } catch (const std::exception& e) {

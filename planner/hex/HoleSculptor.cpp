@@ -58,7 +58,7 @@ HoleSculptor::HoleSculptor(const HexArray& array, const std::vector<std::uint8_t
     }
     for (std::int64_t i : array.points())
         if (source[i]) set(i, true, -1);
-    placeInitialHoles(random_);
+    placeInitialHoles();
 
     for (std::int64_t i : array.points())
         if (plan.regionOf[i] >= 0) activePoints_.push_back(i);
@@ -98,19 +98,19 @@ void HoleSculptor::set(std::int64_t i, bool module, std::int32_t hole) {
 
 // Choice: initial holes are dropped at random source points whose radius-2 disk lies in the
 // source, clear of other holes; they start moving at random timesteps below startWindow.
-void HoleSculptor::placeInitialHoles(Random& random) {
+void HoleSculptor::placeInitialHoles() {
     std::vector<std::int64_t> candidates;
     for (std::int64_t i : array_->points())
         if (module_[i]) candidates.push_back(i);
     const auto attempts = static_cast<std::int64_t>(options_.holeDensity * static_cast<double>(candidates.size()));
     for (std::int64_t a = 0; a < attempts; ++a) {
-        const std::int64_t c = candidates[random.below(candidates.size())];
+        const std::int64_t c = candidates[random_.below(candidates.size())];
         bool clear = true;
         for (std::int64_t o : disk2_) clear &= array_->inside(c + o) && module_[c + o];
         if (!clear) continue;
         const int id = static_cast<int>(holesById_.size());
         for (std::int64_t o : disk1_) set(c + o, false, id);
-        holesById_.push_back({c, static_cast<int>(random.below(6)), static_cast<int>(random.below(options_.startWindow)), true});
+        holesById_.push_back({c, static_cast<int>(random_.below(6)), static_cast<int>(random_.below(options_.startWindow)), true});
         ++liveHoles_;
     }
 }

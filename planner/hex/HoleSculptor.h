@@ -59,7 +59,7 @@ private:
     void set(std::int64_t i, bool module, std::int32_t hole);
     bool filled(std::int64_t i) const { return module_[i] || hole_[i] >= 0; }
     bool onSurface(std::int64_t k) const;
-    void placeInitialHoles(Random& random);
+    void placeInitialHoles();
     bool canMove(int id, int d) const;
     void move(int id, int d);
     void activate(std::int64_t k);

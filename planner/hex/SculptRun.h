@@ -29,7 +29,7 @@ struct SculptSetup {
     SculptOptions options;
 };
 
-/// Runs one experiment. `frame(t, sculptor)` is called after every timestep (may be empty).
+/// Runs one experiment. `frame(sculptor)` is called after every timestep (may be empty).
 SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame = {});
 
 /// An SVG picture of the ensemble: modules, hole cells, and the target's outline points left empty.
