@@ -1,0 +1,49 @@
+#pragma once
+// Assembling a structure from Roombots metamodules that walk on a structured floor (seed 001 §IV-A):
+// the paper's decentralised force-field strategies and holon's reservation strategy, simulated in
+// continuous time on the grid-level model, with collisions and deadlocks detected the same way for all.
+
+#include "planner/roombots/CollisionClouds.h"
+#include "planner/roombots/Structures.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace holon::planner::roombots {
+
+/// greedy, slope, step: Eq. 2 (a)-(c); reserve: each metamodule reserves the collision clouds of its
+/// whole planned walk before it starts, in seeding order.
+enum class Strategy : std::uint8_t { Greedy, Slope, Step, Reserve };
+const char* strategyName(Strategy s);
+Strategy parseStrategy(const std::string& name);  // throws InputError
+constexpr std::array<Strategy, 3> kPaperStrategies{Strategy::Greedy, Strategy::Slope, Strategy::Step};
+
+/// One shape transition of one metamodule (a step of the inch-worm walk or the final seating).
+struct Action {
+    int module = 0;
+    double begin = 0, end = 0;  // simulated seconds
+    Cell from, to;              // foot before and after
+    double forceX = 0, forceY = 0;  // the force vector it followed (Eq. 1); 0 for reserve
+    bool seat = false;
+};
+
+struct AssemblyResult {
+    bool completed = false, deadlocked = false;
+    int collisions = 0;
+    std::vector<int> moves;  // per metamodule
+    double meanMoves = 0;
+    double seconds = 0;      // simulated time until the last seat or the deadlock
+    std::vector<Action> actions;
+    std::vector<Seed> placed;  // seeds filled, in order
+    std::string reason;        // why a deadlock was declared
+};
+
+struct AssemblyOptions {
+    int stallSteps = 12;  // K: deadlock when no metamodule came closer to an active seed for K steps
+};
+
+AssemblyResult assemble(const CloudTable& table, Coupling coupling, Strategy strategy, const Setting& setting,
+                        const AssemblyOptions& options = {});
+
+}  // namespace holon::planner::roombots

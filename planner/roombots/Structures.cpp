@@ -1,0 +1,159 @@
+// The goal structures and seeding recipes of seed 001 §V. The paper shows its cube and chair only in
+// pictures; the voxel models here are choices that keep what the text says: a non-dense cube of four
+// metamodules, a chair of six whose seeds 0-3 are the legs and 4-5 the back, metamodules starting
+// about 20 Manhattan steps from the goal in a straight posture.
+//
+// Recipe file format (one run):
+//   # comment
+//   seed GROUP x,y,z x,y,z x,y,z x,y,z     the four cells, foot first (z = 0)
+//   start x,y                              one per seed
+
+#include "planner/roombots/Structures.h"
+
+#include "planner/Random.h"
+#include "rules/Error.h"
+#include "rules/Parser.h"
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+namespace holon::planner::roombots {
+namespace {
+
+Seed leg(Cell foot, Cell inward, int group) {
+    return Seed{{foot, foot + Cell{0, 0, 1}, foot + Cell{0, 0, 2}, foot + Cell{0, 0, 2} + inward}, group};
+}
+Seed post(Cell foot, int group) {
+    return Seed{{foot, foot + Cell{0, 0, 1}, foot + Cell{0, 0, 2}, foot + Cell{0, 0, 3}}, group};
+}
+
+// The four legs in circular order; each L's top turns along the cube's top edge, so the legs' tops
+// close the 3 x 3 ring at height 2.
+std::array<Seed, 4> legs() {
+    return {leg({0, 0, 0}, {1, 0, 0}, 0), leg({2, 0, 0}, {0, 1, 0}, 1), leg({2, 2, 0}, {-1, 0, 0}, 2), leg({0, 2, 0}, {0, -1, 0}, 3)};
+}
+
+std::vector<Cell> column(int x, int count, int y0) {
+    std::vector<Cell> starts;
+    for (int i = 0; i < count; ++i) starts.push_back({x, y0 + 3 * i, 0});
+    return starts;
+}
+
+/// Each start moved by `min`..`max` fields (Manhattan) in a random direction.
+std::vector<Cell> shifted(std::vector<Cell> starts, int min, int max, Random& random) {
+    for (Cell& s : starts) {
+        const int length = min + static_cast<int>(random.below(max - min + 1));
+        const int dx = static_cast<int>(random.below(length + 1));
+        const int dy = length - dx;
+        s.x += random.below(2) ? dx : -dx;
+        s.y += random.below(2) ? dy : -dy;
+    }
+    return starts;
+}
+
+Cell parseCell(const std::string& text, const std::string& where) {
+    Cell c;
+    char comma1 = 0, comma2 = 0;
+    std::istringstream in(text);
+    if (std::count(text.begin(), text.end(), ',') == 1) {
+        if (in >> c.x >> comma1 >> c.y && comma1 == ',' && in.peek() == EOF) return c;
+    } else if (in >> c.x >> comma1 >> c.y >> comma2 >> c.z && comma1 == ',' && comma2 == ',' && in.peek() == EOF)
+        return c;
+    throw InputError(where + ": '" + text + "' is not a cell; write x,y,z (or x,y for a start)");
+}
+
+void validate(const Setting& s, const std::string& where) {
+    if (s.recipe.seeds.empty()) throw InputError(where + ": no seeds; add lines `seed GROUP x,y,z x,y,z x,y,z x,y,z`");
+    if (s.starts.size() != s.recipe.seeds.size())
+        throw InputError(where + ": " + std::to_string(s.recipe.seeds.size()) + " seeds but " + std::to_string(s.starts.size()) +
+                         " starts; give one `start x,y` per seed");
+    std::set<Cell> used;
+    for (std::size_t i = 0; i < s.recipe.seeds.size(); ++i) {
+        const auto& cells = s.recipe.seeds[i].cells;
+        const std::string seed = where + ": seed " + std::to_string(i);
+        if (cells[0].z != 0) throw InputError(seed + " must stand with its foot on the floor (z = 0)");
+        for (int k = 0; k < 4; ++k) {
+            if (cells[k].z < 0) throw InputError(seed + " goes below the floor");
+            if (!used.insert(cells[k]).second) throw InputError(seed + " overlaps another seed at a cell");
+            if (k > 0) {
+                const Cell d = cells[k] - cells[k - 1];
+                if (std::abs(d.x) + std::abs(d.y) + std::abs(d.z) != 1)
+                    throw InputError(seed + ": cells " + std::to_string(k - 1) + " and " + std::to_string(k) + " are not face neighbours");
+            }
+        }
+    }
+    for (const Cell& start : s.starts)
+        if (used.count(start)) throw InputError(where + ": a start stands inside the structure");
+}
+
+Setting loadFile(const std::string& path) {
+    const std::string text = rules::readTextFile(path);
+    std::istringstream lines(text);
+    std::string line;
+    Setting s;
+    s.recipe.name = path;
+    for (int number = 1; std::getline(lines, line); ++number) {
+        const std::string where = path + ":" + std::to_string(number);
+        std::istringstream in(line.substr(0, line.find('#')));
+        std::string word;
+        if (!(in >> word)) continue;
+        if (word == "seed") {
+            Seed seed;
+            std::string cell;
+            if (!(in >> seed.group)) throw InputError(where + ": `seed` needs a group number first");
+            for (Cell& c : seed.cells) {
+                if (!(in >> cell)) throw InputError(where + ": a seed lists four cells, foot first");
+                c = parseCell(cell, where);
+            }
+            s.recipe.seeds.push_back(seed);
+        } else if (word == "start") {
+            std::string cell;
+            if (!(in >> cell)) throw InputError(where + ": `start` needs a cell x,y");
+            Cell c = parseCell(cell, where);
+            c.z = 0;
+            s.starts.push_back(c);
+        } else {
+            throw InputError(where + ": unknown line '" + word + "'; use `seed` or `start`");
+        }
+    }
+    validate(s, path);
+    return s;
+}
+
+}  // namespace
+
+std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed) {
+    Random random(seed);
+    const auto l = legs();
+    std::vector<Setting> settings;
+    if (name == "cube") {
+        // The paper's cube recipe is not given; the legs one after another around the ring.
+        Recipe recipe{"circular", {l[0], l[1], l[2], l[3]}};
+        for (int run = 0; run < 3; ++run) settings.push_back({recipe, shifted(column(19, 4, -3), 1, 2, random)});
+        return settings;
+    }
+    if (name == "chair") {
+        const Seed backLeft = post({0, 3, 0}, 4), backRight = post({2, 3, 0}, 5);
+        auto order = [&](const std::string& n, std::array<int, 4> legOrder, bool samePriority) {
+            Recipe r{n, {}};
+            for (int k = 0; k < 4; ++k) {
+                Seed s = l[legOrder[k]];
+                s.group = samePriority ? 0 : k;
+                r.seeds.push_back(s);
+            }
+            r.seeds.push_back(backLeft), r.seeds.push_back(backRight);
+            return r;
+        };
+        const auto starts = column(19, 6, -6);
+        settings.push_back({order("circular", {0, 1, 2, 3}, false), starts});
+        settings.push_back({order("cross-wise", {0, 2, 1, 3}, false), starts});
+        settings.push_back({order("equal priority", {0, 1, 2, 3}, true), starts});
+        settings.push_back({order("cross-wise shifted", {0, 2, 1, 3}, false), shifted(starts, 0, 2, random)});
+        return settings;
+    }
+    settings.push_back(loadFile(name));
+    return settings;
+}
+
+}  // namespace holon::planner::roombots

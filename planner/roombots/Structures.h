@@ -1,0 +1,36 @@
+#pragma once
+// Goal structures and seeding recipes (seed 001 §IV-A b, §V): where each metamodule of the structure
+// stands (its foot on the floor and its four cells), in which order the seeds become active, and where
+// the metamodules start.
+
+#include "planner/roombots/Kinematics.h"
+
+#include <string>
+#include <vector>
+
+namespace holon::planner::roombots {
+
+struct Seed {
+    std::array<Cell, 4> cells;  // foot first; the foot stands on the floor (z = 0)
+    int group = 0;              // seeds of the lowest unfilled group are the active ones
+};
+
+struct Recipe {
+    std::string name;
+    std::vector<Seed> seeds;  // in recipe order
+};
+
+/// One run's setting: a recipe and the starting feet (one per seed, metamodules standing as an upright I).
+struct Setting {
+    Recipe recipe;
+    std::vector<Cell> starts;
+};
+
+/// The runs of an experiment per metamodule type and strategy: for "cube" (experiment I) the four L
+/// legs of a non-dense 3 x 3 x 3 cube from three starts shifted by one or two fields; for "chair"
+/// (experiment II) the same legs as the seat frame plus two upright I back posts, under the recipes
+/// circular, cross-wise, equal priority and cross-wise with starts shifted by up to two fields; or a
+/// recipe file (one run).
+std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed);
+
+}  // namespace holon::planner::roombots
