@@ -14,5 +14,6 @@ Run addCheckCommand(CLI::App& app);
 Run addVerifyCommand(CLI::App& app);
 Run addPlanCommand(CLI::App& app);
 Run addHexCommand(CLI::App& app);
+Run addRoombotsCommand(CLI::App& app);
 
 }  // namespace holon::cli

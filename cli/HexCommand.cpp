@@ -3,20 +3,18 @@
 // as the paper's Table I row: modules, maximum compliance (mean, std), islands.
 
 #include "cli/Commands.h"
+#include "cli/Parallel.h"
 #include "planner/hex/SculptRun.h"
 #include "rules/Error.h"
 
 #include <nlohmann/json.hpp>
 
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <mutex>
 #include <sstream>
-#include <thread>
 #include <unistd.h>
 
 namespace holon::cli {
@@ -93,40 +91,17 @@ int run(HexArgs a) {
     if (a.reps < 1 || a.reps > 1000) throw InputError("--reps " + std::to_string(a.reps) + ": choose 1 to 1000");
     if (a.setup.steps < 1) throw InputError("--steps must be positive");
     std::vector<planner::hex::SculptResult> runs(a.reps);
-    std::atomic<int> next{0}, done{0};
-    std::mutex io;
-    const bool bar = !a.quiet && !a.json && isatty(STDERR_FILENO);
-    std::string firstError;
-    auto worker = [&] {
-        for (int r; (r = next++) < a.reps;) {
-            planner::hex::SculptSetup setup = a.setup;
-            setup.options.seed = a.seed + r;
-            const int last = setup.steps;
-            try {
-                runs[r] = planner::hex::runSculpt(setup, [&](const planner::hex::HoleSculptor& s) {
-                    if (!a.out.empty() && r == 0 && (s.time() == 1 || s.time() == last / 10 || s.time() == last)) {
-                        std::filesystem::create_directories(a.out);
-                        std::ofstream(std::filesystem::path(a.out) / ("frame_" + std::to_string(s.time()) + ".svg")) << planner::hex::sculptSvg(s);
-                    }
-                });
-            } catch (const std::exception& e) {
-                std::lock_guard lock(io);
-                firstError = e.what();
-                next = a.reps;
-                return;
+    runParallel(a.reps, a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int r) {
+        planner::hex::SculptSetup setup = a.setup;
+        setup.options.seed = a.seed + r;
+        const int last = setup.steps;
+        runs[r] = planner::hex::runSculpt(setup, [&](const planner::hex::HoleSculptor& s) {
+            if (!a.out.empty() && r == 0 && (s.time() == 1 || s.time() == last / 10 || s.time() == last)) {
+                std::filesystem::create_directories(a.out);
+                std::ofstream(std::filesystem::path(a.out) / ("frame_" + std::to_string(s.time()) + ".svg")) << planner::hex::sculptSvg(s);
             }
-            if (bar) {
-                std::lock_guard lock(io);
-                std::cerr << "\r[" << ++done << "/" << a.reps << " runs]" << std::flush;
-            }
-        }
-    };
-    const int threads = std::max(1, std::min(a.reps, a.threads > 0 ? a.threads : static_cast<int>(std::thread::hardware_concurrency())));
-    std::vector<std::thread> pool;
-    for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
-    if (bar) std::cerr << '\n';
-    if (!firstError.empty()) throw InputError(firstError);
+        });
+    });
 
     const Stat compliance = stat(runs, [](const auto& r) { return r.maxCompliance; });
     const Stat completeness = stat(runs, [](const auto& r) { return r.maxCompleteness; });

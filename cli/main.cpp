@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     add(holon::cli::addVerifyCommand);
     add(holon::cli::addPlanCommand);
     add(holon::cli::addHexCommand);
+    add(holon::cli::addRoombotsCommand);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

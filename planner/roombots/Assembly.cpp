@@ -142,7 +142,7 @@ public:
         if (!done() && !result_.deadlocked) deadlock("no metamodule can move");
         result_.completed = done();
         result_.seconds = now_;
-        for (const Body& b : bodies_) result_.moves.push_back(b.moves);
+        for (const Body& b : bodies_) result_.moves.push_back(b.moves), result_.cells.push_back(b.cells);
         double sum = 0;
         for (int m : result_.moves) sum += m;
         result_.meanMoves = result_.moves.empty() ? 0 : sum / result_.moves.size();

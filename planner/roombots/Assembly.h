@@ -36,6 +36,7 @@ struct AssemblyResult {
     double seconds = 0;      // simulated time until the last seat or the deadlock
     std::vector<Action> actions;
     std::vector<Seed> placed;  // seeds filled, in order
+    std::vector<std::array<Cell, 4>> cells;  // every metamodule's cells at the end
     std::string reason;        // why a deadlock was declared
 };
 

@@ -123,14 +123,14 @@ Setting loadFile(const std::string& path) {
 
 }  // namespace
 
-std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed) {
+std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, int runs) {
     Random random(seed);
     const auto l = legs();
     std::vector<Setting> settings;
     if (name == "cube") {
         // The paper's cube recipe is not given; the legs one after another around the ring.
-        Recipe recipe{"circular", {l[0], l[1], l[2], l[3]}};
-        for (int run = 0; run < 3; ++run) settings.push_back({recipe, shifted(column(19, 4, -3), 1, 2, random)});
+        const Recipe recipe{"circular", {l[0], l[1], l[2], l[3]}};
+        for (int run = 0; run < (runs > 0 ? runs : 3); ++run) settings.push_back({recipe, shifted(column(19, 4, -3), 1, 2, random)});
         return settings;
     }
     if (name == "chair") {
@@ -146,13 +146,14 @@ std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed) {
             return r;
         };
         const auto starts = column(19, 6, -6);
-        settings.push_back({order("circular", {0, 1, 2, 3}, false), starts});
-        settings.push_back({order("cross-wise", {0, 2, 1, 3}, false), starts});
-        settings.push_back({order("equal priority", {0, 1, 2, 3}, true), starts});
-        settings.push_back({order("cross-wise shifted", {0, 2, 1, 3}, false), shifted(starts, 0, 2, random)});
+        const std::array<Recipe, 4> recipes{order("circular", {0, 1, 2, 3}, false), order("cross-wise", {0, 2, 1, 3}, false),
+                                            order("equal priority", {0, 1, 2, 3}, true), order("cross-wise shifted", {0, 2, 1, 3}, false)};
+        for (int run = 0; run < (runs > 0 ? runs : 4); ++run)
+            settings.push_back({recipes[run % 4], run % 4 == 3 ? shifted(starts, 0, 2, random) : starts});
         return settings;
     }
-    settings.push_back(loadFile(name));
+    const Setting file = loadFile(name);
+    for (int run = 0; run < (runs > 0 ? runs : 1); ++run) settings.push_back(file);
     return settings;
 }
 

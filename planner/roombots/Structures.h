@@ -30,7 +30,8 @@ struct Setting {
 /// legs of a non-dense 3 x 3 x 3 cube from three starts shifted by one or two fields; for "chair"
 /// (experiment II) the same legs as the seat frame plus two upright I back posts, under the recipes
 /// circular, cross-wise, equal priority and cross-wise with starts shifted by up to two fields; or a
-/// recipe file (one run).
-std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed);
+/// recipe file. `runs` > 0 asks for that many runs instead (cube: more shifted starts; chair: the
+/// recipes in turn).
+std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, int runs = 0);
 
 }  // namespace holon::planner::roombots

@@ -1,0 +1,46 @@
+#pragma once
+// Independent jobs spread over the machine's cores (or `threads`), with an optional progress line on
+// a terminal. The first exception a job throws stops the others and is rethrown as an InputError.
+
+#include "rules/Error.h"
+
+#include <algorithm>
+#include <atomic>
+#include <functional>
+#include <iostream>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace holon::cli {
+
+inline void runParallel(int jobs, int threads, bool progress, const std::string& unit, const std::function<void(int)>& job) {
+    std::atomic<int> next{0}, done{0};
+    std::mutex io;
+    std::string firstError;
+    auto worker = [&] {
+        for (int j; (j = next++) < jobs;) {
+            try {
+                job(j);
+            } catch (const std::exception& e) {
+                std::lock_guard lock(io);
+                if (firstError.empty()) firstError = e.what();
+                next = jobs;
+                return;
+            }
+            if (progress) {
+                std::lock_guard lock(io);
+                std::cerr << "\r[" << ++done << "/" << jobs << " " << unit << "]" << std::flush;
+            }
+        }
+    };
+    const int n = std::max(1, std::min(jobs, threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency())));
+    std::vector<std::thread> pool;
+    for (int t = 0; t < n; ++t) pool.emplace_back(worker);
+    for (auto& t : pool) t.join();
+    if (progress) std::cerr << '\n';
+    if (!firstError.empty()) throw InputError(firstError);
+}
+
+}  // namespace holon::cli

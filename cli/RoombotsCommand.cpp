@@ -1,0 +1,194 @@
+// `holon roombots --structure cube|chair|FILE`: seed 001's furniture assembly from Roombots
+// metamodules walking on a structured floor, for every chosen metamodule configuration and strategy,
+// reported as the paper's Tables I and II (collisions per run, deadlocks starred) and Fig. 5 (moves
+// per metamodule). `--make-clouds FILE` regenerates the collision-cloud look-up table.
+
+#include "cli/Commands.h"
+#include "cli/Parallel.h"
+#include "planner/roombots/Draw.h"
+#include "rules/Error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+namespace holon::cli {
+namespace {
+
+namespace rb = planner::roombots;
+
+struct RoombotsArgs {
+    std::string structure = "cube", clouds, makeClouds, out;
+    std::vector<std::string> metamodules{"PAR", "PER", "SRS", "SRZ"}, strategies{"greedy", "slope", "step"};
+    int runs = 0, threads = 0, stall = 12;
+    std::uint64_t seed = 1;
+    bool json = false, quiet = false;
+};
+
+struct Job {
+    rb::Coupling coupling;
+    rb::Strategy strategy;
+    int run;
+    rb::AssemblyResult result;
+};
+
+std::string name(const Job& j) {
+    return std::string(rb::couplingName(j.coupling)) + "_" + rb::strategyName(j.strategy) + "_" + std::to_string(j.run);
+}
+
+void writeRun(const std::filesystem::path& dir, const Job& j, const rb::Setting& setting) {
+    std::ofstream csv(dir / ("trace_" + name(j) + ".csv"));
+    csv << "module,begin,end,from_x,from_y,to_x,to_y,force_x,force_y,seat\n";
+    for (const rb::Action& a : j.result.actions)
+        csv << a.module << ',' << a.begin << ',' << a.end << ',' << a.from.x << ',' << a.from.y << ',' << a.to.x << ',' << a.to.y << ','
+            << a.forceX << ',' << a.forceY << ',' << a.seat << '\n';
+    std::ofstream(dir / ("feet_" + name(j) + ".svg")) << rb::footTraceSvg(setting, j.result);
+    std::ofstream(dir / ("end_" + name(j) + ".svg")) << rb::isometricSvg(setting, j.result);
+}
+
+/// Collisions of the runs that did not deadlock, and of all runs.
+std::pair<int, int> collisions(const std::vector<const Job*>& jobs) {
+    int clean = 0, all = 0;
+    for (const Job* j : jobs) all += j->result.collisions, clean += j->result.deadlocked ? 0 : j->result.collisions;
+    return {clean, all};
+}
+int deadlocks(const std::vector<const Job*>& jobs) {
+    return static_cast<int>(std::count_if(jobs.begin(), jobs.end(), [](const Job* j) { return j->result.deadlocked; }));
+}
+std::string collisionText(const std::vector<const Job*>& jobs) {
+    const auto [clean, all] = collisions(jobs);
+    return std::to_string(clean) + " (" + std::to_string(all) + ")";
+}
+
+void printTables(std::ostream& out, const std::vector<rb::Coupling>& couplings, const std::vector<rb::Strategy>& strategies,
+                 const std::vector<Job>& jobs, int runs) {
+    auto select = [&](auto keep) {
+        std::vector<const Job*> s;
+        for (const Job& j : jobs)
+            if (keep(j)) s.push_back(&j);
+        return s;
+    };
+    const int width = std::max(8, runs * 5 + 1);
+    out << "collisions per run, * = deadlock (as Tables I and II)\n" << std::left << std::setw(6) << "";
+    for (rb::Strategy s : strategies) out << "| " << std::setw(width) << rb::strategyName(s);
+    out << "| DL | CL\n";
+    for (rb::Coupling c : couplings) {
+        out << std::setw(6) << rb::couplingName(c);
+        for (rb::Strategy s : strategies) {
+            std::ostringstream cell;
+            for (const Job* j : select([&](const Job& j) { return j.coupling == c && j.strategy == s; }))
+                cell << j->result.collisions << (j->result.deadlocked ? "* " : "  ");
+            out << "| " << std::setw(width) << cell.str();
+        }
+        const auto row = select([&](const Job& j) { return j.coupling == c; });
+        out << "| " << std::setw(3) << deadlocks(row) << "| " << collisionText(row) << '\n';
+    }
+    out << std::setw(6) << "DL";
+    for (rb::Strategy s : strategies) out << "| " << std::setw(width) << deadlocks(select([&](const Job& j) { return j.strategy == s; }));
+    out << "| " << deadlocks(select([](const Job&) { return true; })) << '\n' << std::setw(6) << "CL";
+    for (rb::Strategy s : strategies) out << "| " << std::setw(width) << collisionText(select([&](const Job& j) { return j.strategy == s; }));
+    out << "| " << collisionText(select([](const Job&) { return true; })) << "\n\nmoves per metamodule (as Fig. 5)\n" << std::setw(6) << "";
+    for (rb::Strategy s : strategies) out << "| " << std::setw(width) << rb::strategyName(s);
+    out << "| mean\n" << std::fixed << std::setprecision(1);
+    for (rb::Coupling c : couplings) {
+        out << std::setw(6) << rb::couplingName(c);
+        double sum = 0;
+        int n = 0;
+        for (rb::Strategy s : strategies) {
+            std::ostringstream cell;
+            cell << std::fixed << std::setprecision(1);
+            for (const Job* j : select([&](const Job& j) { return j.coupling == c && j.strategy == s; }))
+                cell << j->result.meanMoves << ' ', sum += j->result.meanMoves, ++n;
+            out << "| " << std::setw(width) << cell.str();
+        }
+        out << "| " << sum / std::max(1, n) << '\n';
+    }
+    out << std::right;
+}
+
+int run(const RoombotsArgs& a) {
+    if (!a.makeClouds.empty()) {
+        const rb::CloudTable table = rb::CloudTable::compute();
+        std::ofstream file(a.makeClouds);
+        if (!(file << table.json())) throw InputError(a.makeClouds + ": cannot write the collision-cloud table");
+        std::cout << "wrote " << table.size() << " transitions to " << a.makeClouds << '\n';
+        return 0;
+    }
+    if (a.runs < 0 || a.runs > 1000) throw InputError("--runs " + std::to_string(a.runs) + ": choose 1 to 1000");
+    std::vector<rb::Coupling> couplings;
+    for (const std::string& m : a.metamodules) couplings.push_back(rb::parseCoupling(m));
+    std::vector<rb::Strategy> strategies;
+    for (const std::string& s : a.strategies) strategies.push_back(rb::parseStrategy(s));
+    const std::vector<rb::Setting> settings = rb::loadScenario(a.structure, a.seed, a.runs);
+    const rb::CloudTable table = rb::CloudTable::load(a.clouds.empty() ? rb::CloudTable::defaultPath() : a.clouds);
+
+    std::vector<Job> jobs;
+    for (rb::Coupling c : couplings)
+        for (rb::Strategy s : strategies)
+            for (int r = 0; r < static_cast<int>(settings.size()); ++r) jobs.push_back({c, s, r, {}});
+    rb::AssemblyOptions options;
+    options.stallSteps = a.stall;
+    runParallel(static_cast<int>(jobs.size()), a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int k) {
+        jobs[k].result = rb::assemble(table, jobs[k].coupling, jobs[k].strategy, settings[jobs[k].run], options);
+    });
+    if (!a.out.empty()) {
+        std::filesystem::create_directories(a.out);
+        for (const Job& j : jobs) writeRun(a.out, j, settings[j.run]);
+    }
+
+    int completed = 0, dl = 0, clean = 0, all = 0;
+    double moves = 0;
+    for (const Job& j : jobs) {
+        completed += j.result.completed, dl += j.result.deadlocked, all += j.result.collisions;
+        clean += j.result.deadlocked ? 0 : j.result.collisions;
+        moves += j.result.meanMoves;
+    }
+    moves /= std::max<std::size_t>(1, jobs.size());
+    if (a.json) {
+        nlohmann::json runs = nlohmann::json::array();
+        for (const Job& j : jobs)
+            runs.push_back({{"metamodule", rb::couplingName(j.coupling)}, {"strategy", rb::strategyName(j.strategy)}, {"run", j.run},
+                            {"recipe", settings[j.run].recipe.name}, {"completed", j.result.completed}, {"deadlocked", j.result.deadlocked},
+                            {"collisions", j.result.collisions}, {"moves", j.result.moves}, {"mean_moves", j.result.meanMoves},
+                            {"seconds", j.result.seconds}, {"deadlock_reason", j.result.reason}});
+        std::cout << nlohmann::json{{"structure", a.structure}, {"runs", runs}, {"completed", completed}, {"collisions", clean},
+                                    {"collisions_all_runs", all}, {"deadlocks", dl}, {"mean_moves", moves}}.dump()
+                  << '\n';
+        return 0;
+    }
+    std::cout << a.structure << ": " << settings.front().recipe.seeds.size() << " metamodules, " << settings.size() << " runs per cell (";
+    for (std::size_t r = 0; r < settings.size(); ++r) std::cout << (r ? ", " : "") << settings[r].recipe.name;
+    std::cout << ")\n\n";
+    printTables(std::cout, couplings, strategies, jobs, static_cast<int>(settings.size()));
+    std::cout << "\n" << completed << " of " << jobs.size() << " runs completed, " << dl << " deadlocked; " << clean
+              << " collisions in runs that did not deadlock (" << all << " in all); " << std::setprecision(1) << moves
+              << " moves per metamodule\n";
+    return 0;
+}
+
+}  // namespace
+
+Run addRoombotsCommand(CLI::App& app) {
+    auto a = std::make_shared<RoombotsArgs>();
+    CLI::App* sub = app.add_subcommand("roombots", "assemble furniture from Roombots metamodules walking on a structured floor (seed 001)");
+    sub->add_option("--structure", a->structure, "cube (experiment I), chair (experiment II) or a recipe file");
+    sub->add_option("--metamodule", a->metamodules, "metamodule configurations: PAR PER SRS SRZ (default all)")->delimiter(',');
+    sub->add_option("--strategy", a->strategies, "greedy slope step (the paper's, default) and/or reserve (holon's)")->delimiter(',');
+    sub->add_option("--runs", a->runs, "runs per configuration and strategy (default: the paper's 3 for cube, 4 for chair)");
+    sub->add_option("--seed", a->seed, "random seed of the shifted starts");
+    sub->add_option("--stall", a->stall, "K: a deadlock is K steps in which no metamodule comes closer to an active seed");
+    sub->add_option("--clouds", a->clouds, "collision-cloud table (default: the one shipped with holon)");
+    sub->add_option("--make-clouds", a->makeClouds, "compute the collision-cloud table from the kinematics, write it to FILE and stop");
+    sub->add_option("--threads", a->threads, "parallel runs (default: the machine's cores)");
+    sub->add_option("--out", a->out, "directory for per-run traces (CSV), foot-trace pictures and end snapshots (SVG)");
+    sub->add_flag("--json", a->json, "print a JSON summary");
+    sub->add_flag("--quiet", a->quiet, "no progress bar");
+    return [a] { return run(*a); };
+}
+
+}  // namespace holon::cli
