@@ -1,0 +1,159 @@
+// The Roombots back-end (seed 001): kinematics facts that follow from the geometry, the collision-cloud
+// table against a fresh sweep, and assembly runs — holon's reservation strategy must finish every run
+// without a collision or a deadlock, checked by the same geometric collision test the paper's
+// strategies are measured with.
+
+#include "planner/roombots/Assembly.h"
+#include "rules/Error.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+using namespace holon::planner::roombots;
+
+namespace {
+
+bool standsOnFloor(const Posture& p) {
+    std::set<Cell> distinct(p.cells.begin(), p.cells.end());
+    return distinct.size() == 4 && std::all_of(p.cells.begin(), p.cells.end(), [](const Cell& c) { return c.z >= 0; });
+}
+
+const CloudTable& shippedTable() {
+    static const CloudTable table = CloudTable::load(CloudTable::defaultPath());
+    return table;
+}
+
+}  // namespace
+
+TEST_CASE("all joints at zero is the upright I for every coupling") {
+    for (Coupling c : kCouplings) {
+        const Posture p = Metamodule(c).posture(Joints{}, 0);
+        for (int k = 0; k < 4; ++k) CHECK(p.cells[k] == Cell{0, 0, k});
+        CHECK(classify(p.cells) == Shape::I);
+    }
+}
+
+TEST_CASE("joint settings round-trip through their index") {
+    for (int i = 0; i < kJointSettings; ++i) CHECK(Joints::fromIndex(i).index() == i);
+}
+
+TEST_CASE("the couplings differ as Fig. 3a says: PAR never folds into a U, PER never into an S, SRS and SRZ are mirror images") {
+    std::map<Coupling, std::map<Shape, int>> shapes;
+    for (Coupling c : kCouplings) {
+        const Metamodule m(c);
+        for (int i = 0; i < kJointSettings; ++i) {
+            const Posture p = m.posture(Joints::fromIndex(i), 0);
+            if (standsOnFloor(p)) ++shapes[c][classify(p.cells)];
+        }
+    }
+    CHECK(shapes[Coupling::PAR][Shape::U] == 0);
+    CHECK(shapes[Coupling::PAR][Shape::S] > 0);
+    CHECK(shapes[Coupling::PER][Shape::S] == 0);
+    CHECK(shapes[Coupling::PER][Shape::U] > 0);
+    CHECK(shapes[Coupling::SRS] == shapes[Coupling::SRZ]);
+    CHECK(shapes[Coupling::SRS] != shapes[Coupling::PAR]);
+}
+
+TEST_CASE("a stance read from the head is the same pose: reversed() and the head yaw agree with the kinematics") {
+    for (Coupling c : kCouplings) {
+        const Metamodule m(c);
+        int stances = 0;
+        for (int i = 0; i < kJointSettings; ++i) {
+            const Joints j = Joints::fromIndex(i);
+            const Posture p = m.posture(j, 0);
+            if (!standsOnFloor(p) || p.headFace != Cell{0, 0, -1} || p.cells[3].z != 0) continue;
+            ++stances;
+            const Posture r = m.posture(reversed(j), p.headYaw);
+            for (int k = 0; k < 4; ++k) CHECK(r.cells[k] == p.cells[3 - k] - p.cells[3]);
+            CHECK(r.headFace == Cell{0, 0, -1});
+            CHECK(reversed(reversed(j)) == j);
+        }
+        CHECK(stances > 0);
+    }
+}
+
+TEST_CASE("a sweep covers where the motion starts and ends; standing still sweeps only the body") {
+    const Metamodule m(Coupling::SRZ);
+    const Joints zero{};
+    CHECK(m.sweep(zero, zero, 0, 48, 0.45).size() == 4);
+    int checked = 0;
+    for (int i = 0; i < kJointSettings && checked < 50; i += 7) {
+        const Joints to = Joints::fromIndex(i);
+        const auto cloud = m.sweep(zero, to, 1, 48, 0.45);
+        if (cloud.empty()) continue;  // self-collision or through the floor
+        ++checked;
+        for (const Joints* p : {&zero, &to})
+            for (const Cell& c : m.posture(*p, 1).cells) CHECK(std::binary_search(cloud.begin(), cloud.end(), c));
+    }
+    CHECK(checked > 10);
+}
+
+TEST_CASE("the shipped collision-cloud table matches the kinematics") {
+    const CloudTable& table = shippedTable();
+    CHECK(table.size() > 10000);
+    int checked = 0;
+    for (Coupling c : kCouplings) {
+        const Metamodule m(c);
+        CHECK(!table.from(c, Joints{}).empty());
+        const auto& row = table.from(c, Joints{});
+        for (std::size_t k = 0; k < row.size(); k += 9, ++checked) {
+            CHECK(row[k].cloud == m.sweep(Joints{}, row[k].to, 0, CloudTable::kSamples, CloudTable::kRadius));
+            const Posture p = m.posture(row[k].to, 0);
+            if (row[k].kind == Transition::Kind::Step) CHECK((p.headFace == Cell{0, 0, -1} && p.cells[3].z == 0));
+            // every step's reversal has its own row: a walk never runs off the table
+            if (row[k].kind == Transition::Kind::Step) CHECK(!table.from(c, reversed(row[k].to)).empty());
+        }
+    }
+    CHECK(checked > 40);
+}
+
+TEST_CASE("reserve assembles the cube and the chair with no collision and no deadlock") {
+    const CloudTable& table = shippedTable();
+    for (const char* structure : {"cube", "chair"})
+        for (Coupling c : {Coupling::PAR, Coupling::SRZ}) {
+            const auto settings = loadScenario(structure, 1, 1);
+            for (const Setting& s : settings) {
+                CAPTURE(structure);
+                CAPTURE(couplingName(c));
+                const AssemblyResult r = assemble(table, c, Strategy::Reserve, s);
+                CHECK(r.completed);
+                CHECK(!r.deadlocked);
+                CHECK(r.collisions == 0);
+                REQUIRE(r.placed.size() == s.recipe.seeds.size());
+                std::set<Cell> built, goal;
+                for (const auto& cells : r.cells) built.insert(cells.begin(), cells.end());
+                for (const Seed& seed : s.recipe.seeds) goal.insert(seed.cells.begin(), seed.cells.end());
+                CHECK(built == goal);
+            }
+        }
+}
+
+TEST_CASE("the paper's strategies: a completed run has built the structure, and runs are reproducible") {
+    const CloudTable& table = shippedTable();
+    const auto settings = loadScenario("cube", 7);
+    int completed = 0;
+    for (Strategy strategy : kPaperStrategies) {
+        const AssemblyResult a = assemble(table, Coupling::SRS, strategy, settings[0]);
+        const AssemblyResult b = assemble(table, Coupling::SRS, strategy, settings[0]);
+        CHECK(a.collisions == b.collisions);
+        CHECK(a.moves == b.moves);
+        CHECK(a.completed != a.deadlocked);
+        if (!a.completed) continue;
+        ++completed;
+        std::set<Cell> built, goal;
+        for (const auto& cells : a.cells) built.insert(cells.begin(), cells.end());
+        for (const Seed& seed : settings[0].recipe.seeds) goal.insert(seed.cells.begin(), seed.cells.end());
+        CHECK(built == goal);
+    }
+    CHECK(completed > 0);
+}
+
+TEST_CASE("bad Roombots input is refused with the place and the fix") {
+    CHECK_THROWS_WITH_AS(parseCoupling("XYZ"), doctest::Contains("use PAR, PER, SRS or SRZ"), holon::InputError);
+    CHECK_THROWS_WITH_AS(parseStrategy("fast"), doctest::Contains("greedy, slope, step or reserve"), holon::InputError);
+    CHECK_THROWS_AS(loadScenario("/nonexistent/recipe.txt", 1), holon::InputError);
+    CHECK_THROWS_WITH_AS(CloudTable::load("/nonexistent/clouds.json"), doctest::Contains("--make-clouds"), holon::InputError);
+}
