@@ -72,7 +72,7 @@ std::string isometricSvg(const Setting& setting, const AssemblyResult& result) {
     std::sort(cubes.begin(), cubes.end(), [](const Cube& a, const Cube& b) {
         return std::tuple(a.c.x + a.c.y, a.c.z, a.c.x) < std::tuple(b.c.x + b.c.y, b.c.z, b.c.x);
     });
-    const double s = 16, a = s * 0.866, b = s * 0.5;
+    const double s = 30, a = s * 0.866, b = s * 0.5;
     double minX = 1e9, maxX = -1e9, minY = 1e9, maxY = -1e9;
     auto sx = [&](double x, double y) { return (x - y) * a; };
     auto sy = [&](double x, double y, double z) { return (x + y) * b - z * s; };

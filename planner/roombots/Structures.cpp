@@ -40,14 +40,21 @@ std::vector<Cell> column(int x, int count, int y0) {
     return starts;
 }
 
-/// Each start moved by `min`..`max` fields (Manhattan) in a random direction.
+/// Each start moved by `min`..`max` fields (Manhattan) in a random direction, redrawn while it would
+/// stand within one field of another metamodule.
 std::vector<Cell> shifted(std::vector<Cell> starts, int min, int max, Random& random) {
-    for (Cell& s : starts) {
-        const int length = min + static_cast<int>(random.below(max - min + 1));
-        const int dx = static_cast<int>(random.below(length + 1));
-        const int dy = length - dx;
-        s.x += random.below(2) ? dx : -dx;
-        s.y += random.below(2) ? dy : -dy;
+    for (std::size_t i = 0; i < starts.size(); ++i) {
+        const Cell home = starts[i];
+        for (int attempt = 0; attempt < 100; ++attempt) {
+            const int length = min + static_cast<int>(random.below(max - min + 1));
+            const int dx = static_cast<int>(random.below(length + 1)), dy = length - dx;
+            starts[i] = home + Cell{random.below(2) ? dx : -dx, random.below(2) ? dy : -dy, 0};
+            bool crowded = false;
+            for (std::size_t k = 0; k < starts.size(); ++k)
+                crowded |= k != i && std::abs(starts[k].x - starts[i].x) <= 1 && std::abs(starts[k].y - starts[i].y) <= 1;
+            if (!crowded) break;
+            starts[i] = home;
+        }
     }
     return starts;
 }
@@ -153,7 +160,8 @@ std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, i
         return settings;
     }
     const Setting file = loadFile(name);
-    for (int run = 0; run < (runs > 0 ? runs : 1); ++run) settings.push_back(file);
+    for (int run = 0; run < (runs > 0 ? runs : 1); ++run)  // later runs from starts shifted by up to two fields
+        settings.push_back({file.recipe, run == 0 ? file.starts : shifted(file.starts, 0, 2, random)});
     return settings;
 }
 

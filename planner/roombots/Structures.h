@@ -31,7 +31,7 @@ struct Setting {
 /// (experiment II) the same legs as the seat frame plus two upright I back posts, under the recipes
 /// circular, cross-wise, equal priority and cross-wise with starts shifted by up to two fields; or a
 /// recipe file. `runs` > 0 asks for that many runs instead (cube: more shifted starts; chair: the
-/// recipes in turn).
+/// recipes in turn; a file: its starts, then starts shifted by up to two fields).
 std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, int runs = 0);
 
 }  // namespace holon::planner::roombots
