@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Seed 001 §V: experiment I (the 4-metamodule cube, 3 shifted starts) and experiment II (the
+# 6-metamodule chair, 4 seeding recipes) for every metamodule configuration under the paper's three
+# force-field strategies and holon's reservation strategy: tables like Tables I and II and Fig. 5,
+# then foot traces (as Fig. 6) and end snapshots of one chair run per strategy in examples/roombots/out.
+# Usage: examples/roombots/run.sh [SEED]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+SEED=${1:-1}
+HOLON=${HOLON:-build/cli/holon}
+[ -x "$HOLON" ] || scripts/build >/dev/null
+for structure in cube chair; do
+  echo "### $structure"
+  echo '```'
+  "$HOLON" roombots --structure "$structure" --strategy greedy,slope,step,reserve --seed "$SEED" --quiet
+  echo '```'
+done
+out=examples/roombots/out
+rm -rf "$out"
+"$HOLON" roombots --structure chair --metamodule SRZ --strategy greedy,slope,reserve --runs 1 --seed "$SEED" --out "$out" --quiet >/dev/null
+echo "pictures and per-step traces: $(ls "$out" | wc -l) files in $out"
