@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <unistd.h>
 
@@ -23,7 +24,7 @@ namespace {
 namespace rb = planner::roombots;
 
 struct RoombotsArgs {
-    std::string structure = "cube", clouds, makeClouds, out;
+    std::string structure = "cube", recipe = "given", clouds, makeClouds, out;
     std::vector<std::string> metamodules{"PAR", "PER", "SRS", "SRZ"}, strategies{"greedy", "slope", "step"};
     int runs = 0, threads = 0, stall = 12;
     std::uint64_t seed = 1;
@@ -124,8 +125,21 @@ int run(const RoombotsArgs& a) {
     for (const std::string& m : a.metamodules) couplings.push_back(rb::parseCoupling(m));
     std::vector<rb::Strategy> strategies;
     for (const std::string& s : a.strategies) strategies.push_back(rb::parseStrategy(s));
+    if (a.recipe != "given" && a.recipe != "auto") throw InputError("--recipe '" + a.recipe + "': use given (the structure's own) or auto");
     const std::vector<rb::Setting> settings = rb::loadScenario(a.structure, a.seed, a.runs);
     const rb::CloudTable table = rb::CloudTable::load(a.clouds.empty() ? rb::CloudTable::defaultPath() : a.clouds);
+    // The seeding order per metamodule configuration and run: the structure's, or derived (--recipe auto).
+    std::map<std::pair<rb::Coupling, int>, rb::Setting> runSettings;
+    for (rb::Coupling c : couplings)
+        for (int r = 0; r < static_cast<int>(settings.size()); ++r) runSettings[{c, r}] = settings[r];
+    if (a.recipe == "auto") {
+        std::vector<std::pair<rb::Coupling, int>> keys;
+        for (const auto& [key, setting] : runSettings) keys.push_back(key);
+        runParallel(static_cast<int>(keys.size()), a.threads, false, "recipes", [&](int k) {
+            rb::Setting& s = runSettings[keys[k]];
+            s.recipe = rb::automaticRecipe(table, keys[k].first, s);
+        });
+    }
 
     std::vector<Job> jobs;
     for (rb::Coupling c : couplings)
@@ -134,11 +148,11 @@ int run(const RoombotsArgs& a) {
     rb::AssemblyOptions options;
     options.stallSteps = a.stall;
     runParallel(static_cast<int>(jobs.size()), a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int k) {
-        jobs[k].result = rb::assemble(table, jobs[k].coupling, jobs[k].strategy, settings[jobs[k].run], options);
+        jobs[k].result = rb::assemble(table, jobs[k].coupling, jobs[k].strategy, runSettings.at({jobs[k].coupling, jobs[k].run}), options);
     });
     if (!a.out.empty()) {
         std::filesystem::create_directories(a.out);
-        for (const Job& j : jobs) writeRun(a.out, j, settings[j.run]);
+        for (const Job& j : jobs) writeRun(a.out, j, runSettings.at({j.coupling, j.run}));
     }
 
     int completed = 0, dl = 0, clean = 0, all = 0;
@@ -153,7 +167,7 @@ int run(const RoombotsArgs& a) {
         nlohmann::json runs = nlohmann::json::array();
         for (const Job& j : jobs)
             runs.push_back({{"metamodule", rb::couplingName(j.coupling)}, {"strategy", rb::strategyName(j.strategy)}, {"run", j.run},
-                            {"recipe", settings[j.run].recipe.name}, {"completed", j.result.completed}, {"deadlocked", j.result.deadlocked},
+                            {"recipe", runSettings.at({j.coupling, j.run}).recipe.name}, {"completed", j.result.completed}, {"deadlocked", j.result.deadlocked},
                             {"collisions", j.result.collisions}, {"moves", j.result.moves}, {"mean_moves", j.result.meanMoves},
                             {"seconds", j.result.seconds}, {"deadlock_reason", j.result.reason}});
         std::cout << nlohmann::json{{"structure", a.structure}, {"runs", runs}, {"completed", completed}, {"collisions", clean},
@@ -163,7 +177,21 @@ int run(const RoombotsArgs& a) {
     }
     std::cout << a.structure << ": " << settings.front().recipe.seeds.size() << " metamodules, " << settings.size() << " runs per cell (";
     for (std::size_t r = 0; r < settings.size(); ++r) std::cout << (r ? ", " : "") << settings[r].recipe.name;
-    std::cout << ")\n\n";
+    std::cout << ")\n";
+    if (a.recipe == "auto")
+        for (rb::Coupling c : couplings) {
+            std::cout << "  auto recipe, " << rb::couplingName(c) << ":";
+            for (int r = 0; r < static_cast<int>(settings.size()); ++r) {
+                std::cout << (r ? " |" : "");
+                for (const rb::Seed& seed : runSettings.at({c, r}).recipe.seeds) {
+                    int index = 0;
+                    while (settings[r].recipe.seeds[index].cells != seed.cells) ++index;
+                    std::cout << ' ' << index;
+                }
+            }
+            std::cout << "  (" << runSettings.at({c, 0}).recipe.name << ")\n";
+        }
+    std::cout << '\n';
     printTables(std::cout, couplings, strategies, jobs, static_cast<int>(settings.size()));
     std::cout << "\n" << completed << " of " << jobs.size() << " runs completed, " << dl << " deadlocked; " << clean
               << " collisions in runs that did not deadlock (" << all << " in all); " << std::setprecision(1) << moves
@@ -179,6 +207,7 @@ Run addRoombotsCommand(CLI::App& app) {
     sub->add_option("--structure", a->structure, "cube (experiment I), chair (experiment II) or a recipe file");
     sub->add_option("--metamodule", a->metamodules, "metamodule configurations: PAR PER SRS SRZ (default all)")->delimiter(',');
     sub->add_option("--strategy", a->strategies, "greedy slope step (the paper's, default) and/or reserve (holon's)")->delimiter(',');
+    sub->add_option("--recipe", a->recipe, "given (the structure's seeding order, default) or auto (derived from the kinematics)");
     sub->add_option("--runs", a->runs, "runs per configuration and strategy (default: the paper's 3 for cube, 4 for chair)");
     sub->add_option("--seed", a->seed, "random seed of the shifted starts");
     sub->add_option("--stall", a->stall, "K: a deadlock is K steps in which no metamodule comes closer to an active seed");

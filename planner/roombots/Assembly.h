@@ -44,6 +44,10 @@ struct AssemblyOptions {
     int stallSteps = 12;  // K: deadlock when no metamodule came closer to an active seed for K steps
 };
 
+/// A seeding order derived from the seeds' cells and the kinematics: each seed, when its turn comes,
+/// can be walked to and filled, and leaves every later seed fillable. The given order if none exists.
+Recipe automaticRecipe(const CloudTable& table, Coupling coupling, const Setting& setting);
+
 AssemblyResult assemble(const CloudTable& table, Coupling coupling, Strategy strategy, const Setting& setting,
                         const AssemblyOptions& options = {});
 

@@ -157,3 +157,21 @@ TEST_CASE("bad Roombots input is refused with the place and the fix") {
     CHECK_THROWS_AS(loadScenario("/nonexistent/recipe.txt", 1), holon::InputError);
     CHECK_THROWS_WITH_AS(CloudTable::load("/nonexistent/clouds.json"), doctest::Contains("--make-clouds"), holon::InputError);
 }
+
+TEST_CASE("the automatic seeding order is a permutation of the seeds in which each can be filled in turn") {
+    const CloudTable& table = shippedTable();
+    const Setting given = loadScenario("cube", 1, 1).front();
+    Setting automatic = given;
+    automatic.recipe = automaticRecipe(table, Coupling::SRZ, given);
+    CHECK(automatic.recipe.name == "auto");
+    REQUIRE(automatic.recipe.seeds.size() == given.recipe.seeds.size());
+    std::set<std::array<Cell, 4>> a, b;
+    for (std::size_t k = 0; k < given.recipe.seeds.size(); ++k) {
+        a.insert(automatic.recipe.seeds[k].cells), b.insert(given.recipe.seeds[k].cells);
+        CHECK(automatic.recipe.seeds[k].group == static_cast<int>(k));
+    }
+    CHECK(a == b);
+    const AssemblyResult r = assemble(table, Coupling::SRZ, Strategy::Reserve, automatic);
+    CHECK(r.completed);
+    CHECK(r.collisions == 0);
+}
