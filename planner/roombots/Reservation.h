@@ -1,0 +1,47 @@
+#pragma once
+// holon's reservation strategy for Roombots assembly (the coordination rule of
+// rules/library/roombots_reserve.holon on the kinematic model), and the walk planner it rests on,
+// which the automatic seeding recipe also asks. Internal to planner/roombots.
+
+#include "planner/roombots/World.h"
+
+#include <map>
+#include <unordered_map>
+
+namespace holon::planner::roombots::detail {
+
+class Reservation : public World {
+public:
+    Reservation(const CloudTable& table, Coupling coupling, const Setting& setting) : World(table, coupling, setting) {
+        for (const Posture& p : postures_)  // an upper bound on a step's reach, for the A* heuristic
+            if (p.headFace == Cell{0, 0, -1} && p.cells[3].z == 0) maxStep_ = std::max(maxStep_, planar(p.cells[3], {}));
+    }
+    AssemblyResult run();
+    /// The fewest actions from standing upright at `start` to filling seed `seed`, around `blocked`
+    /// (-1: no walk).
+    int walk(int seed, const Cell& start, const CellSet& blocked);
+    /// How many postures a walk can stand in at the seed's foot (joint setting and yaw) change shape
+    /// into the seed without sweeping `blocked`.
+    int seatings(int seed, const CellSet& blocked) const;
+
+private:
+    void assignSeeds();
+    /// A* over (foot, yaw, joint setting): the fewest actions to stand seated in the body's seed.
+    std::vector<Move> plan(int i, const CellSet& blocked) const;
+    /// In seeding order, metamodules start whenever their whole walk can be reserved; a metamodule
+    /// never starts before one earlier in the order.
+    void startWaiting();
+    /// The body's previous action (if any) has ended: release what the rest of the walk does not need
+    /// and start the next action.
+    void advanceReserved(int i);
+
+    double maxStep_ = 1;
+    std::vector<int> order_;
+    std::unordered_map<Cell, int, CellHash> reserved_;
+    std::map<int, std::vector<Move>> paths_;
+    std::vector<Move> waitingPath_;  // the plan of the next metamodule to start
+    std::pair<int, int> planned_{-1, -1};
+    int version_ = 0;
+};
+
+}  // namespace holon::planner::roombots::detail
