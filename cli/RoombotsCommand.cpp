@@ -125,13 +125,16 @@ int run(const RoombotsArgs& a) {
     for (const std::string& m : a.metamodules) couplings.push_back(rb::parseCoupling(m));
     std::vector<rb::Strategy> strategies;
     for (const std::string& s : a.strategies) strategies.push_back(rb::parseStrategy(s));
-    if (a.recipe != "given" && a.recipe != "auto") throw InputError("--recipe '" + a.recipe + "': use given (the structure's own) or auto");
     const std::vector<rb::Setting> settings = rb::loadScenario(a.structure, a.seed, a.runs);
     const rb::CloudTable table = rb::CloudTable::load(a.clouds.empty() ? rb::CloudTable::defaultPath() : a.clouds);
     // The seeding order per metamodule configuration and run: the structure's, or derived (--recipe auto).
     std::map<std::pair<rb::Coupling, int>, rb::Setting> runSettings;
     for (rb::Coupling c : couplings)
         for (int r = 0; r < static_cast<int>(settings.size()); ++r) runSettings[{c, r}] = settings[r];
+    if (a.recipe != "given" && a.recipe != "auto") {
+        const rb::Recipe recipe = rb::loadRecipe(a.recipe, settings.front().recipe);
+        for (auto& [key, setting] : runSettings) setting.recipe = recipe;
+    }
     if (a.recipe == "auto") {
         std::vector<std::pair<rb::Coupling, int>> keys;
         for (const auto& [key, setting] : runSettings) keys.push_back(key);
@@ -176,7 +179,7 @@ int run(const RoombotsArgs& a) {
         return 0;
     }
     std::cout << a.structure << ": " << settings.front().recipe.seeds.size() << " metamodules, " << settings.size() << " runs per cell (";
-    for (std::size_t r = 0; r < settings.size(); ++r) std::cout << (r ? ", " : "") << settings[r].recipe.name;
+    for (int r = 0; r < static_cast<int>(settings.size()); ++r) std::cout << (r ? ", " : "") << runSettings.at({couplings.front(), r}).recipe.name;
     std::cout << ")\n";
     if (a.recipe == "auto")
         for (rb::Coupling c : couplings) {
@@ -207,7 +210,7 @@ Run addRoombotsCommand(CLI::App& app) {
     sub->add_option("--structure", a->structure, "cube (experiment I), chair (experiment II) or a recipe file");
     sub->add_option("--metamodule", a->metamodules, "metamodule configurations: PAR PER SRS SRZ (default all)")->delimiter(',');
     sub->add_option("--strategy", a->strategies, "greedy slope step (the paper's, default) and/or reserve (holon's)")->delimiter(',');
-    sub->add_option("--recipe", a->recipe, "given (the structure's seeding order, default) or auto (derived from the kinematics)");
+    sub->add_option("--recipe", a->recipe, "given (the structure's seeding order, default), auto (derived from the kinematics) or a recipe file");
     sub->add_option("--runs", a->runs, "runs per configuration and strategy (default: the paper's 3 for cube, 4 for chair)");
     sub->add_option("--seed", a->seed, "random seed of the shifted starts");
     sub->add_option("--stall", a->stall, "K: a deadlock is K steps in which no metamodule comes closer to an active seed");

@@ -94,7 +94,7 @@ void validate(const Setting& s, const std::string& where) {
         if (used.count(start)) throw InputError(where + ": a start stands inside the structure");
 }
 
-Setting loadFile(const std::string& path) {
+Setting parseFile(const std::string& path) {
     const std::string text = rules::readTextFile(path);
     std::istringstream lines(text);
     std::string line;
@@ -124,6 +124,11 @@ Setting loadFile(const std::string& path) {
             throw InputError(where + ": unknown line '" + word + "'; use `seed` or `start`");
         }
     }
+    return s;
+}
+
+Setting loadFile(const std::string& path) {
+    Setting s = parseFile(path);
     validate(s, path);
     return s;
 }
@@ -163,6 +168,19 @@ std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, i
     for (int run = 0; run < (runs > 0 ? runs : 1); ++run)  // later runs from starts shifted by up to two fields
         settings.push_back({file.recipe, run == 0 ? file.starts : shifted(file.starts, 0, 2, random)});
     return settings;
+}
+
+Recipe loadRecipe(const std::string& path, const Recipe& structure) {
+    Setting s = parseFile(path);
+    s.starts.assign(s.recipe.seeds.size(), Cell{1 << 20, 0, 0});  // a recipe file needs no starts
+    validate(s, path);
+    std::set<std::array<Cell, 4>> mine, theirs;
+    for (const Seed& seed : s.recipe.seeds) mine.insert(seed.cells);
+    for (const Seed& seed : structure.seeds) theirs.insert(seed.cells);
+    if (mine != theirs)
+        throw InputError(path + ": the recipe's seeds are not the structure's; a recipe orders the same " +
+                         std::to_string(structure.seeds.size()) + " seeds (cells, foot first)");
+    return s.recipe;
 }
 
 }  // namespace holon::planner::roombots

@@ -34,4 +34,8 @@ struct Setting {
 /// recipes in turn; a file: its starts, then starts shifted by up to two fields).
 std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, int runs = 0);
 
+/// A seeding order from a recipe file (its `start` lines are ignored) for a structure with the same
+/// seeds.
+Recipe loadRecipe(const std::string& path, const Recipe& structure);
+
 }  // namespace holon::planner::roombots
