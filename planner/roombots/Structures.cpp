@@ -75,6 +75,13 @@ void validate(const Setting& s, const std::string& where) {
     if (s.starts.size() != s.recipe.seeds.size())
         throw InputError(where + ": " + std::to_string(s.recipe.seeds.size()) + " seeds but " + std::to_string(s.starts.size()) +
                          " starts; give one `start x,y` per seed");
+    if (s.recipe.seeds.size() > 100) throw InputError(where + ": " + std::to_string(s.recipe.seeds.size()) + " seeds; holon roombots takes at most 100");
+    constexpr int kReach = 500;  // the floor holon simulates is the box around seeds and starts
+    auto far = [](const Cell& c) { return std::abs(c.x) > kReach || std::abs(c.y) > kReach; };
+    for (const Seed& seed : s.recipe.seeds)
+        if (far(seed.cells[0])) throw InputError(where + ": a seed lies more than 500 fields from the origin; move the structure closer");
+    for (const Cell& start : s.starts)
+        if (start.x != 1 << 20 && far(start)) throw InputError(where + ": a start lies more than 500 fields from the origin; move it closer");
     std::set<Cell> used;
     for (std::size_t i = 0; i < s.recipe.seeds.size(); ++i) {
         const auto& cells = s.recipe.seeds[i].cells;
@@ -172,7 +179,7 @@ std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, i
 
 Recipe loadRecipe(const std::string& path, const Recipe& structure) {
     Setting s = parseFile(path);
-    s.starts.assign(s.recipe.seeds.size(), Cell{1 << 20, 0, 0});  // a recipe file needs no starts
+    s.starts.assign(s.recipe.seeds.size(), Cell{1 << 20, 0, 0});  // a recipe file needs no starts (this one is ignored)
     validate(s, path);
     std::set<std::array<Cell, 4>> mine, theirs;
     for (const Seed& seed : s.recipe.seeds) mine.insert(seed.cells);
