@@ -144,6 +144,12 @@ int run(const RoombotsArgs& a) {
         });
     }
 
+    for (rb::Coupling c : couplings)  // a shape the configuration cannot take is the structure's fault, not the strategy's
+        for (int s : rb::unfillableSeeds(table, c, settings.front())) {
+            const auto& cells = settings.front().recipe.seeds[s].cells;
+            std::cerr << "holon: warning: seed " << s << " (" << rb::shapeName(rb::classify(cells)) << " from " << cells[0].x << ','
+                      << cells[0].y << ") is a posture no " << rb::couplingName(c) << " metamodule can take; its runs will deadlock\n";
+        }
     std::vector<Job> jobs;
     for (rb::Coupling c : couplings)
         for (rb::Strategy s : strategies)

@@ -48,6 +48,10 @@ struct AssemblyOptions {
 /// can be walked to and filled, and leaves every later seed fillable. The given order if none exists.
 Recipe automaticRecipe(const CloudTable& table, Coupling coupling, const Setting& setting);
 
+/// The seeds no metamodule of this configuration can change shape into, even on an empty floor
+/// (indices into the recipe).
+std::vector<int> unfillableSeeds(const CloudTable& table, Coupling coupling, const Setting& setting);
+
 AssemblyResult assemble(const CloudTable& table, Coupling coupling, Strategy strategy, const Setting& setting,
                         const AssemblyOptions& options = {});
 

@@ -53,4 +53,12 @@ Recipe automaticRecipe(const CloudTable& table, Coupling coupling, const Setting
     return recipe;
 }
 
+std::vector<int> unfillableSeeds(const CloudTable& table, Coupling coupling, const Setting& setting) {
+    const detail::Reservation probe(table, coupling, setting);
+    std::vector<int> unfillable;
+    for (int s = 0; s < static_cast<int>(setting.recipe.seeds.size()); ++s)
+        if (probe.seatings(s, {}) == 0) unfillable.push_back(s);
+    return unfillable;
+}
+
 }  // namespace holon::planner::roombots
