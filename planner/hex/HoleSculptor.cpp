@@ -289,9 +289,10 @@ void HoleSculptor::smooth(std::int64_t k, int gravity) {
     for (int e = 0; e < 6; ++e)
         if (hole_[k + array_->step(e)] >= 0) return;
     const std::int64_t down = array_->step(gravity);
-    for (int side : {gravity + 2, gravity + 5}) {
+    for (int side : {gravity, gravity + 2, gravity + 5}) {
         const std::int64_t n = k + array_->step(side);
         if (!array_->inside(n) || module_[n] || hole_[n] >= 0) continue;
+        if (side == gravity && !options_.dropOverhangs) continue;
         int hops = 0;
         for (int h = 1; h <= 3; ++h) {
             const std::int64_t c = n + h * down;
@@ -301,7 +302,8 @@ void HoleSculptor::smooth(std::int64_t k, int gravity) {
                 break;
             }
         }
-        if (hops < 2) continue;
+        // A neighbouring column must be more than one hop lower; k's own column only needs a gap.
+        if (hops < (side == gravity ? 1 : 2)) continue;
         const std::int64_t to = n + (hops - 1) * down;
         // k's neighbours after the move (k empty, `to` filled) must form one arc around k.
         int arcs = 0, filledAround = 0;

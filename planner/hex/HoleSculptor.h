@@ -18,6 +18,7 @@ struct SculptOptions {
     double holeDensity = 0.01;    // initial holes per lattice point of the source
     int startWindow = 100;        // initial holes start moving at a uniformly random timestep below this
     bool keepConnected = false;   // holon's improvement: refuse deletions and collapses that split the mass locally
+    bool dropOverhangs = false;   // holon's improvement: a column head with a gap below it falls into the gap
     std::uint64_t seed = 1;
 };
 
