@@ -44,7 +44,7 @@ TEST_CASE("every timestep conserves the modules and keeps every hole and its she
         CAPTURE(plan);
         const std::string p = plan;
         const std::string from = p.substr(0, p.find(' ')), to = p.substr(p.find(' ') + 1);
-        for (const auto [keep, drop] : {std::pair{false, false}, std::pair{true, false}, std::pair{true, true}}) {
+        for (const auto& [keep, drop] : {std::pair{false, false}, std::pair{true, false}, std::pair{true, true}}) {
             const HexArray array(60);
             const auto source = sculptShape(array, from, "--from"), target = sculptShape(array, to, "--to");
             const TriPlan tri = planTriRegions(array, source, target, 6.0);
