@@ -146,6 +146,7 @@ Run addHexCommand(CLI::App& app) {
     sub->add_option("--decay", a->setup.options.decay, "c_decay of the temperature test");
     sub->add_option("--hole-density", a->setup.options.holeDensity, "initial holes per source lattice point");
     sub->add_flag("--drop-overhangs", a->setup.options.dropOverhangs, "a column head with a gap below it falls into the gap");
+    sub->add_flag("--flexible-growth", a->setup.options.flexibleGrowth, "growth nodes also start with one module more or fewer in their disk");
     sub->add_flag("--keep-connected", a->setup.options.keepConnected, "refuse deletions and collapses that split the mass locally");
     sub->add_option("--threads", a->threads, "parallel runs (default: the machine's cores)");
     sub->add_option("--out", a->out, "directory for series.csv, series.svg (metrics over time) and SVG frames of the first run");

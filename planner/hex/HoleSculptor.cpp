@@ -31,7 +31,7 @@ HoleSculptor::HoleSculptor(const HexArray& array, const std::vector<std::uint8_t
         for (Vec v : offsets) out.push_back(array.offset(v));
         return out;
     };
-    disk1_ = steps(hexDisk(1)), ring2_ = steps(hexRing(2)), disk2_ = steps(hexDisk(2)), disk3_ = steps(hexDisk(3));
+    disk1_ = steps(hexDisk(1)), ring2_ = steps(hexRing(2)), ring3_ = steps(hexRing(3)), disk2_ = steps(hexDisk(2)), disk3_ = steps(hexDisk(3));
     for (Vec v : hexDisk(3)) distance3_.push_back(hexDistance(v, {}));
     for (int d = 0; d < 6; ++d) {
         const Vec v = hex.direction(d);
@@ -189,7 +189,23 @@ void HoleSculptor::tryCreate(std::int64_t k) {
         if (!array_->inside(i) || hole_[i] >= 0) return;
         modules += module_[i];
     }
-    if (modules != 12) return;
+    // holon's improvement (--flexible-growth): one module more than a shepherd group needs moves out
+    // onto an empty target point just outside the disk, one fewer is borrowed from a module just
+    // outside it, so that growth also starts on the faces where no disk holds exactly 12.
+    std::int64_t spill = -1, borrow = -1;
+    if (modules != 12) {
+        if (!options_.flexibleGrowth || (modules != 13 && modules != 11)) return;
+        for (std::int64_t o : ring3_) {
+            const std::int64_t c = k + o;
+            if (!array_->inside(c) || hole_[c] >= 0) continue;
+            if (modules == 13 && !module_[c] && (*target_)[c]) spill = c;
+            if (modules == 11 && module_[c] && !shepherdsAnother(c, -1) && !(*target_)[c]) borrow = c;
+        }
+        if (spill < 0 && borrow < 0) return;
+        if (borrow >= 0 && options_.keepConnected && splitsLocally(borrow, {borrow}, {})) return;
+    }
+    if (spill >= 0) set(spill, true, -1);
+    if (borrow >= 0) set(borrow, false, -1);
     const int id = static_cast<int>(holesById_.size());
     for (std::int64_t o : disk1_) set(k + o, false, id);
     for (std::int64_t o : ring2_) set(k + o, true, -1);

@@ -19,6 +19,7 @@ struct SculptOptions {
     int startWindow = 100;        // initial holes start moving at a uniformly random timestep below this
     bool keepConnected = false;   // holon's improvement: refuse deletions and collapses that split the mass locally
     bool dropOverhangs = false;   // holon's improvement: a column head with a gap below it falls into the gap
+    bool flexibleGrowth = false;  // holon's improvement: growth with one module more or fewer than a shepherd group
     std::uint64_t seed = 1;
 };
 
@@ -90,7 +91,7 @@ private:
     // Offsets (index steps): disk of radius 1 and 2, ring 2, radius-3 disk, and per direction the
     // leading cells a move empties, the trailing cells it fills, the rest of the new shepherd
     // group, and the shepherds ordered by how far they lie toward the direction.
-    std::vector<std::int64_t> disk1_, ring2_, disk2_, disk3_;
+    std::vector<std::int64_t> disk1_, ring2_, ring3_, disk2_, disk3_;
     std::vector<int> distance3_;  // hops of each disk3_ cell from the centre
     std::vector<std::int64_t> leading_[6], trailing_[6], newRing_[6], uppermost_[6];
 };
