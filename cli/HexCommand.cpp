@@ -87,6 +87,16 @@ void writeOutputs(const HexArgs& a, const std::vector<planner::hex::SculptResult
     }
 }
 
+/// The improvements over seed 003 a run uses, by flag name.
+std::vector<std::string> improvements(const planner::hex::SculptOptions& o) {
+    std::vector<std::string> on;
+    const std::pair<bool, const char*> flags[] = {{o.dropOverhangs, "drop-overhangs"}, {o.flexibleGrowth, "flexible-growth"}, {o.roll, "roll"},
+                                                  {o.deleteOverflow, "delete-overflow"}, {o.growInside, "grow-inside"}, {o.keepConnected, "keep-connected"}};
+    for (const auto& [set, name] : flags)
+        if (set) on.push_back(name);
+    return on;
+}
+
 int run(HexArgs a) {
     if (a.reps < 1 || a.reps > 1000) throw InputError("--reps " + std::to_string(a.reps) + ": choose 1 to 1000");
     if (a.setup.steps < 1) throw InputError("--steps must be positive");
@@ -115,12 +125,15 @@ int run(HexArgs a) {
         nlohmann::json j{{"from", a.setup.from}, {"to", a.setup.to}, {"size", a.setup.size}, {"reps", a.reps},
                          {"modules", js(modules)}, {"steps", a.setup.steps}, {"tri_regions", runs[0].triRegions},
                          {"completeness", js(completeness)}, {"stability", js(stability)}, {"compliance", js(compliance)},
-                         {"islands", js(islands)}, {"seconds", js(seconds)}, {"keep_connected", a.setup.options.keepConnected}};
+                         {"islands", js(islands)}, {"seconds", js(seconds)}, {"keep_connected", a.setup.options.keepConnected},
+                         {"improvements", improvements(a.setup.options)}};
         std::cout << j.dump() << '\n';
     } else {
         std::cout << std::fixed << std::setprecision(2) << a.setup.from << " -> " << a.setup.to << " on " << a.setup.size << "x" << a.setup.size
                   << ", " << a.reps << " reps of " << a.setup.steps << " timesteps, " << runs[0].triRegions << " tri-regions"
-                  << (a.setup.options.keepConnected ? ", connectivity-preserving" : "") << '\n'
+                  << (improvements(a.setup.options).empty() ? "" : ", holon's improvements:");
+        for (const std::string& i : improvements(a.setup.options)) std::cout << " --" << i;
+        std::cout << '\n'
                   << "  modules " << std::setprecision(0) << modules.mean << std::setprecision(2) << "\n  max compliance " << 100 * compliance.mean
                   << "% (std " << 100 * compliance.std << ")\n  max completeness " << 100 * completeness.mean << "% (std " << 100 * completeness.std
                   << ")\n  max stability " << 100 * stability.mean << "% (std " << 100 * stability.std << ")\n  islands " << islands.mean
@@ -145,8 +158,15 @@ Run addHexCommand(CLI::App& app) {
     sub->add_option("--tri", a->setup.triFraction, "tri-region edge as a fraction of the array side");
     sub->add_option("--decay", a->setup.options.decay, "c_decay of the temperature test");
     sub->add_option("--hole-density", a->setup.options.holeDensity, "initial holes per source lattice point");
+    sub->add_flag_callback("--improved", [a] {
+        auto& o = a->setup.options;
+        o.dropOverhangs = o.flexibleGrowth = o.roll = o.deleteOverflow = o.growInside = o.keepConnected = true;
+    }, "all of holon's improvements: --drop-overhangs --flexible-growth --roll --delete-overflow --grow-inside --keep-connected");
     sub->add_flag("--drop-overhangs", a->setup.options.dropOverhangs, "a column head with a gap below it falls into the gap");
     sub->add_flag("--flexible-growth", a->setup.options.flexibleGrowth, "growth nodes also start with one module more or fewer in their disk");
+    sub->add_flag("--roll", a->setup.options.roll, "outside the target, surface modules roll down one-hop slopes");
+    sub->add_flag("--delete-overflow", a->setup.options.deleteOverflow, "modules outside the target delete holes in growth regions too");
+    sub->add_flag("--grow-inside", a->setup.options.growInside, "growth only where the new shepherd group lies inside the target");
     sub->add_flag("--keep-connected", a->setup.options.keepConnected, "refuse deletions and collapses that split the mass locally");
     sub->add_option("--threads", a->threads, "parallel runs (default: the machine's cores)");
     sub->add_option("--out", a->out, "directory for series.csv, series.svg (metrics over time) and SVG frames of the first run");

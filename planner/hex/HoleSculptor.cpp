@@ -175,7 +175,9 @@ void HoleSculptor::step() {
 void HoleSculptor::activate(std::int64_t k) {
     if (!module_[k] || !onSurface(k)) return;
     const TriRegion& region = plan_->regions[plan_->regionOf[k]];
-    if (region.growth) tryCreate(k);
+    // holon's improvement (--delete-overflow): a module outside the target also deletes holes in a
+    // growth region; otherwise the holes still alive at the end inflate the mass beyond the target.
+    if (region.growth && !(options_.deleteOverflow && !(*target_)[k])) tryCreate(k);
     else tryDelete(k, region.gravity);
 }
 
@@ -187,6 +189,9 @@ void HoleSculptor::tryCreate(std::int64_t k) {
     for (std::int64_t o : disk2_) {
         const std::int64_t i = k + o;
         if (!array_->inside(i) || hole_[i] >= 0) return;
+        // holon's improvement (--grow-inside): the new shepherd group must lie inside the target,
+        // or creation at the target's edge pushes modules out of it.
+        if (options_.growInside && !(*target_)[i]) return;
         modules += module_[i];
     }
     // holon's improvement (--flexible-growth): one module more than a shepherd group needs moves out
@@ -305,7 +310,12 @@ void HoleSculptor::smooth(std::int64_t k, int gravity) {
     for (int e = 0; e < 6; ++e)
         if (hole_[k + array_->step(e)] >= 0) return;
     const std::int64_t down = array_->step(gravity);
-    for (int side : {gravity, gravity + 2, gravity + 5}) {
+    // holon's improvement (--roll): outside the target a column head also steps onto a neighbouring
+    // column only one hop lower, and rolls down the two slopes at 60° from gravity, so that the thin
+    // filaments deletion leaves behind drain towards the target instead of standing.
+    const bool roll = options_.roll && !(*target_)[k];
+    for (int side : {gravity, gravity + 2, gravity + 5, gravity + 1}) {
+        if (side == gravity + 1 && !roll) continue;
         const std::int64_t n = k + array_->step(side);
         if (!array_->inside(n) || module_[n] || hole_[n] >= 0) continue;
         if (side == gravity && !options_.dropOverhangs) continue;
@@ -319,7 +329,7 @@ void HoleSculptor::smooth(std::int64_t k, int gravity) {
             }
         }
         // A neighbouring column must be more than one hop lower; k's own column only needs a gap.
-        if (hops < (side == gravity ? 1 : 2)) continue;
+        if (hops < (side == gravity || roll ? 1 : 2)) continue;
         const std::int64_t to = n + (hops - 1) * down;
         // k's neighbours after the move (k empty, `to` filled) must form one arc around k.
         int arcs = 0, filledAround = 0;

@@ -19,6 +19,9 @@ struct SculptOptions {
     int startWindow = 100;        // initial holes start moving at a uniformly random timestep below this
     bool keepConnected = false;   // holon's improvement: refuse deletions and collapses that split the mass locally
     bool dropOverhangs = false;   // holon's improvement: a column head with a gap below it falls into the gap
+    bool roll = false;            // holon's improvement: outside the target, surface modules roll down one-hop slopes
+    bool deleteOverflow = false;  // holon's improvement: modules outside the target delete holes in growth regions too
+    bool growInside = false;      // holon's improvement: growth only where the new shepherd group lies inside the target
     bool flexibleGrowth = false;  // holon's improvement: growth with one module more or fewer than a shepherd group
     std::uint64_t seed = 1;
 };

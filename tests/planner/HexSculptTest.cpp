@@ -44,12 +44,13 @@ TEST_CASE("every timestep conserves the modules and keeps every hole and its she
         CAPTURE(plan);
         const std::string p = plan;
         const std::string from = p.substr(0, p.find(' ')), to = p.substr(p.find(' ') + 1);
-        for (const auto& [keep, drop] : {std::pair{false, false}, std::pair{true, false}, std::pair{true, true}}) {
+        for (int variant : {0, 1, 2}) {  // the paper's algorithm, --keep-connected, --improved (everything)
             const HexArray array(60);
             const auto source = sculptShape(array, from, "--from"), target = sculptShape(array, to, "--to");
             const TriPlan tri = planTriRegions(array, source, target, 6.0);
             SculptOptions options;
-            options.keepConnected = keep, options.dropOverhangs = drop, options.decay = 5, options.seed = 7;
+            options.keepConnected = variant >= 1, options.decay = 5, options.seed = 7;
+            options.dropOverhangs = options.flexibleGrowth = options.roll = options.deleteOverflow = options.growInside = variant == 2;
             HoleSculptor s(array, source, target, tri, options);
             const std::int64_t modules = countModules(s);
             REQUIRE(modules == s.modules());
