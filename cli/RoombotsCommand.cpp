@@ -184,7 +184,7 @@ int run(const RoombotsArgs& a) {
                   << '\n';
         return 0;
     }
-    std::cout << a.structure << ": " << settings.front().recipe.seeds.size() << " metamodules, " << settings.size() << " runs per cell (";
+    std::cout << a.structure << ": " << settings.front().recipe.seeds.size() << " metamodules, " << settings.size() << (settings.size() == 1 ? " run" : " runs") << " per cell (";
     for (int r = 0; r < static_cast<int>(settings.size()); ++r) std::cout << (r ? ", " : "") << runSettings.at({couplings.front(), r}).recipe.name;
     std::cout << ")\n";
     if (a.recipe == "auto")
