@@ -121,6 +121,7 @@ int run(const RoombotsArgs& a) {
         return 0;
     }
     if (a.runs < 0 || a.runs > 1000) throw InputError("--runs " + std::to_string(a.runs) + ": choose 1 to 1000");
+    if (a.stall < 1 || a.stall > 10000) throw InputError("--stall " + std::to_string(a.stall) + ": choose 1 to 10000 steps");
     std::vector<rb::Coupling> couplings;
     for (const std::string& m : a.metamodules) couplings.push_back(rb::parseCoupling(m));
     std::vector<rb::Strategy> strategies;
