@@ -6,6 +6,7 @@
 // Recipe file format (one run):
 //   # comment
 //   seed GROUP x,y,z x,y,z x,y,z x,y,z     the four cells, foot first (z = 0)
+//   voxel x,y,z ...                        or the structure's cells, split into seeds (Voxels.cpp)
 //   start x,y                              one per seed
 
 #include "planner/roombots/Structures.h"
@@ -107,6 +108,7 @@ Setting parseFile(const std::string& path) {
     std::string line;
     Setting s;
     s.recipe.name = path;
+    std::vector<Cell> voxels;
     for (int number = 1; std::getline(lines, line); ++number) {
         const std::string where = path + ":" + std::to_string(number);
         std::istringstream in(line.substr(0, line.find('#')));
@@ -121,6 +123,9 @@ Setting parseFile(const std::string& path) {
                 c = parseCell(cell, where);
             }
             s.recipe.seeds.push_back(seed);
+        } else if (word == "voxel") {
+            std::string cell;
+            while (in >> cell) voxels.push_back(parseCell(cell, where));
         } else if (word == "start") {
             std::string cell;
             if (!(in >> cell)) throw InputError(where + ": `start` needs a cell x,y");
@@ -128,8 +133,12 @@ Setting parseFile(const std::string& path) {
             c.z = 0;
             s.starts.push_back(c);
         } else {
-            throw InputError(where + ": unknown line '" + word + "'; use `seed` or `start`");
+            throw InputError(where + ": unknown line '" + word + "'; use `seed`, `voxel` or `start`");
         }
+    }
+    if (!voxels.empty()) {
+        if (!s.recipe.seeds.empty()) throw InputError(path + ": give either `seed` lines or `voxel` lines, not both");
+        s.recipe.seeds = seedsFromVoxels(voxels, path);
     }
     return s;
 }

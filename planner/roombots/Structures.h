@@ -34,6 +34,10 @@ struct Setting {
 /// recipes in turn; a file: its starts, then starts shifted by up to two fields).
 std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, int runs = 0);
 
+/// A bare voxel model split into seeds: chains of four face-adjacent voxels, each standing on the
+/// floor by one end, in a canonical order (throws InputError naming `where` when none exists).
+std::vector<Seed> seedsFromVoxels(const std::vector<Cell>& voxels, const std::string& where);
+
 /// A seeding order from a recipe file (its `start` lines are ignored) for a structure with the same
 /// seeds.
 Recipe loadRecipe(const std::string& path, const Recipe& structure);

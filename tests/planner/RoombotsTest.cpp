@@ -175,3 +175,26 @@ TEST_CASE("the automatic seeding order is a permutation of the seeds in which ea
     CHECK(r.completed);
     CHECK(r.collisions == 0);
 }
+
+TEST_CASE("a bare voxel model is split into metamodules standing on the floor, or refused") {
+    std::vector<Cell> chair;
+    for (const Setting& s : loadScenario("chair", 1, 1))
+        for (const Seed& seed : s.recipe.seeds) chair.insert(chair.end(), seed.cells.begin(), seed.cells.end());
+    const std::vector<Seed> seeds = seedsFromVoxels(chair, "chair");
+    REQUIRE(seeds.size() == 6);
+    std::set<Cell> covered;
+    for (const Seed& s : seeds) {
+        CHECK(s.cells[0].z == 0);
+        for (int k = 0; k < 4; ++k) {
+            CHECK(covered.insert(s.cells[k]).second);
+            if (k > 0) {
+                const Cell d = s.cells[k] - s.cells[k - 1];
+                CHECK(std::abs(d.x) + std::abs(d.y) + std::abs(d.z) == 1);
+            }
+        }
+    }
+    CHECK(covered == std::set<Cell>(chair.begin(), chair.end()));
+    // A floating slab has no chain standing on the floor; five voxels cannot be metamodules.
+    CHECK_THROWS_WITH_AS(seedsFromVoxels({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}}, "slab"), doctest::Contains("cannot split the 4 voxels"), holon::InputError);
+    CHECK_THROWS_WITH_AS(seedsFromVoxels({{0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, 3}, {1, 0, 0}}, "five"), doctest::Contains("multiple of 4"), holon::InputError);
+}
