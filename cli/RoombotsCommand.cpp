@@ -49,7 +49,7 @@ void writeRun(const std::filesystem::path& dir, const Job& j, const rb::Setting&
         csv << a.module << ',' << a.begin << ',' << a.end << ',' << a.from.x << ',' << a.from.y << ',' << a.to.x << ',' << a.to.y << ','
             << a.forceX << ',' << a.forceY << ',' << a.seat << '\n';
     std::ofstream(dir / ("feet_" + name(j) + ".svg")) << rb::footTraceSvg(setting, j.result);
-    std::ofstream(dir / ("end_" + name(j) + ".svg")) << rb::isometricSvg(setting, j.result);
+    std::ofstream(dir / ("assembly_" + name(j) + ".svg")) << rb::assemblySvg(setting, j.result);
 }
 
 /// Collisions of the runs that did not deadlock, and of all runs.

@@ -2,7 +2,8 @@
 # Seed 001 §V: experiment I (the 4-metamodule cube, 3 shifted starts) and experiment II (the
 # 6-metamodule chair, 4 seeding recipes) for every metamodule configuration under the paper's three
 # force-field strategies and holon's reservation strategy: tables like Tables I and II and Fig. 5,
-# then foot traces (as Fig. 6) and end snapshots of one chair run per strategy in examples/roombots/out.
+# then foot traces (as Fig. 6) and assembly snapshots (as Fig. 7) of one chair run per strategy in
+# examples/roombots/out.
 # Usage: examples/roombots/run.sh [SEED]
 set -euo pipefail
 cd "$(dirname "$0")/../.."

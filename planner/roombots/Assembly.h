@@ -37,6 +37,7 @@ struct AssemblyResult {
     std::vector<Action> actions;
     std::vector<Seed> placed;  // seeds filled, in order
     std::vector<std::array<Cell, 4>> cells;  // every metamodule's cells at the end
+    std::vector<std::vector<std::array<Cell, 4>>> snapshots;  // every metamodule's cells each time a seed was filled
     std::string reason;        // why a deadlock was declared
 };
 

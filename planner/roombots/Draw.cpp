@@ -60,14 +60,14 @@ std::string footTraceSvg(const Setting& setting, const AssemblyResult& result) {
     return svg.str();
 }
 
-std::string isometricSvg(const Setting& setting, const AssemblyResult& result) {
+std::string isometricSvg(const Setting& setting, const std::vector<std::array<Cell, 4>>& cells) {
     struct Cube {
         Cell c;
         int module;
     };
     std::vector<Cube> cubes;
-    for (std::size_t m = 0; m < result.cells.size(); ++m)
-        for (const Cell& c : result.cells[m]) cubes.push_back({c, static_cast<int>(m)});
+    for (std::size_t m = 0; m < cells.size(); ++m)
+        for (const Cell& c : cells[m]) cubes.push_back({c, static_cast<int>(m)});
     // Nearer cubes (larger x + y, then higher) are painted last.
     std::sort(cubes.begin(), cubes.end(), [](const Cube& a, const Cube& b) {
         return std::tuple(a.c.x + a.c.y, a.c.z, a.c.x) < std::tuple(b.c.x + b.c.y, b.c.z, b.c.x);
@@ -105,6 +105,24 @@ std::string isometricSvg(const Setting& setting, const AssemblyResult& result) {
     }
     svg << "</svg>\n";
     return svg.str();
+}
+
+std::string assemblySvg(const Setting& setting, const AssemblyResult& result) {
+    std::vector<std::vector<std::array<Cell, 4>>> frames = result.snapshots;
+    if (frames.empty() || result.deadlocked) frames.push_back(result.cells);
+    std::ostringstream body;
+    double x = 0, height = 0;
+    for (const auto& cells : frames) {
+        std::string frame = isometricSvg(setting, cells);
+        const std::size_t w = frame.find("width='") + 7, h = frame.find("height='") + 8;
+        const double width = std::stod(frame.substr(w)), frameHeight = std::stod(frame.substr(h));
+        frame.replace(0, frame.find('>') + 1, "<svg x='" + std::to_string(x) + "' width='" + std::to_string(width) + "' height='" +
+                                                   std::to_string(frameHeight) + "'>");
+        body << frame;
+        x += width, height = std::max(height, frameHeight);
+    }
+    return "<svg xmlns='http://www.w3.org/2000/svg' width='" + std::to_string(x) + "' height='" + std::to_string(height) +
+           "'>\n<rect width='100%' height='100%' fill='white'/>\n" + body.str() + "</svg>\n";
 }
 
 }  // namespace holon::planner::roombots

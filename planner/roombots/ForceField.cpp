@@ -68,8 +68,7 @@ void ForceField::decide(int i) {
     Body& b = bodies_[i];
     if (b.placed) return;
     if (b.seed >= 0) {  // the seating has ended
-        b.placed = true;
-        result_.placed.push_back(setting_.recipe.seeds[b.seed]);
+        placed(i);
         for (const Cell& c : b.cells) structure_.insert(c);
         return;
     }

@@ -190,9 +190,8 @@ void Reservation::advanceReserved(int i) {
     for (const Cell& c : b.cloud)
         if (!keep.count(c) && reserved_.count(c) && reserved_[c] == i) reserved_.erase(c);
     if (path.empty()) {
-        b.placed = true;
+        placed(i);
         ++version_;
-        result_.placed.push_back(setting_.recipe.seeds[b.seed]);
         return;
     }
     const Move m = path.front();

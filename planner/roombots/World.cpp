@@ -93,6 +93,15 @@ void World::deadlock(const std::string& reason) {
     while (!events_.empty()) events_.pop();
 }
 
+void World::placed(int i) {
+    Body& b = bodies_[i];
+    b.placed = true;
+    result_.placed.push_back(setting_.recipe.seeds[b.seed]);
+    std::vector<std::array<Cell, 4>> cells;
+    for (const Body& o : bodies_) cells.push_back(o.cells);
+    result_.snapshots.push_back(std::move(cells));
+}
+
 AssemblyResult World::finish() {
     if (!done() && !result_.deadlocked) deadlock("no metamodule can move");
     result_.completed = done();

@@ -84,6 +84,8 @@ protected:
     /// Starts an action: the body takes its new state at once, and sweeps `cloud` until the end.
     void start(int i, const Move& m, bool seatAction, double fx, double fy);
     void deadlock(const std::string& reason);
+    /// Body i has filled its seed: it joins the structure, and every metamodule's cells are recorded.
+    void placed(int i);
     /// The result, once the event loop has stopped.
     AssemblyResult finish();
 
