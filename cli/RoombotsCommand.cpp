@@ -224,7 +224,7 @@ Run addRoombotsCommand(CLI::App& app) {
     sub->add_option("--clouds", a->clouds, "collision-cloud table (default: the one shipped with holon)");
     sub->add_option("--make-clouds", a->makeClouds, "compute the collision-cloud table from the kinematics, write it to FILE and stop");
     sub->add_option("--threads", a->threads, "parallel runs (default: the machine's cores)");
-    sub->add_option("--out", a->out, "directory for per-run traces (CSV), foot-trace pictures and end snapshots (SVG)");
+    sub->add_option("--out", a->out, "directory for per-run traces (CSV), foot-trace pictures and assembly snapshots (SVG)");
     sub->add_flag("--json", a->json, "print a JSON summary");
     sub->add_flag("--quiet", a->quiet, "no progress bar");
     return [a] { return run(*a); };
