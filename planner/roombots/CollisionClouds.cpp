@@ -82,8 +82,6 @@ bool standsOnFloor(const Posture& p) {
     return true;
 }
 
-bool isStep(const Posture& p) { return p.headFace == Cell{0, 0, -1} && p.cells[3].z == 0; }
-
 }  // namespace
 
 CloudTable CloudTable::compute() {
@@ -96,7 +94,7 @@ CloudTable CloudTable::compute() {
             const Joints j = Joints::fromIndex(i);
             const Posture p = m.posture(j, 0);
             if (!standsOnFloor(p)) continue;
-            if (isStep(p)) targets[{Transition::Kind::Step, p.cells, p.headYaw}].push_back(j);
+            if (p.stance()) targets[{Transition::Kind::Step, p.cells, p.headYaw}].push_back(j);
             targets[{Transition::Kind::Seat, p.cells, 0}].push_back(j);
         }
         auto& rows = table.table_[static_cast<int>(coupling)];

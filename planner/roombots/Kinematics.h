@@ -49,6 +49,8 @@ struct Posture {
     std::array<Cell, 4> cells;  // foot cell first, relative to the foot
     Cell headFace;              // direction the head connector faces
     int headYaw = 0;            // when the head faces down: the yaw of the head as the next foot
+    /// The head faces down onto the floor the foot stands on: the end of an inch-worm step.
+    bool stance() const { return headFace == Cell{0, 0, -1} && cells[3].z == 0; }
 };
 
 class Metamodule {

@@ -14,7 +14,7 @@ class Reservation : public World {
 public:
     Reservation(const CloudTable& table, Coupling coupling, const Setting& setting) : World(table, coupling, setting) {
         for (const Posture& p : postures_)  // an upper bound on a step's reach, for the A* heuristic
-            if (p.headFace == Cell{0, 0, -1} && p.cells[3].z == 0) maxStep_ = std::max(maxStep_, planar(p.cells[3], {}));
+            if (p.stance()) maxStep_ = std::max(maxStep_, planar(p.cells[3], {}));
     }
     AssemblyResult run();
     /// The fewest actions from standing upright at `start` to filling seed `seed`, around `blocked`

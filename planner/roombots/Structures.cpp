@@ -71,21 +71,18 @@ Cell parseCell(const std::string& text, const std::string& where) {
     throw InputError(where + ": '" + text + "' is not a cell; write x,y,z (or x,y for a start)");
 }
 
-void validate(const Setting& s, const std::string& where) {
-    if (s.recipe.seeds.empty()) throw InputError(where + ": no seeds; add lines `seed GROUP x,y,z x,y,z x,y,z x,y,z`");
-    if (s.starts.size() != s.recipe.seeds.size())
-        throw InputError(where + ": " + std::to_string(s.recipe.seeds.size()) + " seeds but " + std::to_string(s.starts.size()) +
-                         " starts; give one `start x,y` per seed");
-    if (s.recipe.seeds.size() > 100) throw InputError(where + ": " + std::to_string(s.recipe.seeds.size()) + " seeds; holon roombots takes at most 100");
-    constexpr int kReach = 500;  // the floor holon simulates is the box around seeds and starts
-    auto far = [](const Cell& c) { return std::abs(c.x) > kReach || std::abs(c.y) > kReach; };
-    for (const Seed& seed : s.recipe.seeds)
+constexpr int kReach = 500;  // the floor holon simulates is the box around seeds and starts
+bool far(const Cell& c) { return std::abs(c.x) > kReach || std::abs(c.y) > kReach; }
+
+/// Checks the seeds alone and returns the cells they fill.
+std::set<Cell> validateSeeds(const Recipe& recipe, const std::string& where) {
+    if (recipe.seeds.empty()) throw InputError(where + ": no seeds; add lines `seed GROUP x,y,z x,y,z x,y,z x,y,z`");
+    if (recipe.seeds.size() > 100) throw InputError(where + ": " + std::to_string(recipe.seeds.size()) + " seeds; holon roombots takes at most 100");
+    for (const Seed& seed : recipe.seeds)
         if (far(seed.cells[0])) throw InputError(where + ": a seed lies more than 500 fields from the origin; move the structure closer");
-    for (const Cell& start : s.starts)
-        if (start.x != 1 << 20 && far(start)) throw InputError(where + ": a start lies more than 500 fields from the origin; move it closer");
     std::set<Cell> used;
-    for (std::size_t i = 0; i < s.recipe.seeds.size(); ++i) {
-        const auto& cells = s.recipe.seeds[i].cells;
+    for (std::size_t i = 0; i < recipe.seeds.size(); ++i) {
+        const auto& cells = recipe.seeds[i].cells;
         const std::string seed = where + ": seed " + std::to_string(i);
         if (cells[0].z != 0) throw InputError(seed + " must stand with its foot on the floor (z = 0)");
         for (int k = 0; k < 4; ++k) {
@@ -98,8 +95,18 @@ void validate(const Setting& s, const std::string& where) {
             }
         }
     }
-    for (const Cell& start : s.starts)
+    return used;
+}
+
+void validate(const Setting& s, const std::string& where) {
+    const std::set<Cell> used = validateSeeds(s.recipe, where);
+    if (s.starts.size() != s.recipe.seeds.size())
+        throw InputError(where + ": " + std::to_string(s.recipe.seeds.size()) + " seeds but " + std::to_string(s.starts.size()) +
+                         " starts; give one `start x,y` per seed");
+    for (const Cell& start : s.starts) {
+        if (far(start)) throw InputError(where + ": a start lies more than 500 fields from the origin; move it closer");
         if (used.count(start)) throw InputError(where + ": a start stands inside the structure");
+    }
 }
 
 Setting parseFile(const std::string& path) {
@@ -187,9 +194,8 @@ std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, i
 }
 
 Recipe loadRecipe(const std::string& path, const Recipe& structure) {
-    Setting s = parseFile(path);
-    s.starts.assign(s.recipe.seeds.size(), Cell{1 << 20, 0, 0});  // a recipe file needs no starts (this one is ignored)
-    validate(s, path);
+    const Setting s = parseFile(path);  // its starts, if any, are not used
+    validateSeeds(s.recipe, path);
     std::set<std::array<Cell, 4>> mine, theirs;
     for (const Seed& seed : s.recipe.seeds) mine.insert(seed.cells);
     for (const Seed& seed : structure.seeds) theirs.insert(seed.cells);

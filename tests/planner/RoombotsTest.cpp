@@ -64,7 +64,7 @@ TEST_CASE("a stance read from the head is the same pose: reversed() and the head
         for (int i = 0; i < kJointSettings; ++i) {
             const Joints j = Joints::fromIndex(i);
             const Posture p = m.posture(j, 0);
-            if (!standsOnFloor(p) || p.headFace != Cell{0, 0, -1} || p.cells[3].z != 0) continue;
+            if (!standsOnFloor(p) || !p.stance()) continue;
             ++stances;
             const Posture r = m.posture(reversed(j), p.headYaw);
             for (int k = 0; k < 4; ++k) CHECK(r.cells[k] == p.cells[3 - k] - p.cells[3]);
@@ -102,7 +102,7 @@ TEST_CASE("the shipped collision-cloud table matches the kinematics") {
         for (std::size_t k = 0; k < row.size(); k += 9, ++checked) {
             CHECK(row[k].cloud == m.sweep(Joints{}, row[k].to, 0, CloudTable::kSamples, CloudTable::kRadius));
             const Posture p = m.posture(row[k].to, 0);
-            if (row[k].kind == Transition::Kind::Step) CHECK((p.headFace == Cell{0, 0, -1} && p.cells[3].z == 0));
+            if (row[k].kind == Transition::Kind::Step) CHECK(p.stance());
             // every step's reversal has its own row: a walk never runs off the table
             if (row[k].kind == Transition::Kind::Step) CHECK(!table.from(c, reversed(row[k].to)).empty());
         }
