@@ -125,7 +125,7 @@ int run(HexArgs a) {
         nlohmann::json j{{"from", a.setup.from}, {"to", a.setup.to}, {"size", a.setup.size}, {"reps", a.reps},
                          {"modules", js(modules)}, {"steps", a.setup.steps}, {"tri_regions", runs[0].triRegions},
                          {"completeness", js(completeness)}, {"stability", js(stability)}, {"compliance", js(compliance)},
-                         {"islands", js(islands)}, {"seconds", js(seconds)}, {"keep_connected", a.setup.options.keepConnected},
+                         {"islands", js(islands)}, {"seconds", js(seconds)},
                          {"improvements", improvements(a.setup.options)}};
         std::cout << j.dump() << '\n';
     } else {
