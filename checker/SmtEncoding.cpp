@@ -104,6 +104,11 @@ z3::expr SmtEncoding::memberPred(const State& s, int cell, const rules::CellPred
     return member(s, cell, [&](int c, CellValue v) { return engine_.predicateAccepts(pred, c, v); });
 }
 
+z3::expr SmtEncoding::memberCounted(const State& s, std::int32_t cell, const Expr& quantifier) {
+    z3::expr m = memberPred(s, cell, quantifier.pred);
+    return quantifier.kids.empty() ? m : m && guard(engine_.cellGuardOf(quantifier), &cell, s);
+}
+
 z3::expr SmtEncoding::massUnits(const State& s) {
     z3::expr total = ctx_.int_val(0);
     for (std::size_t i = 0; i < s.is.size(); ++i)
@@ -122,7 +127,7 @@ z3::expr SmtEncoding::number(const Expr& e, const State& s) {
     case Expr::Kind::Neg: return -number(e.kids[0], s);
     case Expr::Kind::Count: {
         z3::expr n = ctx_.int_val(0);
-        for (int i = 0; i < engine_.region().size(); ++i) n = n + z3::ite(memberPred(s, i, e.pred), ctx_.int_val(1), ctx_.int_val(0));
+        for (int i = 0; i < engine_.region().size(); ++i) n = n + z3::ite(memberCounted(s, i, e), ctx_.int_val(1), ctx_.int_val(0));
         return z3::to_real(n);
     }
     default: throw InputError("internal: not a number expression");
@@ -155,10 +160,11 @@ z3::expr SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
     case Expr::Kind::Some:
     case Expr::Kind::No:
     case Expr::Kind::All: {
+        // With a cell guard, all(T: G) asks every T cell to satisfy G; some/no count T cells where G holds.
         z3::expr any = ctx_.bool_val(false), all = ctx_.bool_val(true);
         for (int i = 0; i < n; ++i) {
-            z3::expr m = memberPred(s, i, e.pred);
-            any = any || m, all = all && m;
+            z3::expr m = memberCounted(s, i, e);
+            any = any || m, all = all && (e.kids.empty() ? m : z3::implies(memberPred(s, i, e.pred), m));
         }
         return e.kind == Expr::Kind::Some ? any : e.kind == Expr::Kind::No ? !any : all;
     }
@@ -259,14 +265,14 @@ z3::expr SmtEncoding::legal(const State& s) {
     return all;
 }
 
-z3::expr SmtEncoding::guardNumber(const rules::Engine::GuardNode& g, int placed, const State& s) {
+z3::expr SmtEncoding::guardNumber(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {
     switch (g.kind) {
     case Expr::Kind::Number: return ctx_.real_val(static_cast<int64_t>(g.value.num()), static_cast<int64_t>(g.value.den()));
-    case Expr::Kind::Add: return guardNumber(g.kids[0], placed, s) + guardNumber(g.kids[1], placed, s);
-    case Expr::Kind::Sub: return guardNumber(g.kids[0], placed, s) - guardNumber(g.kids[1], placed, s);
-    case Expr::Kind::Neg: return -guardNumber(g.kids[0], placed, s);
+    case Expr::Kind::Add: return guardNumber(g.kids[0], cells, s) + guardNumber(g.kids[1], cells, s);
+    case Expr::Kind::Sub: return guardNumber(g.kids[0], cells, s) - guardNumber(g.kids[1], cells, s);
+    case Expr::Kind::Neg: return -guardNumber(g.kids[0], cells, s);
     case Expr::Kind::Count: {
-        const int centre = engine_.instances()[placed].cells[g.around];
+        const int centre = cells[g.around];
         z3::expr count = ctx_.int_val(0);
         for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) {
             const int nb = engine_.region().neighbour(centre, d);
@@ -278,20 +284,20 @@ z3::expr SmtEncoding::guardNumber(const rules::Engine::GuardNode& g, int placed,
     }
 }
 
-z3::expr SmtEncoding::guard(const rules::Engine::GuardNode& g, int placed, const State& s) {
+z3::expr SmtEncoding::guard(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {
     switch (g.kind) {
     case Expr::Kind::Bool: return ctx_.bool_val(g.value.num() != 0);
-    case Expr::Kind::And: return guard(g.kids[0], placed, s) && guard(g.kids[1], placed, s);
-    case Expr::Kind::Or: return guard(g.kids[0], placed, s) || guard(g.kids[1], placed, s);
-    case Expr::Kind::Implies: return !guard(g.kids[0], placed, s) || guard(g.kids[1], placed, s);
-    case Expr::Kind::Not: return !guard(g.kids[0], placed, s);
-    case Expr::Kind::Compare: return compareExprs(g.op, guardNumber(g.kids[0], placed, s), guardNumber(g.kids[1], placed, s));
+    case Expr::Kind::And: return guard(g.kids[0], cells, s) && guard(g.kids[1], cells, s);
+    case Expr::Kind::Or: return guard(g.kids[0], cells, s) || guard(g.kids[1], cells, s);
+    case Expr::Kind::Implies: return !guard(g.kids[0], cells, s) || guard(g.kids[1], cells, s);
+    case Expr::Kind::Not: return !guard(g.kids[0], cells, s);
+    case Expr::Kind::Compare: return compareExprs(g.op, guardNumber(g.kids[0], cells, s), guardNumber(g.kids[1], cells, s));
     case Expr::Kind::Some:
     case Expr::Kind::No:
     case Expr::Kind::All: {
         rules::Engine::GuardNode count = g;
         count.kind = Expr::Kind::Count;
-        z3::expr c = guardNumber(count, placed, s);
+        z3::expr c = guardNumber(count, cells, s);
         const int degree = static_cast<int>(g.perDirection.size());
         return g.kind == Expr::Kind::Some ? c > 0 : g.kind == Expr::Kind::No ? c == 0 : c == degree;
     }
@@ -304,7 +310,7 @@ z3::expr SmtEncoding::matches(int placed, const State& s) {
     z3::expr all = ctx_.bool_val(true);
     for (int k = 0; k < p.size; ++k)
         all = all && member(s, p.cells[k], [&](int c, CellValue v) { return engine_.lhsAccepts(placed, k, c, v); });
-    if (const auto* g = engine_.guardOf(placed)) all = all && guard(*g, placed, s);
+    if (const auto* g = engine_.guardOf(placed)) all = all && guard(*g, engine_.instances()[placed].cells, s);
     return all;
 }
 
@@ -360,6 +366,8 @@ z3::expr SmtEncoding::delta(const Expr& e, int placed, const State& after, const
     case Expr::Kind::Sub: return delta(e.kids[0], placed, after, before) - delta(e.kids[1], placed, after, before);
     case Expr::Kind::Neg: return -delta(e.kids[0], placed, after, before);
     case Expr::Kind::Count: {
+        // A cell guard reads neighbours, so a rewrite changes counts beyond its own cells.
+        if (!e.kids.empty()) return number(e, after) - number(e, before);
         z3::expr d = ctx_.int_val(0);
         for (int k = 0; k < p.size; ++k)
             d = d + z3::ite(memberPred(after, p.cells[k], e.pred), ctx_.int_val(1), ctx_.int_val(0)) -

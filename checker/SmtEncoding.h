@@ -52,8 +52,11 @@ private:
     z3::expr member(const State& s, int cell, const std::function<bool(int combo, rules::CellValue v)>& accepts);
     z3::expr memberPred(const State& s, int cell, const rules::CellPredicate& pred);
     z3::expr inputCombo(int cell, int combo) const;
-    z3::expr guard(const rules::Engine::GuardNode& g, int placed, const State& s);
-    z3::expr guardNumber(const rules::Engine::GuardNode& g, int placed, const State& s);
+    /// A compiled guard; `cells` are the region indices of the pattern cells it names.
+    z3::expr guard(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s);
+    z3::expr guardNumber(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s);
+    /// The cell counts for a region quantifier: it satisfies the predicate (and the cell guard).
+    z3::expr memberCounted(const State& s, std::int32_t cell, const rules::Expr& quantifier);
     z3::expr connected(const rules::CellPredicate& pred, const State& s, bool positive);
     z3::expr reaches(const rules::Expr& e, const State& s, bool positive);
     /// Cell `to` of the successor takes the rewrite of cell `from` of the predecessor.

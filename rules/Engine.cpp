@@ -19,10 +19,21 @@ namespace holon::rules {
 
 namespace {
 
-void collectPredicates(const Expr& e, std::vector<const CellPredicate*>& out) {
+bool hasCellGuard(const Expr& e) {
+    const bool quantifier = e.kind == Expr::Kind::Count || e.kind == Expr::Kind::All || e.kind == Expr::Kind::Some || e.kind == Expr::Kind::No;
+    return quantifier && e.around < 0 && !e.kids.empty();
+}
+
+/// The predicates of the non-local expressions, and the quantifiers with a cell guard (whose
+/// guard is compiled as a one-cell pattern's, not as predicates over the region).
+void collectPredicates(const Expr& e, std::vector<const CellPredicate*>& out, std::vector<const Expr*>& guarded) {
     if (!e.pred.empty()) out.push_back(&e.pred);
     if (!e.target.empty()) out.push_back(&e.target);
-    for (const Expr& k : e.kids) collectPredicates(k, out);
+    if (hasCellGuard(e)) {
+        guarded.push_back(&e);
+        return;
+    }
+    for (const Expr& k : e.kids) collectPredicates(k, out, guarded);
 }
 
 /// The input combinations the tables must cover: those present in the region, or all of them.
@@ -79,11 +90,13 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     for (int p = 0; p < static_cast<int>(placed_.size()); ++p)
         placedIndex_[static_cast<std::size_t>(placed_[p].cells[0]) * tables_.shapeCount() + placed_[p].shape] = p;
     std::vector<const CellPredicate*> preds;
+    std::vector<const Expr*> guarded;
     const System& s = model.system();
-    for (const Constraint& c : s.constraints) collectPredicates(c.expr, preds);
-    if (s.goal) collectPredicates(*s.goal, preds);
+    for (const Constraint& c : s.constraints) collectPredicates(c.expr, preds, guarded);
+    if (s.goal) collectPredicates(*s.goal, preds, guarded);
     for (const Property& p : s.properties)
-        for (const Expr& e : p.exprs) collectPredicates(e, preds);
+        for (const Expr& e : p.exprs) collectPredicates(e, preds, guarded);
+    for (const Expr* e : guarded) cellGuards_.emplace(e, tables_.compileCellGuard(e->kids[0]));
     std::unordered_map<std::string, int> byText;
     for (const CellPredicate* p : preds) {
         const std::string text = printPredicate(s, *p);
@@ -113,9 +126,10 @@ Engine::~Engine() = default;
 Engine::Engine(Engine&&) noexcept = default;
 
 Engine::CompiledExpr Engine::compileExpr(const Expr& e) const {
-    CompiledExpr c{e.kind, e.op, e.value, -1, &e, {}};
+    CompiledExpr c{e.kind, e.op, e.value, -1, &e, {}, hasCellGuard(e)};
     if (!e.pred.empty()) c.predicate = predicateIndex_.at(&e.pred);
-    for (const Expr& k : e.kids) c.kids.push_back(compileExpr(k));
+    if (!c.cellGuard)
+        for (const Expr& k : e.kids) c.kids.push_back(compileExpr(k));
     return c;
 }
 
@@ -200,6 +214,7 @@ bool Engine::Evaluator::legal() const {
 
 Rational Engine::Evaluator::fastNumber(const CompiledExpr& e) const {
     auto kid = [&](int k) -> const CompiledExpr& { return e.kids[k]; };
+    if (e.cellGuard) return engine_->number(*e.source, cells_.data());
     switch (e.kind) {
     case Expr::Kind::Number: return e.value;
     case Expr::Kind::Count: return std::popcount(members_[e.predicate]);
@@ -213,6 +228,7 @@ Rational Engine::Evaluator::fastNumber(const CompiledExpr& e) const {
 
 bool Engine::Evaluator::fastHolds(const CompiledExpr& e) const {
     auto kid = [&](int k) -> const CompiledExpr& { return e.kids[k]; };
+    if (e.cellGuard) return engine_->holds(*e.source, cells_.data());
     switch (e.kind) {
     case Expr::Kind::Bool: return e.value.num() != 0;
     case Expr::Kind::And: return fastHolds(kid(0)) && fastHolds(kid(1));
@@ -242,6 +258,15 @@ bool Engine::Evaluator::fastHolds(const CompiledExpr& e) const {
     }
     default: return engine_->holds(*e.source, cells_.data());
     }
+}
+
+int Engine::countCells(const Expr& e, const CellValue* cells, bool withCellGuard) const {
+    const Mask& m = predicateMask(e.pred);
+    const GuardNode* guard = withCellGuard && !e.kids.empty() ? &cellGuards_.at(&e) : nullptr;
+    int n = 0;
+    for (std::int32_t i = 0; i < region_->size(); ++i)
+        n += test(m, combo_[i], cells[i]) && (!guard || tables_.guard(*guard, RegionCells{region_, cells, combo_.data()}, &i));
+    return n;
 }
 
 bool Engine::connected(const Mask& m, const CellValue* cells) const {
@@ -294,12 +319,7 @@ Rational Engine::number(const Expr& e, const CellValue* cells) const {
     case Expr::Kind::Add: return number(e.kids[0], cells) + number(e.kids[1], cells);
     case Expr::Kind::Sub: return number(e.kids[0], cells) - number(e.kids[1], cells);
     case Expr::Kind::Neg: return -number(e.kids[0], cells);
-    case Expr::Kind::Count: {
-        const Mask& m = predicateMask(e.pred);
-        int n = 0;
-        for (int i = 0; i < region_->size(); ++i) n += test(m, combo_[i], cells[i]);
-        return n;
-    }
+    case Expr::Kind::Count: return countCells(e, cells, true);
     default: return 0;
     }
 }
@@ -315,10 +335,9 @@ bool Engine::holds(const Expr& e, const CellValue* cells) const {
     case Expr::Kind::Some:
     case Expr::Kind::No:
     case Expr::Kind::All: {
-        const Mask& m = predicateMask(e.pred);
-        int n = 0;
-        for (int i = 0; i < region_->size(); ++i) n += test(m, combo_[i], cells[i]);
-        return e.kind == Expr::Kind::Some ? n > 0 : e.kind == Expr::Kind::No ? n == 0 : n == region_->size();
+        const int n = countCells(e, cells, true);
+        if (e.kind == Expr::Kind::All) return n == (e.kids.empty() ? region_->size() : countCells(e, cells, false));
+        return e.kind == Expr::Kind::Some ? n > 0 : n == 0;
     }
     case Expr::Kind::Connected: return connected(predicateMask(e.pred), cells);
     case Expr::Kind::Reaches: {

@@ -72,6 +72,8 @@ public:
     int rhsCopyFrom(int placed, int k) const;
     CellValue rhsValue(int placed, int k, CellValue v) const;
     const GuardNode* guardOf(int placed) const;
+    /// The compiled cell guard of a region quantifier of this system (`all(H: no nbr _)`).
+    const GuardNode& cellGuardOf(const Expr& quantifier) const { return cellGuards_.at(&quantifier); }
     bool guardAccepts(const GuardNode& node, int direction, int combo, CellValue v) const;
     bool predicateAccepts(const CellPredicate& pred, int combo, CellValue v) const { return tables_.test(predicateMask(pred), combo, v); }
     std::int64_t massUnitsOf(CellValue v) const { return tables_.massUnitsOf(v); }
@@ -116,6 +118,8 @@ private:
     bool test(const Mask& m, int combo, CellValue v) const { return tables_.test(m, combo, v); }
     const Mask& predicateMask(const CellPredicate& pred) const;
     bool connected(const Mask& m, const CellValue* cells) const;
+    /// Cells satisfying a region quantifier's predicate (and, if asked, its cell guard).
+    int countCells(const Expr& e, const CellValue* cells, bool withCellGuard) const;
 
     const Model* model_;
     const Region* region_;
@@ -127,6 +131,8 @@ private:
     std::vector<std::vector<std::int32_t>> byCell_;
     std::unordered_map<const CellPredicate*, int> predicateIndex_;
     std::vector<Mask> predicateMasks_;  // distinct predicates only: equal text, one mask
+    std::unordered_map<const Expr*, GuardNode> cellGuards_;  // per quantifier with a cell guard
+
     /// The constraints as trees whose predicates are already indices (the Evaluator's input).
     struct CompiledExpr {
         Expr::Kind kind;
@@ -135,6 +141,7 @@ private:
         int predicate = -1;
         const Expr* source = nullptr;
         std::vector<CompiledExpr> kids;
+        bool cellGuard = false;  // a quantifier with a cell guard: evaluated by the general path
     };
     std::vector<CompiledExpr> compiledConstraints_;
     CompiledExpr compileExpr(const Expr& e) const;

@@ -132,7 +132,15 @@ int Interpreter::countCells(const Expr& e, const Configuration& c, const Placeme
             n += matchesPredicate(e.pred, valueAt(centre + d, c), context(centre + d, c, at));
         return n;
     }
-    for (int i = 0; i < region_->size(); ++i) n += matchesPredicate(e.pred, c.cells[i], context(region_->cell(i), c, at));
+    for (int i = 0; i < region_->size(); ++i) {
+        if (!matchesPredicate(e.pred, c.cells[i], context(region_->cell(i), c, at))) continue;
+        if (!e.kids.empty()) {  // a cell guard, read with @0 at this cell
+            Placement here;
+            here.positions = {region_->cell(i)};
+            if (!holdsAt(e.kids[0], c, &here)) continue;
+        }
+        ++n;
+    }
     return n;
 }
 
@@ -147,6 +155,11 @@ bool Interpreter::holdsAt(const Expr& e, const Configuration& c, const Placement
     case Expr::Kind::Some: return countCells(e, c, at) > 0;
     case Expr::Kind::No: return countCells(e, c, at) == 0;
     case Expr::Kind::All: {
+        if (!e.kids.empty()) {  // every pred cell satisfies the cell guard
+            Expr unguarded = e;
+            unguarded.kids.clear();
+            return countCells(e, c, at) == countCells(unguarded, c, at);
+        }
         const int total = e.around >= 0 ? model_->lattice().degree() : region_->size();
         return countCells(e, c, at) == total;
     }

@@ -94,7 +94,10 @@ struct Expr {
         And, Or, Not, Implies,
         Compare,    // kids[0] op kids[1]
         Add, Sub, Neg,
-        Count,      // number of cells satisfying pred (in the region, or around pattern cell `around`)
+        // Number of cells satisfying pred (in the region, or around pattern cell `around`). In the
+        // region, an optional kids[0] is a local guard read with @0 at the cell (`count(H: no nbr _)`):
+        // only cells where it holds count, and all(T: G) means every T cell satisfies G.
+        Count,
         All, Some, No,
         Connected,  // the cells satisfying pred form one connected set
         Reaches,    // every pred cell follows `field` through pred cells to a target cell, acyclically

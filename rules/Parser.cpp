@@ -710,6 +710,17 @@ private:
             if (inGuard_) fail(loc, "a guard is local; write '" + word + " nbr ...', or make this a constraint");
             expect("(", "after " + word + ", as in " + word + "(F)");
             e.pred = predicate();
+            if (accept(":")) {  // a local condition on each of those cells, @0 being the cell
+                const int outerCells = patternCells_;
+                inGuard_ = true, patternCells_ = 1;
+                try {
+                    e.kids.push_back(boolExpr());
+                } catch (const Fail&) {
+                    inGuard_ = false, patternCells_ = outerCells;
+                    throw;
+                }
+                inGuard_ = false, patternCells_ = outerCells;
+            }
             expect(")", "to close " + word + "(...)");
         }
         return e;

@@ -57,6 +57,12 @@ RuleTables::GuardNode RuleTables::compileGuard(const Expr& e, const RuleShape& s
     return g;
 }
 
+RuleTables::GuardNode RuleTables::compileCellGuard(const Expr& guard) const {
+    RuleShape one;
+    one.offsets = {Vec{}};
+    return compileGuard(guard, one);
+}
+
 int RuleTables::comboIndex(std::uint32_t inputs) const {
     auto it = std::find(combos_.begin(), combos_.end(), inputs);
     return it == combos_.end() ? -1 : static_cast<int>(it - combos_.begin());
@@ -70,7 +76,7 @@ RuleTables::RuleTables(const Model& model, std::vector<std::uint32_t> combos)
     const Lattice& lattice = model.lattice();
     for (const RuleShape& shape : model.shapes()) {
         const DirectedRule& rule = model.rules()[shape.rule];
-        if (shape.offsets.size() > kMaxCells) throw InputError("rule '" + rule.name + "' has more than 8 cells");
+        if (shape.offsets.size() > kMaxCells) throw InputError("rule '" + rule.name + "' has more than " + std::to_string(kMaxCells) + " cells");
         Shape t;
         for (std::size_t k = 0; k < shape.offsets.size(); ++k) {
             t.lhs.push_back(compileTerm(rule.lhs()[k], &shape.offsets, shape.offsets[k], rule.reversed ? &rule.rhs()[k] : nullptr));

@@ -14,7 +14,7 @@ namespace holon::rules {
 
 class RuleTables {
 public:
-    static constexpr int kMaxCells = 8;  // pattern cells per rule
+    static constexpr int kMaxCells = 20;  // pattern cells per rule (a hex hole move reads 19)
 
     /// A bit set over (input combination, cell state).
     struct Mask {
@@ -59,6 +59,8 @@ public:
         return bit(node.perDirection[direction], combo, v);
     }
     Mask compilePredicate(const CellPredicate& pred, const std::vector<Vec>* pattern, Vec position) const;
+    /// A quantifier's cell guard (`all(H: no nbr _)`): a guard of a one-cell pattern.
+    GuardNode compileCellGuard(const Expr& guard) const;
 
     std::int64_t massUnitsOf(CellValue v) const { return mass_[v]; }
     std::int64_t massDenominator() const { return massDen_; }

@@ -123,3 +123,10 @@ TEST_CASE("bounded model checking finds the same shortest violation as the explo
     withInputs.witness["inputs"] = start.inputs;
     CHECK(checker::confirmCounterexample(withInputs, *w.model, w.region));
 }
+
+TEST_CASE("hex holes stay whole for every configuration of hex:r3, and every rule keeps the module count") {
+    test::World w(rules::librarySystem("hex_holes"), "hex:r3");
+    const auto r = prove(w, {"holes", "mass_conservation"});
+    CHECK(result(r, "holes").verdict == Verdict::Holds);
+    CHECK(result(r, "mass_conservation").verdict == Verdict::Holds);
+}

@@ -98,6 +98,28 @@ invariant joined: connected
     CHECK_FALSE(holds("joined", c));
 }
 
+TEST_CASE("a region quantifier with a cell guard reads each cell's neighbourhood, @0 being the cell") {
+    World w(test::parse(R"(system t
+field label: U | P | F
+field parent: dir if P
+rule r: U => F
+invariant pointed: all(F: some nbr P&parent=@0)
+invariant lonely: count(U: no nbr #) == 1 and some(F: count nbr U == 2) and no(P: no nbr #)
+)"), "square:4x1");
+    auto holds = [&](const char* name, const rules::Configuration& c) { return w.in->holds(w.system.property(name)->exprs[0], c); };
+    auto c = w.in->empty();
+    auto set = [&](int x, const std::string& v) { c.cells[w.region.indexOf({x, 0, 0})] = static_cast<rules::CellValue>(w.value(v)); };
+    set(0, "U"), set(1, "F"), set(2, "U");
+    CHECK_FALSE(holds("pointed", c));  // the F has no P pointing at it
+    CHECK_FALSE(holds("lonely", c));   // no U stands alone
+    set(2, "P&parent=-x");
+    CHECK(holds("pointed", c));
+    set(0, "_"), set(3, "U"), set(2, "_"), set(1, "F");
+    CHECK_FALSE(holds("pointed", c));
+    set(0, "U"), set(2, "U"), set(3, "_");
+    CHECK(holds("lonely", c) == false);  // two U, each next to the F
+}
+
 TEST_CASE("a copy term moves a module with its fields; blocking cells must be occupied") {
     rules::System s = test::parse(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/../examples/rules/sliding_cube.holon"));
     CHECK(rules::printSystem(test::parse(rules::printSystem(s))) == rules::printSystem(s));

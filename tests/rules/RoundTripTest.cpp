@@ -46,6 +46,7 @@ constraint connected and count(#) <= 10 - 1 and mass >= 3/2
 constraint all(F&target | _&!target) implies -count(P) < 0
 goal all(F&target | _&!target)
 invariant safe: some(F) and connected(F) and reaches(P, parent, F)
+invariant local: all(P: some nbr F | P&parent=@0) and count(F: count nbr # >= 2) >= 1 and no(U: no nbr P)
 ranking measure: -count(F), count(U) + count(P), 2
 progress p assuming mass >= count(target)
 holonomic h by move
@@ -57,5 +58,5 @@ conserves count cnt
     CHECK(again == s);
     CHECK(rules::printSystem(again) == printed);
     CHECK(s.rules.size() == 5);
-    CHECK(s.properties.size() == 5);
+    CHECK(s.properties.size() == 6);
 }
