@@ -23,26 +23,19 @@ double cartesianY(Vec v) { return -HexArray::kRowHeight * v.y; }
 
 HoleSculptor::HoleSculptor(const HexArray& array, const std::vector<std::uint8_t>& source, const std::vector<std::uint8_t>& target,
                            const TriPlan& plan, const SculptOptions& options)
-    : array_(&array), target_(&target), plan_(&plan), options_(options), random_(options.seed), module_(array.size(), 0),
-      class_(array.size(), 1), hole_(array.size(), -1), nearPerimeter_(array.size(), 0) {
+    : array_(&array), target_(&target), plan_(&plan), options_(options), random_(options.seed),
+      rules_(std::make_unique<HoleRules>(array)), cells_(array.size(), 0), class_(array.size(), 1), holeAt_(array.size(), -1),
+      nearPerimeter_(array.size(), 0) {
     const rules::Lattice& hex = rules::Lattice::get(rules::LatticeKind::Hex2D);
     auto steps = [&](const std::vector<Vec>& offsets) {
         std::vector<std::int64_t> out;
         for (Vec v : offsets) out.push_back(array.offset(v));
         return out;
     };
-    disk1_ = steps(hexDisk(1)), ring2_ = steps(hexRing(2)), ring3_ = steps(hexRing(3)), disk2_ = steps(hexDisk(2)), disk3_ = steps(hexDisk(3));
+    ring1_ = steps(hexRing(1)), disk1_ = steps(hexDisk(1)), ring2_ = steps(hexRing(2)), ring3_ = steps(hexRing(3)), disk2_ = steps(hexDisk(2)), disk3_ = steps(hexDisk(3));
     for (Vec v : hexDisk(3)) distance3_.push_back(hexDistance(v, {}));
     for (int d = 0; d < 6; ++d) {
         const Vec v = hex.direction(d);
-        std::vector<Vec> lead, trail, ring;
-        for (Vec o : hexDisk(3)) {
-            const int from = hexDistance(o, {}), to = hexDistance(o, v);
-            if (to <= 1 && from == 2) lead.push_back(o);
-            if (from <= 1 && to == 2) trail.push_back(o);
-            if (to == 2 && from > 1) ring.push_back(o);
-        }
-        leading_[d] = steps(lead), trailing_[d] = steps(trail), newRing_[d] = steps(ring);
         std::vector<Vec> shepherds = hexRing(2);
         const double ux = cartesianX(v), uy = cartesianY(v);
         std::stable_sort(shepherds.begin(), shepherds.end(), [&](Vec a, Vec b) {
@@ -57,7 +50,7 @@ HoleSculptor::HoleSculptor(const HexArray& array, const std::vector<std::uint8_t
         if (!target[i]) ++classCorrect_[class_[i]];  // everything starts empty
     }
     for (std::int64_t i : array.points())
-        if (source[i]) set(i, true, -1);
+        if (source[i]) set(i, rules_->module());
     placeInitialHoles();
 
     for (std::int64_t i : array.points())
@@ -88,12 +81,24 @@ HoleSculptor::HoleSculptor(const HexArray& array, const std::vector<std::uint8_t
     }
 }
 
-void HoleSculptor::set(std::int64_t i, bool module, std::int32_t hole) {
-    const bool wasCorrect = filled(i) == ((*target_)[i] != 0);
-    modules_ += static_cast<int>(module) - module_[i];
-    module_[i] = module, hole_[i] = hole;
-    const bool isCorrect = filled(i) == ((*target_)[i] != 0);
-    classCorrect_[class_[i]] += static_cast<int>(isCorrect) - static_cast<int>(wasCorrect);
+void HoleSculptor::set(std::int64_t i, Value v) {
+    const Value old = cells_[i];
+    cells_[i] = v;
+    changed(i, old);
+}
+
+void HoleSculptor::changed(std::int64_t i, Value old) {
+    const bool target = (*target_)[i] != 0, wasFilled = old != 0, isFilled = filled(i);
+    modules_ += static_cast<int>(module(i)) - static_cast<int>(old == rules_->module());
+    classCorrect_[class_[i]] += static_cast<int>(isFilled == target) - static_cast<int>(wasFilled == target);
+}
+
+std::int32_t HoleSculptor::holeOf(std::int64_t i) const {
+    if (cells_[i] == rules_->centre()) return holeAt_[i];
+    if (cells_[i] != rules_->rim()) return -1;
+    for (std::int64_t o : ring1_)
+        if (cells_[i + o] == rules_->centre()) return holeAt_[i + o];
+    return -1;
 }
 
 // Choice: initial holes are dropped at random source points whose radius-2 disk lies in the
@@ -101,35 +106,31 @@ void HoleSculptor::set(std::int64_t i, bool module, std::int32_t hole) {
 void HoleSculptor::placeInitialHoles() {
     std::vector<std::int64_t> candidates;
     for (std::int64_t i : array_->points())
-        if (module_[i]) candidates.push_back(i);
+        if (module(i)) candidates.push_back(i);
     const auto attempts = static_cast<std::int64_t>(options_.holeDensity * static_cast<double>(candidates.size()));
     for (std::int64_t a = 0; a < attempts; ++a) {
         const std::int64_t c = candidates[random_.below(candidates.size())];
         bool clear = true;
-        for (std::int64_t o : disk2_) clear &= array_->inside(c + o) && module_[c + o];
+        for (std::int64_t o : disk2_) clear &= array_->inside(c + o) && module(c + o);
         if (!clear) continue;
         const int id = static_cast<int>(holesById_.size());
-        for (std::int64_t o : disk1_) set(c + o, false, id);
+        for (std::int64_t o : ring1_) set(c + o, rules_->rim());
+        set(c, rules_->centre());
+        holeAt_[c] = id;
         holesById_.push_back({c, static_cast<int>(random_.below(6)), static_cast<int>(random_.below(options_.startWindow)), true});
         ++liveHoles_;
     }
 }
 
+// The move is hex_holes.holon's hole_move, run by the compiled engine: its left side asks for the
+// complete new shepherd group, which also keeps the move off every other hole's shepherds.
 bool HoleSculptor::canMove(int id, int d) const {
-    const std::int64_t c = holesById_[id].centre;
-    for (std::int64_t o : leading_[d]) {
-        const std::int64_t i = c + o;
-        if (!array_->inside(i) || !module_[i]) return false;
-        if (shepherdsAnother(i, id)) return false;
-    }
-    for (std::int64_t o : newRing_[d])
-        if (!array_->inside(c + o) || !module_[c + o]) return false;
-    return true;
+    return rules_->engine().matches(cells_.data(), holesById_[id].centre, rules_->move(d));
 }
 
 bool HoleSculptor::shepherdsAnother(std::int64_t i, int id) const {
     for (int e = 0; e < 6; ++e) {  // a module next to a hole's cell is one of its shepherds
-        const std::int32_t h = hole_[i + array_->step(e)];
+        const std::int32_t h = holeOf(i + array_->step(e));
         if (h >= 0 && h != id) return true;
     }
     return false;
@@ -137,16 +138,22 @@ bool HoleSculptor::shepherdsAnother(std::int64_t i, int id) const {
 
 void HoleSculptor::move(int id, int d) {
     Hole& h = holesById_[id];
-    for (std::int64_t o : leading_[d]) set(h.centre + o, false, id);
-    for (std::int64_t o : trailing_[d]) set(h.centre + o, true, -1);
+    const BoxEngine& engine = rules_->engine();
+    Value old[rules::RuleTables::kMaxCells];
+    engine.apply(cells_.data(), h.centre, rules_->move(d), old);
+    const auto steps = engine.cellSteps(rules_->move(d));
+    for (std::size_t k = 0; k < steps.size(); ++k)
+        if (cells_[h.centre + steps[k]] != old[k]) changed(h.centre + steps[k], old[k]);
+    holeAt_[h.centre] = -1;
     h.centre += array_->step(d);
+    holeAt_[h.centre] = id;
     ++counts_.holeMoves;
 }
 
 bool HoleSculptor::onSurface(std::int64_t k) const {
     for (int d = 0; d < 6; ++d) {
         const std::int64_t n = k + array_->step(d);
-        if (!module_[n] && hole_[n] < 0) return true;
+        if (!filled(n)) return true;
     }
     return false;
 }
@@ -166,14 +173,14 @@ void HoleSculptor::step() {
         for (std::size_t j = 0; j < n; ++j) activate(activePoints_[(first + j) % n]);
         for (std::size_t j = 0; j < n; ++j) {
             const std::int64_t k = activePoints_[(first + j) % n];
-            if (module_[k] && onSurface(k)) smooth(k, plan_->regions[plan_->regionOf[k]].gravity);
+            if (module(k) && onSurface(k)) smooth(k, plan_->regions[plan_->regionOf[k]].gravity);
         }
     }
     ++time_;
 }
 
 void HoleSculptor::activate(std::int64_t k) {
-    if (!module_[k] || !onSurface(k)) return;
+    if (!module(k) || !onSurface(k)) return;
     const TriRegion& region = plan_->regions[plan_->regionOf[k]];
     // holon's improvement (--delete-overflow): a module outside the target also deletes holes in a
     // growth region; otherwise the holes still alive at the end inflate the mass beyond the target.
@@ -188,11 +195,11 @@ void HoleSculptor::tryCreate(std::int64_t k) {
     int modules = 0;
     for (std::int64_t o : disk2_) {
         const std::int64_t i = k + o;
-        if (!array_->inside(i) || hole_[i] >= 0) return;
+        if (!array_->inside(i) || holeCell(i)) return;
         // holon's improvement (--grow-inside): the new shepherd group must lie inside the target,
         // or creation at the target's edge pushes modules out of it.
         if (options_.growInside && !(*target_)[i]) return;
-        modules += module_[i];
+        modules += module(i);
     }
     // holon's improvement (--flexible-growth): one module more than a shepherd group needs moves out
     // onto an empty target point just outside the disk, one fewer is borrowed from a module just
@@ -202,18 +209,19 @@ void HoleSculptor::tryCreate(std::int64_t k) {
         if (!options_.flexibleGrowth || (modules != 13 && modules != 11)) return;
         for (std::int64_t o : ring3_) {
             const std::int64_t c = k + o;
-            if (!array_->inside(c) || hole_[c] >= 0) continue;
-            if (modules == 13 && !module_[c] && (*target_)[c]) spill = c;
-            if (modules == 11 && module_[c] && !shepherdsAnother(c, -1) && !(*target_)[c]) borrow = c;
+            if (!array_->inside(c) || holeCell(c)) continue;
+            if (modules == 13 && !module(c) && (*target_)[c]) spill = c;
+            if (modules == 11 && module(c) && !shepherdsAnother(c, -1) && !(*target_)[c]) borrow = c;
         }
         if (spill < 0 && borrow < 0) return;
         if (borrow >= 0 && options_.keepConnected && splitsLocally(borrow, {borrow}, {})) return;
     }
-    if (spill >= 0) set(spill, true, -1);
-    if (borrow >= 0) set(borrow, false, -1);
-    const int id = static_cast<int>(holesById_.size());
-    for (std::int64_t o : disk1_) set(k + o, false, id);
-    for (std::int64_t o : ring2_) set(k + o, true, -1);
+    if (spill >= 0) set(spill, rules_->module());
+    if (borrow >= 0) set(borrow, 0);
+    for (std::int64_t o : ring1_) set(k + o, rules_->rim());
+    set(k, rules_->centre());
+    for (std::int64_t o : ring2_) set(k + o, rules_->module());
+    holeAt_[k] = static_cast<std::int32_t>(holesById_.size());
     holesById_.push_back({k, static_cast<int>(random_.below(6)), time_ + 1, true});
     ++liveHoles_, ++counts_.created;
 }
@@ -225,18 +233,18 @@ void HoleSculptor::tryDelete(std::int64_t k, int gravity) {
     if ((*target_)[k]) return;
     int id = -1;
     for (std::int64_t o : disk2_) {
-        const std::int32_t h = hole_[k + o];
+        const std::int32_t h = holeOf(k + o);
         if (h < 0) continue;
         if (id >= 0 && h != id) return;
         id = h;
     }
     if (id < 0) return;
     bool touches = false;
-    for (int d = 0; d < 6; ++d) touches |= hole_[k + array_->step(d)] == id;
+    for (int d = 0; d < 6; ++d) touches |= holeOf(k + array_->step(d)) == id;
     if (!touches) return;
     const std::int64_t c = holesById_[id].centre;
     int shepherds = 0;
-    for (std::int64_t o : ring2_) shepherds += module_[c + o];
+    for (std::int64_t o : ring2_) shepherds += module(c + o);
     if (shepherds != 12) return;
     const int up = (gravity + 3) % 6;
     if (canMove(id, up)) {
@@ -255,8 +263,9 @@ void HoleSculptor::tryDelete(std::int64_t k, int gravity) {
         ++counts_.refusedSplits;
         return;
     }
-    for (std::int64_t o : disk1_) set(c + o, true, -1);
-    for (std::int64_t i : emptied) set(i, false, -1);
+    for (std::int64_t o : disk1_) set(c + o, rules_->module());
+    for (std::int64_t i : emptied) set(i, 0);
+    holeAt_[c] = -1;
     holesById_[id].alive = false;
     --liveHoles_, ++counts_.deleted;
 }
@@ -276,7 +285,7 @@ std::vector<std::int64_t> HoleSculptor::nearestTheSurface(int id, int toward) co
         int hops = 4;
         for (std::size_t e = 0; e < disk3_.size(); ++e) {
             const std::int64_t i = centre + order[j] + disk3_[e];
-            if (!module_[i] && hole_[i] < 0) hops = std::min(hops, distance3_[e]);
+            if (!filled(i)) hops = std::min(hops, distance3_[e]);
         }
         rank.emplace_back(hops, j);
     }
@@ -308,7 +317,7 @@ int HoleSculptor::towardSurface(std::int64_t centre, std::int64_t node, int up) 
 // break a hole), and the move must land next to modules other than k.
 void HoleSculptor::smooth(std::int64_t k, int gravity) {
     for (int e = 0; e < 6; ++e)
-        if (hole_[k + array_->step(e)] >= 0) return;
+        if (holeCell(k + array_->step(e))) return;
     const std::int64_t down = array_->step(gravity);
     // holon's improvement (--roll): outside the target a column head also steps onto a neighbouring
     // column only one hop lower, and rolls down the two slopes at 60° from gravity, so that the thin
@@ -317,13 +326,13 @@ void HoleSculptor::smooth(std::int64_t k, int gravity) {
     for (int side : {gravity, gravity + 2, gravity + 5, gravity + 1}) {
         if (side == gravity + 1 && !roll) continue;
         const std::int64_t n = k + array_->step(side);
-        if (!array_->inside(n) || module_[n] || hole_[n] >= 0) continue;
+        if (!array_->inside(n) || filled(n)) continue;
         if (side == gravity && !options_.dropOverhangs) continue;
         int hops = 0;
         for (int h = 1; h <= 3; ++h) {
             const std::int64_t c = n + h * down;
             if (!array_->inside(c)) break;
-            if (module_[c] || hole_[c] >= 0) {
+            if (filled(c)) {
                 hops = h;
                 break;
             }
@@ -345,8 +354,8 @@ void HoleSculptor::smooth(std::int64_t k, int gravity) {
             ++counts_.refusedSplits;
             continue;
         }
-        set(k, false, -1);
-        set(to, true, -1);
+        set(k, 0);
+        set(to, rules_->module());
         ++counts_.collapsed;
         return;
     }
@@ -414,7 +423,7 @@ double HoleSculptor::compliance() const {
 }
 
 std::int64_t HoleSculptor::islands() const {
-    std::vector<std::uint8_t> seen(module_.size(), 0);
+    std::vector<std::uint8_t> seen(cells_.size(), 0);
     std::int64_t largest = 0;
     std::vector<std::int64_t> stack;
     for (std::int64_t s : array_->points()) {
@@ -424,7 +433,7 @@ std::int64_t HoleSculptor::islands() const {
         while (!stack.empty()) {
             const std::int64_t c = stack.back();
             stack.pop_back();
-            mods += module_[c];
+            mods += module(c);
             for (int d = 0; d < 6; ++d) {
                 const std::int64_t m = c + array_->step(d);
                 if (!seen[m] && filled(m)) seen[m] = 1, stack.push_back(m);

@@ -6,9 +6,11 @@
 
 #include "planner/Random.h"
 #include "planner/hex/HexArray.h"
+#include "planner/hex/HoleRules.h"
 #include "planner/hex/TriRegions.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace holon::planner::hex {
@@ -48,10 +50,10 @@ public:
     double compliance() const;
     /// Modules outside the largest connected mass (modules and hole cells, 6-adjacency).
     std::int64_t islands() const;
-    bool module(std::int64_t i) const { return module_[i] != 0; }
+    bool module(std::int64_t i) const { return cells_[i] == rules_->module(); }
     /// Centres of the holes alive now.
     std::vector<std::int64_t> holeCentres() const;
-    bool holeCell(std::int64_t i) const { return hole_[i] >= 0; }
+    bool holeCell(std::int64_t i) const { return cells_[i] == rules_->rim() || cells_[i] == rules_->centre(); }
     const HexArray& array() const { return *array_; }
     const std::vector<std::uint8_t>& target() const { return *target_; }
 
@@ -61,8 +63,13 @@ private:
         int direction = 0, start = 0;
         bool alive = false;
     };
-    void set(std::int64_t i, bool module, std::int32_t hole);
-    bool filled(std::int64_t i) const { return module_[i] || hole_[i] >= 0; }
+    using Value = HoleRules::Value;
+    void set(std::int64_t i, Value v);
+    /// Bookkeeping (module count, metrics) after cell i changed from `old`.
+    void changed(std::int64_t i, Value old);
+    bool filled(std::int64_t i) const { return cells_[i] != 0; }
+    /// The hole a cell belongs to, or -1.
+    std::int32_t holeOf(std::int64_t i) const;
     bool onSurface(std::int64_t k) const;
     void placeInitialHoles();
     bool canMove(int id, int d) const;
@@ -82,8 +89,10 @@ private:
     SculptOptions options_;
     Random random_;
     int time_ = 0;
-    std::vector<std::uint8_t> module_, class_;  // class: 0 stays filled, 1 stays empty, 2 to fill, 3 to empty
-    std::vector<std::int32_t> hole_;            // per cell: the hole it belongs to, or -1
+    std::unique_ptr<const HoleRules> rules_;
+    std::vector<Value> cells_;                  // the ensemble, as hex_holes.holon's cell states
+    std::vector<std::uint8_t> class_;           // class: 0 stays filled, 1 stays empty, 2 to fill, 3 to empty
+    std::vector<std::int32_t> holeAt_;          // per hole centre: its hole's id; -1 elsewhere
     std::vector<Hole> holesById_;
     std::vector<std::int64_t> activePoints_;    // lattice points inside active tri-regions, shuffled once
     std::vector<double> nearPerimeter_;         // d_near: hops to the target's perimeter
@@ -91,12 +100,11 @@ private:
     std::int64_t classSize_[4] = {}, classCorrect_[4] = {};
     std::int64_t modules_ = 0, liveHoles_ = 0;
     SculptCounts counts_;
-    // Offsets (index steps): disk of radius 1 and 2, ring 2, radius-3 disk, and per direction the
-    // leading cells a move empties, the trailing cells it fills, the rest of the new shepherd
-    // group, and the shepherds ordered by how far they lie toward the direction.
-    std::vector<std::int64_t> disk1_, ring2_, ring3_, disk2_, disk3_;
+    // Offsets (index steps): ring 1, disk of radius 1 and 2, ring 2 and 3, radius-3 disk, and per
+    // direction the shepherds ordered by how far they lie toward the direction.
+    std::vector<std::int64_t> ring1_, disk1_, ring2_, ring3_, disk2_, disk3_;
     std::vector<int> distance3_;  // hops of each disk3_ cell from the centre
-    std::vector<std::int64_t> leading_[6], trailing_[6], newRing_[6], uppermost_[6];
+    std::vector<std::int64_t> uppermost_[6];
 };
 
 }  // namespace holon::planner::hex
