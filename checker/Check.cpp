@@ -173,11 +173,16 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
                 if (ex->pathTo(s).size() < ex->pathTo(best).size()) best = s;
             r.verdict = Verdict::Violated;
             r.trace = traceTo(*ex, best);
-            r.trace->marked = cutOff(region, ex->cells(best));
+            // Mark what a person should look at: the cells whose local condition fails, else the
+            // cells cut off from the largest part.
+            const auto last = ex->cells(best);
+            r.trace->marked = e.guardFailures(p.exprs[0], last.data());
+            const bool local = !r.trace->marked.empty();
+            if (!local) r.trace->marked = cutOff(region, last);
             r.witness = {{"state", best}, {"distance", r.trace->steps.size() - 1}};
             r.summary = "violated after " + std::to_string(r.trace->steps.size() - 1) + " steps";
             r.trace->description = "invariant '" + p.name + "' fails after " + std::to_string(r.trace->steps.size() - 1) + " steps" +
-                                   (r.trace->marked.empty() ? "" : "; crossed cells are cut off");
+                                   (local ? "; crossed cells break its local condition" : r.trace->marked.empty() ? "" : "; crossed cells are cut off");
             break;
         }
         case rules::Property::Kind::Conserves: {

@@ -269,6 +269,20 @@ int Engine::countCells(const Expr& e, const CellValue* cells, bool withCellGuard
     return n;
 }
 
+std::vector<int> Engine::guardFailures(const Expr& e, const CellValue* cells) const {
+    std::vector<int> out;
+    if (e.kind == Expr::Kind::And) {
+        for (const Expr& k : e.kids)
+            for (int i : guardFailures(k, cells)) out.push_back(i);
+    } else if (e.kind == Expr::Kind::All && hasCellGuard(e)) {
+        const Mask& m = predicateMask(e.pred);
+        const GuardNode& guard = cellGuards_.at(&e);
+        for (std::int32_t i = 0; i < region_->size(); ++i)
+            if (test(m, combo_[i], cells[i]) && !tables_.guard(guard, RegionCells{region_, cells, combo_.data()}, &i)) out.push_back(i);
+    }
+    return out;
+}
+
 bool Engine::connected(const Mask& m, const CellValue* cells) const {
     thread_local std::vector<std::int32_t> stack;
     thread_local std::vector<std::uint32_t> seen;

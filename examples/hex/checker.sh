@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Seed 003's hole moves checked with holon's own checker (rules/library/hex_holes.holon):
+#  1. three holes wandering in a hex:r6 disk: every interleaving keeps every hole whole and the
+#     module count (115,417 states);
+#  2. deletion as the paper words it empties a shepherd of a neighbouring hole:
+#     out/checker/shared_shepherd.svg;
+#  3. even with that fixed, deletion pinches off a protruding element (Fig. 6):
+#     out/checker/pinch_off.svg, crossed modules are cut off.
+# Every trace is replayed through the reference interpreter. Needs a build (bash scripts/build).
+set -u
+cd "$(dirname "$0")/../.."
+holon=${HOLON:-build/cli/holon}
+[ -x "$holon" ] || scripts/build >/dev/null
+in=examples/hex/checker
+out=examples/hex/out/checker
+mkdir -p "$out"
+"$holon" check rules/library/hex_holes.holon --region hex:r6 --from $in/three_holes.txt \
+    --property holes --property mass_conservation
+echo
+"$holon" check tests/checker/broken/hex_delete_shared.holon --region hex:r5 --from $in/two_holes.txt \
+    --property holes --svg "$out/shared_shepherd.svg" | sed -n '1,6p'
+echo
+"$holon" check rules/library/hex_holes.holon --region hex:r4 --from $in/neck.txt \
+    --property one_mass --svg "$out/pinch_off.svg" --trace-out "$out/pinch_off.itf.json" | sed -n '1,6p'
+echo "(pictures in $out/)"
