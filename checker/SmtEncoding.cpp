@@ -301,6 +301,21 @@ z3::expr SmtEncoding::guard(const rules::Engine::GuardNode& g, const std::int32_
         const int degree = static_cast<int>(g.perDirection.size());
         return g.kind == Expr::Kind::Some ? c > 0 : g.kind == Expr::Kind::No ? c == 0 : c == degree;
     }
+    case Expr::Kind::Connected: {
+        // The accepted neighbours form a connected set: one of the (at most 2^6) connected sets.
+        const int degree = static_cast<int>(g.perDirection.size());
+        std::vector<z3::expr> accepted;
+        for (int d = 0; d < degree; ++d)
+            accepted.push_back(member(s, engine_.region().neighbour(cells[g.around], d), [&](int c, CellValue v) { return engine_.guardAccepts(g, d, c, v); }));
+        z3::expr any = ctx_.bool_val(false);
+        for (std::uint32_t set = 0; set < (1u << degree); ++set) {
+            if (!engine_.tables().directionsConnected(set)) continue;
+            z3::expr exactly = ctx_.bool_val(true);
+            for (int d = 0; d < degree; ++d) exactly = exactly && ((set >> d) & 1u ? accepted[d] : !accepted[d]);
+            any = any || exactly;
+        }
+        return any;
+    }
     default: throw InputError("internal: not a guard condition");
     }
 }

@@ -30,6 +30,7 @@ bool atomHolds(const Atom& a, CellValue value, const CellContext& at) {
 }  // namespace
 
 bool matchesTerm(const CellTerm& term, CellValue value, const CellContext& at) {
+    if (term.copyFrom >= 0) return at.pattern && at.position == (*at.pattern)[term.copyFrom];  // `@k` in a guard
     if (term.base == CellTerm::Base::Empty && value != 0) return false;
     if (term.base == CellTerm::Base::Occupied && value == 0) return false;
     for (const Atom& a : term.atoms)

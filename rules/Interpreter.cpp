@@ -7,6 +7,7 @@
 
 #include "rules/Interpreter.h"
 
+#include <algorithm>
 #include <deque>
 
 namespace holon::rules {
@@ -163,7 +164,20 @@ bool Interpreter::holdsAt(const Expr& e, const Configuration& c, const Placement
         const int total = e.around >= 0 ? model_->lattice().degree() : region_->size();
         return countCells(e, c, at) == total;
     }
-    case Expr::Kind::Connected: return connected(e.pred, c);
+    case Expr::Kind::Connected: {
+        if (e.around < 0) return connected(e.pred, c);
+        // The neighbours of the pattern cell that satisfy pred, joined by lattice adjacency.
+        const Lattice& lattice = model_->lattice();
+        const Vec centre = at->positions[e.around];
+        std::vector<Vec> members;
+        for (Vec d : lattice.directions())
+            if (matchesPredicate(e.pred, valueAt(centre + d, c), context(centre + d, c, at))) members.push_back(centre + d);
+        std::vector<Vec> reached(members.begin(), members.begin() + (members.empty() ? 0 : 1));
+        for (std::size_t k = 0; k < reached.size(); ++k)
+            for (Vec m : members)
+                if (lattice.adjacent(reached[k], m) && std::find(reached.begin(), reached.end(), m) == reached.end()) reached.push_back(m);
+        return reached.size() == members.size();
+    }
     case Expr::Kind::Reaches: return reaches(e, c);
     default: return false;  // numeric kinds never reach here: the parser types every expression
     }

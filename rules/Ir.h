@@ -63,7 +63,8 @@ struct CellTerm {
     std::vector<Atom> atoms;
     bool hasOffset = false;
     Vec offset;         // explicit position in lattice coordinates, `@(x,y)`
-    int copyFrom = -1;  // right sides only: `@k`, the cell takes the state pattern cell k had (a move)
+    int copyFrom = -1;  // `@k`: on a right side the cell takes the state pattern cell k had (a move);
+                        // in a guard's predicate the cell is pattern cell k (`connected nbr # | @2`)
     SourceLoc loc;
     friend bool operator==(const CellTerm&, const CellTerm&) = default;
 };
@@ -99,7 +100,8 @@ struct Expr {
         // only cells where it holds count, and all(T: G) means every T cell satisfies G.
         Count,
         All, Some, No,
-        Connected,  // the cells satisfying pred form one connected set
+        Connected,  // the cells satisfying pred form one connected set; with `around` (guards): the
+                    // neighbours of that pattern cell satisfying pred are connected among themselves
         Reaches,    // every pred cell follows `field` through pred cells to a target cell, acyclically
     } kind = Kind::Bool;
     Rational value;

@@ -660,8 +660,14 @@ private:
         for (auto [word, kind] : quantifiers)
             if (accept(word)) return quantifier(kind, loc, word);
         if (accept("connected")) {
-            nonLocal(loc, "connected");
             Expr e = node(Expr::Kind::Connected, loc);
+            if (accept("nbr")) {  // local: the neighbours satisfying pred touch each other
+                if (!inGuard_) fail(loc, "'connected nbr' looks at a rule's neighbourhood and belongs in a guard");
+                aroundCell(e);
+                e.pred = predicate();
+                return e;
+            }
+            nonLocal(loc, "connected");
             if (accept("(")) {
                 e.pred = predicate();
                 expect(")", "after the cells of connected(...)");
@@ -698,13 +704,7 @@ private:
         Expr e = node(kind, loc);
         if (accept("nbr")) {
             if (!inGuard_) fail(loc, "'" + word + " nbr' quantifies over a rule's neighbourhood and belongs in a guard");
-            e.around = 0;
-            if (accept("@")) {
-                const Token& k = peek();
-                e.around = integer("a pattern cell index");
-                if (e.around < 0 || e.around >= patternCells_)
-                    fail(k.loc, "@" + std::to_string(e.around) + " names no cell of the pattern");
-            }
+            aroundCell(e);
             e.pred = predicate();
         } else {
             if (inGuard_) fail(loc, "a guard is local; write '" + word + " nbr ...', or make this a constraint");
@@ -725,9 +725,27 @@ private:
         }
         return e;
     }
+    /// After `nbr`: the pattern cell whose neighbours are meant, `@k` or by default @0.
+    void aroundCell(Expr& e) {
+        e.around = 0;
+        if (accept("@")) {
+            const Token& k = peek();
+            e.around = integer("a pattern cell index");
+            if (e.around < 0 || e.around >= patternCells_) fail(k.loc, "@" + std::to_string(e.around) + " names no cell of the pattern");
+        }
+    }
     CellPredicate predicate() {
         CellPredicate p;
         do {
+            if (at("@") && peek(1).kind == Token::Kind::Int) {  // a guard's own pattern cell
+                CellTerm c;
+                c.loc = next().loc;
+                c.copyFrom = integer("a pattern cell index");
+                if (!inGuard_) fail(c.loc, "'@" + std::to_string(c.copyFrom) + "' names a rule's cell and belongs in rules and guards");
+                if (c.copyFrom >= patternCells_) fail(c.loc, "@" + std::to_string(c.copyFrom) + " names no cell of the pattern");
+                p.push_back(std::move(c));
+                continue;
+            }
             CellTerm c = cellTerm(false);
             for (const Atom& a : c.atoms)
                 if (a.value.kind == FieldValue::Kind::CellRef && (!inGuard_ || a.value.value >= patternCells_))

@@ -112,6 +112,7 @@ std::string printExpr(const System& s, const Expr& e, const RefPrinter& ref) {
     case Expr::Kind::Some: return quant("some");
     case Expr::Kind::No: return quant("no");
     case Expr::Kind::Connected: {
+        if (e.around >= 0) return "connected nbr" + (e.around ? "@" + std::to_string(e.around) : std::string()) + " " + printPredicate(s, e.pred, ref);
         const bool everything = e.pred.size() == 1 && e.pred[0].base == CellTerm::Base::Occupied && e.pred[0].atoms.empty();
         return everything ? "connected" : "connected(" + printPredicate(s, e.pred, ref) + ")";
     }

@@ -74,6 +74,12 @@ RuleTables::RuleTables(const Model& model, std::vector<std::uint32_t> combos)
     for (std::uint32_t c : combos)
         if (std::find(combos_.begin(), combos_.end(), c) == combos_.end()) combos_.push_back(c);
     const Lattice& lattice = model.lattice();
+    for (int d = 0; d < lattice.degree(); ++d) {
+        std::uint32_t touching = 0;
+        for (int e = 0; e < lattice.degree(); ++e)
+            if (lattice.adjacent(lattice.direction(d), lattice.direction(e))) touching |= 1u << e;
+        directionNeighbours_.push_back(touching);
+    }
     for (const RuleShape& shape : model.shapes()) {
         const DirectedRule& rule = model.rules()[shape.rule];
         if (shape.offsets.size() > kMaxCells) throw InputError("rule '" + rule.name + "' has more than " + std::to_string(kMaxCells) + " cells");

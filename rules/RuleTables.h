@@ -7,6 +7,7 @@
 
 #include "rules/Model.h"
 
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -55,6 +56,18 @@ public:
     }
 
     bool test(const Mask& m, int combo, CellValue v) const { return bit(m.bits, combo, v); }
+    /// Whether a set of lattice directions (bit d for direction d) is connected when two
+    /// directions are joined if their neighbour cells are adjacent (`connected nbr` guards).
+    bool directionsConnected(std::uint32_t set) const {
+        std::uint32_t reached = set & (~set + 1), frontier = reached;
+        while (frontier) {
+            const int d = std::countr_zero(frontier);
+            frontier &= frontier - 1;
+            const std::uint32_t add = directionNeighbours_[d] & set & ~reached;
+            reached |= add, frontier |= add;
+        }
+        return reached == set;
+    }
     bool guardAccepts(const GuardNode& node, int direction, int combo, CellValue v) const {
         return bit(node.perDirection[direction], combo, v);
     }
@@ -80,6 +93,7 @@ public:
         case Expr::Kind::Some: return guardAny(g, at, cells);
         case Expr::Kind::No: return !guardAny(g, at, cells);
         case Expr::Kind::All: return guardCount(g, at, cells) == static_cast<int>(g.perDirection.size());
+        case Expr::Kind::Connected: return directionsConnected(guardMembers(g, at, cells));
         default: return false;
         }
     }
@@ -88,6 +102,17 @@ private:
     bool bit(const std::vector<std::uint64_t>& bits, int combo, CellValue v) const {
         const std::size_t i = static_cast<std::size_t>(combo) * alphabet_ + v;
         return (bits[i >> 6] >> (i & 63)) & 1u;
+    }
+    /// The directions around the guard's pattern cell whose neighbour it accepts, as bits.
+    template <class Cells>
+    std::uint32_t guardMembers(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
+        const auto centre = cells[g.around];
+        std::uint32_t set = 0;
+        for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) {
+            const auto nb = at.neighbour(centre, d);
+            set |= static_cast<std::uint32_t>(nb < 0 ? guardAccepts(g, d, 0, 0) : guardAccepts(g, d, at.combo(nb), at.value(nb))) << d;
+        }
+        return set;
     }
     template <class Cells>
     int guardCount(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
@@ -130,6 +155,7 @@ private:
     std::vector<std::vector<std::int32_t>> shapesByFirst_;
     std::vector<std::int64_t> mass_;
     std::int64_t massDen_ = 1;
+    std::vector<std::uint32_t> directionNeighbours_;  // per direction: the directions whose cells touch its cell
 };
 
 }  // namespace holon::rules

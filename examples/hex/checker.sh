@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# Seed 003's hole moves checked with holon's own checker (rules/library/hex_holes.holon):
+# Seed 003's local moves checked with holon's own checker (rules/library/hex_holes.holon: hole
+# move and deletion; hex_collapse.holon: column collapse):
 #  1. three holes wandering in a hex:r6 disk: every interleaving keeps every hole whole and the
 #     module count (115,417 states);
 #  2. deletion as the paper words it empties a shepherd of a neighbouring hole:
 #     out/checker/shared_shepherd.svg;
 #  3. even with that fixed, deletion pinches off a protruding element (Fig. 6):
-#     out/checker/pinch_off.svg, crossed modules are cut off.
+#     out/checker/pinch_off.svg, crossed modules are cut off;
+#  4. column collapse, every gravity and order, from an 8-module blob (112,668 states) and around a
+#     hole: the mass stays connected and the hole whole.
 # Every trace is replayed through the reference interpreter. Needs a build (bash scripts/build).
 set -u
 cd "$(dirname "$0")/../.."
@@ -22,4 +25,8 @@ echo
 echo
 "$holon" check rules/library/hex_holes.holon --region hex:r4 --from $in/neck.txt \
     --property one_mass --svg "$out/pinch_off.svg" --trace-out "$out/pinch_off.itf.json" | sed -n '1,6p'
+echo
+"$holon" check rules/library/hex_collapse.holon --region hex:r3 --from $in/blob.txt | sed -n '1,8p'
+echo
+"$holon" check rules/library/hex_collapse.holon --region hex:r4 --from $in/hole_and_blob.txt | sed -n '1,8p'
 echo "(pictures in $out/)"

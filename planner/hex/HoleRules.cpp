@@ -1,7 +1,9 @@
-// hex_holes.holon placed on the hex array's board by the planner's compiled engine (seed 003
-// §IV-D: a hole moves by shifting its three leading shepherds to the trailing edge). The move's
-// six orientations are found by where each puts the new centre: pattern cell 1, next to the old
-// centre at the anchor.
+// hex_holes.holon and hex_collapse.holon placed on the hex array's board by the planner's compiled
+// engine (seed 003 §IV-D: a hole moves by shifting its three leading shepherds to the trailing
+// edge; §IV-F: column collapse). Both systems name the same cell states in the same order, so
+// their engines share one cell array. An orientation is found by geometry: pattern cell 1 of a
+// hole move is the new centre next to the old one at the anchor; pattern cell 1 of a collapse is
+// the first cell of the column the module steps onto, at gravity + side.
 
 #include "planner/hex/HoleRules.h"
 
@@ -10,23 +12,64 @@
 
 namespace holon::planner::hex {
 
-HoleRules::HoleRules(const HexArray& array) : system_(rules::librarySystem("hex_holes")) {
-    model_ = std::make_unique<rules::Model>(system_, rules::Lattice::get(rules::LatticeKind::Hex2D));
-    tables_ = std::make_unique<rules::RuleTables>(*model_, std::vector<std::uint32_t>{});
-    if (BoxEngine::reach(*tables_) > HexArray::kPad) throw InputError("hex_holes.holon reaches further than the hex array's padding");
-    std::vector<std::uint8_t> combo(static_cast<std::size_t>(array.size()), BoxEngine::kOutside);
-    for (std::int64_t i : array.points()) combo[i] = 0;
-    engine_ = std::make_unique<BoxEngine>(*tables_, array.board(), std::move(combo));
-    const rules::Alphabet& alphabet = model_->alphabet();
+namespace {
+
+/// The column-collapse rules: name stem, and the side of the column relative to gravity.
+struct CollapseRule {
+    const char* stem;
+    int side;
+};
+constexpr CollapseRule kCollapse[] = {{"fall", 0}, {"roll", 1}, {"collapse_up", 2}, {"collapse_down", 5}};
+
+}  // namespace
+
+struct HoleRules::Compiled {
+    rules::System system;
+    std::unique_ptr<rules::Model> model;
+    std::unique_ptr<rules::RuleTables> tables;
+    std::unique_ptr<BoxEngine> engine;
+
+    Compiled(const std::string& stem, const HexArray& array, const std::vector<std::uint8_t>& target) : system(rules::librarySystem(stem)) {
+        model = std::make_unique<rules::Model>(system, rules::Lattice::get(rules::LatticeKind::Hex2D));
+        const int input = system.inputIndex("target");
+        const std::uint32_t inTarget = input < 0 ? 0 : 1u << input;
+        tables = std::make_unique<rules::RuleTables>(*model, std::vector<std::uint32_t>{inTarget});
+        if (BoxEngine::reach(*tables) > HexArray::kPad) throw InputError(stem + ".holon reaches further than the hex array's padding");
+        std::vector<std::uint8_t> combo(static_cast<std::size_t>(array.size()), BoxEngine::kOutside);
+        for (std::int64_t i : array.points()) combo[i] = static_cast<std::uint8_t>(tables->comboIndex(target[i] ? inTarget : 0));
+        engine = std::make_unique<BoxEngine>(*tables, array.board(), std::move(combo));
+    }
+    const std::string& ruleName(int shape) const { return model->rules()[engine->ruleOf(shape)].name; }
+};
+
+HoleRules::~HoleRules() = default;
+
+HoleRules::HoleRules(const HexArray& array, const std::vector<std::uint8_t>& target)
+    : holeSystem_(std::make_unique<Compiled>("hex_holes", array, target)),
+      collapseSystem_(std::make_unique<Compiled>("hex_collapse", array, target)),
+      holeEngine_(holeSystem_->engine.get()), collapseEngine_(collapseSystem_->engine.get()) {
+    const rules::Alphabet& alphabet = holeSystem_->model->alphabet();
+    const rules::Alphabet& other = collapseSystem_->model->alphabet();
+    for (int v = 0; v < alphabet.size() || v < other.size(); ++v)
+        if (v >= alphabet.size() || v >= other.size() || alphabet.name(static_cast<rules::CellValue>(v)) != other.name(static_cast<rules::CellValue>(v)))
+            throw InputError("hex_holes.holon and hex_collapse.holon must declare the same cell states in the same order");
     module_ = static_cast<Value>(alphabet.byGlyph('M')), rim_ = static_cast<Value>(alphabet.byGlyph('H'));
     centre_ = static_cast<Value>(alphabet.byGlyph('C'));
     std::fill(std::begin(move_), std::end(move_), -1);
-    for (int s = 0; s < engine_->shapeCount(); ++s) {
-        if (model_->rules()[engine_->ruleOf(s)].name != "hole_move") continue;
-        const auto steps = engine_->cellSteps(s);
+    std::fill(&collapse_[0][0][0], &collapse_[0][0][0] + 6 * 4 * 6, -1);
+    auto direction = [&](const BoxEngine& engine, int shape) {
+        const auto steps = engine.cellSteps(shape);
         for (int d = 0; d < 6; ++d)
-            if (steps[1] - steps[0] == array.step(d)) move_[d] = s;
-    }
+            if (steps[1] - steps[0] == array.step(d)) return d;
+        return -1;
+    };
+    for (int s = 0; s < holeEngine_->shapeCount(); ++s)
+        if (holeSystem_->ruleName(s) == "hole_move") move_[direction(*holeEngine_, s)] = s;
+    for (int s = 0; s < collapseEngine_->shapeCount(); ++s)
+        for (const CollapseRule& c : kCollapse)
+            for (int hops = 1; hops <= 3; ++hops)
+                if (collapseSystem_->ruleName(s) == c.stem + std::to_string(hops))
+                    collapse_[c.side][hops][(direction(*collapseEngine_, s) - c.side + 6) % 6] = s;
     for (int d = 0; d < 6; ++d)
         if (move_[d] < 0) throw InputError("hex_holes.holon: no hole_move toward direction " + std::to_string(d));
 }

@@ -1,7 +1,9 @@
 #pragma once
-// The lattice rewrites of hole motion, rules/library/hex_holes.holon, compiled for one hex array:
-// the sculptor's ensemble is the compiled engine's cell array, and a hole moves by applying the
-// rule's instance (seed 003 §IV-D), the same rule `holon check` and `holon verify` examine.
+// The lattice rewrites of hole motion, compiled for one hex array: rules/library/hex_holes.holon
+// (hole move, deletion) and hex_collapse.holon (column collapse) placed on the array's board by the
+// planner's compiled engine. The sculptor's ensemble is the engines' shared cell array, and a hole
+// moves or a column collapses by applying the rule's instance (seed 003 §IV-D, §IV-F): the same
+// rules `holon check` and `holon verify` examine.
 
 #include "planner/BoxEngine.h"
 #include "planner/hex/HexArray.h"
@@ -14,25 +16,32 @@ namespace holon::planner::hex {
 class HoleRules {
 public:
     using Value = BoxEngine::Value;
-    explicit HoleRules(const HexArray& array);
-    HoleRules(const HoleRules&) = delete;  // the model points into system_
+    /// `target`: per board cell, whether it lies in the target (the rules' `target` input).
+    HoleRules(const HexArray& array, const std::vector<std::uint8_t>& target);
+    HoleRules(const HoleRules&) = delete;  // the models point into their systems
     HoleRules& operator=(const HoleRules&) = delete;
+    ~HoleRules();
 
-    const BoxEngine& engine() const { return *engine_; }
+    const BoxEngine& holeEngine() const { return *holeEngine_; }
+    const BoxEngine& collapseEngine() const { return *collapseEngine_; }
     /// The cell states: a module, a hole's rim cell, a hole's centre (empty is 0).
     Value module() const { return module_; }
     Value rim() const { return rim_; }
     Value centre() const { return centre_; }
-    /// The hole_move instance that shifts the hole centred at the anchor one cell in direction d.
+    /// The hole_move shape that shifts the hole centred at the anchor one cell in direction d.
     int move(int d) const { return move_[d]; }
+    /// The column-collapse shape (anchored at the moving module) for gravity direction `gravity`
+    /// that steps onto the column in direction gravity + `side` (0 fall, 1 roll, 2 up, 5 down)
+    /// whose head lies `hops` below; the landing cell is pattern cell `hops`. -1 if none.
+    int collapse(int side, int hops, int gravity) const { return collapse_[side][hops][gravity]; }
 
 private:
-    rules::System system_;
-    std::unique_ptr<rules::Model> model_;
-    std::unique_ptr<rules::RuleTables> tables_;
-    std::unique_ptr<BoxEngine> engine_;
+    struct Compiled;
+    std::unique_ptr<Compiled> holeSystem_, collapseSystem_;
+    const BoxEngine *holeEngine_ = nullptr, *collapseEngine_ = nullptr;
     Value module_ = 0, rim_ = 0, centre_ = 0;
     int move_[6] = {};
+    int collapse_[6][4][6] = {};
 };
 
 }  // namespace holon::planner::hex

@@ -24,7 +24,7 @@ double cartesianY(Vec v) { return -HexArray::kRowHeight * v.y; }
 HoleSculptor::HoleSculptor(const HexArray& array, const std::vector<std::uint8_t>& source, const std::vector<std::uint8_t>& target,
                            const TriPlan& plan, const SculptOptions& options)
     : array_(&array), target_(&target), plan_(&plan), options_(options), random_(options.seed),
-      rules_(std::make_unique<HoleRules>(array)), cells_(array.size(), 0), class_(array.size(), 1), holeAt_(array.size(), -1),
+      rules_(std::make_unique<HoleRules>(array, target)), cells_(array.size(), 0), class_(array.size(), 1), holeAt_(array.size(), -1),
       nearPerimeter_(array.size(), 0) {
     const rules::Lattice& hex = rules::Lattice::get(rules::LatticeKind::Hex2D);
     auto steps = [&](const std::vector<Vec>& offsets) {
@@ -125,7 +125,7 @@ void HoleSculptor::placeInitialHoles() {
 // The move is hex_holes.holon's hole_move, run by the compiled engine: its left side asks for the
 // complete new shepherd group, which also keeps the move off every other hole's shepherds.
 bool HoleSculptor::canMove(int id, int d) const {
-    return rules_->engine().matches(cells_.data(), holesById_[id].centre, rules_->move(d));
+    return rules_->holeEngine().matches(cells_.data(), holesById_[id].centre, rules_->move(d));
 }
 
 bool HoleSculptor::shepherdsAnother(std::int64_t i, int id) const {
@@ -138,7 +138,7 @@ bool HoleSculptor::shepherdsAnother(std::int64_t i, int id) const {
 
 void HoleSculptor::move(int id, int d) {
     Hole& h = holesById_[id];
-    const BoxEngine& engine = rules_->engine();
+    const BoxEngine& engine = rules_->holeEngine();
     Value old[rules::RuleTables::kMaxCells];
     engine.apply(cells_.data(), h.centre, rules_->move(d), old);
     const auto steps = engine.cellSteps(rules_->move(d));
@@ -310,54 +310,33 @@ int HoleSculptor::towardSurface(std::int64_t centre, std::int64_t node, int up) 
     return best;
 }
 
-// §IV-F column collapse. The column head k looks at its neighbours at +120° and -60° from
-// gravity; if one is empty, it searches down that neighbour's column for up to 3 hops, and when
-// the neighbouring column's head is more than one hop down, k moves on top of it, provided k's
-// remaining neighbours stay connected around it. Choice: shepherds never collapse (that would
-// break a hole), and the move must land next to modules other than k.
+// §IV-F column collapse, as hex_holes.holon's collapse rules run by the compiled engine: the
+// column head k looks at its neighbours at +120° and -60° from gravity; when the neighbouring
+// column's head is two or three hops down, k moves on top of it, provided k's neighbours after the
+// move are one arc (the rules' guards; shepherds never collapse, that would break a hole). Which
+// rules may fire is orchestration: the improvements' rules only with their options.
 void HoleSculptor::smooth(std::int64_t k, int gravity) {
-    for (int e = 0; e < 6; ++e)
-        if (holeCell(k + array_->step(e))) return;
-    const std::int64_t down = array_->step(gravity);
+    const BoxEngine& engine = rules_->collapseEngine();
     // holon's improvement (--roll): outside the target a column head also steps onto a neighbouring
-    // column only one hop lower, and rolls down the two slopes at 60° from gravity, so that the thin
+    // column only one hop lower, and rolls down the slope at 60° from gravity, so that the thin
     // filaments deletion leaves behind drain towards the target instead of standing.
     const bool roll = options_.roll && !(*target_)[k];
-    for (int side : {gravity, gravity + 2, gravity + 5, gravity + 1}) {
-        if (side == gravity + 1 && !roll) continue;
-        const std::int64_t n = k + array_->step(side);
-        if (!array_->inside(n) || filled(n)) continue;
-        if (side == gravity && !options_.dropOverhangs) continue;
-        int hops = 0;
-        for (int h = 1; h <= 3; ++h) {
-            const std::int64_t c = n + h * down;
-            if (!array_->inside(c)) break;
-            if (filled(c)) {
-                hops = h;
-                break;
+    for (int side : {0, 2, 5, 1}) {
+        if ((side == 1 && !roll) || (side == 0 && !options_.dropOverhangs)) continue;  // --drop-overhangs: fall into a gap
+        for (int hops = 1; hops <= 3; ++hops) {
+            const int shape = rules_->collapse(side, hops, gravity);
+            if (shape < 0 || (hops == 1 && (side == 2 || side == 5) && !roll) || !engine.matches(cells_.data(), k, shape)) continue;
+            const std::int64_t to = k + engine.cellSteps(shape)[hops];
+            if (options_.keepConnected && splitsLocally(k, {k}, {to})) {
+                ++counts_.refusedSplits;
+                break;  // the next side
             }
+            Value old[rules::RuleTables::kMaxCells];
+            engine.apply(cells_.data(), k, shape, old);
+            changed(k, old[0]), changed(to, old[hops]);
+            ++counts_.collapsed;
+            return;
         }
-        // A neighbouring column must be more than one hop lower; k's own column only needs a gap.
-        if (hops < (side == gravity || roll ? 1 : 2)) continue;
-        const std::int64_t to = n + (hops - 1) * down;
-        // k's neighbours after the move (k empty, `to` filled) must form one arc around k.
-        int arcs = 0, filledAround = 0;
-        std::array<bool, 6> around{};
-        for (int d = 0; d < 6; ++d) {
-            const std::int64_t m = k + array_->step(d);
-            around[d] = m == to || filled(m);
-            filledAround += around[d];
-        }
-        for (int d = 0; d < 6; ++d) arcs += around[d] && !around[(d + 5) % 6];
-        if (filledAround == 0 || (arcs > 1)) continue;
-        if (options_.keepConnected && splitsLocally(k, {k}, {to})) {
-            ++counts_.refusedSplits;
-            continue;
-        }
-        set(k, 0);
-        set(to, rules_->module());
-        ++counts_.collapsed;
-        return;
     }
 }
 

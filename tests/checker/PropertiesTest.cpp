@@ -171,3 +171,29 @@ TEST_CASE("hex holes: deletion as the paper words it breaks a neighbouring hole,
     CHECK(pinch.trace->marked.size() == 3);  // the three modules of the knob, crossed in the picture
     CHECK(checker::drawTraceSvg(*pinch.trace, *neck.kept.engine, "pinch-off").find("<polygon") != std::string::npos);
 }
+
+TEST_CASE("hex collapse (seed 003 §IV-F): every collapse keeps the mass connected and the holes whole, and without the arc test it does not") {
+    const char* blob = "   . . . .\n  . . . . .\n . . . M M .\nM M M M . . .\n . . M . . .\n  . M . . .\n   . . . .\n";
+    auto c = test::checkFrom(rules::librarySystem("hex_collapse"), "hex:r3", blob, "");
+    CHECK(c.report.stats.states > 100000);  // every gravity, every order
+    CHECK(c.property("one_mass").verdict == Verdict::Holds);
+    CHECK(c.property("mass_conservation").verdict == Verdict::Holds);
+    const char* holeAndBlob = "    . . . . .\n   . . . . . .\n  . . M M M . .\n . . M H H M M .\n. . M H C H M M .\n . . M H H M M .\n"
+                              "  . M M M M . .\n   . . . . . .\n    . . . . .\n";
+    auto h = test::checkFrom(rules::librarySystem("hex_collapse"), "hex:r4", holeAndBlob, "");
+    CHECK(h.property("holes").verdict == Verdict::Holds);
+    CHECK(h.property("one_mass").verdict == Verdict::Holds);
+    // The arc test is what keeps the mass in one piece: drop it from one rule and a collapse cuts.
+    std::string text = rules::readTextFile(rules::libraryDir() + "/hex_collapse.holon");
+    const std::string arc = " and connected nbr # | @2";
+    const auto at = text.find(arc);
+    REQUIRE(at != std::string::npos);
+    text.erase(at, arc.size());
+    checker::Limits few;
+    few.maxStates = 100000;  // without the arc test the pieces wander apart: the graph is huge
+    auto cut = test::checkFrom(test::parse(text), "hex:r3", blob, "", few);
+    const auto& split = cut.property("one_mass");
+    REQUIRE(split.verdict == Verdict::Violated);
+    CHECK_FALSE(split.trace->marked.empty());  // the modules cut off
+    cut.replayAll();
+}
