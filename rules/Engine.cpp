@@ -76,16 +76,20 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
             Placed p;
             p.shape = s, p.rule = shape.rule, p.anchor = cell - shape.offsets[0];
             p.size = static_cast<std::uint8_t>(shape.offsets.size());
+            std::int32_t at[kMaxCells];
             bool inside = true;
             for (std::size_t k = 0; k < shape.offsets.size() && inside; ++k) {
-                p.cells[k] = region.indexOf(p.anchor + shape.offsets[k]);
-                inside = p.cells[k] >= 0;
+                at[k] = region.indexOf(p.anchor + shape.offsets[k]);
+                inside = at[k] >= 0;
             }
             if (!inside) continue;
-            for (int k = 0; k < p.size; ++k) byCell_[p.cells[k]].push_back(static_cast<std::int32_t>(placed_.size()));
+            for (int k = 0; k < p.size; ++k) byCell_[at[k]].push_back(static_cast<std::int32_t>(placed_.size()));
+            cellPool_.insert(cellPool_.end(), at, at + p.size);
             placed_.push_back(p);
         }
     }
+    // The instances' cell lists, one pool in instance order: small instances, dense in cache.
+    for (std::size_t p = 0, first = 0; p < placed_.size(); first += placed_[p].size, ++p) placed_[p].cells = cellPool_.data() + first;
     placedIndex_.assign(static_cast<std::size_t>(region.size()) * tables_.shapeCount(), -1);
     for (int p = 0; p < static_cast<int>(placed_.size()); ++p)
         placedIndex_[static_cast<std::size_t>(placed_[p].cells[0]) * tables_.shapeCount() + placed_[p].shape] = p;

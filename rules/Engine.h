@@ -22,7 +22,7 @@ public:
         int shape = 0, rule = 0;
         Vec anchor;
         std::uint8_t size = 0;
-        std::int32_t cells[kMaxCells] = {};
+        const std::int32_t* cells = nullptr;  // region indices of the pattern cells (in the engine's pool)
     };
 
     /// `inputs`: per region cell, the input bits of the problem. With `everyInputCombination`, the
@@ -130,6 +130,7 @@ private:
     RuleTables tables_;
     std::vector<int> combo_;  // per cell: index of its input combination in tables_
     std::vector<Placed> placed_;
+    std::vector<std::int32_t> cellPool_;  // Placed::cells point here
     std::vector<std::int32_t> placedIndex_;                // [cell * shapes + shape]: the instance anchored there, or -1
     std::vector<std::vector<std::int32_t>> byCell_;
     std::unordered_map<const CellPredicate*, int> predicateIndex_;
