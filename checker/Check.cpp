@@ -126,6 +126,14 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
                     if (invariantViolations[k].size() < 64) invariantViolations[k].push_back(id);
                 }
         };
+    // Asked only about invariants: once each is violated, the shortest violations are known (the
+    // states of the next level are checked as they are stored) and the rest of the graph can wait.
+    const bool onlyInvariants = !options.properties.empty() && invariants.size() == options.properties.size();
+    if (onlyInvariants)
+        xo.decided = [&] {
+            std::lock_guard<std::mutex> lock(violationMutex);
+            return std::all_of(invariantViolations.begin(), invariantViolations.end(), [](const auto& v) { return !v.empty(); });
+        };
     auto ex = std::make_unique<Explorer>(e, xo);
     if (options.all) {
         ex->addAllLegal();
@@ -180,8 +188,8 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
             const bool local = !r.trace->marked.empty();
             if (!local) r.trace->marked = cutOff(region, last);
             r.witness = {{"state", best}, {"distance", r.trace->steps.size() - 1}};
-            r.summary = "violated after " + std::to_string(r.trace->steps.size() - 1) + " steps";
-            r.trace->description = "invariant '" + p.name + "' fails after " + std::to_string(r.trace->steps.size() - 1) + " steps" +
+            r.summary = "violated after " + stepCount(r.trace->steps.size() - 1);
+            r.trace->description = "invariant '" + p.name + "' fails after " + stepCount(r.trace->steps.size() - 1) +
                                    (local ? "; crossed cells break its local condition" : r.trace->marked.empty() ? "" : "; crossed cells are cut off");
             break;
         }
@@ -279,7 +287,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
                 if (!p.exprs.empty() && !e.holds(p.exprs[0], cells.data())) continue;
                 r.verdict = Verdict::Violated;
                 r.trace = traceTo(*ex, s);
-                r.summary = "no rule is enabled in a state outside the goal, after " + std::to_string(r.trace->steps.size() - 1) + " steps";
+                r.summary = "no rule is enabled in a state outside the goal, after " + stepCount(r.trace->steps.size() - 1);
                 r.trace->description = "stuck outside the goal";
                 r.witness = {{"state", s}, {"distance", r.trace->steps.size() - 1}};
                 break;

@@ -21,6 +21,7 @@ std::string stopReasonName(StopReason r) {
     case StopReason::MaxStates: return "max-states";
     case StopReason::Timeout: return "timeout";
     case StopReason::Memory: return "memory";
+    case StopReason::Decided: return "decided";
     }
     return "";
 }
@@ -219,6 +220,10 @@ const ExploreStats& Explorer::explore() {
         if (stats_.stopped != StopReason::Finished) break;
         frontier_ = std::move(nextLevel);
         if (!frontier_.empty()) ++stats_.depth;
+        if (!frontier_.empty() && options_.decided && options_.decided()) {
+            stats_.stopped = StopReason::Decided;
+            stats_.frontier = frontier_.size();
+        }
     }
     std::sort(terminal_.begin(), terminal_.end());
     stats_.states = store_.size();

@@ -23,7 +23,7 @@ struct Limits {
     int threads = 2;
 };
 
-enum class StopReason { Finished, MaxStates, Timeout, Memory };
+enum class StopReason { Finished, MaxStates, Timeout, Memory, Decided };
 std::string stopReasonName(StopReason r);
 
 struct ExploreStats {
@@ -42,6 +42,9 @@ public:
         /// Called from worker threads for every newly stored state (id, unpacked cells); must be
         /// thread-safe. Used for per-state property checks.
         std::function<void(StateId, const CellValue*)> onState;
+        /// Asked after each breadth-first level: true ends the search early, every question the
+        /// caller asks being answered (each checked invariant already has a shortest violation).
+        std::function<bool()> decided;
         /// Progress reports, about every half second, from the thread that runs explore().
         std::function<void(const ExploreStats&)> onProgress;
     };

@@ -417,7 +417,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                     t.steps.push_back({enc.decode(m, path[k]), k ? run.placedFrom(m, selectors[k - 1]) : -1});
                     if (!concrete.holds(inv->exprs[0], t.steps.back().cells.data())) break;
                 }
-                t.description = "invariant '" + inv->name + "' fails after " + std::to_string(t.steps.size() - 1) + " steps";
+                t.description = "invariant '" + inv->name + "' fails after " + stepCount(t.steps.size() - 1);
                 r.trace = t;
                 r.summary = t.description;
                 r.witness = {{"depth", t.steps.size() - 1}};

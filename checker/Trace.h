@@ -12,6 +12,9 @@
 
 namespace holon::checker {
 
+/// "1 step", "3 steps": the length of a trace, for messages.
+inline std::string stepCount(std::size_t n) { return std::to_string(n) + (n == 1 ? " step" : " steps"); }
+
 struct Trace {
     struct Step {
         std::vector<CellValue> cells;

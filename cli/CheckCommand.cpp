@@ -106,7 +106,8 @@ int run(const CheckArgs& a) {
     std::cout << "  " << s.states << " states, " << s.edges << " edges, "
               << (report.components < 0 ? std::string("? components") : std::to_string(report.components) + (report.components == 1 ? " component" : " components"))
               << ", depth " << s.depth << ", " << std::fixed << std::setprecision(2) << s.seconds << " s, " << report.bytesPerState << " bytes/state";
-    if (s.stopped != checker::StopReason::Finished) std::cout << "\n  stopped by " << checker::stopReasonName(s.stopped) << ": explored " << s.states << ", frontier " << s.frontier;
+    if (s.stopped == checker::StopReason::Decided) std::cout << "\n  stopped early: every property asked for is violated; explored " << s.states << ", frontier " << s.frontier;
+    else if (s.stopped != checker::StopReason::Finished) std::cout << "\n  stopped by " << checker::stopReasonName(s.stopped) << ": explored " << s.states << ", frontier " << s.frontier;
     std::cout << "\n\n  " << std::left << std::setw(20) << "property" << std::setw(10) << "verdict" << std::setw(10) << "time" << "evidence\n";
     for (const auto& p : report.properties)
         std::cout << "  " << std::setw(20) << p.name << std::setw(10) << checker::verdictName(p.verdict) << std::setw(10)

@@ -39,10 +39,11 @@ inline Checked checkAll(rules::System system, const std::string& spec, checker::
 }
 
 inline Checked checkFrom(rules::System system, const std::string& spec, const std::string& start, const std::string& target,
-                         checker::Limits limits = {}) {
+                         checker::Limits limits = {}, std::vector<std::string> properties = {}) {
     Checked c{World(std::move(system), spec), {}, {}};
     checker::CheckOptions o;
     o.limits = limits;
+    o.properties = std::move(properties);
     auto config = c.world.ascii(start);
     if (!target.empty()) c.world.mark(config, "target", target);
     o.initial.push_back(config);
