@@ -91,9 +91,10 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
         influence_.insert(influence_.end(), reads.begin(), reads.end());
         Program program;
         program.cells = static_cast<int>(cells.size());
+        program.at = static_cast<std::uint32_t>(steps_.size());
         for (std::size_t k = 0; k < cells.size(); ++k) {
-            program.step[k] = cells[k];
-            program.copyFrom[k] = t.copyFrom[k], program.rhs[k] = t.copyFrom[k] >= 0 ? nullptr : t.rhs[k].data();
+            steps_.push_back(cells[k]);
+            copyFrom_.push_back(t.copyFrom[k]), rhs_.push_back(t.copyFrom[k] >= 0 ? nullptr : t.rhs[k].data());
             if (k == 0) continue;
             bool needsCombo = tables.test(t.lhs[k], 0, 0);
             for (int c = 1; c < tables.comboCount() && !needsCombo; ++c)
@@ -102,10 +103,10 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
             tests_.push_back({cells[k], t.lhs[k].bits.data(), needsCombo});
         }
         hot_.push_back({static_cast<std::uint32_t>(tests_.size() - (cells.size() - 1)), static_cast<std::uint32_t>(cells.size() - 1), t.hasGuard});
-        if (reads.size() > kMaxReads) throw InputError("rule '" + tables.model().rules()[shape.rule].name + "' reads more cells than the planner supports");
-        program.reads = reads.size(), program.writes = writes.size();
-        std::copy(reads.begin(), reads.begin() + static_cast<std::ptrdiff_t>(program.reads), program.read);
-        std::copy(writes.begin(), writes.end(), program.write);
+        program.readAt = static_cast<std::uint32_t>(readPool_.size()), program.reads = reads.size();
+        program.writeAt = static_cast<std::uint32_t>(writePool_.size()), program.writes = writes.size();
+        readPool_.insert(readPool_.end(), reads.begin(), reads.end());
+        writePool_.insert(writePool_.end(), writes.begin(), writes.end());
         programs_.push_back(program);
     }
     std::sort(influence_.begin(), influence_.end());
@@ -126,15 +127,19 @@ bool BoxEngine::matches(const Value* cells, std::int64_t anchor, int shape, std:
 
 bool BoxEngine::guardHolds(const Value* cells, std::int64_t anchor, int shape) const {
     const Program& p = programs_[shape];
+    const std::int64_t* step = steps_.data() + p.at;
     std::int32_t at[rules::RuleTables::kMaxCells];
-    for (int k = 0; k < p.cells; ++k) at[k] = static_cast<std::int32_t>(anchor + p.step[k]);
+    for (int k = 0; k < p.cells; ++k) at[k] = static_cast<std::int32_t>(anchor + step[k]);
     return tables_->guard(tables_->shape(shape).guard, BoardCells{cells, combo_.data(), board_, -1, 0}, at);
 }
 
 void BoxEngine::apply(Value* cells, std::int64_t anchor, int shape, Value* old) const {
     const Program& p = programs_[shape];
-    for (int k = 0; k < p.cells; ++k) old[k] = cells[anchor + p.step[k]];
-    for (int k = 0; k < p.cells; ++k) cells[anchor + p.step[k]] = static_cast<Value>(p.copyFrom[k] >= 0 ? old[p.copyFrom[k]] : p.rhs[k][old[k]]);
+    const std::int64_t* step = steps_.data() + p.at;
+    const int* copyFrom = copyFrom_.data() + p.at;
+    const rules::CellValue* const* rhs = rhs_.data() + p.at;
+    for (int k = 0; k < p.cells; ++k) old[k] = cells[anchor + step[k]];
+    for (int k = 0; k < p.cells; ++k) cells[anchor + step[k]] = static_cast<Value>(copyFrom[k] >= 0 ? old[copyFrom[k]] : rhs[k][old[k]]);
 }
 
 }  // namespace holon::planner

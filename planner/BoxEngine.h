@@ -39,11 +39,11 @@ public:
     ShapeKind kind(int shape) const { return kinds_[shape]; }
     std::uint8_t combo(std::int64_t cell) const { return combo_[cell]; }
     /// Index steps of a shape's pattern cells from its anchor.
-    std::span<const std::int64_t> cellSteps(int shape) const { return {programs_[shape].step, static_cast<std::size_t>(programs_[shape].cells)}; }
+    std::span<const std::int64_t> cellSteps(int shape) const { return {steps_.data() + programs_[shape].at, static_cast<std::size_t>(programs_[shape].cells)}; }
     /// Index steps of the pattern cells an instance of the shape may change.
-    std::span<const std::int64_t> writeSteps(int shape) const { return {programs_[shape].write, programs_[shape].writes}; }
+    std::span<const std::int64_t> writeSteps(int shape) const { return {writePool_.data() + programs_[shape].writeAt, programs_[shape].writes}; }
     /// Index steps of every cell a shape's instance reads (pattern and guard neighbourhoods).
-    std::span<const std::int64_t> readSteps(int shape) const { return {programs_[shape].read, programs_[shape].reads}; }
+    std::span<const std::int64_t> readSteps(int shape) const { return {readPool_.data() + programs_[shape].readAt, programs_[shape].reads}; }
     /// Union over shapes of readSteps: a change at cell c can only affect anchors c - r.
     const std::vector<std::int64_t>& influence() const { return influence_; }
 
@@ -67,16 +67,14 @@ public:
     void apply(Value* cells, std::int64_t anchor, int shape, Value* old) const;
 
 private:
-    static constexpr int kMaxReads = rules::RuleTables::kMaxCells * 7;  // pattern cells and their neighbours
-    /// A shape flattened: index steps, right-side tables, and the cells an instance reads and
-    /// writes (the synchronous scheduler's conflict test).
+    /// A shape flattened: its index steps and right-side tables from `at` in steps_, rhs_ and
+    /// copyFrom_, and the cells an instance reads and writes (the synchronous scheduler's conflict
+    /// test) in readPool_ and writePool_. Variable length, so that a large rule (a hex hole move
+    /// reads 19 cells) does not spread every small one over more cache lines.
     struct Program {
         int cells = 0;
-        std::int64_t step[rules::RuleTables::kMaxCells] = {};
-        const rules::CellValue* rhs[rules::RuleTables::kMaxCells] = {};  // null for a copy term
-        int copyFrom[rules::RuleTables::kMaxCells] = {};
+        std::uint32_t at = 0, readAt = 0, writeAt = 0;
         std::size_t reads = 0, writes = 0;
-        std::int64_t read[kMaxReads] = {}, write[rules::RuleTables::kMaxCells] = {};
     };
     /// The test of one pattern cell after the first, packed so that the tests of every shape
     /// share a few cache lines (the enabled-set updates run them millions of times).
@@ -114,6 +112,9 @@ private:
     std::vector<ShapeKind> kinds_;
     std::vector<std::int64_t> influence_;
     std::vector<Program> programs_;
+    std::vector<std::int64_t> steps_, readPool_, writePool_;
+    std::vector<const rules::CellValue*> rhs_;  // null for a copy term
+    std::vector<int> copyFrom_;
     std::vector<Hot> hot_;
     std::vector<Test> tests_;
     std::size_t alphabet_;
