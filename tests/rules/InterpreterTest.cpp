@@ -105,7 +105,7 @@ field parent: dir if P
 rule r: U => F
 invariant pointed: all(F: some nbr P&parent=@0)
 invariant lonely: count(U: no nbr #) == 1 and some(F: count nbr U == 2) and no(P: no nbr #)
-)"), "square:4x1");
+)"), "square:6x1");
     auto holds = [&](const char* name, const rules::Configuration& c) { return w.in->holds(w.system.property(name)->exprs[0], c); };
     auto c = w.in->empty();
     auto set = [&](int x, const std::string& v) { c.cells[w.region.indexOf({x, 0, 0})] = static_cast<rules::CellValue>(w.value(v)); };
@@ -117,7 +117,14 @@ invariant lonely: count(U: no nbr #) == 1 and some(F: count nbr U == 2) and no(P
     set(0, "_"), set(3, "U"), set(2, "_"), set(1, "F");
     CHECK_FALSE(holds("pointed", c));
     set(0, "U"), set(2, "U"), set(3, "_");
-    CHECK(holds("lonely", c) == false);  // two U, each next to the F
+    CHECK_FALSE(holds("lonely", c));  // two U, each next to the F
+    c = w.in->empty();
+    set(0, "U"), set(2, "U"), set(3, "F"), set(4, "U");
+    CHECK(holds("lonely", c));  // U at 0 alone, the F between two U, no P
+    set(5, "P&parent=-x");
+    CHECK(holds("lonely", c));  // the P touches the U at 4
+    set(4, "_");
+    CHECK_FALSE(holds("lonely", c));  // now the P stands alone, and the F has one U
 }
 
 TEST_CASE("a copy term moves a module with its fields; blocking cells must be occupied") {
