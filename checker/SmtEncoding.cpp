@@ -265,6 +265,13 @@ z3::expr SmtEncoding::legal(const State& s) {
     return all;
 }
 
+std::vector<z3::expr> SmtEncoding::acceptedAround(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {
+    std::vector<z3::expr> out;
+    for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d)
+        out.push_back(member(s, engine_.region().neighbour(cells[g.around], d), [&](int c, CellValue v) { return engine_.guardAccepts(g, d, c, v); }));
+    return out;
+}
+
 z3::expr SmtEncoding::guardNumber(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {
     switch (g.kind) {
     case Expr::Kind::Number: return ctx_.real_val(static_cast<int64_t>(g.value.num()), static_cast<int64_t>(g.value.den()));
@@ -272,12 +279,8 @@ z3::expr SmtEncoding::guardNumber(const rules::Engine::GuardNode& g, const std::
     case Expr::Kind::Sub: return guardNumber(g.kids[0], cells, s) - guardNumber(g.kids[1], cells, s);
     case Expr::Kind::Neg: return -guardNumber(g.kids[0], cells, s);
     case Expr::Kind::Count: {
-        const int centre = cells[g.around];
         z3::expr count = ctx_.int_val(0);
-        for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) {
-            const int nb = engine_.region().neighbour(centre, d);
-            count = count + z3::ite(member(s, nb, [&](int c, CellValue v) { return engine_.guardAccepts(g, d, c, v); }), ctx_.int_val(1), ctx_.int_val(0));
-        }
+        for (const z3::expr& accepted : acceptedAround(g, cells, s)) count = count + z3::ite(accepted, ctx_.int_val(1), ctx_.int_val(0));
         return z3::to_real(count);
     }
     default: throw InputError("internal: not a guard number");
@@ -304,9 +307,7 @@ z3::expr SmtEncoding::guard(const rules::Engine::GuardNode& g, const std::int32_
     case Expr::Kind::Connected: {
         // The accepted neighbours form a connected set: one of the (at most 2^6) connected sets.
         const int degree = static_cast<int>(g.perDirection.size());
-        std::vector<z3::expr> accepted;
-        for (int d = 0; d < degree; ++d)
-            accepted.push_back(member(s, engine_.region().neighbour(cells[g.around], d), [&](int c, CellValue v) { return engine_.guardAccepts(g, d, c, v); }));
+        const std::vector<z3::expr> accepted = acceptedAround(g, cells, s);
         z3::expr any = ctx_.bool_val(false);
         for (std::uint32_t set = 0; set < (1u << degree); ++set) {
             if (!engine_.tables().directionsConnected(set)) continue;

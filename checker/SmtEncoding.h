@@ -55,6 +55,8 @@ private:
     /// A compiled guard; `cells` are the region indices of the pattern cells it names.
     z3::expr guard(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s);
     z3::expr guardNumber(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s);
+    /// Per lattice direction around the guard's pattern cell: that neighbour is accepted.
+    std::vector<z3::expr> acceptedAround(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s);
     /// The cell counts for a region quantifier: it satisfies the predicate (and the cell guard).
     z3::expr memberCounted(const State& s, std::int32_t cell, const rules::Expr& quantifier);
     z3::expr connected(const rules::CellPredicate& pred, const State& s, bool positive);

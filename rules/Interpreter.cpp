@@ -125,7 +125,7 @@ int Interpreter::occupied(const Configuration& c) const {
     return n;
 }
 
-int Interpreter::countCells(const Expr& e, const Configuration& c, const Placement* at) const {
+int Interpreter::countCells(const Expr& e, const Configuration& c, const Placement* at, bool withCellGuard) const {
     int n = 0;
     if (e.around >= 0) {
         const Vec centre = at->positions[e.around];
@@ -135,7 +135,7 @@ int Interpreter::countCells(const Expr& e, const Configuration& c, const Placeme
     }
     for (int i = 0; i < region_->size(); ++i) {
         if (!matchesPredicate(e.pred, c.cells[i], context(region_->cell(i), c, at))) continue;
-        if (!e.kids.empty()) {  // a cell guard, read with @0 at this cell
+        if (withCellGuard && !e.kids.empty()) {  // a cell guard, read with @0 at this cell
             Placement here;
             here.positions = {region_->cell(i)};
             if (!holdsAt(e.kids[0], c, &here)) continue;
@@ -156,11 +156,7 @@ bool Interpreter::holdsAt(const Expr& e, const Configuration& c, const Placement
     case Expr::Kind::Some: return countCells(e, c, at) > 0;
     case Expr::Kind::No: return countCells(e, c, at) == 0;
     case Expr::Kind::All: {
-        if (!e.kids.empty()) {  // every pred cell satisfies the cell guard
-            Expr unguarded = e;
-            unguarded.kids.clear();
-            return countCells(e, c, at) == countCells(unguarded, c, at);
-        }
+        if (!e.kids.empty()) return countCells(e, c, at) == countCells(e, c, at, false);  // every pred cell satisfies the cell guard
         const int total = e.around >= 0 ? model_->lattice().degree() : region_->size();
         return countCells(e, c, at) == total;
     }

@@ -60,7 +60,9 @@ private:
     };
     bool holdsAt(const Expr& e, const Configuration& c, const Placement* at) const;
     Rational numberAt(const Expr& e, const Configuration& c, const Placement* at) const;
-    int countCells(const Expr& e, const Configuration& c, const Placement* at) const;
+    /// Cells satisfying a quantifier's predicate (around a pattern cell or in the region) and, for a
+    /// region quantifier with `withCellGuard`, its cell guard.
+    int countCells(const Expr& e, const Configuration& c, const Placement* at, bool withCellGuard = true) const;
     bool connected(const CellPredicate& pred, const Configuration& c) const;
     bool reaches(const Expr& e, const Configuration& c) const;
     CellContext context(Vec position, const Configuration& c, const Placement* at) const;

@@ -116,13 +116,7 @@ private:
     }
     template <class Cells>
     int guardCount(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
-        const auto centre = cells[g.around];
-        int n = 0;
-        for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) {
-            const auto nb = at.neighbour(centre, d);
-            n += nb < 0 ? guardAccepts(g, d, 0, 0) : guardAccepts(g, d, at.combo(nb), at.value(nb));
-        }
-        return n;
+        return std::popcount(guardMembers(g, at, cells));
     }
     /// Whether some neighbour is accepted: guardCount(...) > 0, stopping at the first.
     template <class Cells>

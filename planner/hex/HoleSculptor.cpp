@@ -93,6 +93,14 @@ void HoleSculptor::changed(std::int64_t i, Value old) {
     classCorrect_[class_[i]] += static_cast<int>(isFilled == target) - static_cast<int>(wasFilled == target);
 }
 
+void HoleSculptor::apply(const BoxEngine& engine, std::int64_t anchor, int shape) {
+    Value old[rules::RuleTables::kMaxCells];
+    engine.apply(cells_.data(), anchor, shape, old);
+    const auto steps = engine.cellSteps(shape);
+    for (std::size_t k = 0; k < steps.size(); ++k)
+        if (cells_[anchor + steps[k]] != old[k]) changed(anchor + steps[k], old[k]);
+}
+
 std::int32_t HoleSculptor::holeOf(std::int64_t i) const {
     if (cells_[i] == rules_->centre()) return holeAt_[i];
     if (cells_[i] != rules_->rim()) return -1;
@@ -138,12 +146,7 @@ bool HoleSculptor::shepherdsAnother(std::int64_t i, int id) const {
 
 void HoleSculptor::move(int id, int d) {
     Hole& h = holesById_[id];
-    const BoxEngine& engine = rules_->holeEngine();
-    Value old[rules::RuleTables::kMaxCells];
-    engine.apply(cells_.data(), h.centre, rules_->move(d), old);
-    const auto steps = engine.cellSteps(rules_->move(d));
-    for (std::size_t k = 0; k < steps.size(); ++k)
-        if (cells_[h.centre + steps[k]] != old[k]) changed(h.centre + steps[k], old[k]);
+    apply(rules_->holeEngine(), h.centre, rules_->move(d));
     holeAt_[h.centre] = -1;
     h.centre += array_->step(d);
     holeAt_[h.centre] = id;
@@ -310,7 +313,7 @@ int HoleSculptor::towardSurface(std::int64_t centre, std::int64_t node, int up) 
     return best;
 }
 
-// §IV-F column collapse, as hex_holes.holon's collapse rules run by the compiled engine: the
+// §IV-F column collapse, as hex_collapse.holon's rules run by the compiled engine: the
 // column head k looks at its neighbours at +120° and -60° from gravity; when the neighbouring
 // column's head is two or three hops down, k moves on top of it, provided k's neighbours after the
 // move are one arc (the rules' guards; shepherds never collapse, that would break a hole). Which
@@ -331,9 +334,7 @@ void HoleSculptor::smooth(std::int64_t k, int gravity) {
                 ++counts_.refusedSplits;
                 break;  // the next side
             }
-            Value old[rules::RuleTables::kMaxCells];
-            engine.apply(cells_.data(), k, shape, old);
-            changed(k, old[0]), changed(to, old[hops]);
+            apply(engine, k, shape);
             ++counts_.collapsed;
             return;
         }

@@ -67,6 +67,8 @@ private:
     void set(std::int64_t i, Value v);
     /// Bookkeeping (module count, metrics) after cell i changed from `old`.
     void changed(std::int64_t i, Value old);
+    /// Applies a rule instance of `engine` to the ensemble, with the bookkeeping of every changed cell.
+    void apply(const BoxEngine& engine, std::int64_t anchor, int shape);
     bool filled(std::int64_t i) const { return cells_[i] != 0; }
     /// The hole a cell belongs to, or -1.
     std::int32_t holeOf(std::int64_t i) const;
