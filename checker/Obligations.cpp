@@ -7,10 +7,12 @@
 //   ranking       one step from c to c' that does not decrease the ranking lexicographically (Lemma 3)
 //   holonomic     legal c and c' one toggle (or one module move) apart, and no instance from c to c'
 //   bmc           from the given configurations, k steps, some state violating an invariant
+//   reach         from the given configurations, any number of steps (Horn clauses; Reach.cpp)
 // Every query can be written as SMT-LIB2 for independent re-checking (proofs/).
 
 #include "checker/Obligations.h"
 
+#include "checker/Reach.h"
 #include "checker/SmtEncoding.h"
 #include "rules/Error.h"
 
@@ -148,16 +150,21 @@ public:
         return o;
     }
 
-    void write(const std::string& name, z3::solver& solver, Obligation& o) {
+    /// Where obligation `name` is written under --smt-out (the directory is created).
+    std::string smtPath(const std::string& name) const {
         const std::filesystem::path dir(options_.smtOut);
         std::filesystem::create_directories(dir);
-        const std::filesystem::path file = dir / (fileSafe(model_.system().name) + "." + fileSafe(region_.spec()) + "." + fileSafe(name) + ".smt2");
+        return (dir / (fileSafe(model_.system().name) + "." + fileSafe(region_.spec()) + "." + fileSafe(name) + ".smt2")).string();
+    }
+
+    void write(const std::string& name, z3::solver& solver, Obligation& o) {
+        const std::string file = smtPath(name);
         std::ofstream out(file);
-        if (!out) throw InputError("cannot write '" + file.string() + "'");
+        if (!out) throw InputError("cannot write '" + file + "'");
         out << "; holon proof obligation: system " << model_.system().name << ", region " << region_.spec() << ", property " << name
             << "\n; expected: unsat (the property holds for every configuration of the region)\n(set-logic ALL)\n"
             << solver.to_smt2();
-        o.smtFile = file.string();
+        o.smtFile = file;
     }
 
     int placedFrom(const z3::model& m, const z3::expr& selector) const { return m.eval(selector, true).get_numeral_int(); }
@@ -177,6 +184,26 @@ Obligation notEncoded(const std::string& name, const std::string& kind, const st
     return o;
 }
 
+/// Progress fails at s (Lemma 2): outside the goal, under the property's assumption, and no
+/// instance matches. Only for systems without non-local constraints, where matching is enabledness.
+z3::expr stuck(SmtEncoding& enc, const SmtEncoding::State& s, const rules::Engine& e, const rules::Property& progress) {
+    const rules::System& system = e.model().system();
+    z3::expr q = system.goal ? !enc.holds(*system.goal, s, false) : s.is[0][0].ctx().bool_val(true);
+    if (!progress.exprs.empty()) q = q && enc.holds(progress.exprs[0], s, true);
+    for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) q = q && !enc.matches(placed, s);
+    return q;
+}
+
+/// The concrete test of the same.
+bool stuckAt(const std::vector<CellValue>& c, const rules::Engine& e, const rules::Property& progress) {
+    const rules::System& system = e.model().system();
+    if (system.goal && e.holds(*system.goal, c.data())) return false;
+    if (!progress.exprs.empty() && !e.holds(progress.exprs[0], c.data())) return false;
+    for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed)
+        if (e.matches(c.data(), placed)) return false;
+    return true;
+}
+
 std::vector<std::uint32_t> inputsOf(const z3::model& m, z3::context& ctx, const rules::Engine& e) {
     std::vector<std::uint32_t> in(e.region().size(), 0);
     for (int i = 0; i < e.region().size(); ++i)
@@ -185,6 +212,51 @@ std::vector<std::uint32_t> inputsOf(const z3::model& m, z3::context& ctx, const 
             if (m.eval(b, true).is_true()) in[i] |= 1u << k;
         }
     return in;
+}
+
+/// Inductiveness of an invariant (Lemma 1, Safety).
+Obligation proveInductive(Runner& run, const rules::Property& p) {
+    const rules::Engine& e = run.engine();
+    const rules::Model& model = e.model();
+    // Inductiveness, one conjunct of the invariant at a time: I(c), a step, and the conjunct
+    // failing in the successor. Smaller queries, the same theorem.
+    std::vector<const rules::Expr*> conjuncts;
+    std::function<void(const rules::Expr&)> split = [&](const rules::Expr& x) {
+        if (x.kind == rules::Expr::Kind::And) split(x.kids[0]), split(x.kids[1]);
+        else conjuncts.push_back(&x);
+    };
+    split(p.exprs[0]);
+    Obligation total;
+    total.result.name = p.name;
+    total.result.kind = "invariant";
+    total.result.verdict = Verdict::Holds;
+    total.result.summary = "inductive: every step from a state where it holds keeps it";
+    for (std::size_t k = 0; k < conjuncts.size(); ++k) {
+        z3::context cctx;
+        SmtEncoding cenc(cctx, e);
+        auto c = cenc.state("c"), d = cenc.state("d");
+        const z3::expr base = cenc.legal(c) && cenc.holds(p.exprs[0], c, true) && cenc.legal(d) && !cenc.holds(*conjuncts[k], d, false);
+        Obligation part = run.stepwise(
+            p.name + "." + std::to_string(k + 1), "invariant", cctx, cenc, base, [&](int q) { return cenc.fires(q, c, d); },
+            [&](const z3::model& m, int q, PropertyResult& r) {
+                r.trace = Trace{{{cenc.decode(m, c), -1}, {cenc.decode(m, d), q}}, {}, {},
+                                "a step from a state where it holds to one where it fails: not inductive", {}};
+                r.summary = r.trace->description;
+                r.witness = {{"inputs", inputsOf(m, cctx, e)}, {"rule", model.rules()[e.instances()[q].rule].name}, {"conjunct", k + 1}};
+            },
+            "");
+        total.result.seconds += part.result.seconds;
+        if (!part.smtFile.empty()) total.smtFile += (total.smtFile.empty() ? "" : " ") + part.smtFile;
+        if (part.result.verdict != Verdict::Holds) {
+            part.result.name = p.name;
+            part.result.seconds = total.result.seconds;
+            part.smtFile = total.smtFile;
+            total = part;
+            if (total.result.verdict == Verdict::Unknown) total.result.summary += " (conjunct " + std::to_string(k + 1) + ")";
+            break;
+        }
+    }
+    return total;
 }
 
 }  // namespace
@@ -267,45 +339,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             break;
         }
         case rules::Property::Kind::Invariant: {
-            // Inductiveness, one conjunct of the invariant at a time: I(c), a step, and the conjunct
-            // failing in the successor. Smaller queries, the same theorem.
-            std::vector<const rules::Expr*> conjuncts;
-            std::function<void(const rules::Expr&)> split = [&](const rules::Expr& x) {
-                if (x.kind == rules::Expr::Kind::And) split(x.kids[0]), split(x.kids[1]);
-                else conjuncts.push_back(&x);
-            };
-            split(p.exprs[0]);
-            Obligation total;
-            total.result.name = p.name;
-            total.result.kind = "invariant";
-            total.result.verdict = Verdict::Holds;
-            total.result.summary = "inductive: every step from a state where it holds keeps it";
-            for (std::size_t k = 0; k < conjuncts.size(); ++k) {
-                z3::context cctx;
-                SmtEncoding cenc(cctx, e);
-                auto c = cenc.state("c"), d = cenc.state("d");
-                const z3::expr base = cenc.legal(c) && cenc.holds(p.exprs[0], c, true) && cenc.legal(d) && !cenc.holds(*conjuncts[k], d, false);
-                Obligation part = run.stepwise(
-                    p.name + "." + std::to_string(k + 1), "invariant", cctx, cenc, base, [&](int q) { return cenc.fires(q, c, d); },
-                    [&](const z3::model& m, int q, PropertyResult& r) {
-                        r.trace = Trace{{{cenc.decode(m, c), -1}, {cenc.decode(m, d), q}}, {}, {},
-                                        "a step from a state where it holds to one where it fails: not inductive", {}};
-                        r.summary = r.trace->description;
-                        r.witness = {{"inputs", inputsOf(m, cctx, e)}, {"rule", model.rules()[e.instances()[q].rule].name}, {"conjunct", k + 1}};
-                    },
-                    "");
-                total.result.seconds += part.result.seconds;
-                if (!part.smtFile.empty()) total.smtFile += (total.smtFile.empty() ? "" : " ") + part.smtFile;
-                if (part.result.verdict != Verdict::Holds) {
-                    part.result.name = p.name;
-                    part.result.seconds = total.result.seconds;
-                    part.smtFile = total.smtFile;
-                    total = part;
-                    if (total.result.verdict == Verdict::Unknown) total.result.summary += " (conjunct " + std::to_string(k + 1) + ")";
-                    break;
-                }
-            }
-            report.obligations.push_back(total);
+            report.obligations.push_back(proveInductive(run, p));
             break;
         }
         case rules::Property::Kind::Ranking: {
@@ -328,11 +362,8 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 break;
             }
             auto c = enc.state("c");
-            z3::expr q = ctx.bool_val(true);
+            z3::expr q = stuck(enc, c, e, p);
             for (const rules::Property* inv : invariants) q = q && enc.holds(inv->exprs[0], c, true);
-            if (system.goal) q = q && !enc.holds(*system.goal, c, false);
-            if (!p.exprs.empty()) q = q && enc.holds(p.exprs[0], c, true);
-            for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) q = q && !enc.matches(placed, c);
             auto decode = [&](const z3::model& m, PropertyResult& r) {
                 Trace t;
                 t.steps.push_back({enc.decode(m, c), -1});
@@ -389,41 +420,131 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         }
     }
 
-    // Bounded model checking of every invariant from the given configurations.
-    if (options.depth > 0 && !options.initial.empty())
-        for (const rules::Property* inv : invariants) {
-            if (!selected(inv->name)) continue;
-            const std::string name = inv->name + "@bmc" + std::to_string(options.depth);
-            announce(name);
-            z3::context ctx;
-            SmtEncoding enc(ctx, e);
-            std::vector<SmtEncoding::State> path{enc.state("s0")};
-            std::vector<z3::expr> selectors;
-            z3::expr start = ctx.bool_val(false);
-            for (const rules::Configuration& c : options.initial) start = start || (enc.configurationIs(path[0], c.cells) && enc.inputsAre(c.inputs));
-            z3::expr steps = ctx.bool_val(true), someBad = !enc.holds(inv->exprs[0], path[0], false);
-            for (int k = 1; k <= options.depth; ++k) {
-                path.push_back(enc.state("s" + std::to_string(k)));
-                selectors.push_back(ctx.int_const(("step" + std::to_string(k)).c_str()));
-                steps = steps && enc.step(path[k - 1], path[k], selectors.back());
-                someBad = someBad || !enc.holds(inv->exprs[0], path[k], false);
+    // What --depth and --reach show unreachable: a state breaking an invariant, or (progress) a
+    // reachable deadlock outside the goal. Each comes symbolically and as a test on a concrete state
+    // (which cuts a decoded path at its first bad state).
+    struct Target {
+        const rules::Property* property;
+        BadStates bad;
+        std::function<bool(const std::vector<CellValue>&, const rules::Engine&)> isBad;
+        std::string failure;  // "invariant 'safety' fails", "deadlock outside the goal"
+    };
+    std::vector<Target> targets;
+    for (const rules::Property& p : system.properties) {
+        if (!selected(p.name)) continue;
+        if (p.kind == rules::Property::Kind::Invariant)
+            targets.push_back({&p, [&p](SmtEncoding& enc, const SmtEncoding::State& s) { return !enc.holds(p.exprs[0], s, false); },
+                               [&p](const std::vector<CellValue>& c, const rules::Engine& en) { return !en.holds(p.exprs[0], c.data()); },
+                               "invariant '" + p.name + "' fails"});
+        else if (p.kind == rules::Property::Kind::Progress && system.constraints.empty())
+            targets.push_back({&p, [&p, &e](SmtEncoding& enc, const SmtEncoding::State& s) { return stuck(enc, s, e, p); },
+                               [&p](const std::vector<CellValue>& c, const rules::Engine& en) { return stuckAt(c, en, p); },
+                               "a deadlock outside the goal"});
+    }
+
+    // Bounded model checking from the given configurations, to `depth` steps.
+    auto bmc = [&](const Target& target, int depth, const std::string& name) {
+        z3::context ctx;
+        SmtEncoding enc(ctx, e);
+        std::vector<SmtEncoding::State> path{enc.state("s0")};
+        std::vector<z3::expr> selectors;
+        z3::expr start = ctx.bool_val(false);
+        for (const rules::Configuration& c : options.initial) start = start || (enc.configurationIs(path[0], c.cells) && enc.inputsAre(c.inputs));
+        z3::expr steps = ctx.bool_val(true), someBad = target.bad(enc, path[0]);
+        for (int k = 1; k <= depth; ++k) {
+            path.push_back(enc.state("s" + std::to_string(k)));
+            selectors.push_back(ctx.int_const(("step" + std::to_string(k)).c_str()));
+            steps = steps && enc.step(path[k - 1], path[k], selectors.back());
+            someBad = someBad || target.bad(enc, path[k]);
+        }
+        const rules::Engine concrete(model, region, options.initial.front().inputs);
+        auto decode = [&](const z3::model& m, PropertyResult& r) {
+            Trace t;
+            for (std::size_t k = 0; k < path.size(); ++k) {
+                t.steps.push_back({enc.decode(m, path[k]), k ? run.placedFrom(m, selectors[k - 1]) : -1});
+                if (target.isBad(t.steps.back().cells, concrete)) break;
             }
-            // Shortest violation first: look for the first bad state at each depth in turn.
-            const z3::expr q = start && steps && someBad;
-            const rules::Engine concrete(model, region, options.initial.front().inputs);
-            auto decode = [&](const z3::model& m, PropertyResult& r) {
-                Trace t;
-                for (std::size_t k = 0; k < path.size(); ++k) {
-                    t.steps.push_back({enc.decode(m, path[k]), k ? run.placedFrom(m, selectors[k - 1]) : -1});
-                    if (!concrete.holds(inv->exprs[0], t.steps.back().cells.data())) break;
+            t.description = target.failure + " after " + stepCount(t.steps.size() - 1);
+            r.trace = t;
+            r.summary = t.description;
+            r.witness = {{"depth", t.steps.size() - 1}};
+        };
+        return run.solve(name, "bmc", ctx, enc, start && steps && someBad, decode,
+                         "holds on every path of up to " + std::to_string(depth) + " steps from the given configurations");
+    };
+    if (options.depth > 0 && !options.initial.empty())
+        for (const Target& t : targets) {
+            if (t.property->kind != rules::Property::Kind::Invariant) continue;
+            const std::string name = t.property->name + "@bmc" + std::to_string(options.depth);
+            announce(name);
+            report.obligations.push_back(bmc(t, options.depth, name));
+        }
+
+    // Every reachable state, without a depth bound: Horn clauses for Spacer (Reach.cpp). A
+    // refutation says some reachable state is bad; the shortest path to one is found by deepening BMC.
+    // Invariants that hold in every reachable state -- inductive and true initially, or proved
+    // @reach -- restrict the steps the later Horn clauses consider. Inductiveness not asked for is
+    // proved here without being reported or exported.
+    std::vector<const rules::Property*> known;
+    if (options.reach && !options.initial.empty()) {
+        VerifyOptions quiet = options;
+        quiet.smtOut.clear();
+        Runner quietRun(model, region, quiet);
+        const rules::Engine atStart(model, region, options.initial.front().inputs);
+        for (const rules::Property* p : invariants) {
+            const bool initially = std::all_of(options.initial.begin(), options.initial.end(), [&](const rules::Configuration& c) {
+                return c.inputs == options.initial.front().inputs && atStart.holds(p->exprs[0], c.cells.data());
+            });
+            if (!initially) continue;
+            auto asked = std::find_if(report.obligations.begin(), report.obligations.end(), [&](const Obligation& o) { return o.result.name == p->name; });
+            if ((asked != report.obligations.end() ? asked->result.verdict : proveInductive(quietRun, *p).result.verdict) == Verdict::Holds) known.push_back(p);
+        }
+    }
+    auto knownAt = [&](SmtEncoding& enc, const SmtEncoding::State& s) {
+        z3::expr all = s.is[0][0].ctx().bool_val(true);
+        for (const rules::Property* p : known) all = all && enc.holds(p->exprs[0], s, true);
+        return all;
+    };
+    if (options.reach && !options.initial.empty())
+        for (const Target& t : targets) {
+            const std::string name = t.property->name + "@reach";
+            announce(name);
+            const std::string file = options.smtOut.empty() ? std::string() : run.smtPath(name);
+            const bool isKnown = std::find(known.begin(), known.end(), t.property) != known.end();
+            const ReachProof proof = isKnown ? ReachProof{} : proveUnreachable(e, t.bad, options.initial, options.timeoutSeconds, file, known.empty() ? BadStates() : BadStates(knownAt));
+            Obligation o = Runner::named(name, "reach");
+            for (const std::string& f : proof.certificateFiles) o.smtFile += (o.smtFile.empty() ? "" : " ") + f;
+            o.result.verdict = proof.verdict;
+            o.result.seconds = proof.seconds;
+            if (isKnown) {
+                o.result.verdict = Verdict::Holds;
+                o.result.summary = "holds in every reachable state: it is inductive and holds initially";
+            } else if (proof.verdict == Verdict::Holds) {
+                std::string given;
+                if (proof.usedKnown)
+                    for (const rules::Property* k : known) given += (given.empty() ? ", given " : " and ") + k->name;
+                o.result.summary = "holds in every reachable state (inductive invariant of " + std::to_string(proof.invariant.size()) + " clauses" + given + ")";
+                o.result.witness = {{"inductive_invariant", proof.invariant}};
+                if (t.property->kind == rules::Property::Kind::Invariant) known.push_back(t.property);
+            } else if (proof.verdict == Verdict::Unknown) {
+                o.result.summary = "the solver gave up: " + proof.reason;
+            } else {
+                o.result.verdict = Verdict::Unknown;
+                o.result.summary = "a bad state is reachable, but no trace to it within the timeout";
+                for (int depth = 1; o.result.seconds < options.timeoutSeconds; ++depth) {
+                    Obligation shortest = bmc(t, depth, name);
+                    o.result.seconds += shortest.result.seconds;
+                    if (shortest.result.verdict == Verdict::Unknown) break;
+                    if (shortest.result.verdict == Verdict::Violated) {
+                        shortest.result.kind = "reach";
+                        shortest.result.seconds = o.result.seconds;
+                        shortest.smtFile = o.smtFile;
+                        o = shortest;
+                        break;
+                    }
                 }
-                t.description = "invariant '" + inv->name + "' fails after " + stepCount(t.steps.size() - 1);
-                r.trace = t;
-                r.summary = t.description;
-                r.witness = {{"depth", t.steps.size() - 1}};
-            };
-            report.obligations.push_back(run.solve(name, "bmc", ctx, enc, q, decode,
-                                                   "holds on every path of up to " + std::to_string(options.depth) + " steps from the given configurations"));
+            }
+            report.obligations.push_back(o);
         }
     return report;
 }

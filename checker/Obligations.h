@@ -16,6 +16,7 @@ namespace holon::checker {
 struct VerifyOptions {
     double timeoutSeconds = 120;                // per obligation
     int depth = 0;                              // > 0: bounded model checking from `initial`
+    bool reach = false;                         // every state reachable from `initial` (Spacer)
     std::vector<rules::Configuration> initial;
     std::vector<std::string> properties;        // empty: all
     std::string smtOut;                         // directory for SMT-LIB2 files, or empty

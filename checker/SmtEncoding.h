@@ -26,6 +26,8 @@ public:
     const std::vector<z3::expr>& facts() const { return facts_; }
     /// Fixes the inputs to the problem's (otherwise each cell's inputs are free booleans).
     z3::expr inputsAre(const std::vector<std::uint32_t>& inputs) const;
+    /// Each cell's input bits, in the system's input order.
+    const std::vector<std::vector<z3::expr>>& inputBits() const { return inputBits_; }
     z3::expr configurationIs(const State& s, const std::vector<rules::CellValue>& cells) const;
 
     /// A non-local expression of the system. `positive`: the expression occurs under an even number

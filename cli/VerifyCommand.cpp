@@ -23,7 +23,7 @@ struct VerifyArgs {
     std::vector<std::string> from, inputs, properties, noWarnings;
     int depth = 0;
     double timeout = 120;
-    bool json = false;
+    bool json = false, reach = false;
 };
 
 int run(const VerifyArgs& a) {
@@ -35,9 +35,11 @@ int run(const VerifyArgs& a) {
     checker::VerifyOptions options;
     options.timeoutSeconds = a.timeout;
     options.depth = a.depth;
+    options.reach = a.reach;
     options.properties = a.properties;
     options.smtOut = a.smtOut;
     if (a.depth > 0 && a.from.empty()) throw InputError("--depth needs initial configurations: --from CONFIG");
+    if (a.reach && a.from.empty()) throw InputError("--reach needs initial configurations: --from CONFIG");
     const auto inputs = readInputs(in, a.inputs);
     for (const std::string& path : a.from) {
         rules::Configuration c = rules::readConfigFile(in, path);
@@ -78,13 +80,28 @@ int run(const VerifyArgs& a) {
         std::cout << report.toJson().dump(2) << '\n';
         return report.counterexample() ? 1 : 0;
     }
-    std::cout << system->name << " on " << region.spec() << ": every configuration of the region\n\n  " << std::left << std::setw(22)
+    std::cout << system->name << " on " << region.spec() << ": every configuration of the region"
+              << (a.depth > 0 || a.reach ? " (NAME@bmcK: paths of K steps from --from; NAME@reach: every state reachable from --from)" : "")
+              << "\n\n  " << std::left << std::setw(22)
               << "obligation" << std::setw(16) << "verdict" << std::setw(10) << "time" << "evidence\n";
     for (const auto& o : report.obligations)
         std::cout << "  " << std::setw(22) << o.result.name << std::setw(16) << checker::proofVerdictName(o.result.verdict) << std::setw(10)
                   << (std::to_string(static_cast<int>(o.result.seconds * 1000)) + " ms") << o.result.summary << '\n';
+    for (const auto& o : report.obligations) {
+        if (!o.result.witness.is_object() || !o.result.witness.contains("inductive_invariant")) continue;
+        // Spacer's invariant holds initially, is closed under every step and excludes the bad states.
+        const auto& clauses = o.result.witness["inductive_invariant"];
+        const std::size_t shown = std::min<std::size_t>(clauses.size(), 40);
+        std::cout << "\ninductive invariant for '" << o.result.name << "' (" << clauses.size() << " clauses; each line holds in every reachable state):\n";
+        for (std::size_t k = 0; k < shown; ++k) std::cout << "  " << clauses[k].get<std::string>() << '\n';
+        if (shown < clauses.size()) std::cout << "  ... " << clauses.size() - shown << " more (--json prints all)\n";
+    }
     if (shown) {
-        std::cout << "\ncounterexample for '" << shown->name << "' (confirmed by the reference interpreter)\n"
+        std::cout << "\ncounterexample for '" << shown->name << "' (confirmed by the reference interpreter)\n";
+        for (const auto& o : report.obligations)
+            if (o.result.name == shown->name + "@reach" && o.result.verdict == checker::Verdict::Holds && shownInputs == options.initial.front().inputs)
+                std::cout << "(no run from the given start reaches it: '" << o.result.name << "' is proved)\n";
+        std::cout
                   << checker::drawTraceAscii(*shown->trace, drawing);
         if (!shownInputs.empty() && !system->inputs.empty()) {
             std::cout << "-- inputs set (" << system->inputs[0] << (system->inputs.size() > 1 ? ", ..." : "") << "):\n"
@@ -103,7 +120,8 @@ Run addVerifyCommand(CLI::App& app) {
     sub->add_option("--region", a->region, "bounded region: square:WxH, cubic:WxHxD or hex:rR")->required();
     sub->add_option("--property", a->properties, "prove only this property (repeatable)");
     sub->add_option("--depth", a->depth, "also bounded model checking of the invariants to this depth from --from");
-    sub->add_option("--from", a->from, "initial configuration for --depth (JSON or ASCII art); repeatable");
+    sub->add_flag("--reach", a->reach, "also prove the invariants for every state reachable from --from, at any depth (Spacer)");
+    sub->add_option("--from", a->from, "initial configuration for --depth and --reach (JSON or ASCII art); repeatable");
     sub->add_option("--input", a->inputs, "inputs of the initial configurations: NAME=FILE (ASCII mask)");
     sub->add_option("--timeout", a->timeout, "seconds per obligation (default 120)");
     sub->add_flag("--json", a->json, "print the report as JSON");

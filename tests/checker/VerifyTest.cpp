@@ -5,6 +5,10 @@
 #include "CheckSupport.h"
 #include "checker/Obligations.h"
 
+#include <filesystem>
+#include <sstream>
+#include <z3++.h>
+
 using namespace holon;
 using checker::Verdict;
 
@@ -129,4 +133,78 @@ TEST_CASE("hex holes stay whole for every configuration of hex:r3, and every rul
     const auto r = prove(w, {"holes", "mass_conservation"});
     CHECK(result(r, "holes").verdict == Verdict::Holds);
     CHECK(result(r, "mass_conservation").verdict == Verdict::Holds);
+}
+
+namespace {
+
+/// planner_general2 on square:3x2 from one F creator, one U creator and a U destroyer outside the
+/// target: two creations and a deletion, with partials on the way.
+checker::VerifyOptions general2Start(const test::World& w) {
+    checker::VerifyOptions o;
+    auto start = w.in->empty();
+    w.set(start, 0, 0, "C&F"), w.set(start, 1, 0, "C&U"), w.set(start, 2, 0, "D&U");
+    w.mark(start, "target", "##.\n##.");
+    o.initial.push_back(start);
+    o.reach = true;
+    o.timeoutSeconds = 120;
+    return o;
+}
+
+}  // namespace
+
+TEST_CASE("Spacer proves general2's Progress for every reachable state, which no per-configuration query can") {
+    test::World w = test::World::library("planner_general2", "square:3x2");
+    checker::VerifyOptions o = general2Start(w);
+    o.properties = {"safety", "progress"};
+    o.smtOut = std::filesystem::temp_directory_path() / "holon_verify_reach_test";
+    std::filesystem::remove_all(o.smtOut);
+    auto r = checker::verify(*w.model, w.region, o);
+    const auto& stuck = result(r, "progress");
+    REQUIRE(stuck.verdict == Verdict::Violated);
+    CHECK(checker::confirmCounterexample(stuck, *w.model, w.region));
+    const auto& reached = result(r, "progress@reach");
+    REQUIRE(reached.verdict == Verdict::Holds);
+    CHECK_FALSE(reached.witness["inductive_invariant"].empty());
+    CHECK(result(r, "safety@reach").verdict == Verdict::Holds);
+
+    // The explorer agrees: from the start, no reachable state is stuck.
+    test::Checked c{test::World::library("planner_general2", "square:3x2"), {}, {}};
+    checker::CheckOptions co;
+    co.initial = o.initial;
+    c.report = checker::check(*c.world.model, c.world.region, co, &c.kept);
+    CHECK(c.property("progress").verdict == Verdict::Holds);
+
+    // The invariant is a certificate any solver can re-check: three queries, each unsat.
+    std::vector<std::string> files;
+    for (const auto& o2 : r.obligations)
+        if (o2.result.name == "progress@reach") {
+            std::istringstream in(o2.smtFile);
+            for (std::string f; in >> f;) files.push_back(f);
+        }
+    REQUIRE(files.size() == 3);
+    for (const std::string& f : files) {
+        CAPTURE(f);
+        z3::context ctx;
+        z3::solver s(ctx);
+        s.from_file(f.c_str());
+        CHECK(s.check() == z3::unsat);
+    }
+    std::filesystem::remove_all(o.smtOut);
+}
+
+TEST_CASE("a reachable violation: Spacer refutes, deepening BMC gives a trace as short as the explorer's") {
+    test::World w(broken("planner_no_guard"), "square:4x3");
+    checker::VerifyOptions o;
+    auto start = w.ascii("UFU.\nUUU.\nUUU.");
+    w.mark(start, "target", ".###\n.###\n.###");
+    o.initial.push_back(start);
+    o.reach = true;
+    o.properties = {"safety"};
+    auto r = checker::verify(*w.model, w.region, o);
+    const auto& s = result(r, "safety@reach");
+    REQUIRE(s.verdict == Verdict::Violated);
+    CHECK(checker::confirmCounterexample(s, *w.model, w.region));
+    auto c = test::checkFrom(broken("planner_no_guard"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###", {}, {"safety"});
+    REQUIRE(c.property("safety").verdict == Verdict::Violated);
+    CHECK(s.trace->steps.size() == c.property("safety").trace->steps.size());
 }

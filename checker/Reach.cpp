@@ -1,0 +1,405 @@
+// Unbounded reachability for a fixed region (issue: Z3 proofs, obligation 5). Bounded model
+// checking only speaks about paths up to k steps, and an inductiveness proof (holon verify's
+// invariant obligation) fails whenever the invariant is true of every reachable state but not
+// closed under steps from unreachable ones -- planner_general2's first safety invariant was such a
+// case. Constrained Horn clauses state the question exactly,
+//     init(s)            -> reach(s)
+//     reach(a), step(a,b) -> reach(b)
+//     reach(s), not I(s)  -> false
+// and a solution (Z3's Spacer engine: IC3/PDR generalised to Horn clauses; Komuravelli, Gurfinkel
+// and Chaki, CAV 2014) is an interpretation of `reach` that contains the initial states, is closed
+// under steps and implies I: an inductive strengthening of I that a person can read. The step and the
+// invariant come from the one SMT encoding (SmtEncoding), so the semantics are the interpreter's.
+
+#include "checker/Reach.h"
+
+#include "checker/SmtEncoding.h"
+#include "rules/Error.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <csignal>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <unordered_set>
+
+namespace holon::checker {
+
+namespace {
+
+void collectConstants(const z3::expr& e, std::unordered_set<unsigned>& seen, z3::expr_vector& out) {
+    if (!seen.insert(e.id()).second) return;
+    if (e.is_quantifier()) return collectConstants(e.body(), seen, out);
+    if (!e.is_app()) return;
+    if (e.num_args() == 0 && e.decl().decl_kind() == Z3_OP_UNINTERPRETED) {
+        out.push_back(e);
+        return;
+    }
+    for (unsigned k = 0; k < e.num_args(); ++k) collectConstants(e.arg(k), seen, out);
+}
+
+/// body -> head, closed over every constant in it (each Horn clause is its own universal sentence).
+z3::expr clause(const z3::expr& body, const z3::expr& head) {
+    const z3::expr sentence = z3::implies(body, head);
+    std::unordered_set<unsigned> seen;
+    z3::expr_vector vars(sentence.ctx());
+    collectConstants(sentence, seen, vars);
+    return vars.empty() ? sentence : z3::forall(vars, sentence);
+}
+
+/// An argument of the reach relation: cell `cell` holds state `state`, or (state < 0) an input bit.
+struct Atom {
+    int cell, state;
+    std::string where, text;  // "(x,y)" and "(x,y)=STATE" or "NAME(x,y)"
+};
+
+/// The solved relation as infix text; `atoms[k]` names argument k.
+std::string infix(const z3::expr& e, const std::vector<Atom>& atoms, int outer = 0) {
+    if (e.is_var()) return atoms.at(Z3_get_index_value(e.ctx(), e)).text;
+    if (e.is_true()) return "true";
+    if (e.is_false()) return "false";
+    if (!e.is_app()) return e.to_string();
+    auto joined = [&](const char* op, int prec) {
+        std::string s;
+        for (unsigned k = 0; k < e.num_args(); ++k) s += (k ? op : "") + infix(e.arg(k), atoms, prec + 1);
+        return prec < outer ? "(" + s + ")" : s;
+    };
+    switch (e.decl().decl_kind()) {
+    case Z3_OP_NOT: return "not " + infix(e.arg(0), atoms, 4);
+    case Z3_OP_AND: return joined(" and ", 2);
+    case Z3_OP_OR: return joined(" or ", 1);
+    case Z3_OP_IMPLIES: return joined(" -> ", 0);
+    case Z3_OP_EQ:
+    case Z3_OP_IFF: return joined(" == ", 3);
+    case Z3_OP_XOR: return joined(" != ", 3);
+    default: return e.to_string();
+    }
+}
+
+/// One conjunct of the invariant. A disjunction's positive atoms on one cell read as
+/// "(x,y) in {A, B}", or as the complement, "(x,y) not in {C, D}", when that is shorter (each cell
+/// holds exactly one state).
+std::string clauseText(const z3::expr& e, const std::vector<Atom>& atoms, const rules::Alphabet& alphabet) {
+    std::vector<z3::expr> literals;
+    if (e.is_app() && e.decl().decl_kind() == Z3_OP_OR)
+        for (unsigned k = 0; k < e.num_args(); ++k) literals.push_back(e.arg(k));
+    else
+        literals.push_back(e);
+    std::vector<std::pair<int, std::vector<int>>> byCell;  // in order of first mention
+    std::vector<std::string> rest;
+    auto atomOf = [&](const z3::expr& x) { return x.is_var() ? &atoms.at(Z3_get_index_value(x.ctx(), x)) : nullptr; };
+    for (const z3::expr& l : literals) {
+        const Atom* atom = atomOf(l);
+        const Atom* negated = l.is_app() && l.decl().decl_kind() == Z3_OP_NOT ? atomOf(l.arg(0)) : nullptr;
+        if (negated && negated->state >= 0) {
+            rest.push_back(negated->where + "!=" + alphabet.name(static_cast<rules::CellValue>(negated->state)));
+            continue;
+        }
+        if (!atom || atom->state < 0) {
+            rest.push_back(infix(l, atoms, 2));
+            continue;
+        }
+        auto it = std::find_if(byCell.begin(), byCell.end(), [&](const auto& g) { return g.first == atom->cell; });
+        if (it == byCell.end()) it = byCell.insert(byCell.end(), {atom->cell, {}});
+        it->second.push_back(atom->state);
+    }
+    std::string text;
+    auto add = [&](const std::string& part) { text += (text.empty() ? "" : " or ") + part; };
+    for (const auto& [cell, states] : byCell) {
+        const std::string where = std::find_if(atoms.begin(), atoms.end(), [&](const Atom& a) { return a.cell == cell; })->where;
+        // The listed states or their complement, whichever is shorter.
+        std::vector<int> others;
+        for (int v = 0; v < alphabet.size(); ++v)
+            if (std::find(states.begin(), states.end(), v) == states.end()) others.push_back(v);
+        const bool positive = states.size() <= others.size();
+        const std::vector<int>& named = positive ? states : others;
+        std::string names;
+        for (int v : named) names += (names.empty() ? "" : ", ") + alphabet.name(static_cast<rules::CellValue>(v));
+        if (named.size() == 1) add(where + (positive ? "=" : "!=") + names);
+        else add(where + (positive ? " in {" : " not in {") + names + "}");
+    }
+    for (const std::string& r : rest) add(r);
+    return text;
+}
+
+/// The Horn clauses, built and solved in this process.
+ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadStates& bad, const BadStates& known,
+                     const std::vector<rules::Configuration>& initial, double timeoutSeconds, const std::string& smtFile) {
+    const auto start = std::chrono::steady_clock::now();
+    const rules::Region& region = engine.region();
+    const rules::Model& model = engine.model();
+    const int alphabet = model.alphabet().size();
+    const auto& inputNames = model.system().inputs;
+    // Inputs never change along a path. When every initial configuration has the same inputs they
+    // are fixed in every clause; otherwise they are arguments of reach, set by the initial clause.
+    const bool sharedInputs = std::all_of(initial.begin(), initial.end(), [&](const auto& c) { return c.inputs == initial.front().inputs; });
+
+    SmtEncoding enc(ctx, engine);
+    std::vector<Atom> atoms;
+    for (int i = 0; i < region.size(); ++i) {
+        const rules::Vec v = region.cell(i);
+        const std::string where = "(" + std::to_string(v.x) + "," + std::to_string(v.y) + (region.lattice().dimension() == 3 ? "," + std::to_string(v.z) : "") + ")";
+        for (int s = 0; s < alphabet; ++s) atoms.push_back({i, s, where, where + "=" + model.alphabet().name(static_cast<rules::CellValue>(s))});
+        if (!sharedInputs)
+            for (const std::string& in : inputNames) atoms.push_back({i, -1, where, in + where});
+    }
+    z3::sort_vector sorts(ctx);
+    for (std::size_t k = 0; k < atoms.size(); ++k) sorts.push_back(ctx.bool_sort());
+    const z3::func_decl reach = ctx.function("reach", sorts, ctx.bool_sort());
+    auto argsOf = [&](const SmtEncoding::State& s) {
+        z3::expr_vector args(ctx);
+        for (int i = 0; i < region.size(); ++i) {
+            for (int v = 0; v < alphabet; ++v) args.push_back(s.is[i][v]);
+            if (!sharedInputs)
+                for (const z3::expr& bit : enc.inputBits()[i]) args.push_back(bit);
+        }
+        return args;
+    };
+    auto at = [&](const SmtEncoding::State& s) { return reach(argsOf(s)); };
+    // Each clause carries the domain facts (one state per cell, rank bounds) made while building it.
+    std::size_t factsFrom = 0;
+    auto newFacts = [&] {
+        z3::expr all = sharedInputs ? enc.inputsAre(initial.front().inputs) : ctx.bool_val(true);
+        for (std::size_t k = factsFrom; k < enc.facts().size(); ++k) all = all && enc.facts()[k];
+        factsFrom = enc.facts().size();
+        return all;
+    };
+
+    const SmtEncoding::State s = enc.state("s");
+    z3::expr init = ctx.bool_val(false);
+    for (const rules::Configuration& c : initial) init = init || (enc.configurationIs(s, c.cells) && (sharedInputs ? ctx.bool_val(true) : enc.inputsAre(c.inputs)));
+    const z3::expr initBody = newFacts() && init;
+    const SmtEncoding::State a = enc.state("a"), b = enc.state("b");
+    const z3::expr stepped = enc.step(a, b, ctx.int_const("instance"));
+    const z3::expr stepBody = newFacts() && known(enc, a) && stepped;
+    const SmtEncoding::State q = enc.state("q");
+    const z3::expr isBad = known(enc, q) && bad(enc, q);
+    const z3::expr badBody = newFacts() && isBad;
+
+    z3::solver solver(ctx, "HORN");
+    z3::params params(ctx);
+    params.set("timeout", static_cast<unsigned>(timeoutSeconds * 1000));
+    solver.set(params);
+    solver.add(clause(initBody, at(s)));
+    solver.add(clause(stepBody && at(a), at(b)));
+    solver.add(clause(badBody && at(q), ctx.bool_val(false)));
+
+    ReachProof proof;
+    auto header = [&](std::ofstream& out, const std::string& expected) {
+        out << "; holon reachability proof: system " << model.system().name << ", region " << region.spec() << "\n; expected: " << expected << "\n";
+    };
+    if (!smtFile.empty()) {
+        std::ofstream out(smtFile);
+        if (!out) throw InputError("cannot write '" + smtFile + "'");
+        header(out, "sat (the model's `reach` is an inductive invariant excluding the bad states)");
+        out << "(set-logic HORN)\n" << solver.to_smt2();
+    }
+
+    const z3::check_result r = solver.check();
+    if (r == z3::unsat) proof.verdict = Verdict::Violated;
+    if (r == z3::unknown) proof.reason = solver.reason_unknown();
+    if (r == z3::sat) {
+        // Spacer's answer is a certificate; it is checked here with three ordinary queries that
+        // any SMT solver can re-check (--smt-out writes them): it holds initially, every step
+        // keeps it, and no bad state satisfies it.
+        const z3::model m = solver.get_model();
+        z3::expr found = m.has_interp(reach) ? m.get_func_interp(reach).else_value().simplify() : ctx.bool_val(true);
+        auto inv = [&](const SmtEncoding::State& st) { return found.substitute(argsOf(st)); };
+        const std::pair<const char*, z3::expr> checks[] = {
+            {"init", initBody && !inv(s)}, {"step", stepBody && inv(a) && !inv(b)}, {"safe", badBody && inv(q)}};
+        proof.verdict = Verdict::Holds;
+        for (const auto& [part, query] : checks) {
+            z3::solver check(ctx);
+            check.set(params);
+            check.add(query);
+            if (!smtFile.empty()) {
+                const std::string file = smtFile.substr(0, smtFile.size() - 5) + "." + part + ".smt2";
+                std::ofstream out(file);
+                if (!out) throw InputError("cannot write '" + file + "'");
+                header(out, std::string("unsat (certificate check '") + part + "' of Spacer's invariant)");
+                out << "(set-logic ALL)\n" << check.to_smt2();
+                proof.certificateFiles.push_back(file);
+            }
+            if (check.check() != z3::unsat) {
+                proof.verdict = Verdict::Unknown;
+                proof.reason = std::string("Spacer's invariant failed its certificate check '") + part + "'";
+                break;
+            }
+        }
+        if (proof.verdict == Verdict::Holds) {
+            if (found.is_app() && found.decl().decl_kind() == Z3_OP_AND)
+                for (unsigned k = 0; k < found.num_args(); ++k) proof.invariant.push_back(clauseText(found.arg(k), atoms, model.alphabet()));
+            else
+                proof.invariant.push_back(clauseText(found, atoms, model.alphabet()));
+        }
+    }
+    proof.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return proof;
+}
+
+nlohmann::json toJson(const ReachProof& p) {
+    return {{"verdict", static_cast<int>(p.verdict)}, {"invariant", p.invariant}, {"reason", p.reason},
+            {"seconds", p.seconds}, {"files", p.certificateFiles}, {"used_known", p.usedKnown}};
+}
+
+/// One solver of the portfolio: a forked child writing its answer, as JSON, to a pipe.
+struct Child {
+    pid_t pid = -1;
+    int fd = -1;
+    std::string text;
+};
+
+std::optional<Child> spawn(const std::function<ReachProof(z3::context&)>& solve) {
+    int fds[2];
+    if (pipe(fds) != 0) return std::nullopt;
+    std::cout.flush(), std::cerr.flush();
+    const pid_t pid = fork();
+    if (pid < 0) {
+        close(fds[0]), close(fds[1]);
+        return std::nullopt;
+    }
+    if (pid == 0) {
+        close(fds[0]);
+        nlohmann::json answer;
+        try {
+            auto* kept = new z3::context;  // never freed: the process ends with _exit
+            answer = toJson(solve(*kept));
+        } catch (const InputError& e) {
+            answer = {{"input_error", e.what()}};
+        } catch (const std::exception& e) {
+            answer = {{"error", e.what()}};
+        }
+        const std::string text = answer.dump();
+        for (std::size_t done = 0; done < text.size();) {
+            const ssize_t n = write(fds[1], text.data() + done, text.size() - done);
+            if (n <= 0) break;
+            done += static_cast<std::size_t>(n);
+        }
+        _exit(0);
+    }
+    close(fds[1]);
+    return Child{pid, fds[0], {}};
+}
+
+ReachProof answerOf(const Child& c, int status) {
+    ReachProof proof;
+    const nlohmann::json answer = nlohmann::json::parse(c.text, nullptr, false);
+    if (answer.is_discarded() || !answer.is_object()) {
+        proof.reason = WIFSIGNALED(status) ? "the solver process died (signal " + std::to_string(WTERMSIG(status)) + ")" : "the solver process gave no answer";
+        return proof;
+    }
+    if (answer.contains("input_error")) throw InputError(answer["input_error"].get<std::string>());
+    if (answer.contains("error")) {
+        proof.reason = answer["error"].get<std::string>();
+        return proof;
+    }
+    proof.verdict = static_cast<Verdict>(answer["verdict"].get<int>());
+    proof.invariant = answer["invariant"].get<std::vector<std::string>>();
+    proof.reason = answer["reason"].get<std::string>();
+    proof.seconds = answer["seconds"].get<double>();
+    proof.certificateFiles = answer["files"].get<std::vector<std::string>>();
+    proof.usedKnown = answer["used_known"].get<bool>();
+    return proof;
+}
+
+/// "dir/x.smt2" -> "dir/x.v1.smt2": the file of portfolio variant k.
+std::string variantFile(const std::string& smtFile, std::size_t k) {
+    return smtFile.empty() ? smtFile : smtFile.substr(0, smtFile.size() - 5) + ".v" + std::to_string(k) + ".smt2";
+}
+
+}  // namespace
+
+// Spacer runs in forked children that end without freeing their Z3 context: with Z3 4.8.12,
+// deleting a context after Spacer took three times as long as the proof itself (planner_general2
+// on square:3x2: 2.9 s to prove, 8 s to free it). With known invariants there are two children, a
+// portfolio on the two cores: one restricts steps to the known invariants, one does not. Neither
+// dominates (general2 Progress on 3x2: 1.5 s with safety, 112 s without; general3: a timeout with,
+// 31 s without); the first definite answer wins.
+ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, const std::vector<rules::Configuration>& initial,
+                            double timeoutSeconds, const std::string& smtFile, const BadStates& known) {
+    const BadStates nothing = [](SmtEncoding&, const SmtEncoding::State& st) { return st.is[0][0].ctx().bool_val(true); };
+    std::vector<BadStates> variants{known ? known : nothing};
+    if (known) variants.push_back(nothing);
+    auto solveVariant = [&](std::size_t k, z3::context& ctx) {
+        ReachProof p = solveHorn(ctx, engine, bad, variants[k], initial, timeoutSeconds, variantFile(smtFile, k));
+        p.usedKnown = known && k == 0;
+        return p;
+    };
+    std::vector<Child> children;
+    for (std::size_t k = 0; k < variants.size(); ++k) {
+        auto child = spawn([&, k](z3::context& ctx) { return solveVariant(k, ctx); });
+        if (!child) break;
+        children.push_back(*child);
+    }
+    auto stopAll = [&] {
+        for (Child& c : children) {
+            if (c.fd >= 0) close(c.fd), c.fd = -1;
+            if (c.pid > 0) kill(c.pid, SIGKILL), waitpid(c.pid, nullptr, 0), c.pid = -1;
+        }
+    };
+    ReachProof best;
+    std::optional<std::size_t> winner;
+    if (children.size() < variants.size()) {  // no fork: solve here, first variant only
+        stopAll();
+        z3::context ctx;
+        best = solveVariant(0, ctx);
+        winner = 0;
+    }
+    for (std::size_t open = winner ? 0 : children.size(); open > 0 && !winner;) {
+        std::vector<pollfd> polled;
+        for (const Child& c : children)
+            if (c.fd >= 0) polled.push_back({c.fd, POLLIN, 0});
+        if (poll(polled.data(), polled.size(), -1) < 0) {
+            if (errno == EINTR) continue;
+            break;
+        }
+        for (std::size_t k = 0; k < children.size(); ++k) {
+            Child& c = children[k];
+            if (c.fd < 0) continue;
+            auto it = std::find_if(polled.begin(), polled.end(), [&](const pollfd& p) { return p.fd == c.fd; });
+            if (it == polled.end() || !it->revents) continue;
+            char buffer[65536];
+            const ssize_t n = read(c.fd, buffer, sizeof buffer);
+            if (n < 0 && errno == EINTR) continue;
+            if (n > 0) {
+                c.text.append(buffer, static_cast<std::size_t>(n));
+                continue;
+            }
+            close(c.fd), c.fd = -1, --open;
+            int status = 0;
+            while (waitpid(c.pid, &status, 0) < 0 && errno == EINTR) {}
+            c.pid = -1;
+            ReachProof p = answerOf(c, status);
+            if (p.verdict != Verdict::Unknown) {
+                best = p, winner = k;
+                break;
+            }
+            if (best.reason.empty()) best = p;
+        }
+    }
+    stopAll();
+    // The winner's files take the plain names; the others' are removed.
+    if (!smtFile.empty())
+        for (std::size_t k = 0; k < variants.size(); ++k) {
+            const std::string from = variantFile(smtFile, k), stem = from.substr(0, from.size() - 5), plain = smtFile.substr(0, smtFile.size() - 5);
+            for (const char* part : {"", ".init", ".step", ".safe"}) {
+                const std::string file = stem + part + ".smt2";
+                if (winner == k) std::rename(file.c_str(), (plain + part + ".smt2").c_str());
+                else std::remove(file.c_str());
+            }
+        }
+    for (std::string& f : best.certificateFiles) {
+        const std::size_t v = f.rfind(".v");
+        if (v != std::string::npos) f.erase(v, f.find('.', v + 1) - v);
+    }
+    return best;
+}
+
+}  // namespace holon::checker
