@@ -2,7 +2,8 @@
 // invariants on every stored state (the first violation has a shortest trace, since the search is
 // breadth-first), conservation and ranking on every edge, deadlocks as terminal states outside the
 // goal, livelocks as cycles of the graph on which the ranking never decreases (BGL strong
-// components of the non-decreasing edges), and holonomy (Holonomy.cpp). A property that needs the
+// components of the non-decreasing edges), states from which the goal is unreachable (BGL
+// breadth-first search on the reversed graph), and holonomy (Holonomy.cpp). A property that needs the
 // whole graph is "unknown" when a limit stopped the search before a violation was found.
 
 #include "checker/Check.h"
@@ -43,6 +44,7 @@ std::vector<std::string> checkableProperties(const rules::System& system) {
     std::vector<std::string> names;
     for (const rules::Property& p : system.properties) names.push_back(p.name);
     names.push_back("deadlock");
+    if (system.goal) names.push_back("goal_reachable");
     return names;
 }
 
@@ -328,6 +330,41 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
             r.summary = std::to_string(count) + " states with no enabled rule outside the goal";
             r.trace->description = "a deadlock: no rule is enabled and the goal is not reached";
             r.witness = {{"deadlocks", count}, {"state", first}, {"distance", r.trace->steps.size() - 1}};
+        }
+        r.seconds = since(t0);
+        report.properties.push_back(std::move(r));
+    }
+    // The goal stays reachable from every reachable state (AG EF goal): then a scheduler that picks
+    // enabled instances at random reaches it with probability 1, even where the ranking admits
+    // cycles. A deadlock outside the goal violates it; so does a trap of cycles with no way out.
+    if (system.goal && selected("goal_reachable")) {
+        const auto t0 = Clock::now();
+        PropertyResult r;
+        r.name = "goal_reachable";
+        r.kind = "goal_reachable";
+        if (!complete) {
+            r.summary = "needs the whole graph; the search stopped at a limit";
+        } else {
+            std::vector<StateId> goals;
+            const std::vector<StateId> ids = ex->ids();
+            for (StateId s : ids)
+                if (e.holds(*system.goal, ex->cells(s).data())) goals.push_back(s);
+            const std::vector<char> reach = canReach(*ex, goals);
+            std::uint64_t count = 0;
+            StateId first = kNoState;
+            for (StateId s : ids)
+                if (!reach[s] && (count++ == 0 || ex->pathTo(s).size() < ex->pathTo(first).size())) first = s;
+            if (count == 0) {
+                r.verdict = Verdict::Holds;
+                r.summary = "from every state some run reaches the goal (" + std::to_string(goals.size()) + " goal states)";
+            } else {
+                r.verdict = Verdict::Violated;
+                r.trace = traceTo(*ex, first);
+                r.trace->property = "goal_reachable";
+                r.summary = std::to_string(count) + " states from which no run reaches the goal";
+                r.trace->description = "no run from here reaches the goal";
+                r.witness = {{"trapped", count}, {"state", first}, {"distance", r.trace->steps.size() - 1}};
+            }
         }
         r.seconds = since(t0);
         report.properties.push_back(std::move(r));

@@ -21,7 +21,7 @@ namespace {
 using Csr = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, boost::no_property, boost::no_property,
                                                std::uint32_t, std::uint64_t>;
 
-Csr buildCsr(const Explorer& ex, bool bothWays, const std::vector<char>* keep = nullptr) {
+Csr buildCsr(const Explorer& ex, bool bothWays, const std::vector<char>* keep = nullptr, bool reversed = false) {
     if (!ex.hasEdges()) throw InputError("internal: the graph was explored without recording edges");
     std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
     const auto& row = ex.rowStart();
@@ -30,7 +30,8 @@ Csr buildCsr(const Explorer& ex, bool bothWays, const std::vector<char>* keep = 
     for (std::size_t s = 0; s + 1 < row.size(); ++s)
         for (std::uint64_t e = row[s]; e < row[s + 1]; ++e) {
             if (keep && !(*keep)[e]) continue;
-            edges.push_back({static_cast<std::uint32_t>(s), succ[e]});
+            if (reversed) edges.push_back({succ[e], static_cast<std::uint32_t>(s)});
+            else edges.push_back({static_cast<std::uint32_t>(s), succ[e]});
             if (bothWays) edges.push_back({succ[e], static_cast<std::uint32_t>(s)});
         }
     std::sort(edges.begin(), edges.end());
@@ -65,6 +66,23 @@ Components strongComponents(const Explorer& ex, const std::vector<char>& keepEdg
     c.of.assign(num_vertices(g), -1);
     c.count = static_cast<int>(boost::strong_components(g, boost::make_iterator_property_map(c.of.begin(), get(boost::vertex_index, g))));
     return c;
+}
+
+std::vector<char> canReach(const Explorer& ex, const std::vector<StateId>& targets) {
+    // Breadth-first from all targets at once on the reversed graph: what it discovers can reach one.
+    Csr g = buildCsr(ex, false, nullptr, true);
+    std::vector<char> reach(num_vertices(g), 0);
+    if (targets.empty()) return reach;
+    struct Mark : boost::default_bfs_visitor {
+        std::vector<char>* reach;
+        void discover_vertex(std::uint32_t v, const Csr&) const { (*reach)[v] = 1; }
+    } mark;
+    mark.reach = &reach;
+    boost::queue<std::uint32_t> queue;
+    std::vector<boost::default_color_type> color(num_vertices(g), boost::white_color);
+    boost::breadth_first_search(g, targets.begin(), targets.end(), queue, mark,
+                                boost::make_iterator_property_map(color.begin(), get(boost::vertex_index, g)));
+    return reach;
 }
 
 struct GraphView::Impl {

@@ -19,6 +19,8 @@ struct Components {
 Components components(const Explorer& explorer);
 /// Strong components (for cycles: a livelock lives inside one).
 Components strongComponents(const Explorer& explorer, const std::vector<char>& keepEdge);
+/// Per state: some path of steps leads from it to one of `targets`.
+std::vector<char> canReach(const Explorer& explorer, const std::vector<StateId>& targets);
 /// The explored graph as a BGL compressed-sparse-row graph, built once for many queries.
 class GraphView {
 public:

@@ -130,7 +130,7 @@ Run addCheckCommand(CLI::App& app) {
     sub->add_flag("--all", a->all, "explore every legal configuration of the region");
     sub->add_option("--from", a->from, "initial configuration (JSON or ASCII art); repeatable");
     sub->add_option("--input", a->inputs, "set an input from an ASCII mask: NAME=FILE (any character but '.' marks a cell)");
-    sub->add_option("--property", a->properties, "check only this property (repeatable); 'deadlock' is built in");
+    sub->add_option("--property", a->properties, "check only this property (repeatable); 'deadlock' and 'goal_reachable' are built in");
     sub->add_option("--max-states", a->maxStates, "stop after this many states (default 50000000)");
     sub->add_option("--timeout", a->timeout, "stop after this many seconds");
     sub->add_option("--memory", a->memoryMiB, "memory bound in MiB (default 16384)");

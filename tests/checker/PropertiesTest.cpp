@@ -100,6 +100,43 @@ TEST_CASE("deadlocks are found and drawn") {
     c.replayAll();
 }
 
+TEST_CASE("a trap without a deadlock: the goal is unreachable from a cycle") {
+    // From A the goal G is one step away; from B and C only the cycle B <-> C remains.
+    auto trap = test::parse("system trap\nstates A | B | C | G\nrule a2g: A => G\nrule a2b: A => B\nrule b2c: B => C\nrule c2b: C => B\ngoal count(G) == 1\n");
+    auto c = test::checkFrom(trap, "square:1x1", "A", "");
+    CHECK(c.property("deadlock").verdict == Verdict::Holds);
+    const auto& g = c.property("goal_reachable");
+    REQUIRE(g.verdict == Verdict::Violated);
+    CHECK(g.witness["trapped"] == 2);
+    CHECK(g.trace->steps.size() == 2);
+    c.replayAll();
+    // With a way out of the cycle the goal is reachable from everywhere.
+    auto exit = test::parse("system exit\nstates A | B | C | G\nrule a2g: A => G\nrule a2b: A => B\nrule b2c: B => C\nrule c2b: C => B\nrule c2a: C => A\ngoal count(G) == 1\n");
+    CHECK(test::checkFrom(exit, "square:1x1", "A", "").property("goal_reachable").verdict == Verdict::Holds);
+}
+
+TEST_CASE("general-lock2's planner: a deadlock from two creations started at once, and the goal out of reach") {
+    test::Checked c{test::World::library("planner_general_lock2", "square:3x2"), {}, {}};
+    checker::CheckOptions o;
+    auto start = c.world.in->empty();
+    c.world.set(start, 0, 0, "C&F"), c.world.set(start, 1, 0, "C&U"), c.world.set(start, 2, 0, "D&U");
+    c.world.mark(start, "target", "##.\n##.");
+    o.initial.push_back(start);
+    o.properties = {"deadlock", "goal_reachable"};
+    c.report = checker::check(*c.world.model, c.world.region, o, &c.kept);
+    CHECK(c.property("deadlock").verdict == Verdict::Violated);
+    CHECK(c.property("goal_reachable").verdict == Verdict::Violated);
+    c.replayAll();
+    // The same problem under planner_general2 (no locks): the goal stays reachable.
+    test::Checked free{test::World::library("planner_general2", "square:3x2"), {}, {}};
+    auto start2 = free.world.in->empty();
+    free.world.set(start2, 0, 0, "C&F"), free.world.set(start2, 1, 0, "C&U"), free.world.set(start2, 2, 0, "D&U");
+    free.world.mark(start2, "target", "##.\n##.");
+    o.initial = {start2};
+    free.report = checker::check(*free.world.model, free.world.region, o, &free.kept);
+    CHECK(free.property("goal_reachable").verdict == Verdict::Holds);
+}
+
 TEST_CASE("an unknown property is bad input") {
     test::World w = test::World::library("pixel", "square:2x2");
     checker::CheckOptions o;
