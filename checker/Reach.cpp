@@ -129,6 +129,36 @@ std::string clauseText(const z3::expr& e, const std::vector<Atom>& atoms, const 
     return text;
 }
 
+/// The conjuncts of `found` (over the reach relation's arguments) without those the others imply,
+/// given that each cell holds one state: Spacer's lemmas overlap ("(0,0)=_" next to
+/// "(0,0)!=S&to=1"). `onState` is `found` on state `s`, conjunct for conjunct.
+std::vector<z3::expr> irredundant(const z3::expr& found, const z3::expr& onState, const SmtEncoding::State& s, z3::context& ctx) {
+    std::vector<z3::expr> kept, concrete;
+    const bool conjunction = found.is_app() && found.decl().decl_kind() == Z3_OP_AND;
+    for (unsigned k = 0; k < (conjunction ? found.num_args() : 1); ++k) {
+        kept.push_back(conjunction ? found.arg(k) : found);
+        concrete.push_back(conjunction ? onState.arg(k) : onState);
+    }
+    z3::solver oneState(ctx);
+    for (const auto& row : s.is) {
+        z3::expr_vector any(ctx);
+        for (const z3::expr& v : row) any.push_back(v);
+        oneState.add(z3::mk_or(any));
+        for (std::size_t a = 0; a < row.size(); ++a)
+            for (std::size_t b = a + 1; b < row.size(); ++b) oneState.add(!(row[a] && row[b]));
+    }
+    for (std::size_t k = kept.size(); k-- > 0;) {
+        oneState.push();
+        for (std::size_t j = 0; j < kept.size(); ++j)
+            if (j != k) oneState.add(concrete[j]);
+        oneState.add(!concrete[k]);
+        const bool implied = oneState.check() == z3::unsat;
+        oneState.pop();
+        if (implied) kept.erase(kept.begin() + static_cast<long>(k)), concrete.erase(concrete.begin() + static_cast<long>(k));
+    }
+    return kept;
+}
+
 /// The Horn clauses, built and solved in this process.
 ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadStates& bad, const BadStates& known,
                      const std::vector<rules::Configuration>& initial, double timeoutSeconds, const std::string& smtFile) {
@@ -233,12 +263,8 @@ ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadSta
                 break;
             }
         }
-        if (proof.verdict == Verdict::Holds) {
-            if (found.is_app() && found.decl().decl_kind() == Z3_OP_AND)
-                for (unsigned k = 0; k < found.num_args(); ++k) proof.invariant.push_back(clauseText(found.arg(k), atoms, model.alphabet()));
-            else
-                proof.invariant.push_back(clauseText(found, atoms, model.alphabet()));
-        }
+        if (proof.verdict == Verdict::Holds)
+            for (const z3::expr& c : irredundant(found, inv(s), s, ctx)) proof.invariant.push_back(clauseText(c, atoms, model.alphabet()));
     }
     proof.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return proof;
