@@ -112,7 +112,9 @@ std::string clauseText(const z3::expr& e, const std::vector<Atom>& atoms, const 
     }
     std::string text;
     auto add = [&](const std::string& part) { text += (text.empty() ? "" : " or ") + part; };
-    for (const auto& [cell, states] : byCell) {
+    for (const auto& group : byCell) {
+        const int cell = group.first;  // not a structured binding: clang 14 cannot capture those
+        const std::vector<int>& states = group.second;
         const std::string where = std::find_if(atoms.begin(), atoms.end(), [&](const Atom& a) { return a.cell == cell; })->where;
         // The listed states or their complement, whichever is shorter.
         std::vector<int> others;
