@@ -1,10 +1,14 @@
 // Proof-obligation timing (issue: Z3 proofs): seconds per planner lemma (seed 000 §IV-C) for the
 // U/P/F planner over intermediate, per region, and how it grows. Each cell is the median of the
 // runs; "unknown" means the per-obligation timeout was hit.
+// Then --reach (Spacer, every reachable state): Progress of the planners over general2 and
+// general3 on square:3x2 from examples/verify's start (two creations and a deletion).
 // Usage: verify_bench [--runs N] [--timeout S] [--regions square:2x2,square:3x3,...]
 
 #include "checker/Obligations.h"
+#include "rules/ConfigIo.h"
 #include "rules/Library.h"
+#include "rules/Parser.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -54,6 +58,37 @@ int main(int argc, char** argv) {
             cells[k] = buf;
         }
         std::printf("%-14s %6d %14s %14s %14s %10.2f\n", spec.c_str(), region.size(), cells[0].c_str(), cells[1].c_str(), cells[2].c_str(), total);
+    }
+
+    std::printf("\n--reach on square:3x2 from examples/verify/general_start.json, median of %d runs\n", runs);
+    std::printf("%-22s %16s %10s\n", "system", "progress@reach s", "clauses");
+    const std::string examples = std::string(HOLON_SOURCE_DIR) + "/examples/verify/";
+    for (const char* stem : {"planner_general2", "planner_general3"}) {
+        const rules::System planner = rules::librarySystem(stem);
+        const rules::Region region = rules::Region::parse("square:3x2");
+        const rules::Model model(planner, region.lattice());
+        const rules::Interpreter in(model, region);
+        rules::Configuration start = rules::readConfigFile(in, examples + "general_start.json");
+        const auto mask = rules::maskFromAscii(region, rules::readTextFile(examples + "general_target.txt"));
+        for (int i = 0; i < region.size(); ++i) start.inputs[i] = mask[i] ? 1u : 0u;
+        std::vector<double> seconds;
+        std::string verdict = "proved", clauses;
+        for (int r = 0; r < runs; ++r) {
+            checker::VerifyOptions o;
+            o.timeoutSeconds = timeout;
+            o.properties = {"progress"};
+            o.reach = true;
+            o.initial = {start};
+            const auto report = checker::verify(model, region, o);
+            const auto& reach = report.obligations.back().result;
+            seconds.push_back(reach.seconds);
+            if (reach.verdict != checker::Verdict::Holds) verdict = checker::proofVerdictName(reach.verdict);
+            else clauses = std::to_string(reach.witness["inductive_invariant"].size());
+        }
+        std::sort(seconds.begin(), seconds.end());
+        char cell[64];
+        std::snprintf(cell, sizeof cell, verdict == "proved" ? "%.2f" : "%.0f %s", seconds[seconds.size() / 2], verdict == "proved" ? "" : verdict.c_str());
+        std::printf("%-22s %16s %10s\n", stem, cell, clauses.c_str());
     }
     return 0;
 }
