@@ -64,6 +64,25 @@ Trace traceWithStep(const Explorer& ex, StateId from, std::uint64_t e) {
     return t;
 }
 
+/// Among `states`, those `bad` accepts make `r` violated: how many, and a shortest trace to the
+/// nearest. False when there is none.
+template <class Bad>
+bool violatedAtNearest(PropertyResult& r, const Explorer& ex, const std::vector<StateId>& states, Bad bad, const std::string& which,
+                       const std::string& description, const char* countKey) {
+    std::uint64_t count = 0;
+    StateId first = kNoState;
+    for (StateId s : states)
+        if (bad(s) && (count++ == 0 || ex.pathTo(s).size() < ex.pathTo(first).size())) first = s;
+    if (count == 0) return false;
+    r.verdict = Verdict::Violated;
+    r.trace = traceTo(ex, first);
+    r.trace->property = r.name;
+    r.summary = std::to_string(count) + " states " + which;
+    r.trace->description = description;
+    r.witness = {{countKey, count}, {"state", first}, {"distance", r.trace->steps.size() - 1}};
+    return true;
+}
+
 /// Cells outside the largest connected part of the occupied cells (to mark a disconnection).
 std::vector<int> cutOff(const rules::Region& region, const std::vector<CellValue>& cells) {
     std::vector<int> comp(region.size(), -1), sizes;
@@ -315,22 +334,10 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
         PropertyResult r;
         r.name = "deadlock";
         r.kind = "deadlock";
-        std::uint64_t count = 0;
-        StateId first = kNoState;
-        for (StateId s : ex->terminal()) {
-            const auto cells = ex->cells(s);
-            if (system.goal && e.holds(*system.goal, cells.data())) continue;
-            if (count++ == 0 || ex->pathTo(s).size() < ex->pathTo(first).size()) first = s;
-        }
-        if (count == 0) unknownOr(r, "every state outside the goal has an enabled rule");
-        else {
-            r.verdict = Verdict::Violated;
-            r.trace = traceTo(*ex, first);
-            r.trace->property = "deadlock";
-            r.summary = std::to_string(count) + " states with no enabled rule outside the goal";
-            r.trace->description = "a deadlock: no rule is enabled and the goal is not reached";
-            r.witness = {{"deadlocks", count}, {"state", first}, {"distance", r.trace->steps.size() - 1}};
-        }
+        const bool found = violatedAtNearest(
+            r, *ex, ex->terminal(), [&](StateId s) { return !system.goal || !e.holds(*system.goal, ex->cells(s).data()); },
+            "with no enabled rule outside the goal", "a deadlock: no rule is enabled and the goal is not reached", "deadlocks");
+        if (!found) unknownOr(r, "every state outside the goal has an enabled rule");
         r.seconds = since(t0);
         report.properties.push_back(std::move(r));
     }
@@ -350,20 +357,10 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
             for (StateId s : ids)
                 if (e.holds(*system.goal, ex->cells(s).data())) goals.push_back(s);
             const std::vector<char> reach = canReach(*ex, goals);
-            std::uint64_t count = 0;
-            StateId first = kNoState;
-            for (StateId s : ids)
-                if (!reach[s] && (count++ == 0 || ex->pathTo(s).size() < ex->pathTo(first).size())) first = s;
-            if (count == 0) {
+            if (!violatedAtNearest(r, *ex, ids, [&](StateId s) { return !reach[s]; }, "from which no run reaches the goal",
+                                   "no run from here reaches the goal", "trapped")) {
                 r.verdict = Verdict::Holds;
                 r.summary = "from every state some run reaches the goal (" + std::to_string(goals.size()) + " goal states)";
-            } else {
-                r.verdict = Verdict::Violated;
-                r.trace = traceTo(*ex, first);
-                r.trace->property = "goal_reachable";
-                r.summary = std::to_string(count) + " states from which no run reaches the goal";
-                r.trace->description = "no run from here reaches the goal";
-                r.witness = {{"trapped", count}, {"state", first}, {"distance", r.trace->steps.size() - 1}};
             }
         }
         r.seconds = since(t0);

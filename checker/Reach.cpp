@@ -414,18 +414,18 @@ ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, c
     }
     stopAll();
     // The winner's files take the plain names; the others' are removed.
-    if (!smtFile.empty())
+    if (!smtFile.empty()) {
+        const std::string plain = smtFile.substr(0, smtFile.size() - 5);
         for (std::size_t k = 0; k < variants.size(); ++k) {
-            const std::string from = variantFile(smtFile, k), stem = from.substr(0, from.size() - 5), plain = smtFile.substr(0, smtFile.size() - 5);
+            const std::string variant = variantFile(smtFile, k), stem = variant.substr(0, variant.size() - 5);
             for (const char* part : {"", ".init", ".step", ".safe"}) {
                 const std::string file = stem + part + ".smt2";
                 if (winner == k) std::rename(file.c_str(), (plain + part + ".smt2").c_str());
                 else std::remove(file.c_str());
             }
+            if (winner == k)
+                for (std::string& f : best.certificateFiles) f = plain + f.substr(stem.size());
         }
-    for (std::string& f : best.certificateFiles) {
-        const std::size_t v = f.rfind(".v");
-        if (v != std::string::npos) f.erase(v, f.find('.', v + 1) - v);
     }
     return best;
 }
