@@ -54,7 +54,6 @@ public:
         Obligation o;
         o.result.name = name;
         o.result.kind = kind;
-        o.expected = "unsat";
         return o;
     }
 

@@ -25,7 +25,6 @@ struct VerifyOptions {
 struct Obligation {
     PropertyResult result;          // verdict Holds = proved, Violated = counterexample
     std::string smtFile;            // written file, if any
-    std::string expected;           // "unsat" when the proof succeeds
 };
 
 struct VerifyReport {
