@@ -13,21 +13,15 @@
 
 #include "checker/Reach.h"
 
+#include "checker/Forked.h"
 #include "checker/SmtEncoding.h"
 #include "rules/Error.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
-#include <fstream>
-#include <iostream>
-#include <csignal>
 #include <cstdio>
+#include <fstream>
 #include <nlohmann/json.hpp>
-#include <optional>
-#include <poll.h>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <unordered_set>
 
 namespace holon::checker {
@@ -277,53 +271,8 @@ nlohmann::json toJson(const ReachProof& p) {
             {"seconds", p.seconds}, {"files", p.certificateFiles}, {"used_known", p.usedKnown}};
 }
 
-/// One solver of the portfolio: a forked child writing its answer, as JSON, to a pipe.
-struct Child {
-    pid_t pid = -1;
-    int fd = -1;
-    std::string text;
-};
-
-std::optional<Child> spawn(const std::function<ReachProof(z3::context&)>& solve) {
-    int fds[2];
-    if (pipe(fds) != 0) return std::nullopt;
-    std::cout.flush(), std::cerr.flush();
-    const pid_t pid = fork();
-    if (pid < 0) {
-        close(fds[0]), close(fds[1]);
-        return std::nullopt;
-    }
-    if (pid == 0) {
-        close(fds[0]);
-        nlohmann::json answer;
-        try {
-            auto* kept = new z3::context;  // never freed: the process ends with _exit
-            answer = toJson(solve(*kept));
-        } catch (const InputError& e) {
-            answer = {{"input_error", e.what()}};
-        } catch (const std::exception& e) {
-            answer = {{"error", e.what()}};
-        }
-        const std::string text = answer.dump();
-        for (std::size_t done = 0; done < text.size();) {
-            const ssize_t n = write(fds[1], text.data() + done, text.size() - done);
-            if (n <= 0) break;
-            done += static_cast<std::size_t>(n);
-        }
-        _exit(0);
-    }
-    close(fds[1]);
-    return Child{pid, fds[0], {}};
-}
-
-ReachProof answerOf(const Child& c, int status) {
+ReachProof fromJson(const nlohmann::json& answer) {
     ReachProof proof;
-    const nlohmann::json answer = nlohmann::json::parse(c.text, nullptr, false);
-    if (answer.is_discarded() || !answer.is_object()) {
-        proof.reason = WIFSIGNALED(status) ? "the solver process died (signal " + std::to_string(WTERMSIG(status)) + ")" : "the solver process gave no answer";
-        return proof;
-    }
-    if (answer.contains("input_error")) throw InputError(answer["input_error"].get<std::string>());
     if (answer.contains("error")) {
         proof.reason = answer["error"].get<std::string>();
         return proof;
@@ -344,75 +293,34 @@ std::string variantFile(const std::string& smtFile, std::size_t k) {
 
 }  // namespace
 
-// Spacer runs in forked children that end without freeing their Z3 context: with Z3 4.8.12,
-// deleting a context after Spacer took three times as long as the proof itself (planner_general2
-// on square:3x2: 2.9 s to prove, 8 s to free it). With known invariants there are two children, a
-// portfolio on the two cores: one restricts steps to the known invariants, one does not. Neither
-// dominates (general2 Progress on 3x2: 1.5 s with safety, 112 s without; general3: a timeout with,
-// 31 s without); the first definite answer wins.
+// Spacer runs in forked children (Forked.h): with Z3 4.8.12, deleting a context after Spacer took
+// three times as long as the proof itself (planner_general2 on square:3x2: 2.9 s to prove, 8 s to
+// free it). With known invariants there are two children, a portfolio on the two cores: one
+// restricts steps to the known invariants, one does not. Neither dominates (general2 Progress on
+// 3x2: 1.5 s with safety, 112 s without; general3: a timeout with, 31 s without); the first
+// definite answer wins.
 ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, const std::vector<rules::Configuration>& initial,
                             double timeoutSeconds, const std::string& smtFile, const BadStates& known) {
     const BadStates nothing = [](SmtEncoding&, const SmtEncoding::State& st) { return st.is[0][0].ctx().bool_val(true); };
     std::vector<BadStates> variants{known ? known : nothing};
     if (known) variants.push_back(nothing);
-    auto solveVariant = [&](std::size_t k, z3::context& ctx) {
-        ReachProof p = solveHorn(ctx, engine, bad, variants[k], initial, timeoutSeconds, variantFile(smtFile, k));
-        p.usedKnown = known && k == 0;
-        return p;
-    };
-    std::vector<Child> children;
-    for (std::size_t k = 0; k < variants.size(); ++k) {
-        auto child = spawn([&, k](z3::context& ctx) { return solveVariant(k, ctx); });
-        if (!child) break;
-        children.push_back(*child);
-    }
-    auto stopAll = [&] {
-        for (Child& c : children) {
-            if (c.fd >= 0) close(c.fd), c.fd = -1;
-            if (c.pid > 0) kill(c.pid, SIGKILL), waitpid(c.pid, nullptr, 0), c.pid = -1;
-        }
-    };
-    ReachProof best;
-    std::optional<std::size_t> winner;
-    if (children.size() < variants.size()) {  // no fork: solve here, first variant only
-        stopAll();
-        z3::context ctx;
-        best = solveVariant(0, ctx);
-        winner = 0;
-    }
-    for (std::size_t open = winner ? 0 : children.size(); open > 0 && !winner;) {
-        std::vector<pollfd> polled;
-        for (const Child& c : children)
-            if (c.fd >= 0) polled.push_back({c.fd, POLLIN, 0});
-        if (poll(polled.data(), polled.size(), -1) < 0) {
-            if (errno == EINTR) continue;
-            break;
-        }
-        for (std::size_t k = 0; k < children.size(); ++k) {
-            Child& c = children[k];
-            if (c.fd < 0) continue;
-            auto it = std::find_if(polled.begin(), polled.end(), [&](const pollfd& p) { return p.fd == c.fd; });
-            if (it == polled.end() || !it->revents) continue;
-            char buffer[65536];
-            const ssize_t n = read(c.fd, buffer, sizeof buffer);
-            if (n < 0 && errno == EINTR) continue;
-            if (n > 0) {
-                c.text.append(buffer, static_cast<std::size_t>(n));
-                continue;
-            }
-            close(c.fd), c.fd = -1, --open;
-            int status = 0;
-            while (waitpid(c.pid, &status, 0) < 0 && errno == EINTR) {}
-            c.pid = -1;
-            ReachProof p = answerOf(c, status);
-            if (p.verdict != Verdict::Unknown) {
-                best = p, winner = k;
-                break;
-            }
-            if (best.reason.empty()) best = p;
-        }
-    }
-    stopAll();
+    std::vector<ForkedJob> jobs;
+    for (std::size_t k = 0; k < variants.size(); ++k)
+        jobs.push_back([&, k](bool forked) {
+            auto solve = [&](z3::context& ctx) {
+                ReachProof p = solveHorn(ctx, engine, bad, variants[k], initial, timeoutSeconds, variantFile(smtFile, k));
+                p.usedKnown = known && k == 0;
+                return toJson(p);
+            };
+            if (forked) return solve(*new z3::context);  // never freed: the child ends with _exit
+            z3::context ctx;
+            return solve(ctx);
+        });
+    const ForkedAnswer answer = firstDecisive(jobs, [](const nlohmann::json& a) {
+        return a.contains("verdict") && static_cast<Verdict>(a["verdict"].get<int>()) != Verdict::Unknown;
+    });
+    ReachProof best = answer.job >= 0 ? fromJson(answer.answer) : ReachProof{};
+    const int winner = best.verdict != Verdict::Unknown ? answer.job : -1;
     // The winner's files take the plain names; the others' are removed.
     if (!smtFile.empty()) {
         const std::string plain = smtFile.substr(0, smtFile.size() - 5);
@@ -420,10 +328,10 @@ ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, c
             const std::string variant = variantFile(smtFile, k), stem = variant.substr(0, variant.size() - 5);
             for (const char* part : {"", ".init", ".step", ".safe"}) {
                 const std::string file = stem + part + ".smt2";
-                if (winner == k) std::rename(file.c_str(), (plain + part + ".smt2").c_str());
+                if (winner == static_cast<int>(k)) std::rename(file.c_str(), (plain + part + ".smt2").c_str());
                 else std::remove(file.c_str());
             }
-            if (winner == k)
+            if (winner == static_cast<int>(k))
                 for (std::string& f : best.certificateFiles) f = plain + f.substr(stem.size());
         }
     }

@@ -1,0 +1,125 @@
+// Forked solver jobs (see Forked.h), used by the reachability proofs (Reach.cpp) to race two Spacer
+// runs on the two cores and to skip freeing Z3's memory afterwards.
+
+#include "checker/Forked.h"
+
+#include "rules/Error.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <iostream>
+#include <optional>
+#include <poll.h>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace holon::checker {
+
+namespace {
+
+struct Child {
+    pid_t pid = -1;
+    int fd = -1;
+    std::string text;
+};
+
+/// The job's answer, with an exception turned into {"input_error"} or {"error"}.
+nlohmann::json answerOf(const ForkedJob& job, bool forked) {
+    try {
+        return job(forked);
+    } catch (const InputError& e) {
+        return {{"input_error", e.what()}};
+    } catch (const std::exception& e) {
+        return {{"error", e.what()}};
+    }
+}
+
+std::optional<Child> spawn(const ForkedJob& job) {
+    int fds[2];
+    if (pipe(fds) != 0) return std::nullopt;
+    std::cout.flush(), std::cerr.flush();
+    const pid_t pid = fork();
+    if (pid < 0) {
+        close(fds[0]), close(fds[1]);
+        return std::nullopt;
+    }
+    if (pid == 0) {
+        close(fds[0]);
+        const std::string text = answerOf(job, true).dump();
+        for (std::size_t done = 0; done < text.size();) {
+            const ssize_t n = write(fds[1], text.data() + done, text.size() - done);
+            if (n <= 0) break;
+            done += static_cast<std::size_t>(n);
+        }
+        _exit(0);
+    }
+    close(fds[1]);
+    return Child{pid, fds[0], {}};
+}
+
+nlohmann::json received(const Child& c, int status) {
+    nlohmann::json answer = nlohmann::json::parse(c.text, nullptr, false);
+    if (answer.is_discarded() || !answer.is_object())
+        return {{"error", WIFSIGNALED(status) ? "the solver process died (signal " + std::to_string(WTERMSIG(status)) + ")"
+                                               : std::string("the solver process gave no answer")}};
+    return answer;
+}
+
+}  // namespace
+
+ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::function<bool(const nlohmann::json&)>& decisive) {
+    std::vector<Child> children;
+    for (const ForkedJob& job : jobs) {
+        auto child = spawn(job);
+        if (!child) break;
+        children.push_back(*child);
+    }
+    auto stopAll = [&] {
+        for (Child& c : children) {
+            if (c.fd >= 0) close(c.fd), c.fd = -1;
+            if (c.pid > 0) kill(c.pid, SIGKILL), waitpid(c.pid, nullptr, 0), c.pid = -1;
+        }
+    };
+    ForkedAnswer result;
+    if (children.size() < jobs.size()) {  // no fork: job 0 here
+        stopAll();
+        result = {0, answerOf(jobs[0], false)};
+    }
+    bool decided = result.job >= 0;
+    for (std::size_t open = decided ? 0 : children.size(); open > 0 && !decided;) {
+        std::vector<pollfd> polled;
+        for (const Child& c : children)
+            if (c.fd >= 0) polled.push_back({c.fd, POLLIN, 0});
+        if (poll(polled.data(), polled.size(), -1) < 0) {
+            if (errno == EINTR) continue;
+            break;
+        }
+        for (std::size_t k = 0; k < children.size() && !decided; ++k) {
+            Child& c = children[k];
+            if (c.fd < 0) continue;
+            auto it = std::find_if(polled.begin(), polled.end(), [&](const pollfd& p) { return p.fd == c.fd; });
+            if (it == polled.end() || !it->revents) continue;
+            char buffer[65536];
+            const ssize_t n = read(c.fd, buffer, sizeof buffer);
+            if (n < 0 && errno == EINTR) continue;
+            if (n > 0) {
+                c.text.append(buffer, static_cast<std::size_t>(n));
+                continue;
+            }
+            close(c.fd), c.fd = -1, --open;
+            int status = 0;
+            while (waitpid(c.pid, &status, 0) < 0 && errno == EINTR) {}
+            c.pid = -1;
+            nlohmann::json answer = received(c, status);
+            decided = answer.contains("input_error") || decisive(answer);
+            if (decided || result.job < 0) result = {static_cast<int>(k), std::move(answer)};
+        }
+    }
+    stopAll();
+    if (result.answer.is_object() && result.answer.contains("input_error")) throw InputError(result.answer["input_error"].get<std::string>());
+    return result;
+}
+
+}  // namespace holon::checker
