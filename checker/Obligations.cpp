@@ -19,6 +19,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 namespace holon::checker {
 
@@ -58,24 +59,30 @@ public:
     }
 
     /// A solver with the per-obligation timeout and the encoding's domain facts.
-    z3::solver newSolver(z3::context& ctx, SmtEncoding& enc) const {
+    z3::solver newSolver(z3::context& ctx, SmtEncoding& enc, double timeoutShare = 1.0) const {
         z3::solver solver(ctx);
         z3::params params(ctx);
-        params.set("timeout", static_cast<unsigned>(options_.timeoutSeconds * 1000));
+        params.set("timeout", static_cast<unsigned>(options_.timeoutSeconds * timeoutShare * 1000));
         solver.set(params);
         for (const z3::expr& f : enc.facts()) solver.add(f);
         return solver;
     }
 
     /// Solves `query` (after the encoding's domain facts); a model becomes a counterexample via
-    /// `decode`.
+    /// `decode`. The encoding's lemmas (and `earlierLemmas`) help the solver but are not written
+    /// with --smt-out: an exported obligation is the theorem alone, so that a re-check does not
+    /// rest on the argument that makes them valid.
     Obligation solve(const std::string& name, const std::string& kind, z3::context& ctx, SmtEncoding& enc, const z3::expr& query,
-                     const std::function<void(const z3::model&, PropertyResult&)>& decode, const std::string& provedText) {
+                     const std::function<void(const z3::model&, PropertyResult&)>& decode, const std::string& provedText,
+                     double timeoutShare = 1.0, const std::optional<z3::expr>& earlierLemmas = std::nullopt) {
         const auto start = std::chrono::steady_clock::now();
         Obligation o = named(name, kind);
-        z3::solver solver = newSolver(ctx, enc);
+        const z3::expr lemmas = enc.instantiate();
+        z3::solver solver = newSolver(ctx, enc, timeoutShare);
         solver.add(query);
         if (!options_.smtOut.empty()) write(name, solver, o);
+        solver.add(lemmas);
+        if (earlierLemmas) solver.add(*earlierLemmas);
         const z3::check_result r = solver.check();
         o.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (r == z3::unsat) {
@@ -104,8 +111,10 @@ public:
         const auto start = std::chrono::steady_clock::now();
         Obligation o = named(name, kind);
         const int count = static_cast<int>(engine_.instances().size());
+        const z3::expr lemmas = enc.instantiate();
         z3::solver solver = newSolver(ctx, enc);
         solver.add(base);
+        solver.add(lemmas);
         std::vector<z3::expr> act;
         z3::expr_vector acts(ctx);
         for (int p = 0; p < count; ++p) {
@@ -213,6 +222,24 @@ std::vector<std::uint32_t> inputsOf(const z3::model& m, z3::context& ctx, const 
     return in;
 }
 
+/// Whether conjunct k of an invariant follows from conjuncts 0..k-1 in the same state: those hold
+/// after every step (proved before it, in order), so then conjunct k does too, without a query
+/// per rule instance. Planner Safety's `connected` follows from the tree conjuncts (2 s on
+/// square:5x5, against 15 s instance by instance). Gets a quarter of the time; `total` counts it.
+bool impliedByEarlier(Runner& run, const std::string& name, const std::vector<const rules::Expr*>& conjuncts, std::size_t k, Obligation& total) {
+    z3::context ctx;
+    SmtEncoding enc(ctx, run.engine());
+    auto d = enc.state("d");
+    z3::expr q = enc.legal(d);
+    for (std::size_t j = 0; j < k; ++j) q = q && enc.holds(*conjuncts[j], d, true);
+    q = q && !enc.holds(*conjuncts[k], d, false);
+    Obligation part = run.solve(name, "invariant", ctx, enc, q, [](const z3::model&, PropertyResult&) {}, "", 0.25);
+    total.result.seconds += part.result.seconds;
+    if (part.result.verdict != Verdict::Holds) return false;
+    if (!part.smtFile.empty()) total.smtFile += (total.smtFile.empty() ? "" : " ") + part.smtFile;
+    return true;
+}
+
 /// Inductiveness of an invariant (Lemma 1, Safety).
 Obligation proveInductive(Runner& run, const rules::Property& p) {
     const rules::Engine& e = run.engine();
@@ -230,7 +257,12 @@ Obligation proveInductive(Runner& run, const rules::Property& p) {
     total.result.kind = "invariant";
     total.result.verdict = Verdict::Holds;
     total.result.summary = "inductive: every step from a state where it holds keeps it";
+    std::vector<std::string> implied;
     for (std::size_t k = 0; k < conjuncts.size(); ++k) {
+        if (k > 0 && impliedByEarlier(run, p.name + "." + std::to_string(k + 1), conjuncts, k, total)) {
+            implied.push_back(std::to_string(k + 1));
+            continue;
+        }
         z3::context cctx;
         SmtEncoding cenc(cctx, e);
         auto c = cenc.state("c"), d = cenc.state("d");
@@ -254,6 +286,12 @@ Obligation proveInductive(Runner& run, const rules::Property& p) {
             if (total.result.verdict == Verdict::Unknown) total.result.summary += " (conjunct " + std::to_string(k + 1) + ")";
             break;
         }
+    }
+    if (total.result.verdict == Verdict::Holds && !implied.empty()) {
+        std::string which;
+        for (const std::string& k : implied) which += (which.empty() ? "" : ", ") + k;
+        total.result.summary += "; conjunct" + std::string(implied.size() > 1 ? "s " : " ") + which + " follow" +
+                                (implied.size() > 1 ? "" : "s") + " from the ones before";
     }
     return total;
 }
@@ -441,7 +479,9 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                                "a deadlock outside the goal"});
     }
 
-    // Bounded model checking from the given configurations, to `depth` steps.
+    // Bounded model checking from the given configurations, deepening to at most `depth` steps
+    // (and the timeout): a bad state within k steps, for k = 0, 1, ..., so the first one found
+    // is at the end of a shortest path. The last query asked is the whole obligation.
     auto bmc = [&](const Target& target, int depth, const std::string& name) {
         z3::context ctx;
         SmtEncoding enc(ctx, e);
@@ -450,12 +490,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         z3::expr start = ctx.bool_val(false);
         for (const rules::Configuration& c : options.initial) start = start || (enc.configurationIs(path[0], c.cells) && enc.inputsAre(c.inputs));
         z3::expr steps = ctx.bool_val(true), someBad = target.bad(enc, path[0]);
-        for (int k = 1; k <= depth; ++k) {
-            path.push_back(enc.state("s" + std::to_string(k)));
-            selectors.push_back(ctx.int_const(("step" + std::to_string(k)).c_str()));
-            steps = steps && enc.step(path[k - 1], path[k], selectors.back());
-            someBad = someBad || target.bad(enc, path[k]);
-        }
+        z3::expr lemmas = enc.instantiate();  // kept for the deeper queries
         const rules::Engine concrete(model, region, options.initial.front().inputs);
         auto decode = [&](const z3::model& m, PropertyResult& r) {
             Trace t;
@@ -468,8 +503,24 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             r.summary = t.description;
             r.witness = {{"depth", t.steps.size() - 1}};
         };
-        return run.solve(name, "bmc", ctx, enc, start && steps && someBad, decode,
-                         "holds on every path of up to " + std::to_string(depth) + " steps from the given configurations");
+        const std::string proved = "holds on every path of up to " + std::to_string(depth) + " steps from the given configurations";
+        Obligation o = run.solve(name, "bmc", ctx, enc, start && someBad, decode, proved, 1.0, lemmas);
+        for (int k = 1; k <= depth && o.result.verdict == Verdict::Holds; ++k) {
+            const double spent = o.result.seconds;
+            if (spent >= options.timeoutSeconds) {
+                o.result.verdict = Verdict::Unknown;
+                o.result.summary = "timeout at depth " + std::to_string(k);
+                break;
+            }
+            path.push_back(enc.state("s" + std::to_string(k)));
+            selectors.push_back(ctx.int_const(("step" + std::to_string(k)).c_str()));
+            steps = steps && enc.step(path[k - 1], path[k], selectors.back());
+            someBad = someBad || target.bad(enc, path[k]);
+            lemmas = lemmas && enc.instantiate();
+            o = run.solve(name, "bmc", ctx, enc, start && steps && someBad, decode, proved, 1.0, lemmas);
+            o.result.seconds += spent;
+        }
+        return o;
     };
     if (options.depth > 0 && !options.initial.empty())
         for (const Target& t : targets) {
@@ -530,17 +581,13 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             } else {
                 o.result.verdict = Verdict::Unknown;
                 o.result.summary = "a bad state is reachable, but no trace to it within the timeout";
-                for (int depth = 1; o.result.seconds < options.timeoutSeconds; ++depth) {
-                    Obligation shortest = bmc(t, depth, name);
-                    o.result.seconds += shortest.result.seconds;
-                    if (shortest.result.verdict == Verdict::Unknown) break;
-                    if (shortest.result.verdict == Verdict::Violated) {
-                        shortest.result.kind = "reach";
-                        shortest.result.seconds = o.result.seconds;
-                        shortest.smtFile = o.smtFile;
-                        o = shortest;
-                        break;
-                    }
+                Obligation shortest = bmc(t, std::numeric_limits<int>::max(), name);
+                o.result.seconds += shortest.result.seconds;
+                if (shortest.result.verdict == Verdict::Violated) {
+                    shortest.result.kind = "reach";
+                    shortest.result.seconds = o.result.seconds;
+                    shortest.smtFile = o.smtFile;
+                    o = shortest;
                 }
             }
             report.obligations.push_back(o);

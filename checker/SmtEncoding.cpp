@@ -8,6 +8,9 @@
 // and the successor must satisfy the non-local constraints. Connectivity and pointer reachability
 // are existential: ranks that strictly decrease towards a root (or along pointers to a target) when
 // they must hold; a cut, or a set of pointer cells closed under following, when they must fail.
+// Ranks alone make the solver find descent arguments by search, so hypotheses are also restated
+// for the few sets a proof is likely to need (`instantiate`); with them the U/P/F planner's three
+// lemmas on square:5x5 take 21 s instead of timing out.
 
 #include "checker/SmtEncoding.h"
 
@@ -174,89 +177,150 @@ z3::expr SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
     }
 }
 
+z3::expr SmtEncoding::isCut(const std::vector<z3::expr>& members, const std::vector<z3::expr>& in) const {
+    // A non-empty proper subset of the members, closed under adjacency among them.
+    const rules::Region& region = engine_.region();
+    z3::expr closed = ctx_.bool_val(true), inside = ctx_.bool_val(false), outside = ctx_.bool_val(false);
+    for (int i = 0; i < region.size(); ++i) {
+        closed = closed && z3::implies(in[i], members[i]);
+        inside = inside || in[i];
+        outside = outside || (members[i] && !in[i]);
+        for (int d = 0; d < region.lattice().degree(); ++d)
+            if (int j = region.neighbour(i, d); j >= 0) closed = closed && z3::implies(in[i] && members[j], in[j]);
+    }
+    return closed && inside && outside;
+}
+
+z3::expr SmtEncoding::isStray(const Reachability& r, const std::vector<z3::expr>& in) const {
+    // A non-empty set of `from` cells, each stepping to no target and only into the set.
+    const rules::Region& region = engine_.region();
+    z3::expr f = ctx_.bool_val(true), some = ctx_.bool_val(false);
+    for (int i = 0; i < region.size(); ++i) {
+        some = some || in[i];
+        z3::expr next = ctx_.bool_val(true);
+        for (int d = 0; d < region.lattice().degree(); ++d) {
+            const int j = region.neighbour(i, d);
+            if (j < 0) continue;  // pointing out of the region is bad in itself
+            next = next && z3::implies(r.steps[i][d], !r.to[j] && (!r.from[j] || in[j]));
+        }
+        f = f && z3::implies(in[i], r.from[i] && next);
+    }
+    return f && some;
+}
+
+std::vector<z3::expr> SmtEncoding::freshSet(const std::string& prefix, const std::vector<z3::expr>& members) {
+    std::vector<z3::expr> in, rest;
+    for (std::size_t i = 0; i < members.size(); ++i) {
+        in.push_back(fresh(prefix, ctx_.bool_sort()));
+        rest.push_back(members[i] && !in.back());
+    }
+    refutationSets_.push_back(in);
+    refutationSets_.push_back(rest);
+    return in;
+}
+
+z3::expr SmtEncoding::hypothesis(const z3::expr& witness, Hypothesis h) {
+    h.witness = witness;
+    hypotheses_.push_back(h);
+    return witness;
+}
+
+z3::expr SmtEncoding::instantiate() {
+    // Connectivity of X means no cut of X exists at all; reachability, no stray set. The solver
+    // would have to rediscover that from the ranks by a descent argument (the planner's Safety on
+    // square:4x4 took 88 s, 74 s of it in `connected`), so each hypothesis is also stated for the
+    // sets a proof is likely to need, restricted to the hypothesis' own cells: the sets the
+    // refutations build and their complements (the cut of a successor, restricted to its
+    // predecessor, is typically a cut there too), or, in a query without refutations, the cells
+    // of the predicates it names in the same state (Progress: the F cells, inside a connected
+    // target, have a neighbour in the target that is not F). Both together slowed Safety down.
+    z3::expr all = ctx_.bool_val(true);
+    for (const Hypothesis& h : hypotheses_) {
+        std::vector<const std::vector<z3::expr>*> sets;
+        for (const std::vector<z3::expr>& set : refutationSets_) sets.push_back(&set);
+        for (const auto& [state, set] : predicateSets_)
+            if (state == h.state && refutationSets_.empty()) sets.push_back(&set);
+        const std::vector<z3::expr>& own = h.reach ? h.reach->from : h.members;
+        for (const std::vector<z3::expr>* set : sets) {
+            std::vector<z3::expr> restricted;
+            for (std::size_t i = 0; i < set->size(); ++i) restricted.push_back((*set)[i] && own[i]);
+            all = all && z3::implies(h.witness, !(h.reach ? isStray(*h.reach, restricted) : isCut(h.members, restricted)));
+        }
+    }
+    hypotheses_.clear();
+    refutationSets_.clear();
+    predicateSets_.clear();
+    return all;
+}
+
+void SmtEncoding::candidate(const State& s, const std::vector<z3::expr>& members) {
+    for (const auto& [state, set] : predicateSets_)
+        if (state == s.is[0][0].id() && std::equal(set.begin(), set.end(), members.begin(), [](const z3::expr& a, const z3::expr& b) { return z3::eq(a, b); }))
+            return;
+    predicateSets_.emplace_back(s.is[0][0].id(), members);
+}
+
 z3::expr SmtEncoding::connected(const rules::CellPredicate& pred, const State& s, bool positive) {
     const rules::Region& region = engine_.region();
     const int n = region.size();
     std::vector<z3::expr> m;
     for (int i = 0; i < n; ++i) m.push_back(memberPred(s, i, pred));
-    if (positive) {
-        // One root among the members; every other member has a member neighbour of lower rank.
-        z3::expr f = ctx_.bool_val(true), someMember = ctx_.bool_val(false), someRoot = ctx_.bool_val(false);
-        z3::expr roots = ctx_.int_val(0);
-        std::vector<z3::expr> rank, root;
-        for (int i = 0; i < n; ++i) {
-            rank.push_back(fresh("rank", ctx_.int_sort())), root.push_back(fresh("root", ctx_.bool_sort()));
-            facts_.push_back(rank.back() >= 0 && rank.back() < n);  // bounded ranks help the solver
-        }
-        for (int i = 0; i < n; ++i) {
-            someMember = someMember || m[i];
-            someRoot = someRoot || root[i];
-            roots = roots + z3::ite(root[i], ctx_.int_val(1), ctx_.int_val(0));
-            f = f && z3::implies(root[i], m[i]);
-            z3::expr down = ctx_.bool_val(false);
-            for (int d = 0; d < region.lattice().degree(); ++d)
-                if (int j = region.neighbour(i, d); j >= 0) down = down || (m[j] && rank[j] < rank[i]);
-            f = f && z3::implies(m[i] && !root[i], down);
-        }
-        return f && z3::implies(someMember, someRoot) && roots <= 1;
-    }
-    // Refutation: a cut. A non-empty proper subset of the members closed under adjacency.
-    std::vector<z3::expr> in;
-    for (int i = 0; i < n; ++i) in.push_back(fresh("cut", ctx_.bool_sort()));
-    z3::expr cut = ctx_.bool_val(true), inside = ctx_.bool_val(false), outside = ctx_.bool_val(false);
+    candidate(s, m);
+    if (!positive) return !isCut(m, freshSet("cut", m));
+    // One root among the members; every other member has a member neighbour of lower rank.
+    z3::expr f = ctx_.bool_val(true), someMember = ctx_.bool_val(false), someRoot = ctx_.bool_val(false);
+    z3::expr roots = ctx_.int_val(0);
+    std::vector<z3::expr> rank, root;
     for (int i = 0; i < n; ++i) {
-        cut = cut && z3::implies(in[i], m[i]);
-        inside = inside || in[i];
-        outside = outside || (m[i] && !in[i]);
-        for (int d = 0; d < region.lattice().degree(); ++d)
-            if (int j = region.neighbour(i, d); j >= 0) cut = cut && z3::implies(in[i] && m[j], in[j]);
+        rank.push_back(fresh("rank", ctx_.int_sort())), root.push_back(fresh("root", ctx_.bool_sort()));
+        facts_.push_back(rank.back() >= 0 && rank.back() < n);  // bounded ranks help the solver
     }
-    return !(cut && inside && outside);
+    for (int i = 0; i < n; ++i) {
+        someMember = someMember || m[i];
+        someRoot = someRoot || root[i];
+        roots = roots + z3::ite(root[i], ctx_.int_val(1), ctx_.int_val(0));
+        f = f && z3::implies(root[i], m[i]);
+        z3::expr down = ctx_.bool_val(false);
+        for (int d = 0; d < region.lattice().degree(); ++d)
+            if (int j = region.neighbour(i, d); j >= 0) down = down || (m[j] && rank[j] < rank[i]);
+        f = f && z3::implies(m[i] && !root[i], down);
+    }
+    return hypothesis(f && z3::implies(someMember, someRoot) && roots <= 1, {m, std::nullopt, ctx_.bool_val(true), s.is[0][0].id()});
 }
 
 z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
     const rules::Region& region = engine_.region();
     const rules::Alphabet& alphabet = engine_.model().alphabet();
     const int n = region.size(), degree = region.lattice().degree();
-    std::vector<z3::expr> from, to;
-    for (int i = 0; i < n; ++i) from.push_back(memberPred(s, i, e.pred)), to.push_back(memberPred(s, i, e.target));
-    auto pointsTo = [&](int i, int d) {
-        return member(s, i, [&](int, CellValue v) { return v != 0 && alphabet.fields(v)[e.field] == d; });
-    };
-    if (positive) {
-        // Ranks fall along pointers until a target cell.
-        std::vector<z3::expr> rank;
-        for (int i = 0; i < n; ++i) {
-            rank.push_back(fresh("prank", ctx_.int_sort()));
-            facts_.push_back(rank.back() >= 0 && rank.back() < n);
-        }
-        z3::expr f = ctx_.bool_val(true);
-        for (int i = 0; i < n; ++i) {
-            z3::expr ok = ctx_.bool_val(false);
-            for (int d = 0; d < degree; ++d) {
-                const int j = region.neighbour(i, d);
-                if (j < 0) continue;
-                ok = ok || (pointsTo(i, d) && (to[j] || (from[j] && rank[j] < rank[i])));
-            }
-            f = f && z3::implies(from[i], ok);
-        }
-        return f;
-    }
-    // Refutation: a non-empty set of pointer cells, each pointing nowhere good or into the set.
-    std::vector<z3::expr> bad;
-    for (int i = 0; i < n; ++i) bad.push_back(fresh("stray", ctx_.bool_sort()));
-    z3::expr f = ctx_.bool_val(true), some = ctx_.bool_val(false);
+    Reachability r;
     for (int i = 0; i < n; ++i) {
-        some = some || bad[i];
-        z3::expr next = ctx_.bool_val(true);
+        r.from.push_back(memberPred(s, i, e.pred)), r.to.push_back(memberPred(s, i, e.target));
+        // A step from i in direction d is possible: along the pointer, or to any neighbour (`nbr`).
+        std::vector<z3::expr> steps;
+        for (int d = 0; d < degree; ++d)
+            steps.push_back(e.field < 0 ? ctx_.bool_val(true)
+                                        : member(s, i, [&](int, CellValue v) { return v != 0 && alphabet.fields(v)[e.field] == d; }));
+        r.steps.push_back(steps);
+    }
+    candidate(s, r.from), candidate(s, r.to);
+    if (!positive) return !isStray(r, freshSet("stray", r.from));
+    // Ranks fall along pointers (or adjacency) until a target cell.
+    std::vector<z3::expr> rank;
+    for (int i = 0; i < n; ++i) {
+        rank.push_back(fresh("prank", ctx_.int_sort()));
+        facts_.push_back(rank.back() >= 0 && rank.back() < n);
+    }
+    z3::expr f = ctx_.bool_val(true);
+    for (int i = 0; i < n; ++i) {
+        z3::expr ok = ctx_.bool_val(false);
         for (int d = 0; d < degree; ++d) {
             const int j = region.neighbour(i, d);
-            if (j < 0) continue;  // pointing out of the region is bad in itself
-            next = next && z3::implies(pointsTo(i, d), !to[j] && (!from[j] || bad[j]));
+            if (j < 0) continue;
+            ok = ok || (r.steps[i][d] && (r.to[j] || (r.from[j] && rank[j] < rank[i])));
         }
-        f = f && z3::implies(bad[i], from[i] && next);
+        f = f && z3::implies(r.from[i], ok);
     }
-    return !(f && some);
+    return hypothesis(f, {r.from, r, ctx_.bool_val(true), s.is[0][0].id()});
 }
 
 z3::expr SmtEncoding::legal(const State& s) {

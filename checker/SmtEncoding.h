@@ -5,6 +5,7 @@
 #include "rules/Engine.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 #include <z3++.h>
@@ -46,6 +47,11 @@ public:
     /// with the frame condition their change is a sum over the instance's own cells.
     z3::expr lexLessAfter(const std::vector<rules::Expr>& ranking, int placed, const State& after, const State& before);
     z3::expr massUnits(const State& s);
+    /// Lemmas for the solver: every connectivity or reachability hypothesis made since the last
+    /// call, restated for the cut and stray sets the refutations made since then, or without
+    /// refutations for the predicates named in its state (see the .cpp). Implied by the
+    /// hypotheses; assert it with the query.
+    z3::expr instantiate();
 
     /// Decodes a configuration from a model.
     std::vector<rules::CellValue> decode(const z3::model& m, const State& s) const;
@@ -61,6 +67,27 @@ private:
     std::vector<z3::expr> acceptedAround(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s);
     /// The cell counts for a region quantifier: it satisfies the predicate (and the cell guard).
     z3::expr memberCounted(const State& s, std::int32_t cell, const rules::Expr& quantifier);
+    /// reaches(from, field, to) at one state: the cells, and per cell and direction whether a step
+    /// goes that way.
+    struct Reachability {
+        std::vector<z3::expr> from, to;
+        std::vector<std::vector<z3::expr>> steps;
+    };
+    /// A connectivity (no `reach`) or reachability hypothesis: what its witness says.
+    struct Hypothesis {
+        std::vector<z3::expr> members;
+        std::optional<Reachability> reach;
+        z3::expr witness;
+        unsigned state;  // id of the state's first variable
+    };
+    z3::expr isCut(const std::vector<z3::expr>& members, const std::vector<z3::expr>& in) const;
+    z3::expr isStray(const Reachability& r, const std::vector<z3::expr>& in) const;
+    /// Free set variables for a refutation; they and their complement among `members` are recorded.
+    std::vector<z3::expr> freshSet(const std::string& prefix, const std::vector<z3::expr>& members);
+    /// Records the cells of a predicate in state s as a set to instantiate hypotheses on.
+    void candidate(const State& s, const std::vector<z3::expr>& members);
+    /// Records `witness` (returned) as a hypothesis with what it means.
+    z3::expr hypothesis(const z3::expr& witness, Hypothesis h);
     z3::expr connected(const rules::CellPredicate& pred, const State& s, bool positive);
     z3::expr reaches(const rules::Expr& e, const State& s, bool positive);
     /// Cell `to` of the successor takes the rewrite of cell `from` of the predecessor.
@@ -75,6 +102,9 @@ private:
     std::vector<std::vector<z3::expr>> inputBits_;  // [cell][input]
     std::vector<z3::expr> facts_;
     int counter_ = 0;
+    std::vector<Hypothesis> hypotheses_;
+    std::vector<std::vector<z3::expr>> refutationSets_;
+    std::vector<std::pair<unsigned, std::vector<z3::expr>>> predicateSets_;  // by state
 };
 
 }  // namespace holon::checker

@@ -287,6 +287,31 @@ std::vector<int> Engine::guardFailures(const Expr& e, const CellValue* cells) co
     return out;
 }
 
+bool Engine::reachesAlongAdjacency(const Mask& from, const Mask& to, const CellValue* cells) const {
+    // Marks `from` cells outward from the `to` cells, then looks for an unmarked one.
+    thread_local std::vector<std::int32_t> stack;
+    thread_local std::vector<char> found;
+    const int n = region_->size(), degree = model_->lattice().degree();
+    found.assign(n, 0);
+    stack.clear();
+    auto spread = [&](int i) {
+        for (int d = 0; d < degree; ++d) {
+            const int j = region_->neighbour(i, d);
+            if (j >= 0 && !found[j] && test(from, combo_[j], cells[j])) found[j] = 1, stack.push_back(j);
+        }
+    };
+    for (int i = 0; i < n; ++i)
+        if (test(to, combo_[i], cells[i])) spread(i);
+    while (!stack.empty()) {
+        const int i = stack.back();
+        stack.pop_back();
+        spread(i);
+    }
+    for (int i = 0; i < n; ++i)
+        if (!found[i] && test(from, combo_[i], cells[i])) return false;
+    return true;
+}
+
 bool Engine::connected(const Mask& m, const CellValue* cells) const {
     thread_local std::vector<std::int32_t> stack;
     thread_local std::vector<std::uint32_t> seen;
@@ -359,6 +384,7 @@ bool Engine::holds(const Expr& e, const CellValue* cells) const {
     }
     case Expr::Kind::Connected: return connected(predicateMask(e.pred), cells);
     case Expr::Kind::Reaches: {
+        if (e.field < 0) return reachesAlongAdjacency(predicateMask(e.pred), predicateMask(e.target), cells);
         // The same walk as Interpreter::reaches, written again on purpose: the engine is tested
         // against the interpreter, and a shared helper would hide a bug in both.
         const Mask& from = predicateMask(e.pred);

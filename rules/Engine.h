@@ -121,6 +121,8 @@ private:
     bool test(const Mask& m, int combo, CellValue v) const { return tables_.test(m, combo, v); }
     const Mask& predicateMask(const CellPredicate& pred) const;
     bool connected(const Mask& m, const CellValue* cells) const;
+    /// reaches(from, nbr, to): every `from` cell has a path through `from` cells to a `to` cell.
+    bool reachesAlongAdjacency(const Mask& from, const Mask& to, const CellValue* cells) const;
     /// Cells satisfying a region quantifier's predicate (and, if asked, its cell guard).
     int countCells(const Expr& e, const CellValue* cells, bool withCellGuard) const;
 

@@ -222,6 +222,26 @@ bool Interpreter::reaches(const Expr& e, const Configuration& c) const {
     std::vector<char> state(n, 0);
     auto isPred = [&](int i) { return matchesPredicate(e.pred, c.cells[i], context(region_->cell(i), c, nullptr)); };
     auto isTarget = [&](int i) { return matchesPredicate(e.target, c.cells[i], context(region_->cell(i), c, nullptr)); };
+    if (e.field < 0) {
+        // Along lattice adjacency: search backwards from the targets through pred cells; every
+        // pred cell must be found.
+        std::vector<char> good(n, 0);
+        std::deque<int> queue;
+        auto reach = [&](int i) {
+            for (int d = 0; d < model_->lattice().degree(); ++d)
+                if (const int j = region_->neighbour(i, d); j >= 0 && !good[j] && isPred(j)) good[j] = 1, queue.push_back(j);
+        };
+        for (int i = 0; i < n; ++i)
+            if (isTarget(i)) reach(i);
+        while (!queue.empty()) {
+            const int i = queue.front();
+            queue.pop_front();
+            reach(i);
+        }
+        for (int i = 0; i < n; ++i)
+            if (isPred(i) && !good[i]) return false;
+        return true;
+    }
     for (int start = 0; start < n; ++start) {
         if (state[start] || !isPred(start)) continue;
         std::vector<int> walk;

@@ -102,7 +102,9 @@ struct Expr {
         All, Some, No,
         Connected,  // the cells satisfying pred form one connected set; with `around` (guards): the
                     // neighbours of that pattern cell satisfying pred are connected among themselves
-        Reaches,    // every pred cell follows `field` through pred cells to a target cell, acyclically
+        Reaches,    // every pred cell follows `field` through pred cells to a target cell, acyclically;
+                    // with field < 0 (`nbr`): steps to lattice neighbours, so some path through pred
+                    // cells leads to a target cell
     } kind = Kind::Bool;
     Rational value;
     CmpOp op = CmpOp::Eq;

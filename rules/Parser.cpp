@@ -684,9 +684,11 @@ private:
             expect("(", "after reaches, as in reaches(P, parent, F)");
             e.pred = predicate();
             expect(",", "after the cells that follow pointers");
-            const Token& f = identifier("a dir field");
-            e.field = s_.fieldIndex(f.text);
-            if (e.field < 0 || s_.fields[e.field].kind != FieldKind::Dir) fail(f.loc, "'" + f.text + "' is not a dir field");
+            if (!accept("nbr")) {
+                const Token& f = identifier("a dir field, or nbr");
+                e.field = s_.fieldIndex(f.text);
+                if (e.field < 0 || s_.fields[e.field].kind != FieldKind::Dir) fail(f.loc, "'" + f.text + "' is not a dir field (or nbr)");
+            }
             expect(",", "after the field");
             e.target = predicate();
             expect(")", "to close reaches(...)");

@@ -117,7 +117,7 @@ std::string printExpr(const System& s, const Expr& e, const RefPrinter& ref) {
         return everything ? "connected" : "connected(" + printPredicate(s, e.pred, ref) + ")";
     }
     case Expr::Kind::Reaches:
-        return "reaches(" + printPredicate(s, e.pred, ref) + ", " + s.fields[e.field].name + ", " +
+        return "reaches(" + printPredicate(s, e.pred, ref) + ", " + (e.field < 0 ? "nbr" : s.fields[e.field].name) + ", " +
                printPredicate(s, e.target, ref) + ")";
     }
     return {};

@@ -63,6 +63,34 @@ TEST_CASE("the planner's Safety, Termination and Progress are proved on square:3
     }
 }
 
+TEST_CASE("reaches along adjacency: a guarded deletion keeps every U joined to an F, an unguarded one does not") {
+    // Deleting an F cell strands a U only if the U touched it; the guard forbids that. SMT and the
+    // explorer (every configuration of the region) must agree both ways.
+    for (const bool guarded : {true, false}) {
+        CAPTURE(guarded);
+        test::World w(test::parse(std::string(R"(system s
+field label: U | F
+rule spread: F U => F F
+rule drop: F => _)") + (guarded ? " if no nbr U" : "") + R"(
+invariant joined: reaches(U, nbr, F)
+)"),
+                      "square:3x3");
+        const auto report = prove(w);
+        const auto& v = result(report, "joined");
+        CHECK(v.verdict == (guarded ? Verdict::Holds : Verdict::Violated));
+        if (!guarded) CHECK(checker::confirmCounterexample(v, *w.model, w.region));
+        CHECK(explorerFindsInductivenessBreak(w, w.system.property("joined")->exprs[0], {}) == !guarded);
+    }
+}
+
+TEST_CASE("Safety's `connected` follows from the tree conjuncts before it; the others need a query per step") {
+    test::World w = test::World::library("planner_intermediate", "square:3x3");
+    const auto report = prove(w, {"safety"});
+    const auto& s = result(report, "safety");
+    CHECK(s.verdict == Verdict::Holds);
+    CHECK(s.summary.find("conjunct 6 follows from the ones before") != std::string::npos);
+}
+
 TEST_CASE("deletion without its guard: Safety is refuted, confirmed, and the explorer agrees") {
     test::World w(broken("planner_no_guard"), "square:3x2");
     auto r = prove(w, {"safety"});

@@ -2,6 +2,7 @@
 // condition, pointer references, guards, non-local filtering, and rotation closure.
 
 #include "TestSupport.h"
+#include "rules/Engine.h"
 #include "rules/Printer.h"
 
 using namespace holon;
@@ -96,6 +97,33 @@ invariant joined: connected
     CHECK(holds("small", c));
     set(1, "_"), set(3, "F");
     CHECK_FALSE(holds("joined", c));
+}
+
+TEST_CASE("reaches(A, nbr, B): every A cell has a path through A cells to a B cell; the engine agrees") {
+    World w(test::parse(R"(system t
+field label: U | P | F
+field parent: dir if P
+rule r: U => F
+invariant joined: reaches(U, nbr, P|F)
+)"), "square:5x1");
+    const rules::Expr& joined = w.system.property("joined")->exprs[0];
+    auto c = w.in->empty();
+    auto set = [&](int x, const std::string& v) { c.cells[w.region.indexOf({x, 0, 0})] = static_cast<rules::CellValue>(w.value(v)); };
+    auto agree = [&] {
+        const bool verdict = w.in->holds(joined, c);
+        CHECK(rules::Engine(*w.model, w.region, c.inputs).holds(joined, c.cells.data()) == verdict);
+        return verdict;
+    };
+    CHECK(agree());  // no U at all
+    set(0, "U"), set(1, "U"), set(2, "F");
+    CHECK(agree());  // 0 through 1 to the F
+    set(2, "_"), set(3, "P&parent=+x"), set(4, "F");
+    CHECK_FALSE(agree());  // the gap at 2 cuts 0 and 1 off
+    set(2, "U");
+    CHECK(agree());
+    set(3, "U"), set(4, "U");
+    CHECK_FALSE(agree());  // U cells only: no target
+    CHECK(rules::printSystem(w.system).find("reaches(U, nbr, P | F)") != std::string::npos);
 }
 
 TEST_CASE("a region quantifier with a cell guard reads each cell's neighbourhood, @0 being the cell") {

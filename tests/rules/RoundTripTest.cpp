@@ -45,7 +45,7 @@ rule m: F@(0,0) _@(1,0) #@(0,1) => _ @0 *
 constraint connected and count(#) <= 10 - 1 and mass >= 3/2
 constraint all(F&target | _&!target) implies -count(P) < 0
 goal all(F&target | _&!target)
-invariant safe: some(F) and connected(F) and reaches(P, parent, F)
+invariant safe: some(F) and connected(F) and reaches(P, parent, F) and reaches(U, nbr, F | P)
 invariant local: all(P: some nbr F | P&parent=@0) and count(F: count nbr # >= 2) >= 1 and no(U: no nbr P)
 ranking measure: -count(F), count(U) + count(P), 2
 progress p assuming mass >= count(target)
