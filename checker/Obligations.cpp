@@ -224,8 +224,8 @@ std::vector<std::uint32_t> inputsOf(const z3::model& m, z3::context& ctx, const 
 
 /// Whether conjunct k of an invariant follows from conjuncts 0..k-1 in the same state: those hold
 /// after every step (proved before it, in order), so then conjunct k does too, without a query
-/// per rule instance. Planner Safety's `connected` follows from the tree conjuncts (2 s on
-/// square:5x5, against 15 s instance by instance). Gets a quarter of the time; `total` counts it.
+/// per rule instance. Planner Safety's `connected` follows from the tree conjuncts (1.8-2.3 s on
+/// square:5x5, against 11-21 s instance by instance; single runs each). Gets a quarter of the time; `total` counts it.
 bool impliedByEarlier(Runner& run, const std::string& name, const std::vector<const rules::Expr*>& conjuncts, std::size_t k, Obligation& total) {
     z3::context ctx;
     SmtEncoding enc(ctx, run.engine());

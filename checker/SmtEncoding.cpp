@@ -240,7 +240,7 @@ z3::expr SmtEncoding::instantiate() {
         for (const std::vector<z3::expr>& set : refutationSets_) sets.push_back(&set);
         for (const auto& [state, set] : predicateSets_)
             if (state == h.state && refutationSets_.empty()) sets.push_back(&set);
-        const std::vector<z3::expr>& own = h.reach ? h.reach->from : h.members;
+        const std::vector<z3::expr>& own = h.members;  // for reaches: the `from` cells
         for (const std::vector<z3::expr>* set : sets) {
             std::vector<z3::expr> restricted;
             for (std::size_t i = 0; i < set->size(); ++i) restricted.push_back((*set)[i] && own[i]);

@@ -75,7 +75,7 @@ private:
     };
     /// A connectivity (no `reach`) or reachability hypothesis: what its witness says.
     struct Hypothesis {
-        std::vector<z3::expr> members;
+        std::vector<z3::expr> members;  // the cells it is about (for reaches: the `from` cells)
         std::optional<Reachability> reach;
         z3::expr witness;
         unsigned state;  // id of the state's first variable
