@@ -8,14 +8,17 @@
 
 namespace holon::bench {
 
+namespace {
+constexpr std::size_t kAhead = 8;
+}  // namespace
+
 HandwrittenPlanner::HandwrittenPlanner(const planner::Problem& problem, std::uint64_t randomSeed)
     : board_(problem.board->lattice(), problem.board->lower(), problem.board->extent(), 2), degree_(problem.board->lattice().degree()), random_(randomSeed) {
     for (int d = 0; d < degree_; ++d)
         for (int e = 0; e < degree_; ++e)
             if (board_.step(d) == -board_.step(e)) opposite_.push_back(e);
     const auto n = static_cast<std::size_t>(board_.size());
-    cells_.assign(n, 0), enabled_.assign(n, 0), listed_.assign(n, 0);
-    readMark_.assign(n, 0), writeMark_.assign(n, 0), stamp_.assign(n, 0);
+    cells_.assign(n, 0), bits_.assign(n, {}), marks_.assign(n, {}), stamp_.assign(n, 0);
     for (planner::Vec v : problem.target.cells) cells_[board_.index(v)] |= 1 << 5;
     for (planner::Vec v : problem.start.cells) cells_[board_.index(v)] |= U;
     const std::int64_t seed = board_.index(problem.seed);
@@ -56,9 +59,9 @@ void HandwrittenPlanner::recheck(std::int64_t a) {
         now |= std::uint64_t{enabled(a, Delete, 0)} << (Delete * 8);
         evaluations_ += Delete * degree_ + 1;
     }
-    enabled_[a] = now;
-    std::uint64_t fresh = now & ~listed_[a];
-    listed_[a] |= fresh;
+    bits_[a].enabled = now;
+    std::uint64_t fresh = now & ~bits_[a].listed;
+    bits_[a].listed |= fresh;
     while (fresh) {
         list_.push_back(static_cast<std::uint64_t>(a) * 64 + static_cast<std::uint64_t>(std::countr_zero(fresh)));
         fresh &= fresh - 1;
@@ -69,7 +72,7 @@ bool HandwrittenPlanner::take(std::int64_t a, int rule, int d) {
     const auto round = static_cast<std::uint32_t>(rounds_);
     const std::int64_t written = rule == Delete ? a : a + board_.step(d);
     // Reads: the anchor and its neighbours for the deletion, the two cells otherwise.
-    auto readsConflict = [&](std::int64_t c) { return writeMark_[c] == round; };
+    auto readsConflict = [&](std::int64_t c) { return marks_[c].write == round; };
     if (rule == Delete) {
         if (readsConflict(a)) return false;
         for (int e = 0; e < degree_; ++e)
@@ -77,12 +80,12 @@ bool HandwrittenPlanner::take(std::int64_t a, int rule, int d) {
     } else if (readsConflict(a) || readsConflict(written)) {
         return false;
     }
-    if (readMark_[written] == round) return false;
-    readMark_[a] = round;
+    if (marks_[written].read == round) return false;
+    marks_[a].read = round;
     if (rule == Delete)
-        for (int e = 0; e < degree_; ++e) readMark_[a + board_.step(e)] = round;
-    readMark_[written] = round;
-    writeMark_[written] = round;
+        for (int e = 0; e < degree_; ++e) marks_[a + board_.step(e)].read = round;
+    marks_[written].read = round;
+    marks_[written].write = round;
     return true;
 }
 
@@ -111,23 +114,31 @@ bool HandwrittenPlanner::run() {
         ++rounds_;
         // Drop stale entries, then choose a maximal non-interfering set in random order.
         std::size_t out = 0;
-        for (std::uint64_t key : list_) {
+        for (std::size_t k = 0; k < list_.size(); ++k) {
+            if (k + kAhead < list_.size()) __builtin_prefetch(&bits_[list_[k + kAhead] / 64]);
+            const std::uint64_t key = list_[k];
             const auto a = static_cast<std::int64_t>(key / 64);
             const std::uint64_t bit = std::uint64_t{1} << (key % 64);
-            if (enabled_[a] & bit) list_[out++] = key;
-            else listed_[a] &= ~bit;
+            if (bits_[a].enabled & bit) list_[out++] = key;
+            else bits_[a].listed &= ~bit;
         }
         list_.resize(out);
         random_.shuffle(list_);
         chosen.clear();
-        for (std::uint64_t key : list_) {
+        for (std::size_t k = 0; k < list_.size(); ++k) {
+            if (k + kAhead < list_.size()) __builtin_prefetch(&marks_[list_[k + kAhead] / 64]);
+            const std::uint64_t key = list_[k];
             const auto a = static_cast<std::int64_t>(key / 64);
             const int rule = static_cast<int>(key % 64) / 8, d = static_cast<int>(key % 8);
             if (take(a, rule, d)) chosen.push_back(key);
         }
         if (chosen.empty()) return false;
         changed_.clear();
-        for (std::uint64_t key : chosen) fire(static_cast<std::int64_t>(key / 64), static_cast<int>(key % 64) / 8, static_cast<int>(key % 8));
+        for (std::size_t k = 0; k < chosen.size(); ++k) {
+            if (k + kAhead < chosen.size()) __builtin_prefetch(&cells_[chosen[k + kAhead] / 64]);
+            const std::uint64_t key = chosen[k];
+            fire(static_cast<std::int64_t>(key / 64), static_cast<int>(key % 64) / 8, static_cast<int>(key % 8));
+        }
         // Every rule reads its anchor and the anchor's neighbours only.
         if (++clock_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), clock_ = 1;
         anchors_.clear();
@@ -136,7 +147,10 @@ bool HandwrittenPlanner::run() {
             for (int e = 0; e < degree_; ++e)
                 if (const std::int64_t a = c + board_.step(e); stamp_[a] != clock_) stamp_[a] = clock_, anchors_.push_back(a);
         }
-        for (std::int64_t a : anchors_) recheck(a);
+        for (std::size_t k = 0; k < anchors_.size(); ++k) {
+            if (k + kAhead < anchors_.size()) __builtin_prefetch(&bits_[anchors_[k + kAhead]]), __builtin_prefetch(&cells_[anchors_[k + kAhead]]);
+            recheck(anchors_[k]);
+        }
     }
     return true;
 }

@@ -4,7 +4,9 @@
 // written out as C++ conditions on a packed cell byte; the scheduler is the one the planner uses
 // (synchronous rounds: enabled instances in random order, kept when they neither read what a kept
 // one writes nor write what it reads; anchors within one step of a changed cell re-evaluated), so
-// the comparison measures decision tables against hand-coded rules, nothing else.
+// the comparison measures decision tables against hand-coded rules, nothing else. The memory layout
+// and prefetching are the planner's too (enabled and listed bits side by side, read and write marks
+// side by side, the memory of the visit 8 places ahead requested first).
 
 #include "planner/Problem.h"
 #include "planner/Random.h"
@@ -45,9 +47,16 @@ private:
     int degree_;
     std::vector<int> opposite_;
     std::vector<std::uint8_t> cells_;
-    std::vector<std::uint64_t> enabled_, listed_;  // per anchor: bit rule * 8 + d
+    struct Bits {
+        std::uint64_t enabled = 0, listed = 0;  // per anchor: bit rule * 8 + d
+    };
+    struct Marks {
+        std::uint32_t read = 0, write = 0;
+    };
+    std::vector<Bits> bits_;
     std::vector<std::uint64_t> list_;
-    std::vector<std::uint32_t> readMark_, writeMark_, stamp_;
+    std::vector<Marks> marks_;
+    std::vector<std::uint32_t> stamp_;
     std::vector<std::int64_t> changed_, anchors_;
     std::uint32_t clock_ = 0;
     std::int64_t offGoal_ = 0, rounds_ = 0, steps_ = 0, evaluations_ = 0;

@@ -3,7 +3,7 @@
 // the compiled engine within 1.2x of the hand-written time. Prints medians of several runs of the
 // execution alone (problem layout excluded on both sides) and the median of the per-run ratios
 // (each pair runs back to back, so the ratio is robust to the shared machine's load drifting).
-// Usage: plan_handwritten [--runs N] [--scale-down K]   (K divides the box sides, for quick runs)
+// Usage: plan_handwritten [--runs N] [--scale-down K] [--case 2d|3d]   (K divides the box sides, for quick runs)
 
 #include "HandwrittenPlanner.h"
 #include "PlanSupport.h"
@@ -26,14 +26,17 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
     int runs = 7, down = 1;
+    std::string only;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
         if (flag == "--runs") runs = std::max(1, std::atoi(argv[i + 1]));
         if (flag == "--scale-down") down = std::max(1, std::atoi(argv[i + 1]));
+        if (flag == "--case") only = argv[i + 1];
     }
     std::printf("compiled vs hand-written planner: planner_intermediate, sync rounds, medians of %d runs\n", runs);
     std::printf("%-4s %10s %9s %9s %12s %12s %9s\n", "case", "metamod.", "rounds", "rounds hw", "compiled s", "hand s", "ratio");
     for (const bool three : {false, true}) {
+        if (!only.empty() && only != (three ? "3d" : "2d")) continue;
         const int side2 = 1000 / down, side3 = 100 / down;
         const std::string from = three ? "box:" + std::to_string(side3) + "x" + std::to_string(side3) + "x" + std::to_string(side3)
                                        : "box:" + std::to_string(side2) + "x" + std::to_string(side2);

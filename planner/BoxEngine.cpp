@@ -21,11 +21,10 @@ struct BoardCells {
     std::int64_t overridden;
     BoxEngine::Value replacement;
     BoxEngine::Value value(std::int64_t i) const { return i == overridden ? replacement : cells[i]; }
-    int combo(std::int64_t i) const { return combos[i]; }
-    std::int64_t neighbour(std::int64_t i, int d) const {
-        const std::int64_t j = i + board->step(d);
-        return combos[j] == BoxEngine::kOutside ? -1 : j;
-    }
+    // Padding cells are empty; as combination 0 they are exactly what a guard sees outside the
+    // region, so neighbours need no bounds test (and no load of their combination first).
+    int combo(std::int64_t i) const { return combos[i] == BoxEngine::kOutside ? 0 : combos[i]; }
+    std::int64_t neighbour(std::int64_t i, int d) const { return i + board->step(d); }
 };
 
 ShapeKind classify(const rules::RuleTables& tables, int shape) {
@@ -100,9 +99,14 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
             for (int c = 1; c < tables.comboCount() && !needsCombo; ++c)
                 for (int v = 0; v < tables.alphabet() && !needsCombo; ++v)
                     needsCombo = tables.test(t.lhs[k], c, static_cast<rules::CellValue>(v)) != tables.test(t.lhs[k], 0, static_cast<rules::CellValue>(v));
-            tests_.push_back({cells[k], t.lhs[k].bits.data(), needsCombo});
+            std::uint64_t anyCombo = 0;
+            for (int c = 0; c < tables.comboCount(); ++c)
+                for (int v = 0; v < std::min(tables.alphabet(), 64); ++v)
+                    if (tables.test(t.lhs[k], c, static_cast<rules::CellValue>(v))) anyCombo |= std::uint64_t{1} << v;
+            tests_.push_back({cells[k], t.lhs[k].bits.data(), needsCombo, anyCombo});
         }
         hot_.push_back({static_cast<std::uint32_t>(tests_.size() - (cells.size() - 1)), static_cast<std::uint32_t>(cells.size() - 1), t.hasGuard});
+        for (int c = 0; c < tables.comboCount(); ++c) emptyAnchors_ = emptyAnchors_ || tables.test(t.lhs[0], c, 0);
         program.readAt = static_cast<std::uint32_t>(readPool_.size()), program.reads = reads.size();
         program.writeAt = static_cast<std::uint32_t>(writePool_.size()), program.writes = writes.size();
         readPool_.insert(readPool_.end(), reads.begin(), reads.end());

@@ -38,6 +38,8 @@ public:
     int ruleOf(int shape) const { return ruleOf_[shape]; }
     ShapeKind kind(int shape) const { return kinds_[shape]; }
     std::uint8_t combo(std::int64_t cell) const { return combo_[cell]; }
+    /// Asks for the cache line of a cell's combination ahead of forEachMatchAt.
+    void prefetchCombo(std::int64_t cell) const { __builtin_prefetch(&combo_[cell]); }
     /// Index steps of a shape's pattern cells from its anchor.
     std::span<const std::int64_t> cellSteps(int shape) const { return {steps_.data() + programs_[shape].at, static_cast<std::size_t>(programs_[shape].cells)}; }
     /// Index steps of the pattern cells an instance of the shape may change.
@@ -54,6 +56,7 @@ public:
     /// the anchor's state are evaluated); returns the number of evaluations.
     template <class F>
     int forEachMatchAt(const Value* cells, std::int64_t anchor, F&& f) const {
+        if (cells[anchor] == 0 && !emptyAnchors_) return 0;  // padding and empty cells, without loading the combination
         const std::uint8_t combo = combo_[anchor];
         if (combo == kOutside) return 0;
         const auto& candidates = tables_->shapesByFirst(combo, cells[anchor]);
@@ -84,6 +87,9 @@ private:
         // Whether the cell's input combination is needed: not when its left side ignores the
         // inputs and rejects the empty state (padding is empty, so it cannot match either).
         bool needsCombo;
+        // The states (below 64) some combination accepts: tested first, so that a cell whose state
+        // no combination accepts (most cells) costs no load of its combination.
+        std::uint64_t anyCombo;
     };
     struct Hot {
         std::uint32_t first = 0, count = 0;  // the shape's tests in tests_
@@ -95,6 +101,7 @@ private:
             const std::int64_t i = anchor + t[k].step;
             std::size_t bit = cells[i];
             if (t[k].needsCombo) {
+                if (bit < 64 && !((t[k].anyCombo >> bit) & 1u)) return false;
                 const std::uint8_t c = combo_[i];
                 if (c == kOutside) return false;
                 bit += static_cast<std::size_t>(c) * alphabet_;
@@ -118,6 +125,7 @@ private:
     std::vector<Hot> hot_;
     std::vector<Test> tests_;
     std::size_t alphabet_;
+    bool emptyAnchors_ = false;  // some shape's first pattern cell accepts the empty state
 };
 
 }  // namespace holon::planner

@@ -25,7 +25,16 @@ constexpr int kMaxShapes = 1 << kShapeBits;
 std::int64_t anchorOf(std::uint64_t key) { return static_cast<std::int64_t>(key >> kShapeBits); }
 int shapeOf(std::uint64_t key) { return static_cast<int>(key & ((1u << kShapeBits) - 1)); }
 std::uint64_t keyOf(std::int64_t anchor, int shape) { return (static_cast<std::uint64_t>(anchor) << kShapeBits) | static_cast<std::uint64_t>(shape); }
+// The scheduler visits cells in random order, so nearly every visit misses the cache; loops over
+// such visits ask for the memory of the visit kAhead places later first.
+constexpr std::size_t kAhead = 8;
 }  // namespace
+
+void Execution::prefetchAnchor(std::int64_t anchor) const {
+    __builtin_prefetch(&bits_[bitOf(anchor, 0).first]);
+    __builtin_prefetch(&cells_[anchor]);
+    engine().prefetchCombo(anchor);
+}
 
 Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions options)
     : problem_(&problem), allocator_(&allocator), options_(options), random_(options.seed), shapes_(problem.engine->shapeCount()), words_((shapes_ + 63) / 64),
@@ -34,8 +43,8 @@ Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions op
         throw InputError("system '" + problem.model->system().name + "' has " + std::to_string(shapes_) + " rule orientations; the planner handles at most " +
                          std::to_string(kMaxShapes) + ": split rules that never fire together into separate systems");
     const std::size_t n = cells_.size();
-    enabled_.assign(n * static_cast<std::size_t>(words_), 0), listed_.assign(n * static_cast<std::size_t>(words_), 0);
-    stamp_.assign(n, 0), readMark_.assign(n, 0), writeMark_.assign(n, 0);
+    bits_.assign(2 * n * static_cast<std::size_t>(words_), 0);
+    stamp_.assign(n, 0), marks_.assign(n, {});
     const BoxEngine& engine = *problem.engine;
     for (std::int64_t a = 0; a < static_cast<std::int64_t>(n); ++a) {
         offGoal_ += !atGoal(a, cells_[a]);
@@ -46,11 +55,11 @@ Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions op
 void Execution::recheck(std::int64_t anchor) {
     std::uint64_t now[kMaxShapes / 64] = {};
     stats_.evaluations += engine().forEachMatchAt(cells_.data(), anchor, [&](int s) { now[s >> 6] |= std::uint64_t{1} << (s & 63); });
-    const std::size_t at = static_cast<std::size_t>(anchor) * static_cast<std::size_t>(words_);
+    std::uint64_t* bits = bits_.data() + 2 * static_cast<std::size_t>(anchor) * static_cast<std::size_t>(words_);
     for (int w = 0; w < words_; ++w) {
-        enabled_[at + w] = now[w];
-        std::uint64_t fresh = now[w] & ~listed_[at + w];
-        listed_[at + w] |= fresh;
+        bits[2 * w] = now[w];
+        std::uint64_t fresh = now[w] & ~bits[2 * w + 1];
+        bits[2 * w + 1] |= fresh;
         while (fresh) {
             const int s = w * 64 + std::countr_zero(fresh);
             fresh &= fresh - 1;
@@ -66,17 +75,22 @@ void Execution::recheckAround(const std::vector<std::int64_t>& changed) {
     for (std::int64_t c : changed)
         for (std::int64_t r : engine.influence()) {
             const std::int64_t a = c - r;
-            if (stamp_[a] != clock_ && engine.combo(a) != BoxEngine::kOutside) stamp_[a] = clock_, anchors_.push_back(a);
+            if (stamp_[a] != clock_) stamp_[a] = clock_, anchors_.push_back(a);  // recheck skips padding
         }
-    for (std::int64_t a : anchors_) recheck(a);
+    for (std::size_t k = 0; k < anchors_.size(); ++k) {
+        if (k + kAhead < anchors_.size()) prefetchAnchor(anchors_[k + kAhead]);
+        recheck(anchors_[k]);
+    }
 }
 
 void Execution::compact(std::vector<std::uint64_t>& list) {
     std::size_t out = 0;
-    for (std::uint64_t key : list) {
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        if (k + kAhead < list.size()) __builtin_prefetch(&bits_[bitOf(anchorOf(list[k + kAhead]), 0).first]);
+        const std::uint64_t key = list[k];
         const auto [word, bit] = bitOf(anchorOf(key), shapeOf(key));
-        if (enabled_[word] & bit) list[out++] = key;
-        else listed_[word] &= ~bit;
+        if (bits_[word] & bit) list[out++] = key;
+        else bits_[word + 1] &= ~bit;
     }
     list.resize(out);
 }
@@ -85,11 +99,11 @@ bool Execution::takeIfFree(std::int64_t anchor, int shape) {
     const std::uint32_t round = static_cast<std::uint32_t>(stats_.rounds);
     const BoxEngine& engine = this->engine();
     for (std::int64_t r : engine.readSteps(shape))
-        if (writeMark_[anchor + r] == round) return false;
+        if (marks_[anchor + r].write == round) return false;
     for (std::int64_t w : engine.writeSteps(shape))
-        if (readMark_[anchor + w] == round) return false;
-    for (std::int64_t r : engine.readSteps(shape)) readMark_[anchor + r] = round;
-    for (std::int64_t w : engine.writeSteps(shape)) writeMark_[anchor + w] = round;
+        if (marks_[anchor + w].read == round) return false;
+    for (std::int64_t r : engine.readSteps(shape)) marks_[anchor + r].read = round;
+    for (std::int64_t w : engine.writeSteps(shape)) marks_[anchor + w].write = round;
     return true;
 }
 
@@ -127,7 +141,7 @@ bool Execution::asyncStep(const RunObserver& observer, std::vector<std::int64_t>
         const std::uint64_t key = list[at];
         if (!enabled(anchorOf(key), shapeOf(key))) {
             const auto [word, bit] = bitOf(anchorOf(key), shapeOf(key));
-            listed_[word] &= ~bit;
+            bits_[word + 1] &= ~bit;
             list[at] = list.back();
             list.pop_back();
             continue;
@@ -166,13 +180,18 @@ bool Execution::syncRound(const RunObserver& observer, std::vector<std::int64_t>
     std::vector<std::uint64_t> chosen;
     compact(plannerList_);
     random_.shuffle(plannerList_);
-    for (std::uint64_t key : plannerList_)
-        if (takeIfFree(anchorOf(key), shapeOf(key))) chosen.push_back(key);
+    for (std::size_t k = 0; k < plannerList_.size(); ++k) {
+        if (k + kAhead < plannerList_.size()) __builtin_prefetch(&marks_[anchorOf(plannerList_[k + kAhead])]);
+        if (takeIfFree(anchorOf(plannerList_[k]), shapeOf(plannerList_[k]))) chosen.push_back(plannerList_[k]);
+    }
     compact(transferList_);
     random_.shuffle(transferList_);
     for (std::uint64_t key : transferList_)
         if (allocator_->wants(*this, anchorOf(key), shapeOf(key)) && takeIfFree(anchorOf(key), shapeOf(key))) chosen.push_back(key);
-    for (std::uint64_t key : chosen) fire(anchorOf(key), shapeOf(key), observer, changed);
+    for (std::size_t k = 0; k < chosen.size(); ++k) {
+        if (k + kAhead < chosen.size()) prefetchAnchor(anchorOf(chosen[k + kAhead]));
+        fire(anchorOf(chosen[k]), shapeOf(chosen[k]), observer, changed);
+    }
     return !chosen.empty();
 }
 

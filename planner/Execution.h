@@ -57,15 +57,17 @@ public:
     const RunStats& stats() const { return stats_; }
     bool enabled(std::int64_t anchor, int shape) const {
         const auto [word, bit] = bitOf(anchor, shape);
-        return (enabled_[word] & bit) != 0;
+        return (bits_[word] & bit) != 0;
     }
 
 private:
-    /// Where the bit of an instance lives in enabled_ and listed_: word index and mask.
+    /// Where the enabled bit of an instance lives in bits_ (its listed bit is in the next word):
+    /// word index and mask.
     std::pair<std::size_t, std::uint64_t> bitOf(std::int64_t anchor, int shape) const {
-        return {static_cast<std::size_t>(anchor) * static_cast<std::size_t>(words_) + static_cast<std::size_t>(shape >> 6), std::uint64_t{1} << (shape & 63)};
+        return {2 * (static_cast<std::size_t>(anchor) * static_cast<std::size_t>(words_) + static_cast<std::size_t>(shape >> 6)), std::uint64_t{1} << (shape & 63)};
     }
     void recheck(std::int64_t anchor);
+    void prefetchAnchor(std::int64_t anchor) const;
     void recheckAround(const std::vector<std::int64_t>& changed);
     bool takeIfFree(std::int64_t anchor, int shape);
     void fire(std::int64_t anchor, int shape, const RunObserver& observer, std::vector<std::int64_t>& changed);
@@ -83,9 +85,16 @@ private:
     int shapes_;
     int words_;  // 64-bit words of instance bits per cell: one up to 64 rule orientations
     std::vector<BoxEngine::Value> cells_;
-    std::vector<std::uint64_t> enabled_, listed_;  // per cell, words_ words: bit s for the instance of shape s anchored there
+    // Per cell, words_ pairs of words (enabled, listed): bit s for the instance of shape s anchored
+    // there is enabled / is in a list. Interleaved, like the marks below, because the scheduler
+    // visits cells in random order and each visit then costs one cache miss, not two.
+    std::vector<std::uint64_t> bits_;
     std::vector<std::uint64_t> plannerList_, transferList_;  // instance keys anchor * 128 + shape; may hold stale keys
-    std::vector<std::uint32_t> stamp_, readMark_, writeMark_;
+    struct Marks {
+        std::uint32_t read = 0, write = 0;  // the last round whose kept instances read / write the cell
+    };
+    std::vector<Marks> marks_;
+    std::vector<std::uint32_t> stamp_;
     std::uint32_t clock_ = 0;
     std::vector<std::int64_t> anchors_;
     std::int64_t offGoal_ = 0;  // cells not as the goal wants them

@@ -54,6 +54,21 @@ RuleTables::GuardNode RuleTables::compileGuard(const Expr& e, const RuleShape& s
     if (e.around >= 0)
         for (int d = 0; d < model_->lattice().degree(); ++d)
             g.perDirection.push_back(compilePredicate(e.pred, &shape.offsets, shape.offsets[e.around] + model_->lattice().direction(d)).bits);
+    for (const std::vector<std::uint64_t>& mask : g.perDirection) {
+        std::uint64_t any = 0, all = ~std::uint64_t{0};
+        for (int v = 0; v < 64; ++v) {
+            const std::uint64_t b = std::uint64_t{1} << v;
+            if (v >= alphabet_) {
+                all &= ~b;
+                continue;
+            }
+            for (std::size_t c = 0; c < combos_.size(); ++c) {
+                if (bit(mask, static_cast<int>(c), static_cast<CellValue>(v))) any |= b;
+                else all &= ~b;
+            }
+        }
+        g.anyCombo.push_back(any), g.allCombo.push_back(all);
+    }
     return g;
 }
 

@@ -29,6 +29,9 @@ public:
         std::vector<GuardNode> kids;
         int around = -1;
         std::vector<std::vector<std::uint64_t>> perDirection;
+        // Per direction, the states (below 64) accepted under some / every input combination:
+        // most neighbours are decided by their state alone, without loading their combination.
+        std::vector<std::uint64_t> anyCombo, allCombo;
     };
     struct Shape {
         std::vector<Mask> lhs;
@@ -103,15 +106,25 @@ private:
         const std::size_t i = static_cast<std::size_t>(combo) * alphabet_ + v;
         return (bits[i >> 6] >> (i & 63)) & 1u;
     }
+    /// Whether the guard accepts the neighbour of `centre` in direction d (a cell outside the
+    /// region counts as empty with no input set).
+    template <class Cells>
+    bool acceptsNeighbour(const GuardNode& g, int d, const Cells& at, std::int64_t centre) const {
+        const auto nb = at.neighbour(centre, d);
+        if (nb < 0) return guardAccepts(g, d, 0, 0);
+        const CellValue v = at.value(nb);
+        if (v < 64) {
+            if (!((g.anyCombo[d] >> v) & 1u)) return false;
+            if ((g.allCombo[d] >> v) & 1u) return true;
+        }
+        return guardAccepts(g, d, at.combo(nb), v);
+    }
     /// The directions around the guard's pattern cell whose neighbour it accepts, as bits.
     template <class Cells>
     std::uint32_t guardMembers(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
         const auto centre = cells[g.around];
         std::uint32_t set = 0;
-        for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) {
-            const auto nb = at.neighbour(centre, d);
-            set |= static_cast<std::uint32_t>(nb < 0 ? guardAccepts(g, d, 0, 0) : guardAccepts(g, d, at.combo(nb), at.value(nb))) << d;
-        }
+        for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) set |= static_cast<std::uint32_t>(acceptsNeighbour(g, d, at, centre)) << d;
         return set;
     }
     template <class Cells>
@@ -122,10 +135,8 @@ private:
     template <class Cells>
     bool guardAny(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
         const auto centre = cells[g.around];
-        for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) {
-            const auto nb = at.neighbour(centre, d);
-            if (nb < 0 ? guardAccepts(g, d, 0, 0) : guardAccepts(g, d, at.combo(nb), at.value(nb))) return true;
-        }
+        for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d)
+            if (acceptsNeighbour(g, d, at, centre)) return true;
         return false;
     }
     template <class Cells>
