@@ -111,7 +111,7 @@ int run(const CheckArgs& a) {
     std::cout << "\n\n  " << std::left << std::setw(20) << "property" << std::setw(10) << "verdict" << std::setw(10) << "time" << "evidence\n";
     for (const auto& p : report.properties)
         std::cout << "  " << std::setw(20) << p.name << std::setw(10) << checker::verdictName(p.verdict) << std::setw(10)
-                  << (std::to_string(static_cast<int>(p.seconds * 1000)) + " ms") << p.summary << '\n';
+                  << (std::to_string(static_cast<int>(p.seconds * 1000)) + " ms ") << p.summary << '\n';
     if (shown) {
         std::cout << "\ncounterexample for '" << shown->name << "'" << (shown->trace->description.empty() ? "" : ": " + shown->trace->description)
                   << " (replayed through the reference interpreter)\n"

@@ -86,7 +86,7 @@ int run(const VerifyArgs& a) {
               << "obligation" << std::setw(16) << "verdict" << std::setw(10) << "time" << "evidence\n";
     for (const auto& o : report.obligations)
         std::cout << "  " << std::setw(22) << o.result.name << std::setw(16) << checker::proofVerdictName(o.result.verdict) << std::setw(10)
-                  << (std::to_string(static_cast<int>(o.result.seconds * 1000)) + " ms") << o.result.summary << '\n';
+                  << (std::to_string(static_cast<int>(o.result.seconds * 1000)) + " ms ") << o.result.summary << '\n';
     for (const auto& o : report.obligations) {
         if (!o.result.witness.is_object() || !o.result.witness.contains("inductive_invariant")) continue;
         // Spacer's invariant holds initially, is closed under every step and excludes the bad states.
