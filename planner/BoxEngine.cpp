@@ -99,11 +99,7 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
             for (int c = 1; c < tables.comboCount() && !needsCombo; ++c)
                 for (int v = 0; v < tables.alphabet() && !needsCombo; ++v)
                     needsCombo = tables.test(t.lhs[k], c, static_cast<rules::CellValue>(v)) != tables.test(t.lhs[k], 0, static_cast<rules::CellValue>(v));
-            std::uint64_t anyCombo = 0;
-            for (int c = 0; c < tables.comboCount(); ++c)
-                for (int v = 0; v < std::min(tables.alphabet(), 64); ++v)
-                    if (tables.test(t.lhs[k], c, static_cast<rules::CellValue>(v))) anyCombo |= std::uint64_t{1} << v;
-            tests_.push_back({cells[k], t.lhs[k].bits.data(), needsCombo, anyCombo});
+            tests_.push_back({cells[k], t.lhs[k].bits.data(), needsCombo, tables.acceptedStates(t.lhs[k].bits).first});
         }
         hot_.push_back({static_cast<std::uint32_t>(tests_.size() - (cells.size() - 1)), static_cast<std::uint32_t>(cells.size() - 1), t.hasGuard});
         for (int c = 0; c < tables.comboCount(); ++c) emptyAnchors_ = emptyAnchors_ || tables.test(t.lhs[0], c, 0);

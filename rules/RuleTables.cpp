@@ -55,21 +55,23 @@ RuleTables::GuardNode RuleTables::compileGuard(const Expr& e, const RuleShape& s
         for (int d = 0; d < model_->lattice().degree(); ++d)
             g.perDirection.push_back(compilePredicate(e.pred, &shape.offsets, shape.offsets[e.around] + model_->lattice().direction(d)).bits);
     for (const std::vector<std::uint64_t>& mask : g.perDirection) {
-        std::uint64_t any = 0, all = ~std::uint64_t{0};
-        for (int v = 0; v < 64; ++v) {
-            const std::uint64_t b = std::uint64_t{1} << v;
-            if (v >= alphabet_) {
-                all &= ~b;
-                continue;
-            }
-            for (std::size_t c = 0; c < combos_.size(); ++c) {
-                if (bit(mask, static_cast<int>(c), static_cast<CellValue>(v))) any |= b;
-                else all &= ~b;
-            }
-        }
+        const auto [any, all] = acceptedStates(mask);
         g.anyCombo.push_back(any), g.allCombo.push_back(all);
     }
     return g;
+}
+
+std::pair<std::uint64_t, std::uint64_t> RuleTables::acceptedStates(const std::vector<std::uint64_t>& bits) const {
+    std::uint64_t any = 0, all = 0;
+    for (int v = 0; v < std::min(alphabet_, 64); ++v) {
+        bool some = false, every = true;
+        for (std::size_t c = 0; c < combos_.size(); ++c) {
+            const bool accepted = bit(bits, static_cast<int>(c), static_cast<CellValue>(v));
+            some = some || accepted, every = every && accepted;
+        }
+        any |= std::uint64_t{some} << v, all |= std::uint64_t{every} << v;
+    }
+    return {any, all};
 }
 
 RuleTables::GuardNode RuleTables::compileCellGuard(const Expr& guard) const {

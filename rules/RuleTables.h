@@ -59,6 +59,9 @@ public:
     }
 
     bool test(const Mask& m, int combo, CellValue v) const { return bit(m.bits, combo, v); }
+    /// The states below 64 that `bits` (a mask over (combination, state)) accepts under some
+    /// combination, and under every one: most cells are decided by these without their combination.
+    std::pair<std::uint64_t, std::uint64_t> acceptedStates(const std::vector<std::uint64_t>& bits) const;
     /// Whether a set of lattice directions (bit d for direction d) is connected when two
     /// directions are joined if their neighbour cells are adjacent (`connected nbr` guards).
     bool directionsConnected(std::uint32_t set) const {
