@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <set>
 
 namespace holon::planner {
 
@@ -29,9 +30,15 @@ struct BoardCells {
 
 ShapeKind classify(const rules::RuleTables& tables, int shape) {
     const rules::RuleTables::Shape& t = tables.shape(shape);
-    bool massMoves = false;
+    // Per cell, the masses it may have before and after; a transfer exchanges resources between
+    // cells, so each cell has one mass before and one after and the cells' masses are a
+    // permutation of what they were (C D => D C). A step that moves mass otherwise (C B1 => D D,
+    // the second creator completing a general_2 partial) is a stage of a creation or deletion.
+    std::vector<std::int64_t> before, after;
+    bool massMoves = false, exchange = true;
     for (std::size_t k = 0; k < t.lhs.size(); ++k) {
         if (t.copyFrom[k] >= 0) return ShapeKind::Motion;
+        std::set<std::int64_t> massBefore, massAfter;
         for (int c = 0; c < tables.comboCount(); ++c)
             for (int v = 0; v < tables.alphabet(); ++v) {
                 const auto value = static_cast<rules::CellValue>(v);
@@ -39,9 +46,14 @@ ShapeKind classify(const rules::RuleTables& tables, int shape) {
                 const rules::CellValue w = t.rhs[k][value];
                 if ((v == 0) != (w == 0)) return ShapeKind::Motion;
                 if (tables.massUnitsOf(value) != tables.massUnitsOf(w)) massMoves = true;
+                massBefore.insert(tables.massUnitsOf(value)), massAfter.insert(tables.massUnitsOf(w));
             }
+        exchange = exchange && massBefore.size() == 1 && massAfter.size() == 1;
+        if (exchange) before.push_back(*massBefore.begin()), after.push_back(*massAfter.begin());
     }
-    return massMoves ? ShapeKind::Transfer : ShapeKind::Relabel;
+    if (!massMoves) return ShapeKind::Relabel;
+    std::sort(before.begin(), before.end()), std::sort(after.begin(), after.end());
+    return exchange && before == after ? ShapeKind::Transfer : ShapeKind::Motion;
 }
 
 }  // namespace

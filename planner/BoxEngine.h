@@ -16,8 +16,9 @@ namespace holon::planner {
 /// What applying a rule shape does, read off its tables.
 enum class ShapeKind {
     Relabel,   // occupancy and every cell's mass unchanged (the planner's labels, trees)
-    Transfer,  // occupancy unchanged, mass moves between cells (a resource allocator's move)
-    Motion,    // a cell becomes occupied or empty (creation, deletion) or a module moves
+    Transfer,  // occupancy unchanged, cells exchange their masses (a resource allocator's move)
+    Motion,    // a cell becomes occupied or empty (creation, deletion), a module moves, or mass
+               // moves otherwise (a stage of a general_n creation or deletion through a partial)
 };
 
 class BoxEngine {

@@ -70,6 +70,22 @@ TEST_CASE("the block experiment of seed 000: the creations and deletions the sha
     }
 }
 
+TEST_CASE("a transfer exchanges resources and the stages of a general_n creation or deletion are motions") {
+    // The allocator decides only transfers: when the second creator completing a partial
+    // (C B1 => D D) counted as one, the gradient allocator never asked for it and the last partials
+    // of a general_2 run waited thousands of rounds for a randomly walking creator.
+    for (const char* stem : {"planner_general2", "planner_general3", "planner_general_lock2"}) {
+        PlannerSystem sys(stem, 2);
+        const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape("box:4x2"), planner::parseShape("box:2x4"), std::nullopt, 1);
+        std::map<std::string, std::set<planner::ShapeKind>> kinds;
+        for (int sh = 0; sh < p.engine->shapeCount(); ++sh) kinds[sys.model->rules()[p.engine->ruleOf(sh)].name].insert(p.engine->kind(sh));
+        INFO(stem);
+        CHECK(kinds["transfer"] == std::set{planner::ShapeKind::Transfer});
+        for (const char* stage : {"create1", "create2", "delete1", "delete2"}) CHECK(kinds[stage] == std::set{planner::ShapeKind::Motion});
+        CHECK(kinds["finalize"] == std::set{planner::ShapeKind::Relabel});
+    }
+}
+
 TEST_CASE("every allocator completes every general system, never below the transport bound; optimal beats random") {
     for (const char* stem : {"planner_general1", "planner_general2", "planner_general3", "planner_general_lock2", "planner_general_lock3"})
         for (int dimension : {2, 3}) {
