@@ -75,7 +75,7 @@ std::string plot(const std::string& title, const std::string& xLabel, const std:
 
 int main(int argc, char** argv) {
     std::string out = "out/plan";
-    int maxK = 30, maxKRandom = 4, maxKGradient = 8, maxKOptimal = 6;
+    int maxK = 31, maxKRandom = 4, maxKGradient = 8, maxKOptimal = 6;
     std::uint64_t seed = 1;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
     series["optimal"] = {"general1 optimal: transfers", "#8040c0", {}};
     series["bound"] = {"transport lower bound", "#888888", {}};
     std::vector<int> ks;
-    for (int k : {1, 2, 3, 4, 6, 8, 12, 16, 22, 30})
+    for (int k : {1, 2, 3, 4, 6, 8, 12, 16, 22, 31})  // 31: past 10^6 metamodules
         if (k <= maxK) ks.push_back(k);
     for (int k : ks) {
         struct Job {
