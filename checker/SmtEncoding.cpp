@@ -329,10 +329,12 @@ z3::expr SmtEncoding::legal(const State& s) {
     return all;
 }
 
-std::vector<z3::expr> SmtEncoding::acceptedAround(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {
+std::vector<z3::expr> SmtEncoding::acceptedSites(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {
     std::vector<z3::expr> out;
-    for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d)
-        out.push_back(member(s, engine_.region().neighbour(cells[g.around], d), [&](int c, CellValue v) { return engine_.guardAccepts(g, d, c, v); }));
+    for (int d = 0; d < static_cast<int>(g.perSite.size()); ++d) {
+        const int cell = g.around >= 0 ? engine_.region().neighbour(cells[g.around], d) : cells[d];
+        out.push_back(member(s, cell, [&](int c, CellValue v) { return engine_.guardAccepts(g, d, c, v); }));
+    }
     return out;
 }
 
@@ -344,7 +346,7 @@ z3::expr SmtEncoding::guardNumber(const rules::Engine::GuardNode& g, const std::
     case Expr::Kind::Neg: return -guardNumber(g.kids[0], cells, s);
     case Expr::Kind::Count: {
         z3::expr count = ctx_.int_val(0);
-        for (const z3::expr& accepted : acceptedAround(g, cells, s)) count = count + z3::ite(accepted, ctx_.int_val(1), ctx_.int_val(0));
+        for (const z3::expr& accepted : acceptedSites(g, cells, s)) count = count + z3::ite(accepted, ctx_.int_val(1), ctx_.int_val(0));
         return z3::to_real(count);
     }
     default: throw InputError("internal: not a guard number");
@@ -365,13 +367,13 @@ z3::expr SmtEncoding::guard(const rules::Engine::GuardNode& g, const std::int32_
         rules::Engine::GuardNode count = g;
         count.kind = Expr::Kind::Count;
         z3::expr c = guardNumber(count, cells, s);
-        const int degree = static_cast<int>(g.perDirection.size());
-        return g.kind == Expr::Kind::Some ? c > 0 : g.kind == Expr::Kind::No ? c == 0 : c == degree;
+        const int sites = static_cast<int>(g.perSite.size());
+        return g.kind == Expr::Kind::Some ? c > 0 : g.kind == Expr::Kind::No ? c == 0 : c == sites;
     }
     case Expr::Kind::Connected: {
         // The accepted neighbours form a connected set: one of the (at most 2^6) connected sets.
-        const int degree = static_cast<int>(g.perDirection.size());
-        const std::vector<z3::expr> accepted = acceptedAround(g, cells, s);
+        const int degree = static_cast<int>(g.perSite.size());
+        const std::vector<z3::expr> accepted = acceptedSites(g, cells, s);
         z3::expr any = ctx_.bool_val(false);
         for (std::uint32_t set = 0; set < (1u << degree); ++set) {
             if (!engine_.tables().directionsConnected(set)) continue;

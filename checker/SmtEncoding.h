@@ -63,8 +63,8 @@ private:
     /// A compiled guard; `cells` are the region indices of the pattern cells it names.
     z3::expr guard(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s);
     z3::expr guardNumber(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s);
-    /// Per lattice direction around the guard's pattern cell: that neighbour is accepted.
-    std::vector<z3::expr> acceptedAround(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s);
+    /// Per site of a guard quantifier (a neighbour of its pattern cell, or a pattern cell): it is accepted.
+    std::vector<z3::expr> acceptedSites(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s);
     /// The cell counts for a region quantifier: it satisfies the predicate (and the cell guard).
     z3::expr memberCounted(const State& s, std::int32_t cell, const rules::Expr& quantifier);
     /// reaches(from, field, to) at one state: the cells, and per cell and direction whether a step

@@ -124,7 +124,7 @@ const Engine::GuardNode* Engine::guardOf(int placed) const {
     const RuleTables::Shape& t = tables_.shape(placed_[placed].shape);
     return t.hasGuard ? &t.guard : nullptr;
 }
-bool Engine::guardAccepts(const GuardNode& node, int direction, int combo, CellValue v) const { return tables_.guardAccepts(node, direction, combo, v); }
+bool Engine::guardAccepts(const GuardNode& node, int site, int combo, CellValue v) const { return tables_.guardAccepts(node, site, combo, v); }
 
 Engine::~Engine() = default;
 Engine::Engine(Engine&&) noexcept = default;

@@ -74,7 +74,7 @@ public:
     const GuardNode* guardOf(int placed) const;
     /// The compiled cell guard of a region quantifier of this system (`all(H: no nbr _)`).
     const GuardNode& cellGuardOf(const Expr& quantifier) const { return cellGuards_.at(&quantifier); }
-    bool guardAccepts(const GuardNode& node, int direction, int combo, CellValue v) const;
+    bool guardAccepts(const GuardNode& node, int site, int combo, CellValue v) const;
     bool predicateAccepts(const CellPredicate& pred, int combo, CellValue v) const { return tables_.test(predicateMask(pred), combo, v); }
     std::int64_t massUnitsOf(CellValue v) const { return tables_.massUnitsOf(v); }
 

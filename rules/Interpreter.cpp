@@ -133,6 +133,10 @@ int Interpreter::countCells(const Expr& e, const Configuration& c, const Placeme
             n += matchesPredicate(e.pred, valueAt(centre + d, c), context(centre + d, c, at));
         return n;
     }
+    if (e.around == Expr::kOwnCells) {
+        for (Vec p : at->positions) n += matchesPredicate(e.pred, valueAt(p, c), context(p, c, at));
+        return n;
+    }
     for (int i = 0; i < region_->size(); ++i) {
         if (!matchesPredicate(e.pred, c.cells[i], context(region_->cell(i), c, at))) continue;
         if (withCellGuard && !e.kids.empty()) {  // a cell guard, read with @0 at this cell
@@ -157,7 +161,9 @@ bool Interpreter::holdsAt(const Expr& e, const Configuration& c, const Placement
     case Expr::Kind::No: return countCells(e, c, at) == 0;
     case Expr::Kind::All: {
         if (!e.kids.empty()) return countCells(e, c, at) == countCells(e, c, at, false);  // every pred cell satisfies the cell guard
-        const int total = e.around >= 0 ? model_->lattice().degree() : region_->size();
+        const int total = e.around >= 0                   ? model_->lattice().degree()
+                          : e.around == Expr::kOwnCells ? static_cast<int>(at->positions.size())
+                                                        : region_->size();
         return countCells(e, c, at) == total;
     }
     case Expr::Kind::Connected: {

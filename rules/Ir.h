@@ -111,7 +111,10 @@ struct Expr {
     std::vector<Expr> kids;
     CellPredicate pred, target;
     int field = -1;
-    int around = -1;  // >= 0: quantify over the lattice neighbours of pattern cell `around` (guards)
+    // Guards: >= 0 quantifies over the lattice neighbours of pattern cell `around` (`count nbr@k T`),
+    // kOwnCells over the rule's own pattern cells (`count pattern T`); -1: over the region.
+    int around = -1;
+    static constexpr int kOwnCells = -2;
     SourceLoc loc;
     friend bool operator==(const Expr&, const Expr&) = default;
 };

@@ -102,6 +102,12 @@ std::string Alphabet::name(CellValue v) const {
     return out.empty() ? "#" : out;
 }
 
+namespace {
+bool namesCellsByIndex(const Expr& e) {
+    return e.around >= 0 || std::any_of(e.kids.begin(), e.kids.end(), namesCellsByIndex);
+}
+}  // namespace
+
 Model::Model(const System& system, const Lattice& lattice)
     : system_(&system), lattice_(&lattice), alphabet_(system, lattice) {
     if (system.lattice && *system.lattice != lattice.kind())
@@ -140,10 +146,12 @@ Model::Model(const System& system, const Lattice& lattice)
             std::string key;
             for (const std::string& c : cells) key += c + ";";
             if (const Expr* g = dr.guard()) {
-                // Guards name pattern cells by index (nbr@k), so the key also lists the offsets in
-                // index order: two orientations merge only when they agree cell by cell.
+                // A guard that names pattern cells by index (nbr@k) needs the offsets in index order
+                // too: two orientations merge only when they agree cell by cell. References (@k,
+                // parent=@k) print as positions, and `count pattern` looks at every cell alike.
                 key += "if" + printExpr(system, *g, refFrom(low));
-                for (std::size_t i = 0; i < offsets.size(); ++i) key += vecText(offsets[i] - low);
+                if (namesCellsByIndex(*g))
+                    for (std::size_t i = 0; i < offsets.size(); ++i) key += vecText(offsets[i] - low);
             }
             auto [it, inserted] = seen.emplace(key, ri);
             if (!inserted) {

@@ -708,8 +708,12 @@ private:
             if (!inGuard_) fail(loc, "'" + word + " nbr' quantifies over a rule's neighbourhood and belongs in a guard");
             aroundCell(e);
             e.pred = predicate();
+        } else if (accept("pattern")) {  // the rule's own cells, before the rewrite
+            if (!inGuard_) fail(loc, "'" + word + " pattern' quantifies over a rule's own cells and belongs in a guard");
+            e.around = Expr::kOwnCells;
+            e.pred = predicate();
         } else {
-            if (inGuard_) fail(loc, "a guard is local; write '" + word + " nbr ...', or make this a constraint");
+            if (inGuard_) fail(loc, "a guard is local; write '" + word + " nbr ...' or '" + word + " pattern ...', or make this a constraint");
             expect("(", "after " + word + ", as in " + word + "(F)");
             e.pred = predicate();
             if (accept(":")) {  // a local condition on each of those cells, @0 being the cell

@@ -92,6 +92,7 @@ std::string printExpr(const System& s, const Expr& e, const RefPrinter& ref) {
     };
     auto quant = [&](const char* word) {
         if (e.around >= 0) return std::string(word) + " nbr" + (e.around ? "@" + std::to_string(e.around) : "") + " " + printPredicate(s, e.pred, ref);
+        if (e.around == Expr::kOwnCells) return std::string(word) + " pattern " + printPredicate(s, e.pred, ref);
         const std::string cellGuard = e.kids.empty() ? "" : ": " + printExpr(s, e.kids[0], ref);
         return std::string(word) + "(" + printPredicate(s, e.pred, ref) + cellGuard + ")";
     };

@@ -53,8 +53,10 @@ RuleTables::GuardNode RuleTables::compileGuard(const Expr& e, const RuleShape& s
     for (const Expr& k : e.kids) g.kids.push_back(compileGuard(k, shape));
     if (e.around >= 0)
         for (int d = 0; d < model_->lattice().degree(); ++d)
-            g.perDirection.push_back(compilePredicate(e.pred, &shape.offsets, shape.offsets[e.around] + model_->lattice().direction(d)).bits);
-    for (const std::vector<std::uint64_t>& mask : g.perDirection) {
+            g.perSite.push_back(compilePredicate(e.pred, &shape.offsets, shape.offsets[e.around] + model_->lattice().direction(d)).bits);
+    if (e.around == Expr::kOwnCells)
+        for (Vec v : shape.offsets) g.perSite.push_back(compilePredicate(e.pred, &shape.offsets, v).bits);
+    for (const std::vector<std::uint64_t>& mask : g.perSite) {
         const auto [any, all] = acceptedStates(mask);
         g.anyCombo.push_back(any), g.allCombo.push_back(all);
     }

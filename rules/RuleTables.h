@@ -21,16 +21,18 @@ public:
     struct Mask {
         std::vector<std::uint64_t> bits;
     };
-    /// A guard compiled for one shape: quantifier nodes hold one mask per lattice direction.
+    /// A guard compiled for one shape: quantifier nodes hold one mask per site they look at, the
+    /// neighbour in lattice direction d of pattern cell `around` (`nbr`), or pattern cell d itself
+    /// (`pattern`, around == Expr::kOwnCells).
     struct GuardNode {
         Expr::Kind kind = Expr::Kind::Bool;
         CmpOp op = CmpOp::Eq;
         Rational value;
         std::vector<GuardNode> kids;
         int around = -1;
-        std::vector<std::vector<std::uint64_t>> perDirection;
-        // Per direction, the states (below 64) accepted under some / every input combination:
-        // most neighbours are decided by their state alone, without loading their combination.
+        std::vector<std::vector<std::uint64_t>> perSite;
+        // Per site, the states (below 64) accepted under some / every input combination: most
+        // cells are decided by their state alone, without loading their combination.
         std::vector<std::uint64_t> anyCombo, allCombo;
     };
     struct Shape {
@@ -74,9 +76,7 @@ public:
         }
         return reached == set;
     }
-    bool guardAccepts(const GuardNode& node, int direction, int combo, CellValue v) const {
-        return bit(node.perDirection[direction], combo, v);
-    }
+    bool guardAccepts(const GuardNode& node, int site, int combo, CellValue v) const { return bit(node.perSite[site], combo, v); }
     Mask compilePredicate(const CellPredicate& pred, const std::vector<Vec>* pattern, Vec position) const;
     /// A quantifier's cell guard (`all(H: no nbr _)`): a guard of a one-cell pattern.
     GuardNode compileCellGuard(const Expr& guard) const;
@@ -98,7 +98,7 @@ public:
         case Expr::Kind::Compare: return compare(g.op, guardNumber(g.kids[0], at, cells), guardNumber(g.kids[1], at, cells));
         case Expr::Kind::Some: return guardAny(g, at, cells);
         case Expr::Kind::No: return !guardAny(g, at, cells);
-        case Expr::Kind::All: return guardCount(g, at, cells) == static_cast<int>(g.perDirection.size());
+        case Expr::Kind::All: return guardCount(g, at, cells) == static_cast<int>(g.perSite.size());
         case Expr::Kind::Connected: return directionsConnected(guardMembers(g, at, cells));
         default: return false;
         }
@@ -109,25 +109,24 @@ private:
         const std::size_t i = static_cast<std::size_t>(combo) * alphabet_ + v;
         return (bits[i >> 6] >> (i & 63)) & 1u;
     }
-    /// Whether the guard accepts the neighbour of `centre` in direction d (a cell outside the
-    /// region counts as empty with no input set).
+    /// Whether the guard accepts its site d (a cell outside the region counts as empty with no
+    /// input set).
     template <class Cells>
-    bool acceptsNeighbour(const GuardNode& g, int d, const Cells& at, std::int64_t centre) const {
-        const auto nb = at.neighbour(centre, d);
-        if (nb < 0) return guardAccepts(g, d, 0, 0);
-        const CellValue v = at.value(nb);
+    bool acceptsSite(const GuardNode& g, int d, const Cells& at, const std::int32_t* cells) const {
+        const auto cell = g.around >= 0 ? at.neighbour(cells[g.around], d) : cells[d];
+        if (cell < 0) return guardAccepts(g, d, 0, 0);
+        const CellValue v = at.value(cell);
         if (v < 64) {
             if (!((g.anyCombo[d] >> v) & 1u)) return false;
             if ((g.allCombo[d] >> v) & 1u) return true;
         }
-        return guardAccepts(g, d, at.combo(nb), v);
+        return guardAccepts(g, d, at.combo(cell), v);
     }
-    /// The directions around the guard's pattern cell whose neighbour it accepts, as bits.
+    /// The guard's sites it accepts, as bits.
     template <class Cells>
     std::uint32_t guardMembers(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
-        const auto centre = cells[g.around];
         std::uint32_t set = 0;
-        for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d) set |= static_cast<std::uint32_t>(acceptsNeighbour(g, d, at, centre)) << d;
+        for (int d = 0; d < static_cast<int>(g.perSite.size()); ++d) set |= static_cast<std::uint32_t>(acceptsSite(g, d, at, cells)) << d;
         return set;
     }
     template <class Cells>
@@ -137,9 +136,8 @@ private:
     /// Whether some neighbour is accepted: guardCount(...) > 0, stopping at the first.
     template <class Cells>
     bool guardAny(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
-        const auto centre = cells[g.around];
-        for (int d = 0; d < static_cast<int>(g.perDirection.size()); ++d)
-            if (acceptsNeighbour(g, d, at, centre)) return true;
+        for (int d = 0; d < static_cast<int>(g.perSite.size()); ++d)
+            if (acceptsSite(g, d, at, cells)) return true;
         return false;
     }
     template <class Cells>
