@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Seed 003's local moves checked with holon's own checker (rules/library/hex_holes.holon: hole
-# move and deletion; hex_collapse.holon: column collapse):
+# move and deletion; hex_growth.holon: hole creation; hex_collapse.holon: column collapse):
 #  1. three holes wandering in a hex:r6 disk: every interleaving keeps every hole whole and the
 #     module count (115,417 states);
 #  2. deletion as the paper words it empties a shepherd of a neighbouring hole:
@@ -8,7 +8,9 @@
 #  3. even with that fixed, deletion pinches off a protruding element (Fig. 6):
 #     out/checker/pinch_off.svg, crossed modules are cut off;
 #  4. column collapse, every gravity and order, from an 8-module blob (112,668 states) and around a
-#     hole: the mass stays connected and the hole whole.
+#     hole: the mass stays connected and the hole whole;
+#  5. hole creation from a blob where three growth nodes compete: every hole made is whole, the
+#     module count kept; and for every configuration of hex:r3 (Z3).
 # Every trace is replayed through the reference interpreter. Needs a build (bash scripts/build).
 set -u
 cd "$(dirname "$0")/../.."
@@ -29,4 +31,9 @@ echo
 "$holon" check rules/library/hex_collapse.holon --region hex:r3 --from $in/blob.txt | sed -n '1,8p'
 echo
 "$holon" check rules/library/hex_collapse.holon --region hex:r4 --from $in/hole_and_blob.txt | sed -n '1,8p'
+echo
+"$holon" check rules/library/hex_growth.holon --region hex:r4 --from $in/growth_blob.txt --input target=$in/target_r4.txt \
+    --property holes --property mass_conservation
+echo
+"$holon" verify rules/library/hex_growth.holon --region hex:r3
 echo "(pictures in $out/)"

@@ -1,7 +1,7 @@
-// hex_holes.holon and hex_collapse.holon placed on the hex array's board by the planner's compiled
-// engine (seed 003 §IV-D: a hole moves by shifting its three leading shepherds to the trailing
-// edge; §IV-F: column collapse). Both systems name the same cell states in the same order, so
-// their engines share one cell array. An orientation is found by geometry: pattern cell 1 of a
+// hex_holes.holon, hex_growth.holon and hex_collapse.holon placed on the hex array's board by the
+// planner's compiled engine (seed 003 §IV-D: a hole moves by shifting its three leading shepherds
+// to the trailing edge; §IV-E: a growth node makes a hole; §IV-F: column collapse). The systems
+// name the same cell states in the same order, so their engines share one cell array. An orientation is found by geometry: pattern cell 1 of a
 // hole move is the new centre next to the old one at the anchor; pattern cell 1 of a collapse is
 // the first cell of the column the module steps onto, at gravity + side.
 
@@ -47,12 +47,15 @@ HoleRules::~HoleRules() = default;
 HoleRules::HoleRules(const HexArray& array, const std::vector<std::uint8_t>& target)
     : holeSystem_(std::make_unique<Compiled>("hex_holes", array, target)),
       collapseSystem_(std::make_unique<Compiled>("hex_collapse", array, target)),
-      holeEngine_(holeSystem_->engine.get()), collapseEngine_(collapseSystem_->engine.get()) {
+      growthSystem_(std::make_unique<Compiled>("hex_growth", array, target)),
+      holeEngine_(holeSystem_->engine.get()), collapseEngine_(collapseSystem_->engine.get()), growthEngine_(growthSystem_->engine.get()) {
     const rules::Alphabet& alphabet = holeSystem_->model->alphabet();
-    const rules::Alphabet& other = collapseSystem_->model->alphabet();
-    for (int v = 0; v < alphabet.size() || v < other.size(); ++v)
-        if (v >= alphabet.size() || v >= other.size() || alphabet.name(static_cast<rules::CellValue>(v)) != other.name(static_cast<rules::CellValue>(v)))
-            throw InputError("hex_holes.holon and hex_collapse.holon must declare the same cell states in the same order");
+    for (const Compiled* c : {collapseSystem_.get(), growthSystem_.get()}) {
+        const rules::Alphabet& other = c->model->alphabet();
+        for (int v = 0; v < alphabet.size() || v < other.size(); ++v)
+            if (v >= alphabet.size() || v >= other.size() || alphabet.name(static_cast<rules::CellValue>(v)) != other.name(static_cast<rules::CellValue>(v)))
+                throw InputError("hex_holes.holon and " + c->system.name + ".holon must declare the same cell states in the same order");
+    }
     module_ = static_cast<Value>(alphabet.byGlyph('M')), rim_ = static_cast<Value>(alphabet.byGlyph('H'));
     centre_ = static_cast<Value>(alphabet.byGlyph('C'));
     std::fill(std::begin(move_), std::end(move_), -1);
@@ -72,6 +75,9 @@ HoleRules::HoleRules(const HexArray& array, const std::vector<std::uint8_t>& tar
                     collapse_[c.side][hops][(direction(*collapseEngine_, s) - c.side + 6) % 6] = s;
     for (int d = 0; d < 6; ++d)
         if (move_[d] < 0) throw InputError("hex_holes.holon: no hole_move toward direction " + std::to_string(d));
+    for (int s = 0; s < growthEngine_->shapeCount(); ++s)
+        if (growthSystem_->ruleName(s) == "hole_create") create_ = s;
+    if (create_ < 0) throw InputError("hex_growth.holon: no rule hole_create");
 }
 
 }  // namespace holon::planner::hex

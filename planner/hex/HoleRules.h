@@ -1,9 +1,10 @@
 #pragma once
 // The lattice rewrites of hole motion, compiled for one hex array: rules/library/hex_holes.holon
-// (hole move, deletion) and hex_collapse.holon (column collapse) placed on the array's board by the
-// planner's compiled engine. The sculptor's ensemble is the engines' shared cell array, and a hole
-// moves or a column collapses by applying the rule's instance (seed 003 §IV-D, §IV-F): the same
-// rules `holon check` and `holon verify` examine.
+// (hole move, deletion), hex_growth.holon (hole creation) and hex_collapse.holon (column collapse)
+// placed on the array's board by the planner's compiled engine. The sculptor's ensemble is the
+// engines' shared cell array, and a hole moves, is created or a column collapses by applying the
+// rule's instance (seed 003 §IV-D, §IV-E, §IV-F): the same rules `holon check` and `holon verify`
+// examine.
 
 #include "planner/BoxEngine.h"
 #include "planner/hex/HexArray.h"
@@ -24,6 +25,9 @@ public:
 
     const BoxEngine& holeEngine() const { return *holeEngine_; }
     const BoxEngine& collapseEngine() const { return *collapseEngine_; }
+    const BoxEngine& growthEngine() const { return *growthEngine_; }
+    /// The hole_create shape, anchored at the growth node.
+    int create() const { return create_; }
     /// The cell states: a module, a hole's rim cell, a hole's centre (empty is 0).
     Value module() const { return module_; }
     Value rim() const { return rim_; }
@@ -37,8 +41,9 @@ public:
 
 private:
     struct Compiled;
-    std::unique_ptr<Compiled> holeSystem_, collapseSystem_;
-    const BoxEngine *holeEngine_ = nullptr, *collapseEngine_ = nullptr;
+    std::unique_ptr<Compiled> holeSystem_, collapseSystem_, growthSystem_;
+    const BoxEngine *holeEngine_ = nullptr, *collapseEngine_ = nullptr, *growthEngine_ = nullptr;
+    int create_ = -1;
     Value module_ = 0, rim_ = 0, centre_ = 0;
     int move_[6] = {};
     int collapse_[6][4][6] = {};

@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <stdexcept>
 
 namespace holon::planner::hex {
 
@@ -192,7 +193,9 @@ void HoleSculptor::activate(std::int64_t k) {
 }
 
 // §IV-E growth node: inside the target, no hole in the 2-hop radius, exactly 11 other modules in
-// it; the 2-hop radius is rearranged into a shepherd group around a new hole at the node.
+// it; the 2-hop radius is rearranged into a shepherd group around a new hole at the node, by
+// hex_growth.holon's hole_create run through the compiled engine. The count below only decides
+// whether --flexible-growth has a module to spill or borrow first; the rule checks the rest.
 void HoleSculptor::tryCreate(std::int64_t k) {
     if (!(*target_)[k]) return;
     int modules = 0;
@@ -219,11 +222,19 @@ void HoleSculptor::tryCreate(std::int64_t k) {
         if (spill < 0 && borrow < 0) return;
         if (borrow >= 0 && options_.keepConnected && splitsLocally(borrow, {borrow}, {})) return;
     }
-    if (spill >= 0) set(spill, rules_->module());
-    if (borrow >= 0) set(borrow, 0);
-    for (std::int64_t o : ring1_) set(k + o, rules_->rim());
-    set(k, rules_->centre());
-    for (std::int64_t o : ring2_) set(k + o, rules_->module());
+    // A spilled module leaves the disk for the spill point, a borrowed one enters an empty disk point:
+    // the disk then holds the 12 modules the rule rearranges (which ones is immaterial).
+    for (std::int64_t o : disk2_) {
+        const std::int64_t i = k + o;
+        if (spill >= 0 && i != k && module(i)) {
+            set(i, 0), set(spill, rules_->module()), spill = -1;
+        } else if (borrow >= 0 && !cells_[i]) {
+            set(borrow, 0), set(i, rules_->module()), borrow = -1;
+        }
+    }
+    const BoxEngine& growth = rules_->growthEngine();
+    if (!growth.matches(cells_.data(), k, rules_->create())) throw std::logic_error("hole_create does not match a growth node with 12 modules");
+    apply(growth, k, rules_->create());
     holeAt_[k] = static_cast<std::int32_t>(holesById_.size());
     holesById_.push_back({k, static_cast<int>(random_.below(6)), time_ + 1, true});
     ++liveHoles_, ++counts_.created;

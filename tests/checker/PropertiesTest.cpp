@@ -209,6 +209,31 @@ TEST_CASE("hex holes: deletion as the paper words it breaks a neighbouring hole,
     CHECK(checker::drawTraceSvg(*pinch.trace, *neck.kept.engine, "pinch-off").find("<polygon") != std::string::npos);
 }
 
+TEST_CASE("hex growth (seed 003 §IV-E): one counting rule makes whole holes and keeps the module count, and without its guards it does not") {
+    const char* blob = "    . . . . .\n   . . . . . .\n  . . . . . M .\n . . . . M M M .\n. . . . M M M M .\n . . M M M M M .\n"
+                       "  . . M M M M .\n   . M . . M .\n    . . . . .\n";
+    const char* everywhere = "    x x x x x\n   x x x x x x\n  x x x x x x x\n x x x x x x x x\nx x x x x x x x x\n x x x x x x x x\n"
+                             "  x x x x x x x\n   x x x x x x\n    x x x x x\n";
+    auto grown = test::checkFrom(rules::librarySystem("hex_growth"), "hex:r4", blob, everywhere, {}, {"holes", "mass_conservation"});
+    CHECK(grown.report.stats.states == 4);  // three disks hold exactly 12 modules; each creation ends the others
+    CHECK(grown.property("holes").verdict == Verdict::Holds);
+    CHECK(grown.property("mass_conservation").verdict == Verdict::Holds);
+    const std::string text = rules::readTextFile(rules::libraryDir() + "/hex_growth.holon");
+    auto without = [&](const std::string& cut, const std::string& instead) {
+        std::string t = text;
+        const auto at = t.find(cut);
+        REQUIRE(at != std::string::npos);
+        return test::parse(t.replace(at, cut.size(), instead));
+    };
+    // Without "no pattern H | C" a creation overlaps a hole next to it.
+    auto overlap = test::checkFrom(without(" and no pattern H | C", ""), "hex:r4", kNeck, everywhere, {}, {"holes"});
+    REQUIRE(overlap.property("holes").verdict == Verdict::Violated);
+    overlap.replayAll();
+    // Counting 11 modules as enough makes a module out of nothing.
+    auto eleven = test::checkFrom(without("count pattern M == 12", "count pattern M >= 11"), "hex:r4", blob, everywhere, {}, {"mass_conservation"});
+    CHECK(eleven.property("mass_conservation").verdict == Verdict::Violated);
+}
+
 TEST_CASE("hex collapse (seed 003 §IV-F): every collapse keeps the mass connected and the holes whole, and without the arc test it does not") {
     const char* blob = "   . . . .\n  . . . . .\n . . . M M .\nM M M M . . .\n . . M . . .\n  . M . . .\n   . . . .\n";
     auto c = test::checkFrom(rules::librarySystem("hex_collapse"), "hex:r3", blob, "");

@@ -163,6 +163,13 @@ TEST_CASE("hex holes stay whole for every configuration of hex:r3, and every rul
     CHECK(result(r, "mass_conservation").verdict == Verdict::Holds);
 }
 
+TEST_CASE("hex growth makes whole holes for every configuration of hex:r3, keeping the module count") {
+    test::World w(rules::librarySystem("hex_growth"), "hex:r3");
+    const auto r = prove(w, {"holes", "mass_conservation"});
+    CHECK(result(r, "holes").verdict == Verdict::Holds);
+    CHECK(result(r, "mass_conservation").verdict == Verdict::Holds);
+}
+
 namespace {
 
 /// planner_general2 on square:3x2 from one F creator, one U creator and a U destroyer outside the
