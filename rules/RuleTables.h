@@ -109,11 +109,10 @@ private:
         const std::size_t i = static_cast<std::size_t>(combo) * alphabet_ + v;
         return (bits[i >> 6] >> (i & 63)) & 1u;
     }
-    /// Whether the guard accepts its site d (a cell outside the region counts as empty with no
-    /// input set).
+    /// Whether the guard accepts `cell` as its site d (a cell outside the region, -1, counts as
+    /// empty with no input set).
     template <class Cells>
-    bool acceptsSite(const GuardNode& g, int d, const Cells& at, const std::int32_t* cells) const {
-        const auto cell = g.around >= 0 ? at.neighbour(cells[g.around], d) : cells[d];
+    bool acceptsSite(const GuardNode& g, int d, const Cells& at, std::int64_t cell) const {
         if (cell < 0) return guardAccepts(g, d, 0, 0);
         const CellValue v = at.value(cell);
         if (v < 64) {
@@ -125,8 +124,17 @@ private:
     /// The guard's sites it accepts, as bits.
     template <class Cells>
     std::uint32_t guardMembers(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
+        if (g.around < 0) [[unlikely]] return ownCellMembers(g, at, cells);
         std::uint32_t set = 0;
-        for (int d = 0; d < static_cast<int>(g.perSite.size()); ++d) set |= static_cast<std::uint32_t>(acceptsSite(g, d, at, cells)) << d;
+        const auto centre = cells[g.around];
+        for (int d = 0; d < static_cast<int>(g.perSite.size()); ++d) set |= static_cast<std::uint32_t>(acceptsSite(g, d, at, at.neighbour(centre, d))) << d;
+        return set;
+    }
+    /// guardMembers of a quantifier over the pattern's own cells (rare: kept out of the hot path).
+    template <class Cells>
+    [[gnu::noinline]] std::uint32_t ownCellMembers(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
+        std::uint32_t set = 0;
+        for (int d = 0; d < static_cast<int>(g.perSite.size()); ++d) set |= static_cast<std::uint32_t>(acceptsSite(g, d, at, cells[d])) << d;
         return set;
     }
     template <class Cells>
@@ -136,8 +144,10 @@ private:
     /// Whether some neighbour is accepted: guardCount(...) > 0, stopping at the first.
     template <class Cells>
     bool guardAny(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
+        if (g.around < 0) [[unlikely]] return ownCellMembers(g, at, cells) != 0;
+        const auto centre = cells[g.around];
         for (int d = 0; d < static_cast<int>(g.perSite.size()); ++d)
-            if (acceptsSite(g, d, at, cells)) return true;
+            if (acceptsSite(g, d, at, at.neighbour(centre, d))) return true;
         return false;
     }
     template <class Cells>
