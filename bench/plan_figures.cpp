@@ -84,7 +84,13 @@ int main(int argc, char** argv) {
         else if (a == "--max-k-gradient" && i + 1 < argc) maxKGradient = std::atoi(argv[++i]);
         else if (a == "--max-k-optimal" && i + 1 < argc) maxKOptimal = std::atoi(argv[++i]);
         else if (a == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
-        else out = a;
+        else if (!a.empty() && a[0] != '-') out = a;
+        else {  // a flag is never an output folder
+            const bool help = a == "--help" || a == "-h";
+            if (!help) std::fprintf(stderr, "plan_figures: unknown option '%s'\n", a.c_str());
+            std::fprintf(help ? stdout : stderr, "usage: plan_figures [OUT] [--max-k K] [--max-k-random K] [--max-k-gradient K] [--max-k-optimal K] [--seed N]\n");
+            return help ? 0 : 2;
+        }
     }
     std::filesystem::create_directories(out);
     std::ofstream csv(out + "/fig7.csv");
