@@ -141,7 +141,7 @@ private:
     int guardCount(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
         return std::popcount(guardMembers(g, at, cells));
     }
-    /// Whether some neighbour is accepted: guardCount(...) > 0, stopping at the first.
+    /// Whether some site is accepted: guardCount(...) > 0, stopping at the first.
     template <class Cells>
     bool guardAny(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
         if (g.around < 0) [[unlikely]] return ownCellMembers(g, at, cells) != 0;

@@ -1,9 +1,10 @@
 // hex_holes.holon, hex_growth.holon and hex_collapse.holon placed on the hex array's board by the
 // planner's compiled engine (seed 003 §IV-D: a hole moves by shifting its three leading shepherds
 // to the trailing edge; §IV-E: a growth node makes a hole; §IV-F: column collapse). The systems
-// name the same cell states in the same order, so their engines share one cell array. An orientation is found by geometry: pattern cell 1 of a
-// hole move is the new centre next to the old one at the anchor; pattern cell 1 of a collapse is
-// the first cell of the column the module steps onto, at gravity + side.
+// name the same cell states in the same order, so their engines share one cell array. An
+// orientation is found by geometry: pattern cell 1 of a hole move is the new centre next to the
+// old one at the anchor; pattern cell 1 of a collapse is the first cell of the column the module
+// steps onto, at gravity + side.
 
 #include "planner/hex/HoleRules.h"
 
