@@ -24,7 +24,7 @@ using namespace holon;
 namespace {
 
 struct Figures {
-    double seconds = 0, states = 0, edges = 0, bytesPerState = 0, peakMiB = 0;
+    double seconds = 0, enumerateSeconds = 0, states = 0, edges = 0, bytesPerState = 0, peakMiB = 0;
 };
 
 Figures runCase(const std::string& name, int threads) {
@@ -37,9 +37,11 @@ Figures runCase(const std::string& name, int threads) {
     options.limits.threads = threads;
     options.recordEdges = false;  // throughput of the search itself
     checker::Explorer ex(engine, options);
+    Figures f;
     const auto start = std::chrono::steady_clock::now();
     if (pixel) {
         ex.addAllLegal();
+        f.enumerateSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     } else {
         std::vector<rules::CellValue> cells(region.size(), 0);
         const int d = model.alphabet().byGlyph('D');
@@ -48,7 +50,6 @@ Figures runCase(const std::string& name, int threads) {
         ex.addInitial(cells.data());
     }
     const auto& s = ex.explore();
-    Figures f;
     f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     f.states = static_cast<double>(s.states);
     f.edges = static_cast<double>(s.edges);
@@ -77,30 +78,30 @@ int main(int argc, char** argv) {
     }
     if (!only.empty()) {
         Figures f = runCase(only, threads);
-        std::printf("%.6f %.0f %.0f %.1f %.1f\n", f.seconds, f.states, f.edges, f.bytesPerState, f.peakMiB);
+        std::printf("%.6f %.6f %.0f %.0f %.1f %.1f\n", f.seconds, f.enumerateSeconds, f.states, f.edges, f.bytesPerState, f.peakMiB);
         return 0;
     }
     char path[4096] = {};
     if (readlink("/proc/self/exe", path, sizeof(path) - 1) <= 0) return 2;
     const std::string self = path;
     std::printf("explorer benchmark: medians of %d runs, %d threads\n", runs, threads);
-    std::printf("%-10s %10s %10s %9s %12s %12s %14s %10s %9s\n", "workload", "states", "edges", "seconds", "states/s", "states/s/core",
-                "edges/s", "bytes/st", "peak MiB");
+    std::printf("%-10s %10s %10s %9s %11s %12s %12s %14s %10s %9s\n", "workload", "states", "edges", "seconds", "enumerate s", "states/s",
+                "states/s/core", "edges/s", "bytes/st", "peak MiB");
     for (const std::string name : {"pixel", "general1"}) {
-        std::vector<double> sec, bps, peak;
+        std::vector<double> sec, enumerate, bps, peak;
         double states = 0, edges = 0;
         for (int r = 0; r < runs; ++r) {
             const std::string cmd = self + " --case " + name + " --threads " + std::to_string(threads);
             FILE* p = popen(cmd.c_str(), "r");
             if (!p) return 2;
             Figures f;
-            if (std::fscanf(p, "%lf %lf %lf %lf %lf", &f.seconds, &f.states, &f.edges, &f.bytesPerState, &f.peakMiB) != 5) return 2;
+            if (std::fscanf(p, "%lf %lf %lf %lf %lf %lf", &f.seconds, &f.enumerateSeconds, &f.states, &f.edges, &f.bytesPerState, &f.peakMiB) != 6) return 2;
             pclose(p);
-            sec.push_back(f.seconds), bps.push_back(f.bytesPerState), peak.push_back(f.peakMiB);
+            sec.push_back(f.seconds), enumerate.push_back(f.enumerateSeconds), bps.push_back(f.bytesPerState), peak.push_back(f.peakMiB);
             states = f.states, edges = f.edges;
         }
         const double s = median(sec);
-        std::printf("%-10s %10.0f %10.0f %9.3f %12.0f %12.0f %14.0f %10.1f %9.1f\n", name.c_str(), states, edges, s, states / s,
+        std::printf("%-10s %10.0f %10.0f %9.3f %11.3f %12.0f %12.0f %14.0f %10.1f %9.1f\n", name.c_str(), states, edges, s, median(enumerate), states / s,
                     states / s / threads, edges / s, median(bps), median(peak));
     }
     return 0;

@@ -50,7 +50,22 @@ StateId Explorer::addInitial(const CellValue* cells) {
     return id;
 }
 
+std::uint64_t Explorer::indexOf(const CellValue* cells) const {
+    std::uint64_t index = 0;
+    for (std::size_t i = 0; i < placeValue_.size(); ++i) index += cells[i] * placeValue_[i];
+    return index;
+}
+
+StateId Explorer::find(const std::uint64_t* packed) const {
+    if (!ranked()) return store_.find(packed);
+    thread_local std::vector<CellValue> cells;
+    cells.resize(engine_->region().size());
+    store_.layout().unpack(packed, cells.data());
+    return rankOf(indexOf(cells.data()));
+}
+
 void Explorer::addAllLegal() {
+    if (store_.capacityUsed() != 0) throw InputError("internal: addAllLegal on an explorer that already holds states");
     const int n = engine_->region().size();
     const int a = engine_->model().alphabet().size();
     const double candidates = std::pow(static_cast<double>(a), n);
@@ -60,10 +75,19 @@ void Explorer::addAllLegal() {
                          " candidate configurations, too many to enumerate; choose a smaller region, raise --max-states, "
                          "or explore from a configuration with --from");
     const std::uint64_t total = static_cast<std::uint64_t>(std::llround(candidates));
+    // The ranking costs 12 bytes per 64 candidates; it replaces the hash table when that fits
+    // comfortably in the memory bound.
+    const bool rank = static_cast<double>(total) / 64.0 * 12.0 <= static_cast<double>(options_.limits.memoryBytes) / 4.0;
+    if (rank) {
+        legalBits_.assign((total + 63) / 64, 0);
+        placeValue_.assign(n, 1);
+        for (int i = 1; i < n; ++i) placeValue_[i] = placeValue_[i - 1] * static_cast<std::uint64_t>(a);
+    }
     const int threads = std::max(1, options_.limits.threads);
-    const std::uint64_t batch = 1u << 20;
+    const std::uint64_t batch = 1u << 20;  // a multiple of 64: threads set bits in disjoint words
     // Enumerate in batches: threads test legality of disjoint index ranges into local lists (in
-    // index order), then the lists are inserted in a fixed order so ids are deterministic.
+    // index order), then the lists are stored in a fixed order so ids are deterministic (and, when
+    // ranked, equal to ranks).
     for (std::uint64_t base = 0; base < total; base += batch * threads) {
         std::vector<std::vector<std::uint64_t>> found(threads);
         auto work = [&](int t) {
@@ -79,6 +103,7 @@ void Explorer::addAllLegal() {
                 if (ev.legal()) {
                     store_.layout().pack(ev.cells(), packed.data());
                     found[t].insert(found[t].end(), packed.begin(), packed.end());
+                    if (rank) legalBits_[idx >> 6] |= std::uint64_t{1} << (idx & 63);
                 }
                 // Odometer step; the evaluator follows the few cells that change.
                 for (int i = 0; i < n; ++i) {
@@ -98,12 +123,19 @@ void Explorer::addAllLegal() {
             if (store_.size() + count > options_.limits.maxStates)
                 throw InputError("region " + engine_->region().spec() + " has more than --max-states=" +
                                  std::to_string(options_.limits.maxStates) + " legal configurations; raise the limit or choose a smaller region");
-            store_.reserve(count);
+            if (!rank) store_.reserve(count);
             parent_.resize(store_.capacityUsed() + count, kNoState);
             via_.resize(store_.capacityUsed() + count, -1);
             for (std::size_t k = 0; k < count; ++k) {
-                auto [id, inserted] = store_.insert(&list[k * store_.layout().words()]);
-                if (!inserted) continue;
+                const std::uint64_t* packed = &list[k * store_.layout().words()];
+                StateId id;
+                if (rank) {
+                    id = store_.append(packed);
+                } else {
+                    const auto [added, inserted] = store_.insert(packed);
+                    if (!inserted) continue;
+                    id = added;
+                }
                 frontier_.push_back(id);
                 if (options_.onState) {
                     unpack(id, cells.data());
@@ -112,54 +144,95 @@ void Explorer::addAllLegal() {
             }
         }
     }
+    if (rank) {
+        rankBefore_.resize(legalBits_.size());
+        StateId before = 0;
+        for (std::size_t w = 0; w < legalBits_.size(); ++w) rankBefore_[w] = before, before += static_cast<StateId>(std::popcount(legalBits_[w]));
+    }
+    complete_ = true;
 }
 
-void Explorer::expand(StateId id, rules::Engine::Evaluator& ev, std::vector<CellValue>& cells,
-                      std::vector<StateId>& next, std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>>& edges,
-                      std::vector<StateId>& terminal, std::uint64_t& edgeCount) {
-    // First collect the successors, packed by patching the parent's words and with their table
-    // slots prefetched; then insert them, so the cache misses of the hash table overlap.
+void Explorer::gather(StateId id, std::vector<CellValue>& cells, Successors& out) const {
+    // Each successor is packed by patching the parent's words; its table slot is prefetched.
     const StateLayout& layout = store_.layout();
     const int words = layout.words();
     unpack(id, cells.data());
-    ev.load(cells.data());
     const std::uint64_t* base = store_.state(id);
     CellValue saved[rules::Engine::kMaxCells];
-    thread_local std::vector<std::uint64_t> batch, hashes;
-    thread_local std::vector<std::int32_t> batchVia;
-    batch.clear(), hashes.clear(), batchVia.clear();
-    engine_->forEachMatch(ev.cells(), [&](int p) {
-        ev.apply(p, saved);
-        if (ev.legal()) {
-            const std::size_t at = batch.size();
-            batch.insert(batch.end(), base, base + words);
-            const rules::Engine::Placed& placed = engine_->instances()[p];
-            for (int k = 0; k < placed.size; ++k) layout.set(&batch[at], placed.cells[k], ev.cells()[placed.cells[k]]);
-            batchVia.push_back(p);
+    out.from = id;
+    out.packed.clear(), out.keys.clear(), out.via.clear();
+    const std::uint64_t index = ranked() ? indexOf(cells.data()) : 0;
+    engine_->forEachMatch(cells.data(), [&](int p) {
+        engine_->apply(cells.data(), p, saved);
+        const std::size_t at = out.packed.size();
+        out.packed.insert(out.packed.end(), base, base + words);
+        const rules::Engine::Placed& placed = engine_->instances()[p];
+        std::uint64_t successorIndex = index;  // wraps below zero and back: unsigned arithmetic
+        for (int k = 0; k < placed.size; ++k) {
+            const int c = placed.cells[k];
+            layout.set(&out.packed[at], c, cells[c]);
+            if (ranked()) successorIndex += (static_cast<std::uint64_t>(cells[c]) - saved[k]) * placeValue_[c];
         }
-        ev.undo(p, saved);
+        if (ranked()) out.keys.push_back(successorIndex);
+        out.via.push_back(p);
+        engine_->undo(cells.data(), p, saved);
     });
-    for (std::size_t k = 0; k < batchVia.size(); ++k) hashes.push_back(store_.prefetch(&batch[k * words]));
+    if (!ranked())
+        for (std::size_t k = 0; k < out.via.size(); ++k) out.keys.push_back(store_.prefetch(&out.packed[k * words]));
+}
+
+void Explorer::resolve(const Successors& s, rules::Engine::Evaluator& ev, std::vector<CellValue>& cells, Found& found) {
+    // Only legal states are ever stored, so a successor found needs no constraint check; one not
+    // found is checked with the incremental evaluator, or, when the store already holds every legal
+    // configuration (--all), known to be illegal.
+    const int words = store_.layout().words();
+    CellValue saved[rules::Engine::kMaxCells];
     thread_local std::vector<StateId> seen;
     seen.clear();
-    for (std::size_t k = 0; k < batchVia.size(); ++k) {
-        auto [sid, inserted] = store_.insert(&batch[k * words], hashes[k]);
-        if (inserted) {
-            parent_[sid] = id;
-            via_[sid] = batchVia[k];
-            next.push_back(sid);
-            if (options_.onState) {
-                layout.unpack(&batch[k * words], cells.data());
-                options_.onState(sid, cells.data());
+    bool loaded = false;
+    for (std::size_t k = 0; k < s.via.size(); ++k) {
+        const std::uint64_t* successor = &s.packed[k * words];
+        StateId sid = ranked() ? rankOf(s.keys[k]) : store_.find(successor, s.keys[k]);
+        if (sid == kNoState) {
+            if (complete_) continue;
+            if (!loaded) unpack(s.from, cells.data()), ev.load(cells.data()), loaded = true;
+            ev.apply(s.via[k], saved);
+            const bool legal = ev.legal();
+            if (legal) {
+                const auto [added, inserted] = store_.insert(successor, s.keys[k]);
+                sid = added;
+                if (inserted) {
+                    parent_[sid] = s.from;
+                    via_[sid] = s.via[k];
+                    found.next.push_back(sid);
+                    if (options_.onState) options_.onState(sid, ev.cells());
+                }
             }
+            ev.undo(s.via[k], saved);
+            if (!legal) continue;
         }
         // Two instances with the same effect are one edge of the graph.
         if (std::find(seen.begin(), seen.end(), sid) != seen.end()) continue;
         seen.push_back(sid);
-        if (options_.recordEdges) edges.push_back({id, {sid, batchVia[k]}});
+        if (options_.recordEdges) found.edges.push_back({s.from, {sid, s.via[k]}});
     }
-    if (seen.empty()) terminal.push_back(id);
-    edgeCount += seen.size();
+    if (seen.empty()) found.terminal.push_back(s.from);
+    found.edgeCount += seen.size();
+}
+
+void Explorer::expandRange(std::size_t lo, std::size_t hi, Found& found) {
+    // A software pipeline over the frontier, so that a look-up finds its data in cache: the
+    // successors of state k are generated (their table slots prefetched) while those of state k - 1
+    // have their stored states prefetched and those of state k - 2 are looked up.
+    std::vector<CellValue> cells(engine_->region().size());
+    rules::Engine::Evaluator ev(*engine_);
+    Successors ring[3];
+    for (std::size_t k = lo; k < hi + 2; ++k) {
+        if (k < hi) gather(frontier_[k], cells, ring[k % 3]);
+        if (k >= lo + 1 && k - 1 < hi && !ranked())
+            for (std::uint64_t h : ring[(k - 1) % 3].keys) store_.prefetchStored(h);
+        if (k >= lo + 2) resolve(ring[(k - 2) % 3], ev, cells, found);
+    }
 }
 
 const ExploreStats& Explorer::explore() {
@@ -170,7 +243,7 @@ const ExploreStats& Explorer::explore() {
     const std::uint64_t branching = std::max<std::size_t>(1, engine_->instances().size());
     // A chunk reserves room for chunk * branching new states; keep that headroom near a million.
     const std::uint64_t chunk = std::max<std::uint64_t>(64, std::min<std::uint64_t>(1u << 14, (1u << 20) / branching));
-    std::vector<std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>>> edges(threads);
+    std::vector<Found> found(threads);
     const std::size_t edgeBytes = options_.recordEdges ? 12 : 0;
     stats_ = {};
     while (!frontier_.empty() && stats_.stopped == StopReason::Finished) {
@@ -178,7 +251,7 @@ const ExploreStats& Explorer::explore() {
         for (std::size_t pos = 0; pos < frontier_.size(); pos += chunk) {
             const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
             std::size_t edgesHeld = 0;
-            for (const auto& e : edges) edgesHeld += e.size();
+            for (const Found& f : found) edgesHeld += f.edges.size();
             const std::size_t bytes = store_.bytes() + parent_.size() * 8 + edgesHeld * edgeBytes;
             if (store_.size() >= options_.limits.maxStates) stats_.stopped = StopReason::MaxStates;
             else if (options_.limits.timeoutSeconds > 0 && elapsed >= options_.limits.timeoutSeconds) stats_.stopped = StopReason::Timeout;
@@ -188,26 +261,25 @@ const ExploreStats& Explorer::explore() {
                 break;
             }
             const std::size_t end = std::min(frontier_.size(), pos + chunk);
-            store_.reserve((end - pos) * branching);
-            parent_.resize(store_.capacityUsed() + (end - pos) * branching, kNoState);
-            via_.resize(parent_.size(), -1);
-            std::vector<std::vector<StateId>> next(threads), terminal(threads);
-            std::vector<std::uint64_t> edgeCounts(threads, 0);
+            if (!complete_) {  // a complete store gains no states
+                store_.reserve((end - pos) * branching);
+                parent_.resize(store_.capacityUsed() + (end - pos) * branching, kNoState);
+                via_.resize(parent_.size(), -1);
+            }
             auto work = [&](int t) {
-                std::vector<CellValue> cells(engine_->region().size());
-                rules::Engine::Evaluator ev(*engine_);
                 const std::size_t per = (end - pos + threads - 1) / threads;
-                const std::size_t lo = pos + per * t, hi = std::min(end, lo + per);
-                for (std::size_t k = lo; k < hi; ++k) expand(frontier_[k], ev, cells, next[t], edges[t], terminal[t], edgeCounts[t]);
+                const std::size_t lo = std::min(end, pos + per * t), hi = std::min(end, lo + per);
+                expandRange(lo, hi, found[t]);
             };
             std::vector<std::thread> pool;
             for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
             work(0);
             for (auto& th : pool) th.join();
-            for (int t = 0; t < threads; ++t) {
-                nextLevel.insert(nextLevel.end(), next[t].begin(), next[t].end());
-                terminal_.insert(terminal_.end(), terminal[t].begin(), terminal[t].end());
-                stats_.edges += edgeCounts[t];
+            for (Found& f : found) {
+                nextLevel.insert(nextLevel.end(), f.next.begin(), f.next.end());
+                terminal_.insert(terminal_.end(), f.terminal.begin(), f.terminal.end());
+                stats_.edges += f.edgeCount;
+                f.next.clear(), f.terminal.clear(), f.edgeCount = 0;
             }
             stats_.states = store_.size();
             if (options_.onProgress && std::chrono::duration<double>(Clock::now() - last).count() > 0.5) {
@@ -232,22 +304,23 @@ const ExploreStats& Explorer::explore() {
     parent_.shrink_to_fit();
     via_.resize(store_.capacityUsed());
     via_.shrink_to_fit();
-    if (options_.recordEdges) buildRows(edges);
+    if (options_.recordEdges) buildRows(found);
     stats_.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    stats_.bytes = store_.bytes() + parent_.size() * 8 + succ_.size() * 8 + rowStart_.size() * 8;
+    stats_.bytes = store_.bytes() + rankingBytes() + parent_.size() * 8 + succ_.size() * 8 + rowStart_.size() * 8;
     return stats_;
 }
 
-void Explorer::buildRows(std::vector<std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>>>& perThread) {
+void Explorer::buildRows(std::vector<Found>& perThread) {
     const std::size_t n = store_.capacityUsed();
     rowStart_.assign(n + 1, 0);
-    for (const auto& list : perThread)
-        for (const auto& e : list) ++rowStart_[e.first + 1];
+    for (const Found& f : perThread)
+        for (const auto& e : f.edges) ++rowStart_[e.first + 1];
     for (std::size_t i = 0; i < n; ++i) rowStart_[i + 1] += rowStart_[i];
     succ_.resize(rowStart_[n]);
     succVia_.resize(rowStart_[n]);
     std::vector<std::uint64_t> fill(rowStart_.begin(), rowStart_.end() - 1);
-    for (auto& list : perThread) {
+    for (Found& f : perThread) {
+        auto& list = f.edges;
         for (const auto& e : list) {
             succ_[fill[e.first]] = e.second.first;
             succVia_[fill[e.first]++] = e.second.second;
@@ -272,7 +345,8 @@ std::vector<std::pair<StateId, std::int32_t>> Explorer::pathTo(StateId id) const
 }
 
 std::size_t Explorer::bytesPerState() const {
-    return static_cast<std::size_t>(std::ceil(store_.bytesPerState())) + sizeof(StateId) + sizeof(std::int32_t);
+    const double ranking = static_cast<double>(rankingBytes()) / static_cast<double>(std::max<std::uint64_t>(1, store_.size()));
+    return static_cast<std::size_t>(std::ceil(store_.bytesPerState() + ranking)) + sizeof(StateId) + sizeof(std::int32_t);
 }
 
 }  // namespace holon::checker

@@ -6,6 +6,7 @@
 #include "checker/StateStore.h"
 #include "rules/Engine.h"
 
+#include <bit>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -62,6 +63,8 @@ public:
     const StateStore& store() const { return store_; }
     const ExploreStats& stats() const { return stats_; }
     void unpack(StateId id, CellValue* cells) const { store_.layout().unpack(store_.state(id), cells); }
+    /// The id of a stored configuration (packed by store().layout()), or kNoState.
+    StateId find(const std::uint64_t* packed) const;
     std::vector<CellValue> cells(StateId id) const;
     /// BFS tree: the state a state was first reached from (kNoState for initial ones), and the placed
     /// instance that led to it.
@@ -82,10 +85,22 @@ public:
     std::size_t bytesPerState() const;
 
 private:
-    void expand(StateId id, rules::Engine::Evaluator& ev, std::vector<CellValue>& cells, std::vector<StateId>& next,
-                std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>>& edges, std::vector<StateId>& terminal,
-                std::uint64_t& edgeCount);
-    void buildRows(std::vector<std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>>>& perThread);
+    /// The successors of one state, packed, with their hashes and the instances that lead to them.
+    struct Successors {
+        StateId from = kNoState;
+        std::vector<std::uint64_t> packed, keys;  // keys: hash in the store, or the candidate index when ranked
+        std::vector<std::int32_t> via;
+    };
+    /// Per worker thread: what it found in one chunk of the frontier.
+    struct Found {
+        std::vector<StateId> next, terminal;
+        std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>> edges;
+        std::uint64_t edgeCount = 0;
+    };
+    void gather(StateId id, std::vector<CellValue>& cells, Successors& out) const;
+    void resolve(const Successors& s, rules::Engine::Evaluator& ev, std::vector<CellValue>& cells, Found& found);
+    void expandRange(std::size_t lo, std::size_t hi, Found& found);
+    void buildRows(std::vector<Found>& perThread);
 
     const rules::Engine* engine_;
     Options options_;
@@ -94,6 +109,20 @@ private:
     std::vector<std::int32_t> via_;
     std::vector<StateId> frontier_;
     std::vector<StateId> terminal_;
+    bool complete_ = false;  // the store holds every legal configuration (after addAllLegal)
+    // After addAllLegal, when the candidates are few enough: a perfect hash. Candidate
+    // configuration c has index sum_i c[i] * a^i (a the alphabet size); a bit per candidate says
+    // whether it is legal, and a legal one's id is its rank among the legal ones.
+    std::vector<std::uint64_t> legalBits_;
+    std::vector<StateId> rankBefore_;  // per word of legalBits_: legal candidates before it
+    std::vector<std::uint64_t> placeValue_;  // a^i
+    bool ranked() const { return !legalBits_.empty(); }
+    std::size_t rankingBytes() const { return legalBits_.size() * 8 + rankBefore_.size() * sizeof(StateId) + placeValue_.size() * 8; }
+    std::uint64_t indexOf(const CellValue* cells) const;
+    StateId rankOf(std::uint64_t index) const {
+        const std::uint64_t word = legalBits_[index >> 6], bit = std::uint64_t{1} << (index & 63);
+        return word & bit ? rankBefore_[index >> 6] + static_cast<StateId>(std::popcount(word & (bit - 1))) : kNoState;
+    }
     std::vector<std::uint64_t> rowStart_;
     std::vector<StateId> succ_;
     std::vector<std::int32_t> succVia_;

@@ -90,7 +90,7 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
     auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
 
     auto consider = [&](StateId c, int modules) {
-        const StateId other = ex.store().find(packed.data());
+        const StateId other = ex.find(packed.data());
         if (other == kNoState || other == c || isSuccessor(ex, c, other)) return;
         if (comps.of[c] != comps.of[other]) return;  // unreachable both ways
         if (!symmetricGraph && graph.shortestPath(c, other).empty()) return;

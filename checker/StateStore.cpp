@@ -45,28 +45,50 @@ StateStore::StateStore(const StateLayout& layout) : layout_(layout) { reserve(10
 void StateStore::reserve(std::uint64_t more) {
     const std::uint64_t need = static_cast<std::uint64_t>(capacityUsed()) + more;
     if (need >= 0xFFFFFFF0ull) throw InputError("more than 4 billion states; lower --max-states");
-    if (need > capacity_) {
-        capacity_ = std::max<std::size_t>(need, capacity_ + capacity_ / 2);
-        arena_.resize(capacity_ * layout_.words());
-        holeFlags_.resize(capacity_, 0);
-    }
-    // Keep the table at most three quarters full even if every reserved id is inserted (in practice
-    // far fewer are: most successors are already known).
+    growArena(need);
+    // Keep the table at most three quarters full even if the arena fills up (in practice far
+    // fewer states are inserted: most successors are already known). Ids then stay below the slot
+    // count, so the tag width changes only when the table is rebuilt anyway.
     std::size_t want = 1024;
-    while (want * 3 < 4 * need) want <<= 1;
-    if (want <= slotCount_) return;
-    auto slots = std::make_unique<std::atomic<StateId>[]>(want);
-    for (std::size_t i = 0; i < want; ++i) slots[i].store(0, std::memory_order_relaxed);
-    const std::size_t mask = want - 1;
-    for (std::size_t i = 0; i < slotCount_; ++i) {
-        const StateId s = slots_[i].load(std::memory_order_relaxed);
-        if (!s) continue;
-        std::size_t pos = layout_.hash(state(s - 1)) & mask;
-        while (slots[pos].load(std::memory_order_relaxed)) pos = (pos + 1) & mask;
-        slots[pos].store(s, std::memory_order_relaxed);
-    }
-    slots_ = std::move(slots);
+    while (want * 3 < 4 * capacity_) want <<= 1;
+    if (want > slotCount_) rebuildTable(want);
+}
+
+void StateStore::growArena(std::size_t need) {
+    if (need <= capacity_) return;
+    capacity_ = std::max<std::size_t>(need, capacity_ + capacity_ / 2);
+    arena_.resize(capacity_ * layout_.words());
+    holeFlags_.resize(capacity_, 0);
+}
+
+StateId StateStore::append(const std::uint64_t* packed) {
+    const StateId id = next_.load(std::memory_order_relaxed);
+    if (id >= 0xFFFFFFF0u) throw InputError("more than 4 billion states; lower --max-states");
+    growArena(static_cast<std::size_t>(id) + 1);
+    std::memcpy(&arena_[static_cast<std::size_t>(id) * layout_.words()], packed, sizeof(std::uint64_t) * layout_.words());
+    next_.store(id + 1, std::memory_order_relaxed);
+    ++appended_;
+    return id;
+}
+
+void StateStore::rebuildTable(std::size_t want) {
+    std::unique_ptr<std::atomic<std::uint32_t>[]> old = std::move(slots_);
+    const std::size_t oldCount = slotCount_;
+    const std::uint32_t oldMask = tagMask_;
+    slots_ = std::make_unique<std::atomic<std::uint32_t>[]>(want);
     slotCount_ = want;
+    const int idBits = std::bit_width(want);
+    tagMask_ = idBits >= 32 ? 0 : ~std::uint32_t{0} << idBits;
+    for (std::size_t i = 0; i < want; ++i) slots_[i].store(0, std::memory_order_relaxed);
+    for (std::size_t i = 0; i < oldCount; ++i) {
+        const std::uint32_t s = old[i].load(std::memory_order_relaxed);
+        if (!s) continue;
+        const StateId id = (s & ~oldMask) - 1;
+        const std::uint64_t h = layout_.hash(state(id));
+        std::size_t pos = h & (want - 1);
+        while (slots_[pos].load(std::memory_order_relaxed)) pos = (pos + 1) & (want - 1);
+        slots_[pos].store(tagOf(h) | (id + 1), std::memory_order_relaxed);
+    }
 }
 
 namespace {
@@ -85,57 +107,49 @@ void StateStore::shrinkToFit() {
     holeFlags_.resize(capacity_);
     holeFlags_.shrink_to_fit();
     std::size_t want = 1024;
-    while (want < 2 * used) want <<= 1;
-    auto slots = std::make_unique<std::atomic<StateId>[]>(want);
-    for (std::size_t i = 0; i < want; ++i) slots[i].store(0, std::memory_order_relaxed);
-    for (std::size_t i = 0; i < slotCount_; ++i) {
-        const StateId s = slots_[i].load(std::memory_order_relaxed);
-        if (!s) continue;
-        std::size_t pos = layout_.hash(state(s - 1)) & (want - 1);
-        while (slots[pos].load(std::memory_order_relaxed)) pos = (pos + 1) & (want - 1);
-        slots[pos].store(s, std::memory_order_relaxed);
-    }
-    slots_ = std::move(slots);
-    slotCount_ = want;
+    while (want < 2 * (used - appended_)) want <<= 1;
+    rebuildTable(want);
 }
 
 std::pair<StateId, bool> StateStore::insert(const std::uint64_t* packed, std::uint64_t hash) {
     const int words = layout_.words();
     const std::size_t mask = slotCount_ - 1;
+    const std::uint32_t tag = tagOf(hash);
     std::size_t pos = hash & mask;
     StateId mine = kNoState;
     while (true) {
-        StateId s = slots_[pos].load(std::memory_order_acquire);
+        std::uint32_t s = slots_[pos].load(std::memory_order_acquire);
         if (s == 0) {
             if (mine == kNoState) {
                 mine = next_.fetch_add(1, std::memory_order_relaxed);
                 std::memcpy(&arena_[static_cast<std::size_t>(mine) * words], packed, sizeof(std::uint64_t) * words);
             }
-            if (slots_[pos].compare_exchange_strong(s, mine + 1, std::memory_order_acq_rel)) return {mine, true};
+            if (slots_[pos].compare_exchange_strong(s, tag | (mine + 1), std::memory_order_acq_rel)) return {mine, true};
         }
-        if (sameWords(state(s - 1), packed, words)) {
+        if ((s & tagMask_) == tag && sameWords(state(idIn(s)), packed, words)) {
             if (mine != kNoState) {
                 holeFlags_[mine] = 1;
                 holes_.fetch_add(1, std::memory_order_relaxed);
             }
-            return {s - 1, false};
+            return {idIn(s), false};
         }
         pos = (pos + 1) & mask;
     }
 }
 
-StateId StateStore::find(const std::uint64_t* packed) const {
+StateId StateStore::find(const std::uint64_t* packed, std::uint64_t hash) const {
     const int words = layout_.words();
     const std::size_t mask = slotCount_ - 1;
-    for (std::size_t pos = layout_.hash(packed) & mask;; pos = (pos + 1) & mask) {
-        const StateId s = slots_[pos].load(std::memory_order_acquire);
+    const std::uint32_t tag = tagOf(hash);
+    for (std::size_t pos = hash & mask;; pos = (pos + 1) & mask) {
+        const std::uint32_t s = slots_[pos].load(std::memory_order_acquire);
         if (s == 0) return kNoState;
-        if (sameWords(state(s - 1), packed, words)) return s - 1;
+        if ((s & tagMask_) == tag && sameWords(state(idIn(s)), packed, words)) return idIn(s);
     }
 }
 
 std::size_t StateStore::bytes() const {
-    return arena_.size() * sizeof(std::uint64_t) + slotCount_ * sizeof(StateId) + holeFlags_.size();
+    return arena_.size() * sizeof(std::uint64_t) + slotCount_ * sizeof(std::uint32_t) + holeFlags_.size();
 }
 
 double StateStore::bytesPerState() const {

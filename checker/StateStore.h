@@ -49,6 +49,10 @@ public:
     /// Releases the headroom reserve() kept: the table is rebuilt at most half full and the arena cut
     /// to the states stored. Call only while no thread inserts.
     void shrinkToFit();
+    /// Adds a state to the arena without indexing it: the caller knows it is new and finds it by
+    /// other means (the explorer ranks a complete enumeration). A store used this way is never
+    /// searched. Call only while no thread inserts.
+    StateId append(const std::uint64_t* packed);
     /// Thread-safe: the id of the state, and whether this call added it.
     std::pair<StateId, bool> insert(const std::uint64_t* packed) { return insert(packed, layout_.hash(packed)); }
     std::pair<StateId, bool> insert(const std::uint64_t* packed, std::uint64_t hash);
@@ -58,7 +62,18 @@ public:
         __builtin_prefetch(&slots_[h & (slotCount_ - 1)]);
         return h;
     }
-    StateId find(const std::uint64_t* packed) const;
+    /// The second stage of a look-up pipeline: once prefetch()'s slot is in cache, hints the cache
+    /// about the first stored state whose tag matches, the one find() and insert() compare against.
+    void prefetchStored(std::uint64_t hash) const {
+        const std::uint32_t tag = tagOf(hash);
+        for (std::size_t pos = hash & (slotCount_ - 1);; pos = (pos + 1) & (slotCount_ - 1)) {
+            const std::uint32_t s = slots_[pos].load(std::memory_order_relaxed);
+            if (!s) return;
+            if ((s & tagMask_) == tag) return __builtin_prefetch(state(idIn(s)));
+        }
+    }
+    StateId find(const std::uint64_t* packed) const { return find(packed, layout_.hash(packed)); }
+    StateId find(const std::uint64_t* packed, std::uint64_t hash) const;
     const std::uint64_t* state(StateId id) const { return &arena_[static_cast<std::size_t>(id) * layout_.words()]; }
     /// An id reserved by a thread that then found its state already inserted by another thread.
     bool isHole(StateId id) const { return holeFlags_[id] != 0; }
@@ -67,14 +82,23 @@ public:
     std::size_t bytes() const;
 
 private:
+    // A slot is 0 (empty) or id + 1 in its low idBits_ bits and, above them, a tag: the same bits of
+    // the state's hash. Most probes that meet another state are then rejected without reading it.
+    std::uint32_t tagOf(std::uint64_t hash) const { return static_cast<std::uint32_t>(hash >> 32) & tagMask_; }
+    StateId idIn(std::uint32_t slot) const { return (slot & ~tagMask_) - 1; }
+    void rebuildTable(std::size_t slots);
+
     StateLayout layout_;
     std::vector<std::uint64_t> arena_;
-    std::unique_ptr<std::atomic<StateId>[]> slots_;  // 0 empty, id + 1 otherwise
+    std::unique_ptr<std::atomic<std::uint32_t>[]> slots_;
     std::size_t slotCount_ = 0;
+    std::uint32_t tagMask_ = 0;
     std::vector<std::uint8_t> holeFlags_;
     std::atomic<StateId> next_{0};
     std::atomic<StateId> holes_{0};
     std::size_t capacity_ = 0;  // states the arena holds without growing
+    std::size_t appended_ = 0;  // states added by append(), not in the table
+    void growArena(std::size_t need);
 };
 
 }  // namespace holon::checker

@@ -113,7 +113,14 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
         neighbourBits_.assign(region.size(), 0);
         for (int i = 0; i < region.size(); ++i)
             for (int d = 0; d < lattice.degree(); ++d)
-                if (int j = region.neighbour(i, d); j >= 0) neighbourBits_[i] |= std::uint64_t{1} << j;
+                if (int j = region.neighbour(i, d); j >= 0) {
+                    neighbourBits_[i] |= std::uint64_t{1} << j;
+                    auto it = std::find_if(shifts_.begin(), shifts_.end(), [&](const Shift& s) { return s.delta == j - i; });
+                    if (it == shifts_.end()) it = shifts_.insert(shifts_.end(), {j - i, 0});
+                    it->from |= std::uint64_t{1} << i;
+                }
+        // An irregular region needs many shifts; then the cell-by-cell walk is cheaper.
+        if (static_cast<int>(shifts_.size()) > 2 * lattice.degree()) shifts_.clear();
     }
 }
 
@@ -251,6 +258,15 @@ bool Engine::Evaluator::fastHolds(const CompiledExpr& e) const {
         const std::uint64_t m = members_[e.predicate];
         if (!m) return true;
         std::uint64_t reached = m & (~m + 1), frontier = reached;
+        if (!engine_->shifts_.empty()) {
+            // Grow the reached set a layer at a time; a cell with no neighbour in m fails at once.
+            if ((m & (m - 1)) && (m & ~engine_->neighboursOf(m))) return false;
+            while (frontier) {
+                frontier = engine_->neighboursOf(frontier) & m & ~reached;
+                reached |= frontier;
+            }
+            return reached == m;
+        }
         while (frontier) {
             const int i = std::countr_zero(frontier);
             frontier &= frontier - 1;

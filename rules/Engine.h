@@ -152,6 +152,19 @@ private:
     std::vector<CompiledExpr> compiledConstraints_;
     CompiledExpr compileExpr(const Expr& e) const;
     std::vector<std::uint64_t> neighbourBits_;  // small regions: per cell, its neighbours as a mask
+    /// Small regions: the neighbours of a set of cells as a few word shifts. Cells whose neighbour
+    /// sits `delta` indices away form one mask (in a box, one per direction), so the neighbours of
+    /// every cell in r are the union over steps of (r & from) shifted by delta.
+    struct Shift {
+        int delta;
+        std::uint64_t from;
+    };
+    std::vector<Shift> shifts_;
+    std::uint64_t neighboursOf(std::uint64_t r) const {
+        std::uint64_t out = 0;
+        for (const Shift& s : shifts_) out |= s.delta > 0 ? (r & s.from) << s.delta : (r & s.from) >> -s.delta;
+        return out;
+    }
 };
 
 }  // namespace holon::rules
