@@ -56,12 +56,12 @@ std::uint64_t Explorer::indexOf(const CellValue* cells) const {
     return index;
 }
 
-StateId Explorer::find(const std::uint64_t* packed) const {
-    if (!ranked()) return store_.find(packed);
-    thread_local std::vector<CellValue> cells;
-    cells.resize(engine_->region().size());
-    store_.layout().unpack(packed, cells.data());
-    return rankOf(indexOf(cells.data()));
+StateId Explorer::find(const CellValue* cells) const {
+    if (ranked()) return rankOf(indexOf(cells));
+    thread_local std::vector<std::uint64_t> packed;
+    packed.resize(store_.layout().words());
+    store_.layout().pack(cells, packed.data());
+    return store_.find(packed.data());
 }
 
 void Explorer::addAllLegal() {
@@ -158,24 +158,24 @@ void Explorer::gather(StateId id, std::vector<CellValue>& cells, Successors& out
     const int words = layout.words();
     unpack(id, cells.data());
     const std::uint64_t* base = store_.state(id);
-    CellValue saved[rules::Engine::kMaxCells];
     out.from = id;
     out.packed.clear(), out.keys.clear(), out.via.clear();
     const std::uint64_t index = ranked() ? indexOf(cells.data()) : 0;
     engine_->forEachMatch(cells.data(), [&](int p) {
-        engine_->apply(cells.data(), p, saved);
         const std::size_t at = out.packed.size();
-        out.packed.insert(out.packed.end(), base, base + words);
+        out.packed.resize(at + words);
+        std::uint64_t* successor = &out.packed[at];
+        for (int w = 0; w < words; ++w) successor[w] = base[w];
         const rules::Engine::Placed& placed = engine_->instances()[p];
         std::uint64_t successorIndex = index;  // wraps below zero and back: unsigned arithmetic
         for (int k = 0; k < placed.size; ++k) {
             const int c = placed.cells[k];
-            layout.set(&out.packed[at], c, cells[c]);
-            if (ranked()) successorIndex += (static_cast<std::uint64_t>(cells[c]) - saved[k]) * placeValue_[c];
+            const CellValue v = engine_->rewritten(cells.data(), placed, k);
+            layout.set(successor, c, v);
+            if (ranked()) successorIndex += (static_cast<std::uint64_t>(v) - cells[c]) * placeValue_[c];
         }
         if (ranked()) out.keys.push_back(successorIndex);
         out.via.push_back(p);
-        engine_->undo(cells.data(), p, saved);
     });
     if (!ranked())
         for (std::size_t k = 0; k < out.via.size(); ++k) out.keys.push_back(store_.prefetch(&out.packed[k * words]));

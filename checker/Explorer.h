@@ -63,8 +63,8 @@ public:
     const StateStore& store() const { return store_; }
     const ExploreStats& stats() const { return stats_; }
     void unpack(StateId id, CellValue* cells) const { store_.layout().unpack(store_.state(id), cells); }
-    /// The id of a stored configuration (packed by store().layout()), or kNoState.
-    StateId find(const std::uint64_t* packed) const;
+    /// The id of a stored configuration, or kNoState.
+    StateId find(const CellValue* cells) const;
     std::vector<CellValue> cells(StateId id) const;
     /// BFS tree: the state a state was first reached from (kNoState for initial ones), and the placed
     /// instance that led to it.

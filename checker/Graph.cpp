@@ -23,19 +23,29 @@ using Csr = boost::compressed_sparse_row_graph<boost::directedS, boost::no_prope
 
 Csr buildCsr(const Explorer& ex, bool bothWays, const std::vector<char>* keep = nullptr, bool reversed = false) {
     if (!ex.hasEdges()) throw InputError("internal: the graph was explored without recording edges");
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
     const auto& row = ex.rowStart();
     const auto& succ = ex.successors();
-    edges.reserve(succ.size() * (bothWays ? 2 : 1));
-    for (std::size_t s = 0; s + 1 < row.size(); ++s)
-        for (std::uint64_t e = row[s]; e < row[s + 1]; ++e) {
-            if (keep && !(*keep)[e]) continue;
-            if (reversed) edges.push_back({succ[e], static_cast<std::uint32_t>(s)});
-            else edges.push_back({static_cast<std::uint32_t>(s), succ[e]});
-            if (bothWays) edges.push_back({succ[e], static_cast<std::uint32_t>(s)});
-        }
-    std::sort(edges.begin(), edges.end());
-    return Csr(boost::edges_are_sorted, edges.begin(), edges.end(), row.size() - 1);
+    const std::size_t n = row.size() - 1;
+    // Edges sorted by (source, target) without a comparison sort over all of them: a counting
+    // sort by source, then each row sorted on its own (rows are short and sort in cache).
+    auto forEach = [&](auto&& f) {
+        for (std::size_t s = 0; s < n; ++s)
+            for (std::uint64_t e = row[s]; e < row[s + 1]; ++e) {
+                if (keep && !(*keep)[e]) continue;
+                const auto from = static_cast<std::uint32_t>(s), to = succ[e];
+                if (reversed) f(to, from);
+                else f(from, to);
+                if (bothWays) f(to, from);
+            }
+    };
+    std::vector<std::uint64_t> start(n + 1, 0);
+    forEach([&](std::uint32_t from, std::uint32_t) { ++start[from + 1]; });
+    for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges(start[n]);
+    std::vector<std::uint64_t> fill(start.begin(), start.end() - 1);
+    forEach([&](std::uint32_t from, std::uint32_t to) { edges[fill[from]++] = {from, to}; });
+    for (std::size_t v = 0; v < n; ++v) std::sort(edges.begin() + static_cast<std::ptrdiff_t>(start[v]), edges.begin() + static_cast<std::ptrdiff_t>(start[v + 1]));
+    return Csr(boost::edges_are_sorted, edges.begin(), edges.end(), n);
 }
 
 }  // namespace

@@ -78,19 +78,16 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
     const rules::Engine& e = ex.engine();
     const rules::Region& region = e.region();
     const rules::Alphabet& alphabet = e.model().alphabet();
-    const StateLayout& layout = ex.store().layout();
     const bool byMove = property.adjacency == rules::Property::Adjacency::Move;
     const bool projected = !byMove && (alphabet.size() > 2 || !property.exprs.empty());
     const bool symmetricGraph = symmetric(ex);
     std::uint64_t violations = 0;
     Witnesses best;
     const GraphView graph(ex);
-    std::vector<std::uint64_t> packed(layout.words());
     std::vector<CellValue> cells(region.size());
     auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
 
-    auto consider = [&](StateId c, int modules) {
-        const StateId other = ex.find(packed.data());
+    auto consider = [&](StateId c, StateId other, int modules) {
         if (other == kNoState || other == c || isSuccessor(ex, c, other)) return;
         if (comps.of[c] != comps.of[other]) return;  // unreachable both ways
         if (!symmetricGraph && graph.shortestPath(c, other).empty()) return;
@@ -110,16 +107,16 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
                         const int j = region.neighbour(i, d);
                         if (j < 0 || cells[j]) continue;
                         std::swap(cells[i], cells[j]);
-                        layout.pack(cells.data(), packed.data());
+                        const StateId other = ex.find(cells.data());
                         std::swap(cells[i], cells[j]);
-                        consider(c, modules);
+                        consider(c, other, modules);
                     }
                 } else {
                     const CellValue old = cells[i];
                     cells[i] = old ? 0 : 1;  // the one occupied state
-                    layout.pack(cells.data(), packed.data());
+                    const StateId other = ex.find(cells.data());
                     cells[i] = old;
-                    consider(c, modules);
+                    consider(c, other, modules);
                 }
             }
         }

@@ -90,6 +90,13 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     }
     // The instances' cell lists, one pool in instance order: small instances, dense in cache.
     for (std::size_t p = 0, first = 0; p < placed_.size(); first += placed_[p].size, ++p) placed_[p].cells = cellPool_.data() + first;
+    for (int s = 0; s < tables_.shapeCount(); ++s) {
+        firstCellTest_.push_back(static_cast<int>(cellTests_.size()));
+        for (const Mask& m : tables_.shape(s).lhs) {
+            const auto [any, all] = tables_.acceptedStates(m.bits);
+            cellTests_.push_back({any, all});
+        }
+    }
     placedIndex_.assign(static_cast<std::size_t>(region.size()) * tables_.shapeCount(), -1);
     for (int p = 0; p < static_cast<int>(placed_.size()); ++p)
         placedIndex_[static_cast<std::size_t>(placed_[p].cells[0]) * tables_.shapeCount() + placed_[p].shape] = p;
@@ -146,10 +153,11 @@ Engine::CompiledExpr Engine::compileExpr(const Expr& e) const {
 
 bool Engine::matches(const CellValue* cells, int placed) const {
     const Placed& p = placed_[placed];
-    const RuleTables::Shape& t = tables_.shape(p.shape);
-    for (int k = 0; k < p.size; ++k)
-        if (!test(t.lhs[k], combo_[p.cells[k]], cells[p.cells[k]])) return false;
-    return !t.hasGuard || tables_.guard(t.guard, RegionCells{region_, cells, combo_.data()}, p.cells);
+    return test(tables_.shape(p.shape).lhs[0], combo_[p.cells[0]], cells[p.cells[0]]) && matchesAfterFirst(cells, placed);
+}
+
+bool Engine::guardHolds(const CellValue* cells, const Placed& p) const {
+    return tables_.guard(tables_.shape(p.shape).guard, RegionCells{region_, cells, combo_.data()}, p.cells);
 }
 
 void Engine::apply(CellValue* cells, int placed, CellValue* saved) const {

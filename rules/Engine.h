@@ -47,9 +47,14 @@ public:
         for (int c = 0; c < region_->size(); ++c) {
             for (std::int32_t s : tables_.shapesByFirst(combo_[c], cells[c])) {
                 const std::int32_t p = placedIndex_[static_cast<std::size_t>(c) * shapes + s];
-                if (p >= 0 && matches(cells, p)) f(p);
+                if (p >= 0 && matchesAfterFirst(cells, p)) f(p);
             }
         }
+    }
+    /// The state pattern cell k of an instance takes when the instance fires on `cells`.
+    CellValue rewritten(const CellValue* cells, const Placed& p, int k) const {
+        const RuleTables::Shape& t = tables_.shape(p.shape);
+        return t.copyFrom[k] >= 0 ? cells[p.cells[t.copyFrom[k]]] : t.rhs[k][cells[p.cells[k]]];
     }
     /// Rewrites the instance's cells in place; `saved` receives their old values for undo().
     void apply(CellValue* cells, int placed, CellValue* saved) const;
@@ -118,6 +123,28 @@ public:
 
 private:
     using Mask = RuleTables::Mask;
+    /// Left side and guard hold, the first pattern cell known to match. Most cells are decided by
+    /// the states their pattern cell accepts under some and under every input combination.
+    bool matchesAfterFirst(const CellValue* cells, int placed) const {
+        const Placed& p = placed_[placed];
+        const RuleTables::Shape& t = tables_.shape(p.shape);
+        const CellTest* tests = &cellTests_[firstCellTest_[p.shape]];
+        for (int k = 1; k < p.size; ++k) {
+            const CellValue v = cells[p.cells[k]];
+            if (v < 64) {
+                if (!((tests[k].any >> v) & 1u)) return false;
+                if ((tests[k].all >> v) & 1u) continue;
+            }
+            if (!test(t.lhs[k], combo_[p.cells[k]], v)) return false;
+        }
+        return !t.hasGuard || guardHolds(cells, p);
+    }
+    bool guardHolds(const CellValue* cells, const Placed& p) const;
+    struct CellTest {
+        std::uint64_t any, all;  // states below 64 accepted under some / every input combination
+    };
+    std::vector<CellTest> cellTests_;   // per shape, per pattern cell
+    std::vector<int> firstCellTest_;    // per shape: its first entry in cellTests_
     bool test(const Mask& m, int combo, CellValue v) const { return tables_.test(m, combo, v); }
     const Mask& predicateMask(const CellPredicate& pred) const;
     bool connected(const Mask& m, const CellValue* cells) const;
