@@ -12,6 +12,8 @@
 
 #include "checker/Obligations.h"
 
+#include "checker/Forked.h"
+
 #include "checker/Reach.h"
 #include "checker/SmtEncoding.h"
 #include "rules/Error.h"
@@ -77,13 +79,45 @@ public:
                      double timeoutShare = 1.0, const std::optional<z3::expr>& earlierLemmas = std::nullopt) {
         const auto start = std::chrono::steady_clock::now();
         Obligation o = named(name, kind);
-        const z3::expr lemmas = enc.instantiate();
-        z3::solver solver = newSolver(ctx, enc, timeoutShare);
-        solver.add(query);
-        if (!options_.smtOut.empty()) write(name, solver, o);
-        solver.add(lemmas);
-        if (earlierLemmas) solver.add(*earlierLemmas);
-        const z3::check_result r = solver.check();
+        const SmtEncoding::Lemmas lemmas = enc.instantiate();
+        auto check = [&](const z3::expr& chosen) {
+            z3::solver solver = newSolver(ctx, enc, timeoutShare);
+            solver.add(query);
+            solver.add(chosen);
+            if (earlierLemmas) solver.add(*earlierLemmas);
+            return std::make_pair(solver.check(), solver);
+        };
+        if (!options_.smtOut.empty()) {
+            z3::solver exported = newSolver(ctx, enc, timeoutShare);
+            exported.add(query);
+            write(name, exported, o);
+        }
+        // With two sets of lemmas, both are tried at once on the two cores and the first definite
+        // answer counts (Z3 is deterministic: a satisfiable answer is found again here for its model).
+        const z3::expr* chosen = &lemmas.all;
+        if (lemmas.differ) {
+            std::vector<ForkedJob> jobs;
+            for (const z3::expr* variant : {&lemmas.all, &lemmas.lean})
+                jobs.push_back([&, variant](bool) -> nlohmann::json {
+                    const auto [r, solver] = check(*variant);
+                    return {{"result", r == z3::unsat ? "unsat" : r == z3::sat ? "sat" : "unknown"}, {"reason", r == z3::unknown ? solver.reason_unknown() : ""}};
+                });
+            const ForkedAnswer answer = firstDecisive(jobs, [](const nlohmann::json& a) { return a.value("result", "") != "unknown" && a.contains("result"); });
+            const std::string result = answer.answer.value("result", "unknown");
+            if (answer.job == 1) chosen = &lemmas.lean;
+            if (result != "sat") {
+                o.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                if (result == "unsat") {
+                    o.result.verdict = Verdict::Holds;
+                    o.result.summary = provedText;
+                } else {
+                    o.result.verdict = Verdict::Unknown;
+                    o.result.summary = "the solver gave up: " + answer.answer.value("reason", answer.answer.value("error", std::string("no answer")));
+                }
+                return o;
+            }
+        }
+        const auto [r, solver] = check(*chosen);
         o.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (r == z3::unsat) {
             o.result.verdict = Verdict::Holds;
@@ -111,7 +145,7 @@ public:
         const auto start = std::chrono::steady_clock::now();
         Obligation o = named(name, kind);
         const int count = static_cast<int>(engine_.instances().size());
-        const z3::expr lemmas = enc.instantiate();
+        const z3::expr lemmas = enc.instantiate().all;
         z3::solver solver = newSolver(ctx, enc);
         solver.add(base);
         solver.add(lemmas);
@@ -490,7 +524,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         z3::expr start = ctx.bool_val(false);
         for (const rules::Configuration& c : options.initial) start = start || (enc.configurationIs(path[0], c.cells) && enc.inputsAre(c.inputs));
         z3::expr steps = ctx.bool_val(true), someBad = target.bad(enc, path[0]);
-        z3::expr lemmas = enc.instantiate();  // kept for the deeper queries
+        z3::expr lemmas = enc.instantiate().all;  // kept for the deeper queries
         const rules::Engine concrete(model, region, options.initial.front().inputs);
         auto decode = [&](const z3::model& m, PropertyResult& r) {
             Trace t;
@@ -516,7 +550,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             selectors.push_back(ctx.int_const(("step" + std::to_string(k)).c_str()));
             steps = steps && enc.step(path[k - 1], path[k], selectors.back());
             someBad = someBad || target.bad(enc, path[k]);
-            lemmas = lemmas && enc.instantiate();
+            lemmas = lemmas && enc.instantiate().all;
             o = run.solve(name, "bmc", ctx, enc, start && steps && someBad, decode, proved, 1.0, lemmas);
             o.result.seconds += spent;
         }

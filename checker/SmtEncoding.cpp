@@ -21,8 +21,8 @@ namespace holon::checker {
 using rules::CellValue;
 using rules::Expr;
 
-SmtEncoding::SmtEncoding(z3::context& ctx, const rules::Engine& engine)
-    : ctx_(ctx), engine_(engine), alphabet_(engine.model().alphabet().size()) {
+SmtEncoding::SmtEncoding(z3::context& ctx, const rules::Engine& engine, bool rankExtremes)
+    : ctx_(ctx), engine_(engine), alphabet_(engine.model().alphabet().size()), rankExtremes_(rankExtremes) {
     const int inputs = static_cast<int>(engine.model().system().inputs.size());
     for (int i = 0; i < engine.region().size(); ++i) {
         std::vector<z3::expr> bits;
@@ -225,7 +225,7 @@ z3::expr SmtEncoding::hypothesis(const z3::expr& witness, Hypothesis h) {
     return witness;
 }
 
-z3::expr SmtEncoding::instantiate() {
+SmtEncoding::Lemmas SmtEncoding::instantiate() {
     // Connectivity of X means no cut of X exists at all; reachability, no stray set. The solver
     // would have to rediscover that from the ranks by a descent argument (the planner's Safety on
     // square:4x4 took 88 s, 74 s of it in `connected`), so each hypothesis is also stated for the
@@ -234,23 +234,29 @@ z3::expr SmtEncoding::instantiate() {
     // predecessor, is typically a cut there too), or, in a query without refutations, the cells
     // of the predicates it names in the same state (Progress: the F cells, inside a connected
     // target, have a neighbour in the target that is not F). Both together slowed Safety down.
-    z3::expr all = ctx_.bool_val(true);
+    // Reachability restated for named predicates is what Progress on hex:r2 needs (a U next to
+    // the tree) and what keeps it from finishing on cubic:3x3x3 (the P-leaf case drowns in stray
+    // sets), so the caller gets the lemmas with and without that part.
+    z3::expr kept = ctx_.bool_val(true), reach = ctx_.bool_val(true);
+    bool differ = false;
     for (const Hypothesis& h : hypotheses_) {
-        std::vector<const std::vector<z3::expr>*> sets;
-        for (const std::vector<z3::expr>& set : refutationSets_) sets.push_back(&set);
+        std::vector<std::pair<const std::vector<z3::expr>*, bool>> sets;  // (set, a named predicate)
+        for (const std::vector<z3::expr>& set : refutationSets_) sets.push_back({&set, false});
         for (const auto& [state, set] : predicateSets_)
-            if (state == h.state && refutationSets_.empty()) sets.push_back(&set);
+            if (state == h.state && refutationSets_.empty()) sets.push_back({&set, true});
         const std::vector<z3::expr>& own = h.members;  // for reaches: the `from` cells
-        for (const std::vector<z3::expr>* set : sets) {
+        for (const auto& [set, named] : sets) {
             std::vector<z3::expr> restricted;
             for (std::size_t i = 0; i < set->size(); ++i) restricted.push_back((*set)[i] && own[i]);
-            all = all && z3::implies(h.witness, !(h.reach ? isStray(*h.reach, restricted) : isCut(h.members, restricted)));
+            const z3::expr lemma = z3::implies(h.witness, !(h.reach ? isStray(*h.reach, restricted) : isCut(h.members, restricted)));
+            if (h.reach && named) reach = reach && lemma, differ = true;
+            else kept = kept && lemma;
         }
     }
     hypotheses_.clear();
     refutationSets_.clear();
     predicateSets_.clear();
-    return all;
+    return {kept && reach, differ ? kept : kept && reach, differ};
 }
 
 void SmtEncoding::candidate(const State& s, const std::vector<z3::expr>& members) {
@@ -310,7 +316,13 @@ z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
         rank.push_back(fresh("prank", ctx_.int_sort()));
         facts_.push_back(rank.back() >= 0 && rank.back() < n);
     }
-    z3::expr f = ctx_.bool_val(true);
+    // The witness also names the lowest and the highest rank among the `from` cells, which every
+    // rank assignment has: a cell of lowest rank steps straight to a target cell, and nothing steps
+    // onto a cell of highest rank (a P leaf, in the planner's Progress argument). Without them the
+    // solver finds these extremes by descent through the ranks.
+    const z3::expr lowest = rankExtremes_ ? fresh("prank_low", ctx_.int_sort()) : ctx_.int_val(0);
+    const z3::expr highest = rankExtremes_ ? fresh("prank_high", ctx_.int_sort()) : ctx_.int_val(0);
+    z3::expr f = ctx_.bool_val(true), some = ctx_.bool_val(false), atLowest = ctx_.bool_val(false), atHighest = ctx_.bool_val(false);
     for (int i = 0; i < n; ++i) {
         z3::expr ok = ctx_.bool_val(false);
         for (int d = 0; d < degree; ++d) {
@@ -318,8 +330,12 @@ z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
             if (j < 0) continue;
             ok = ok || (r.steps[i][d] && (r.to[j] || (r.from[j] && rank[j] < rank[i])));
         }
-        f = f && z3::implies(r.from[i], ok);
+        f = f && z3::implies(r.from[i], rankExtremes_ ? ok && lowest <= rank[i] && rank[i] <= highest : ok);
+        some = some || r.from[i];
+        atLowest = atLowest || (r.from[i] && rank[i] == lowest);
+        atHighest = atHighest || (r.from[i] && rank[i] == highest);
     }
+    if (rankExtremes_) f = f && z3::implies(some, atLowest && atHighest);
     return hypothesis(f, {r.from, r, ctx_.bool_val(true), s.is[0][0].id()});
 }
 

@@ -15,7 +15,9 @@ namespace holon::checker {
 class SmtEncoding {
 public:
     /// `engine` must cover every input combination (Engine(..., true)) when inputs are left open.
-    SmtEncoding(z3::context& ctx, const rules::Engine& engine);
+    /// `rankExtremes`: pointer-reachability witnesses also name their lowest and highest rank (see
+    /// the .cpp); Horn-clause queries leave them out, where the extra integers slow Spacer down.
+    SmtEncoding(z3::context& ctx, const rules::Engine& engine, bool rankExtremes = true);
 
     /// A configuration, one-hot: is[i][v] says cell i holds state v; exactly one per cell (the
     /// domain constraints go to `facts()`).
@@ -50,8 +52,15 @@ public:
     /// Lemmas for the solver: every connectivity or reachability hypothesis made since the last
     /// call, restated for the cut and stray sets the refutations made since then, or without
     /// refutations for the predicates named in its state (see the .cpp). Implied by the
-    /// hypotheses; assert it with the query.
-    z3::expr instantiate();
+    /// hypotheses; assert one of the two with the query.
+    struct Lemmas {
+        z3::expr all;
+        /// Without the restatements of reachability hypotheses for named predicates, which help
+        /// some queries and drown others (see the .cpp); `all` when there are none.
+        z3::expr lean;
+        bool differ = false;
+    };
+    Lemmas instantiate();
 
     /// Decodes a configuration from a model.
     std::vector<rules::CellValue> decode(const z3::model& m, const State& s) const;
@@ -99,6 +108,7 @@ private:
     z3::context& ctx_;
     const rules::Engine& engine_;
     int alphabet_;
+    bool rankExtremes_;
     std::vector<std::vector<z3::expr>> inputBits_;  // [cell][input]
     std::vector<z3::expr> facts_;
     int counter_ = 0;
