@@ -22,7 +22,7 @@ using namespace holon;
 int main(int argc, char** argv) {
     int runs = 3;
     double timeout = 60;
-    std::string regions = "square:3x3,square:4x3,square:4x4,square:5x5,hex:r1,hex:r2,cubic:2x2x2,cubic:3x2x2";
+    std::string regions = "square:3x3,square:4x3,square:4x4,square:5x5,hex:r1,hex:r2,cubic:2x2x2,cubic:3x2x2,cubic:3x3x2,cubic:3x3x3";
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
         if (flag == "--runs") runs = std::atoi(argv[i + 1]);
