@@ -3,7 +3,10 @@
 // tests hold to the reference interpreter. The frontier is expanded in chunks; within a chunk both
 // cores expand disjoint slices and insert into the lock-free store; between chunks the store grows
 // and the limits are checked, so a limit stops the search between two chunks with everything found
-// so far intact. Parent links give shortest paths for counterexample traces.
+// so far intact. Parent links give shortest paths for counterexample traces. Only legal states are
+// stored, so successors are looked up before any constraint is evaluated; after --all the ids are
+// ranks in a bitmap over the candidate configurations, a perfect hash in the manner of Edelkamp and
+// Sulewski's ranking-based state space search, and no hash table is needed.
 
 #include "checker/Explorer.h"
 
@@ -37,6 +40,7 @@ std::vector<CellValue> Explorer::cells(StateId id) const {
 }
 
 StateId Explorer::addInitial(const CellValue* cells) {
+    if (complete_) throw InputError("internal: addInitial after addAllLegal, which already holds every legal configuration");
     std::vector<std::uint64_t> packed(store_.layout().words());
     store_.layout().pack(cells, packed.data());
     store_.reserve(1);
@@ -77,7 +81,7 @@ void Explorer::addAllLegal() {
     const std::uint64_t total = static_cast<std::uint64_t>(std::llround(candidates));
     // The ranking costs 12 bytes per 64 candidates; it replaces the hash table when that fits
     // comfortably in the memory bound.
-    const bool rank = static_cast<double>(total) / 64.0 * 12.0 <= static_cast<double>(options_.limits.memoryBytes) / 4.0;
+    const bool rank = options_.rankAllLegal && static_cast<double>(total) / 64.0 * 12.0 <= static_cast<double>(options_.limits.memoryBytes) / 4.0;
     if (rank) {
         legalBits_.assign((total + 63) / 64, 0);
         placeValue_.assign(n, 1);

@@ -40,6 +40,9 @@ public:
     struct Options {
         Limits limits;
         bool recordEdges = true;  // keep the successor lists (for components, holonomy, --dot)
+        /// addAllLegal indexes the legal configurations by rank when the candidates are few
+        /// enough; false keeps the hash table (the tests compare both).
+        bool rankAllLegal = true;
         /// Called from worker threads for every newly stored state (id, unpacked cells); must be
         /// thread-safe. Used for per-state property checks.
         std::function<void(StateId, const CellValue*)> onState;

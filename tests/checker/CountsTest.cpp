@@ -20,6 +20,30 @@ TEST_CASE("explorer counts agree with brute force for pixel with connectivity") 
     }
 }
 
+TEST_CASE("the --all graph is the same whether its states are ranked or hashed") {
+    for (const char* stem : {"pixel", "intermediate", "general2"}) {
+        CAPTURE(stem);
+        const test::World world(rules::librarySystem(stem), stem == std::string("pixel") ? "hex:r2" : "square:3x2");
+        const rules::Engine engine(*world.model, world.region, {});
+        std::vector<std::set<std::pair<std::vector<rules::CellValue>, std::vector<rules::CellValue>>>> graphs;
+        for (bool ranked : {true, false}) {
+            checker::Explorer::Options options;
+            options.rankAllLegal = ranked;
+            checker::Explorer ex(engine, options);
+            ex.addAllLegal();
+            ex.explore();
+            std::set<std::pair<std::vector<rules::CellValue>, std::vector<rules::CellValue>>> edges;
+            for (checker::StateId s : ex.ids()) {
+                CHECK(ex.find(ex.cells(s).data()) == s);
+                for (std::uint64_t e = ex.rowStart()[s]; e < ex.rowStart()[s + 1]; ++e) edges.insert({ex.cells(s), ex.cells(ex.successors()[e])});
+            }
+            graphs.push_back(std::move(edges));
+        }
+        CHECK(graphs[0].size() > 100);
+        CHECK(graphs[0] == graphs[1]);
+    }
+}
+
 TEST_CASE("the explored graph is the same on one thread and on two") {
     checker::Limits one, two;
     one.threads = 1, two.threads = 2;
