@@ -1,8 +1,8 @@
 // Packed state storage in the manner of explicit-state model checkers (Storm, SPIN, LTSmin): a
 // configuration is a bit vector of ceil(log2 |alphabet|) bits per cell; the arena holds them back to
-// back and a linear-probing table of 32-bit ids finds them. Threads insert with one compare-and-swap
-// on the table slot after writing the arena; when two threads race to add the same new state, the
-// loser's reserved id becomes a hole that is skipped everywhere.
+// back and a linear-probing table of 32-bit slots (id and hash tag) finds them. Threads insert with
+// one compare-and-swap on the table slot after writing the arena; when two threads race to add the
+// same new state, the loser's reserved id becomes a hole that is skipped everywhere.
 
 #include "checker/StateStore.h"
 

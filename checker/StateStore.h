@@ -82,8 +82,9 @@ public:
     std::size_t bytes() const;
 
 private:
-    // A slot is 0 (empty) or id + 1 in its low idBits_ bits and, above them, a tag: the same bits of
-    // the state's hash. Most probes that meet another state are then rejected without reading it.
+    // A slot is 0 (empty) or id + 1 in its low bits (as many as the slot count needs) and, above
+    // them, a tag: the same bits of the state's hash. Most probes that meet another state are then
+    // rejected without reading it.
     std::uint32_t tagOf(std::uint64_t hash) const { return static_cast<std::uint32_t>(hash >> 32) & tagMask_; }
     StateId idIn(std::uint32_t slot) const { return (slot & ~tagMask_) - 1; }
     void rebuildTable(std::size_t slots);
