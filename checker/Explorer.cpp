@@ -171,10 +171,12 @@ void Explorer::gather(StateId id, std::vector<CellValue>& cells, Successors& out
         std::uint64_t* successor = &out.packed[at];
         for (int w = 0; w < words; ++w) successor[w] = base[w];
         const rules::Engine::Placed& placed = engine_->instances()[p];
+        CellValue old[rules::Engine::kMaxCells];
+        for (int k = 0; k < placed.size; ++k) old[k] = cells[placed.cells[k]];
         std::uint64_t successorIndex = index;  // wraps below zero and back: unsigned arithmetic
         for (int k = 0; k < placed.size; ++k) {
             const int c = placed.cells[k];
-            const CellValue v = engine_->rewritten(cells.data(), placed, k);
+            const CellValue v = engine_->rewritten(placed, k, old);
             layout.set(successor, c, v);
             if (ranked()) successorIndex += (static_cast<std::uint64_t>(v) - cells[c]) * placeValue_[c];
         }

@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 
 namespace holon::checker {
 
@@ -95,6 +96,7 @@ public:
         // With two sets of lemmas, both are tried at once on the two cores and the first definite
         // answer counts (Z3 is deterministic: a satisfiable answer is found again here for its model).
         const z3::expr* chosen = &lemmas.all;
+        std::string result, reason;
         if (lemmas.differ) {
             std::vector<ForkedJob> jobs;
             for (const z3::expr* variant : {&lemmas.all, &lemmas.lean})
@@ -102,33 +104,29 @@ public:
                     const auto [r, solver] = check(*variant);
                     return {{"result", r == z3::unsat ? "unsat" : r == z3::sat ? "sat" : "unknown"}, {"reason", r == z3::unknown ? solver.reason_unknown() : ""}};
                 });
-            const ForkedAnswer answer = firstDecisive(jobs, [](const nlohmann::json& a) { return a.value("result", "") != "unknown" && a.contains("result"); });
-            const std::string result = answer.answer.value("result", "unknown");
+            const ForkedAnswer answer = firstDecisive(jobs, [](const nlohmann::json& a) { return a.contains("result") && a["result"] != "unknown"; });
+            result = answer.answer.value("result", "unknown");
+            reason = answer.answer.value("reason", answer.answer.value("error", std::string("no answer")));
             if (answer.job == 1) chosen = &lemmas.lean;
-            if (result != "sat") {
-                o.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                if (result == "unsat") {
-                    o.result.verdict = Verdict::Holds;
-                    o.result.summary = provedText;
-                } else {
-                    o.result.verdict = Verdict::Unknown;
-                    o.result.summary = "the solver gave up: " + answer.answer.value("reason", answer.answer.value("error", std::string("no answer")));
-                }
-                return o;
-            }
         }
-        const auto [r, solver] = check(*chosen);
+        std::optional<z3::solver> solver;
+        if (result.empty() || result == "sat") {
+            auto [r, s] = check(*chosen);
+            result = r == z3::unsat ? "unsat" : r == z3::sat ? "sat" : "unknown";
+            if (r == z3::unknown) reason = s.reason_unknown();
+            solver = s;
+        }
         o.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (r == z3::unsat) {
+        if (result == "unsat") {
             o.result.verdict = Verdict::Holds;
             o.result.summary = provedText;
-        } else if (r == z3::sat) {
+        } else if (result == "sat") {
             o.result.verdict = Verdict::Violated;
-            decode(solver.get_model(), o.result);
+            decode(solver->get_model(), o.result);
             if (o.result.trace) o.result.trace->property = name;
         } else {
             o.result.verdict = Verdict::Unknown;
-            o.result.summary = "the solver gave up: " + solver.reason_unknown();
+            o.result.summary = "the solver gave up: " + reason;
         }
         return o;
     }

@@ -16,6 +16,8 @@
 
 #include "rules/Error.h"
 
+#include <optional>
+
 namespace holon::checker {
 
 using rules::CellValue;
@@ -320,8 +322,8 @@ z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
     // rank assignment has: a cell of lowest rank steps straight to a target cell, and nothing steps
     // onto a cell of highest rank (a P leaf, in the planner's Progress argument). Without them the
     // solver finds these extremes by descent through the ranks.
-    const z3::expr lowest = rankExtremes_ ? fresh("prank_low", ctx_.int_sort()) : ctx_.int_val(0);
-    const z3::expr highest = rankExtremes_ ? fresh("prank_high", ctx_.int_sort()) : ctx_.int_val(0);
+    std::optional<z3::expr> lowest, highest;
+    if (rankExtremes_) lowest = fresh("prank_low", ctx_.int_sort()), highest = fresh("prank_high", ctx_.int_sort());
     z3::expr f = ctx_.bool_val(true), some = ctx_.bool_val(false), atLowest = ctx_.bool_val(false), atHighest = ctx_.bool_val(false);
     for (int i = 0; i < n; ++i) {
         z3::expr ok = ctx_.bool_val(false);
@@ -330,10 +332,14 @@ z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
             if (j < 0) continue;
             ok = ok || (r.steps[i][d] && (r.to[j] || (r.from[j] && rank[j] < rank[i])));
         }
-        f = f && z3::implies(r.from[i], rankExtremes_ ? ok && lowest <= rank[i] && rank[i] <= highest : ok);
+        if (!rankExtremes_) {
+            f = f && z3::implies(r.from[i], ok);
+            continue;
+        }
+        f = f && z3::implies(r.from[i], ok && *lowest <= rank[i] && rank[i] <= *highest);
         some = some || r.from[i];
-        atLowest = atLowest || (r.from[i] && rank[i] == lowest);
-        atHighest = atHighest || (r.from[i] && rank[i] == highest);
+        atLowest = atLowest || (r.from[i] && rank[i] == *lowest);
+        atHighest = atHighest || (r.from[i] && rank[i] == *highest);
     }
     if (rankExtremes_) f = f && z3::implies(some, atLowest && atHighest);
     return hypothesis(f, {r.from, r, ctx_.bool_val(true), s.is[0][0].id()});

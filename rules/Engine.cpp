@@ -162,10 +162,8 @@ bool Engine::guardHolds(const CellValue* cells, const Placed& p) const {
 
 void Engine::apply(CellValue* cells, int placed, CellValue* saved) const {
     const Placed& p = placed_[placed];
-    const RuleTables::Shape& t = tables_.shape(p.shape);
     for (int k = 0; k < p.size; ++k) saved[k] = cells[p.cells[k]];
-    for (int k = 0; k < p.size; ++k)
-        cells[p.cells[k]] = t.copyFrom[k] >= 0 ? saved[t.copyFrom[k]] : t.rhs[k][saved[k]];
+    for (int k = 0; k < p.size; ++k) cells[p.cells[k]] = rewritten(p, k, saved);
 }
 
 void Engine::undo(CellValue* cells, int placed, const CellValue* saved) const {
@@ -214,9 +212,8 @@ void Engine::Evaluator::set(int cell, CellValue value) {
 
 void Engine::Evaluator::apply(int placed, CellValue* saved) {
     const Placed& p = engine_->placed_[placed];
-    const RuleTables::Shape& t = engine_->tables_.shape(p.shape);
     for (int k = 0; k < p.size; ++k) saved[k] = cells_[p.cells[k]];
-    for (int k = 0; k < p.size; ++k) set(p.cells[k], t.copyFrom[k] >= 0 ? saved[t.copyFrom[k]] : t.rhs[k][saved[k]]);
+    for (int k = 0; k < p.size; ++k) set(p.cells[k], engine_->rewritten(p, k, saved));
 }
 
 void Engine::Evaluator::undo(int placed, const CellValue* saved) {

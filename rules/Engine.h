@@ -51,10 +51,11 @@ public:
             }
         }
     }
-    /// The state pattern cell k of an instance takes when the instance fires on `cells`.
-    CellValue rewritten(const CellValue* cells, const Placed& p, int k) const {
+    /// The state pattern cell k of an instance takes when the instance fires; `old[j]` is the
+    /// state of its pattern cell j before.
+    CellValue rewritten(const Placed& p, int k, const CellValue* old) const {
         const RuleTables::Shape& t = tables_.shape(p.shape);
-        return t.copyFrom[k] >= 0 ? cells[p.cells[t.copyFrom[k]]] : t.rhs[k][cells[p.cells[k]]];
+        return t.copyFrom[k] >= 0 ? old[t.copyFrom[k]] : t.rhs[k][old[k]];
     }
     /// Rewrites the instance's cells in place; `saved` receives their old values for undo().
     void apply(CellValue* cells, int placed, CellValue* saved) const;
