@@ -109,12 +109,7 @@ void Explorer::addAllLegal() {
                     found[t].insert(found[t].end(), packed.begin(), packed.end());
                     if (rank) legalBits_[idx >> 6] |= std::uint64_t{1} << (idx & 63);
                 }
-                // Odometer step; the evaluator follows the few cells that change.
-                for (int i = 0; i < n; ++i) {
-                    const CellValue v = static_cast<CellValue>(ev.cells()[i] + 1 == a ? 0 : ev.cells()[i] + 1);
-                    ev.set(i, v);
-                    if (v != 0) break;
-                }
+                ev.advance();
             }
         };
         std::vector<std::thread> pool;
@@ -156,38 +151,42 @@ void Explorer::addAllLegal() {
     complete_ = true;
 }
 
-void Explorer::gather(StateId id, std::vector<CellValue>& cells, Successors& out) const {
+void Explorer::gather(StateId id, Successors& out) const {
     // Each successor is packed by patching the parent's words; its table slot is prefetched.
     const StateLayout& layout = store_.layout();
     const int words = layout.words();
+    std::vector<CellValue>& cells = out.cells;
+    cells.resize(engine_->region().size());
     unpack(id, cells.data());
     const std::uint64_t* base = store_.state(id);
     out.from = id;
     out.packed.clear(), out.keys.clear(), out.via.clear();
     const std::uint64_t index = ranked() ? indexOf(cells.data()) : 0;
     engine_->forEachMatch(cells.data(), [&](int p) {
+        const rules::Engine::Placed& placed = engine_->instances()[p];
+        CellValue old[rules::Engine::kMaxCells];
+        for (int k = 0; k < placed.size; ++k) old[k] = cells[placed.cells[k]];
+        out.via.push_back(p);
+        if (ranked()) {  // the rank is all a look-up needs: no packed successor
+            std::uint64_t successorIndex = index;  // wraps below zero and back: unsigned arithmetic
+            for (int k = 0; k < placed.size; ++k) {
+                const int c = placed.cells[k];
+                successorIndex += (static_cast<std::uint64_t>(engine_->rewritten(placed, k, old)) - cells[c]) * placeValue_[c];
+            }
+            out.keys.push_back(successorIndex);
+            return;
+        }
         const std::size_t at = out.packed.size();
         out.packed.resize(at + words);
         std::uint64_t* successor = &out.packed[at];
         for (int w = 0; w < words; ++w) successor[w] = base[w];
-        const rules::Engine::Placed& placed = engine_->instances()[p];
-        CellValue old[rules::Engine::kMaxCells];
-        for (int k = 0; k < placed.size; ++k) old[k] = cells[placed.cells[k]];
-        std::uint64_t successorIndex = index;  // wraps below zero and back: unsigned arithmetic
-        for (int k = 0; k < placed.size; ++k) {
-            const int c = placed.cells[k];
-            const CellValue v = engine_->rewritten(placed, k, old);
-            layout.set(successor, c, v);
-            if (ranked()) successorIndex += (static_cast<std::uint64_t>(v) - cells[c]) * placeValue_[c];
-        }
-        if (ranked()) out.keys.push_back(successorIndex);
-        out.via.push_back(p);
+        for (int k = 0; k < placed.size; ++k) layout.set(successor, placed.cells[k], engine_->rewritten(placed, k, old));
     });
     if (!ranked())
         for (std::size_t k = 0; k < out.via.size(); ++k) out.keys.push_back(store_.prefetch(&out.packed[k * words]));
 }
 
-void Explorer::resolve(const Successors& s, rules::Engine::Evaluator& ev, std::vector<CellValue>& cells, Found& found) {
+void Explorer::resolve(const Successors& s, rules::Engine::Evaluator& ev, Found& found) {
     // Only legal states are ever stored, so a successor found needs no constraint check; one not
     // found is checked with the incremental evaluator, or, when the store already holds every legal
     // configuration (--all), known to be illegal.
@@ -197,11 +196,11 @@ void Explorer::resolve(const Successors& s, rules::Engine::Evaluator& ev, std::v
     seen.clear();
     bool loaded = false;
     for (std::size_t k = 0; k < s.via.size(); ++k) {
-        const std::uint64_t* successor = &s.packed[k * words];
-        StateId sid = ranked() ? rankOf(s.keys[k]) : store_.find(successor, s.keys[k]);
+        StateId sid = ranked() ? rankOf(s.keys[k]) : store_.find(&s.packed[k * words], s.keys[k]);
         if (sid == kNoState) {
             if (complete_) continue;
-            if (!loaded) unpack(s.from, cells.data()), ev.load(cells.data()), loaded = true;
+            const std::uint64_t* successor = &s.packed[k * words];
+            if (!loaded) ev.load(s.cells.data()), loaded = true;
             ev.apply(s.via[k], saved);
             const bool legal = ev.legal();
             if (legal) {
@@ -229,15 +228,19 @@ void Explorer::resolve(const Successors& s, rules::Engine::Evaluator& ev, std::v
 void Explorer::expandRange(std::size_t lo, std::size_t hi, Found& found) {
     // A software pipeline over the frontier, so that a look-up finds its data in cache: the
     // successors of state k are generated (their table slots prefetched) while those of state k - 1
-    // have their stored states prefetched and those of state k - 2 are looked up.
-    std::vector<CellValue> cells(engine_->region().size());
+    // have their stored states (or their words of the ranking) prefetched and those of state k - 2
+    // are looked up.
     rules::Engine::Evaluator ev(*engine_);
     Successors ring[3];
     for (std::size_t k = lo; k < hi + 2; ++k) {
-        if (k < hi) gather(frontier_[k], cells, ring[k % 3]);
-        if (k >= lo + 1 && k - 1 < hi && !ranked())
-            for (std::uint64_t h : ring[(k - 1) % 3].keys) store_.prefetchStored(h);
-        if (k >= lo + 2) resolve(ring[(k - 2) % 3], ev, cells, found);
+        if (k < hi) gather(frontier_[k], ring[k % 3]);
+        if (k >= lo + 1 && k - 1 < hi) {
+            if (ranked())
+                for (std::uint64_t index : ring[(k - 1) % 3].keys) prefetchRank(index);
+            else
+                for (std::uint64_t h : ring[(k - 1) % 3].keys) store_.prefetchStored(h);
+        }
+        if (k >= lo + 2) resolve(ring[(k - 2) % 3], ev, found);
     }
 }
 

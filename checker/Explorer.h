@@ -88,9 +88,11 @@ public:
     std::size_t bytesPerState() const;
 
 private:
-    /// The successors of one state, packed, with their hashes and the instances that lead to them.
+    /// The successors of one state, packed (unless ranked), with their hashes and the instances
+    /// that lead to them.
     struct Successors {
         StateId from = kNoState;
+        std::vector<CellValue> cells;  // of `from`, unpacked
         std::vector<std::uint64_t> packed, keys;  // keys: hash in the store, or the candidate index when ranked
         std::vector<std::int32_t> via;
     };
@@ -100,8 +102,8 @@ private:
         std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>> edges;
         std::uint64_t edgeCount = 0;
     };
-    void gather(StateId id, std::vector<CellValue>& cells, Successors& out) const;
-    void resolve(const Successors& s, rules::Engine::Evaluator& ev, std::vector<CellValue>& cells, Found& found);
+    void gather(StateId id, Successors& out) const;
+    void resolve(const Successors& s, rules::Engine::Evaluator& ev, Found& found);
     void expandRange(std::size_t lo, std::size_t hi, Found& found);
     void buildRows(std::vector<Found>& perThread);
 
@@ -125,6 +127,10 @@ private:
     StateId rankOf(std::uint64_t index) const {
         const std::uint64_t word = legalBits_[index >> 6], bit = std::uint64_t{1} << (index & 63);
         return word & bit ? rankBefore_[index >> 6] + static_cast<StateId>(std::popcount(word & (bit - 1))) : kNoState;
+    }
+    void prefetchRank(std::uint64_t index) const {
+        __builtin_prefetch(&legalBits_[index >> 6]);
+        __builtin_prefetch(&rankBefore_[index >> 6]);
     }
     std::vector<std::uint64_t> rowStart_;
     std::vector<StateId> succ_;

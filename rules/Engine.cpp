@@ -100,6 +100,11 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     placedIndex_.assign(static_cast<std::size_t>(region.size()) * tables_.shapeCount(), -1);
     for (int p = 0; p < static_cast<int>(placed_.size()); ++p)
         placedIndex_[static_cast<std::size_t>(placed_[p].cells[0]) * tables_.shapeCount() + placed_[p].shape] = p;
+    if (WordMatcher::fits(region.size(), tables_.alphabet())) {
+        words_ = std::make_unique<WordMatcher>(tables_, combo_);
+        for (const Placed& p : placed_) words_->addInstance(p.shape, p.cells, p.size);
+        words_->finish();
+    }
     std::vector<const CellPredicate*> preds;
     std::vector<const Expr*> guarded;
     const System& s = model.system();
@@ -116,6 +121,11 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
         predicateIndex_.emplace(p, it->second);
     }
     for (const Constraint& c : s.constraints) compiledConstraints_.push_back(compileExpr(c.expr));
+    predicateStates_.assign(static_cast<std::size_t>(tables_.comboCount()) * predicateMasks_.size(), 0);
+    for (int combo = 0; combo < tables_.comboCount(); ++combo)
+        for (std::size_t k = 0; k < predicateMasks_.size(); ++k)
+            for (int v = 0; v < std::min(64, tables_.alphabet()); ++v)
+                if (test(predicateMasks_[k], combo, static_cast<CellValue>(v))) predicateStates_[combo * predicateMasks_.size() + k] |= std::uint64_t{1} << v;
     if (region.size() <= 64) {
         neighbourBits_.assign(region.size(), 0);
         for (int i = 0; i < region.size(); ++i)
@@ -188,25 +198,38 @@ void Engine::Evaluator::load(const CellValue* cells) {
     mass_ = 0;
     for (std::size_t i = 0; i < cells_.size(); ++i) mass_ += engine_->tables_.massUnitsOf(cells_[i]);
     if (!small_) return;
-    for (std::size_t k = 0; k < members_.size(); ++k) {
-        std::uint64_t bits = 0;
-        for (std::size_t i = 0; i < cells_.size(); ++i)
-            if (engine_->test(engine_->predicateMasks_[k], engine_->combo_[i], cells_[i])) bits |= std::uint64_t{1} << i;
-        members_[k] = bits;
-    }
+    std::fill(members_.begin(), members_.end(), 0);
+    for (std::size_t i = 0; i < cells_.size(); ++i) set(static_cast<int>(i), cells_[i], true);
 }
 
-void Engine::Evaluator::set(int cell, CellValue value) {
-    const CellValue old = cells_[cell];
-    if (old == value) return;
-    mass_ += engine_->tables_.massUnitsOf(value) - engine_->tables_.massUnitsOf(old);
-    cells_[cell] = value;
+void Engine::Evaluator::set(int cell, CellValue value, bool loading) {
+    if (!loading) {
+        const CellValue old = cells_[cell];
+        if (old == value) return;
+        mass_ += engine_->tables_.massUnitsOf(value) - engine_->tables_.massUnitsOf(old);
+        cells_[cell] = value;
+    }
     if (!small_) return;
     const std::uint64_t bit = std::uint64_t{1} << cell;
     const int combo = engine_->combo_[cell];
-    for (std::size_t k = 0; k < members_.size(); ++k) {
+    const std::size_t predicates = members_.size();
+    if (value < 64) {  // the common case, branch-free: one word of accepted states per predicate
+        const std::uint64_t* accepted = &engine_->predicateStates_[combo * predicates];
+        for (std::size_t k = 0; k < predicates; ++k) members_[k] = (members_[k] & ~bit) | (((accepted[k] >> value) & 1u) << cell);
+        return;
+    }
+    for (std::size_t k = 0; k < predicates; ++k) {
         if (engine_->test(engine_->predicateMasks_[k], combo, value)) members_[k] |= bit;
         else members_[k] &= ~bit;
+    }
+}
+
+void Engine::Evaluator::advance() {
+    const int a = engine_->tables_.alphabet();
+    for (std::size_t i = 0; i < cells_.size(); ++i) {
+        const CellValue v = static_cast<CellValue>(cells_[i] + 1 == a ? 0 : cells_[i] + 1);
+        set(static_cast<int>(i), v);
+        if (v != 0) return;
     }
 }
 

@@ -5,8 +5,11 @@
 
 #include "rules/Interpreter.h"
 #include "rules/RuleTables.h"
+#include "rules/WordMatcher.h"
 
+#include <bit>
 #include <cstdint>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -39,11 +42,22 @@ public:
 
     /// Left side and guard hold.
     bool matches(const CellValue* cells, int placed) const;
-    /// Calls f(placed) for every instance whose left side and guard hold, cell by cell: only the
-    /// shapes whose first cell accepts that cell's state are tried.
+    /// Calls f(placed) once for every instance whose left side and guard hold. On small regions
+    /// every shape is matched at all its anchors at once (WordMatcher), in instance order;
+    /// otherwise cell by cell, trying only the shapes whose first cell accepts that cell's state.
     template <class F>
     void forEachMatch(const CellValue* cells, F&& f) const {
         const int shapes = static_cast<int>(model_->shapes().size());
+        if (words_) {
+            words_->forEachShape(cells, [&](int s, std::uint64_t anchors) {
+                const bool guarded = tables_.shape(s).hasGuard;
+                for (; anchors; anchors &= anchors - 1) {
+                    const std::int32_t p = placedIndex_[static_cast<std::size_t>(std::countr_zero(anchors)) * shapes + s];
+                    if (!guarded || guardHolds(cells, placed_[p])) f(p);
+                }
+            });
+            return;
+        }
         for (int c = 0; c < region_->size(); ++c) {
             for (std::int32_t s : tables_.shapesByFirst(combo_[c], cells[c])) {
                 const std::int32_t p = placedIndex_[static_cast<std::size_t>(c) * shapes + s];
@@ -109,10 +123,15 @@ public:
         const CellValue* cells() const { return cells_.data(); }
         void apply(int placed, CellValue* saved);
         void undo(int placed, const CellValue* saved);
-        void set(int cell, CellValue value);
+        void set(int cell, CellValue value) { set(cell, value, false); }
+        /// The next configuration in candidate order (cell 0 the fastest digit), wrapping to all
+        /// zeros after the last; the few cells that change are followed incrementally.
+        void advance();
         bool legal() const;
 
     private:
+        /// `loading`: cells_ already holds the value; only the predicate words are updated.
+        void set(int cell, CellValue value, bool loading);
         bool fastHolds(const CompiledExpr& n) const;
         Rational fastNumber(const CompiledExpr& n) const;
         const Engine* engine_;
@@ -163,8 +182,10 @@ private:
     std::vector<std::int32_t> cellPool_;  // Placed::cells point here
     std::vector<std::int32_t> placedIndex_;                // [cell * shapes + shape]: the instance anchored there, or -1
     std::vector<std::vector<std::int32_t>> byCell_;
+    std::unique_ptr<WordMatcher> words_;  // small regions and alphabets only
     std::unordered_map<const CellPredicate*, int> predicateIndex_;
     std::vector<Mask> predicateMasks_;  // distinct predicates only: equal text, one mask
+    std::vector<std::uint64_t> predicateStates_;  // [combo * predicates + k]: the states below 64 predicate k accepts
     std::unordered_map<const Expr*, GuardNode> cellGuards_;  // per quantifier with a cell guard
 
     /// The constraints as trees whose predicates are already indices (the Evaluator's input).

@@ -1,0 +1,57 @@
+// Word-parallel matching for regions of at most 64 cells (see WordMatcher.h). Each pattern cell
+// of each shape is a left-side mask over (input combination, state); equal masks are one test,
+// evaluated once per configuration as a word of accepting cells. The anchors of a shape's
+// instances are grouped by how far each pattern cell sits from its anchor in region indices: one
+// group per pattern cell in a box region, a few more where rows differ in length (hex disks).
+
+#include "rules/WordMatcher.h"
+
+#include <algorithm>
+
+namespace holon::rules {
+
+WordMatcher::WordMatcher(const RuleTables& tables, const std::vector<int>& combo)
+    : regionSize_(static_cast<int>(combo.size())), alphabet_(tables.alphabet()) {
+    for (int s = 0; s < tables.shapeCount(); ++s) {
+        const RuleTables::Shape& shape = tables.shape(s);
+        shapes_.push_back({0, static_cast<int>(cellTest_.size()), static_cast<int>(shape.lhs.size())});
+        for (const RuleTables::Mask& m : shape.lhs) {
+            auto it = std::find(tests_.begin(), tests_.end(), m.bits);
+            if (it == tests_.end()) it = tests_.insert(tests_.end(), m.bits);
+            cellTest_.push_back(static_cast<int>(it - tests_.begin()));
+        }
+    }
+    testCells_.assign(tests_.size() * alphabet_, 0);
+    for (std::size_t t = 0; t < tests_.size(); ++t)
+        for (int c = 0; c < regionSize_; ++c)
+            for (int v = 0; v < alphabet_; ++v)
+                if (tables.test(RuleTables::Mask{tests_[t]}, combo[c], static_cast<CellValue>(v))) testCells_[t * alphabet_ + v] |= std::uint64_t{1} << c;
+    pending_.resize(cellTest_.size());
+}
+
+void WordMatcher::addInstance(int shape, const std::int32_t* cells, int size) {
+    Shape& sh = shapes_[shape];
+    const int anchor = cells[0];
+    sh.anchors |= std::uint64_t{1} << anchor;
+    for (int k = 0; k < size; ++k) {
+        auto& group = pending_[sh.first + k];
+        const int delta = cells[k] - anchor;
+        auto it = std::find_if(group.begin(), group.end(), [&](const AnchorShift& a) { return a.delta == delta; });
+        if (it == group.end()) it = group.insert(group.end(), {delta, 0});
+        it->anchors |= std::uint64_t{1} << anchor;
+    }
+}
+
+void WordMatcher::finish() {
+    shiftStart_.clear();
+    shifts_.clear();
+    for (const auto& group : pending_) {
+        shiftStart_.push_back(static_cast<int>(shifts_.size()));
+        shifts_.insert(shifts_.end(), group.begin(), group.end());
+    }
+    shiftStart_.push_back(static_cast<int>(shifts_.size()));
+    pending_.clear();
+    pending_.shrink_to_fit();
+}
+
+}  // namespace holon::rules

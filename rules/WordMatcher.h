@@ -1,0 +1,79 @@
+#pragma once
+// Matching every rule instance of a small region at once, with word operations: on a region of at
+// most 64 cells a set of cells is one 64-bit word, so the anchors where a shape's left side holds
+// are the intersection, over its pattern cells, of the cells that accept their state shifted back
+// to the anchor (the bitboard move generation of chess programs). The explorer's successor
+// generator uses it; the instance-by-instance matcher stays for larger regions and alphabets.
+
+#include "rules/RuleTables.h"
+
+#include <bit>
+#include <cstdint>
+#include <vector>
+
+namespace holon::rules {
+
+class WordMatcher {
+public:
+    /// Usable when the region has at most 64 cells and the alphabet at most 64 states.
+    static bool fits(int regionSize, int alphabet) { return regionSize <= 64 && alphabet <= 64; }
+    /// `combo`: per region cell, its input combination in `tables`.
+    WordMatcher(const RuleTables& tables, const std::vector<int>& combo);
+    /// Registers one instance: shape `shape` with its pattern cells at region indices `cells`
+    /// (the first is its anchor).
+    void addInstance(int shape, const std::int32_t* cells, int size);
+    /// Lays the instances out for matching; call once, after the last addInstance.
+    void finish();
+
+    /// Calls f(shape, anchors) for every shape, `anchors` holding the first cells of its instances
+    /// whose left side holds (guards are not tested).
+    template <class F>
+    void forEachShape(const CellValue* cells, F&& f) const {
+        std::uint64_t occupied[64] = {};  // per state, the cells in it
+        for (int c = 0; c < regionSize_; ++c) occupied[cells[c]] |= std::uint64_t{1} << c;
+        thread_local std::vector<std::uint64_t> accepted;
+        accepted.assign(tests_.size(), 0);
+        for (std::size_t t = 0; t < tests_.size(); ++t) {
+            const std::uint64_t* byState = &testCells_[t * alphabet_];
+            std::uint64_t a = 0;
+            for (int v = 0; v < alphabet_; ++v) a |= occupied[v] & byState[v];
+            accepted[t] = a;
+        }
+        for (std::size_t s = 0; s < shapes_.size(); ++s) {
+            const Shape& shape = shapes_[s];
+            std::uint64_t anchors = shape.anchors;
+            for (int k = shape.first; k < shape.first + shape.size && anchors; ++k) {
+                const std::uint64_t a = accepted[cellTest_[k]];
+                std::uint64_t reach = 0;
+                for (int i = shiftStart_[k]; i < shiftStart_[k + 1]; ++i) {
+                    const AnchorShift& sh = shifts_[i];
+                    reach |= (sh.delta >= 0 ? a >> sh.delta : a << -sh.delta) & sh.anchors;
+                }
+                anchors &= reach;
+            }
+            if (anchors) f(static_cast<int>(s), anchors);
+        }
+    }
+
+private:
+    /// Anchors whose pattern cell sits `delta` indices away from them.
+    struct AnchorShift {
+        int delta;
+        std::uint64_t anchors;
+    };
+    struct Shape {
+        std::uint64_t anchors = 0;  // first cells of the shape's instances
+        int first = 0, size = 0;    // its pattern cells in cellTest_ / shiftStart_
+    };
+
+    int regionSize_, alphabet_;
+    std::vector<Shape> shapes_;
+    std::vector<int> cellTest_;                 // per (shape, pattern cell): index into tests_
+    std::vector<std::vector<std::uint64_t>> tests_;  // distinct left-side masks
+    std::vector<std::uint64_t> testCells_;      // [test * alphabet + state]: cells whose combination accepts the state
+    std::vector<std::vector<AnchorShift>> pending_;  // per (shape, pattern cell), while instances are added
+    std::vector<AnchorShift> shifts_;
+    std::vector<int> shiftStart_;               // per (shape, pattern cell), and one past the end
+};
+
+}  // namespace holon::rules
