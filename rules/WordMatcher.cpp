@@ -16,8 +16,8 @@ WordMatcher::WordMatcher(const RuleTables& tables, const std::vector<int>& combo
         const RuleTables::Shape& shape = tables.shape(s);
         shapes_.push_back({0, static_cast<int>(cellTest_.size()), static_cast<int>(shape.lhs.size())});
         for (const RuleTables::Mask& m : shape.lhs) {
-            auto it = std::find(tests_.begin(), tests_.end(), m.bits);
-            if (it == tests_.end()) it = tests_.insert(tests_.end(), m.bits);
+            auto it = std::find_if(tests_.begin(), tests_.end(), [&](const RuleTables::Mask& t) { return t.bits == m.bits; });
+            if (it == tests_.end()) it = tests_.insert(tests_.end(), m);
             cellTest_.push_back(static_cast<int>(it - tests_.begin()));
         }
     }
@@ -25,7 +25,7 @@ WordMatcher::WordMatcher(const RuleTables& tables, const std::vector<int>& combo
     for (std::size_t t = 0; t < tests_.size(); ++t)
         for (int c = 0; c < regionSize_; ++c)
             for (int v = 0; v < alphabet_; ++v)
-                if (tables.test(RuleTables::Mask{tests_[t]}, combo[c], static_cast<CellValue>(v))) testCells_[t * alphabet_ + v] |= std::uint64_t{1} << c;
+                if (tables.test(tests_[t], combo[c], static_cast<CellValue>(v))) testCells_[t * alphabet_ + v] |= std::uint64_t{1} << c;
     pending_.resize(cellTest_.size());
 }
 

@@ -69,7 +69,7 @@ private:
     int regionSize_, alphabet_;
     std::vector<Shape> shapes_;
     std::vector<int> cellTest_;                 // per (shape, pattern cell): index into tests_
-    std::vector<std::vector<std::uint64_t>> tests_;  // distinct left-side masks
+    std::vector<RuleTables::Mask> tests_;       // distinct left-side masks
     std::vector<std::uint64_t> testCells_;      // [test * alphabet + state]: cells whose combination accepts the state
     std::vector<std::vector<AnchorShift>> pending_;  // per (shape, pattern cell), while instances are added
     std::vector<AnchorShift> shifts_;
