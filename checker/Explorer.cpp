@@ -152,7 +152,8 @@ void Explorer::addAllLegal() {
 }
 
 void Explorer::gather(StateId id, Successors& out) const {
-    // Each successor is packed by patching the parent's words; its table slot is prefetched.
+    // Under a ranking a successor is only its rank; otherwise it is packed by patching the
+    // parent's words and its table slot is prefetched.
     const StateLayout& layout = store_.layout();
     const int words = layout.words();
     std::vector<CellValue>& cells = out.cells;
