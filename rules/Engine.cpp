@@ -199,16 +199,18 @@ void Engine::Evaluator::load(const CellValue* cells) {
     for (std::size_t i = 0; i < cells_.size(); ++i) mass_ += engine_->tables_.massUnitsOf(cells_[i]);
     if (!small_) return;
     std::fill(members_.begin(), members_.end(), 0);
-    for (std::size_t i = 0; i < cells_.size(); ++i) set(static_cast<int>(i), cells_[i], true);
+    for (std::size_t i = 0; i < cells_.size(); ++i) updateMembers(static_cast<int>(i), cells_[i]);
 }
 
-void Engine::Evaluator::set(int cell, CellValue value, bool loading) {
-    if (!loading) {
-        const CellValue old = cells_[cell];
-        if (old == value) return;
-        mass_ += engine_->tables_.massUnitsOf(value) - engine_->tables_.massUnitsOf(old);
-        cells_[cell] = value;
-    }
+void Engine::Evaluator::set(int cell, CellValue value) {
+    const CellValue old = cells_[cell];
+    if (old == value) return;
+    mass_ += engine_->tables_.massUnitsOf(value) - engine_->tables_.massUnitsOf(old);
+    cells_[cell] = value;
+    updateMembers(cell, value);
+}
+
+void Engine::Evaluator::updateMembers(int cell, CellValue value) {
     if (!small_) return;
     const std::uint64_t bit = std::uint64_t{1} << cell;
     const int combo = engine_->combo_[cell];

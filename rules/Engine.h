@@ -123,15 +123,15 @@ public:
         const CellValue* cells() const { return cells_.data(); }
         void apply(int placed, CellValue* saved);
         void undo(int placed, const CellValue* saved);
-        void set(int cell, CellValue value) { set(cell, value, false); }
+        void set(int cell, CellValue value);
         /// The next configuration in candidate order (cell 0 the fastest digit), wrapping to all
         /// zeros after the last; the few cells that change are followed incrementally.
         void advance();
         bool legal() const;
 
     private:
-        /// `loading`: cells_ already holds the value; only the predicate words are updated.
-        void set(int cell, CellValue value, bool loading);
+        /// Cell `cell` now holds `value`: its bit in every predicate word follows.
+        void updateMembers(int cell, CellValue value);
         bool fastHolds(const CompiledExpr& n) const;
         Rational fastNumber(const CompiledExpr& n) const;
         const Engine* engine_;
