@@ -1,9 +1,9 @@
 // Proof-obligation timing (issue: Z3 proofs): seconds per planner lemma (seed 000 §IV-C) for the
-// U/P/F planner over intermediate, per region, and how it grows. Each cell is the median of the
+// U/P/F planner over intermediate (or --system, e.g. planner_general1), per region, and how it grows. Each cell is the median of the
 // runs; "unknown" means the per-obligation timeout was hit.
 // Then --reach (Spacer, every reachable state): Progress of the planners over general2 and
 // general3 on square:3x2 from examples/verify's start (two creations and a deletion).
-// Usage: verify_bench [--runs N] [--timeout S] [--regions square:2x2,square:3x3,...]
+// Usage: verify_bench [--runs N] [--timeout S] [--regions square:2x2,square:3x3,...] [--system NAME]
 
 #include "checker/Obligations.h"
 #include "rules/ConfigIo.h"
@@ -22,15 +22,17 @@ using namespace holon;
 int main(int argc, char** argv) {
     int runs = 3;
     double timeout = 60;
+    std::string systemName = "planner_intermediate";
     std::string regions = "square:3x3,square:4x3,square:4x4,square:5x5,hex:r1,hex:r2,cubic:2x2x2,cubic:3x2x2,cubic:3x3x2,cubic:3x3x3";
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
         if (flag == "--runs") runs = std::atoi(argv[i + 1]);
         else if (flag == "--timeout") timeout = std::atof(argv[i + 1]);
         else if (flag == "--regions") regions = argv[i + 1];
+        else if (flag == "--system") systemName = argv[i + 1];
     }
-    const rules::System system = rules::librarySystem("planner_intermediate");
-    std::printf("verify benchmark: planner_intermediate, median of %d runs, timeout %.0f s per obligation\n", runs, timeout);
+    const rules::System system = rules::librarySystem(systemName);
+    std::printf("verify benchmark: %s, median of %d runs, timeout %.0f s per obligation\n", systemName.c_str(), runs, timeout);
     std::printf("%-14s %6s %14s %14s %14s %10s\n", "region", "cells", "safety s", "termination s", "progress s", "total s");
     std::istringstream list(regions);
     for (std::string spec; std::getline(list, spec, ',');) {
@@ -54,7 +56,8 @@ int main(int argc, char** argv) {
             const double m = seconds[k][seconds[k].size() / 2];
             total += m;
             char buf[64];
-            std::snprintf(buf, sizeof buf, verdict[k] == "proved" ? "%.2f" : "%.0f %s", m, verdict[k] == "proved" ? "" : verdict[k].c_str());
+            if (verdict[k] == "proved") std::snprintf(buf, sizeof buf, "%.2f", m);
+            else std::snprintf(buf, sizeof buf, "%s %.1f", verdict[k] == "counterexample" ? "refuted" : verdict[k].c_str(), m);
             cells[k] = buf;
         }
         std::printf("%-14s %6d %14s %14s %14s %10.2f\n", spec.c_str(), region.size(), cells[0].c_str(), cells[1].c_str(), cells[2].c_str(), total);

@@ -231,6 +231,7 @@ z3::expr stuck(SmtEncoding& enc, const SmtEncoding::State& s, const rules::Engin
     z3::expr q = system.goal ? !enc.holds(*system.goal, s, false) : s.is[0][0].ctx().bool_val(true);
     if (!progress.exprs.empty()) q = q && enc.holds(progress.exprs[0], s, true);
     for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) q = q && !enc.matches(placed, s);
+    enc.leftSideSets(s);
     return q;
 }
 
@@ -413,15 +414,17 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         }
         case rules::Property::Kind::Ranking: {
             auto c = enc.state("c"), d = enc.state("d");
+            auto kept = [&](int q) { return model.ruleNamed(e.instances()[q].rule, p.except); };
             report.obligations.push_back(run.stepwise(
                 p.name, "ranking", ctx, enc, enc.legal(c) && enc.legal(d),
-                [&](int q) { return enc.fires(q, c, d) && !enc.lexLessAfter(p.exprs, q, d, c); },
+                [&](int q) { return enc.fires(q, c, d) && !(kept(q) ? enc.keptAfter(p.exprs, q, d, c) : enc.lexLessAfter(p.exprs, q, d, c)); },
                 [&](const z3::model& m, int q, PropertyResult& r) {
-                    r.trace = Trace{{{enc.decode(m, c), -1}, {enc.decode(m, d), q}}, {}, {}, "a step that does not decrease it", {}};
-                    r.summary = "rule '" + model.rules()[e.instances()[q].rule].name + "' does not decrease it";
+                    const std::string why = kept(q) ? "changes it (an excepted rule must keep it)" : "does not decrease it";
+                    r.trace = Trace{{{enc.decode(m, c), -1}, {enc.decode(m, d), q}}, {}, {}, "a step that " + why, {}};
+                    r.summary = "rule '" + model.rules()[e.instances()[q].rule].name + "' " + why;
                     r.witness = {{"inputs", inputsOf(m, ctx, e)}, {"rule", model.rules()[e.instances()[q].rule].name}};
                 },
-                "every step decreases it lexicographically"));
+                "every step decreases it lexicographically" + exceptText(p)));
             break;
         }
         case rules::Property::Kind::Progress: {

@@ -16,6 +16,8 @@
 
 #include "rules/Error.h"
 
+#include <algorithm>
+#include <numeric>
 #include <optional>
 
 namespace holon::checker {
@@ -153,6 +155,118 @@ z3::expr compareExprs(rules::CmpOp op, const z3::expr& a, const z3::expr& b) {
 }
 }  // namespace
 
+namespace {
+/// l + sign * r, term by term.
+std::optional<SmtEncoding::PerCell> difference(std::optional<SmtEncoding::PerCell> l, const std::optional<SmtEncoding::PerCell>& r, int sign) {
+    if (!l || !r) return std::nullopt;
+    for (std::size_t k = 0; k < l->term.size(); ++k) l->term[k] = l->term[k] + rules::Rational(sign) * r->term[k];
+    l->constant = l->constant + rules::Rational(sign) * r->constant;
+    return l;
+}
+}  // namespace
+
+std::optional<SmtEncoding::PerCell> SmtEncoding::perCell(const Expr& e) const {
+    const std::size_t size = static_cast<std::size_t>(engine_.comboCount() * alphabet_);
+    auto each = [&](const std::function<rules::Rational(int, CellValue)>& value) {
+        PerCell p{0, std::vector<rules::Rational>(size)};
+        for (int c = 0; c < engine_.comboCount(); ++c)
+            for (int v = 0; v < alphabet_; ++v) p.term[static_cast<std::size_t>(c * alphabet_ + v)] = value(c, static_cast<CellValue>(v));
+        return p;
+    };
+    auto combine = [&](const Expr& a, const Expr& b, int sign) { return difference(perCell(a), perCell(b), sign); };
+    switch (e.kind) {
+    case Expr::Kind::Number: return PerCell{e.value, std::vector<rules::Rational>(size)};
+    case Expr::Kind::Mass: {
+        const auto den = static_cast<std::int64_t>(engine_.massDenominator());
+        return each([&](int, CellValue v) { return rules::Rational(engine_.massUnitsOf(v), den); });
+    }
+    case Expr::Kind::Count:
+        if (!e.kids.empty() || e.around != -1) return std::nullopt;  // a cell guard looks at neighbours
+        return each([&](int c, CellValue v) { return rules::Rational(engine_.predicateAccepts(e.pred, c, v) ? 1 : 0); });
+    case Expr::Kind::Add: return combine(e.kids[0], e.kids[1], 1);
+    case Expr::Kind::Sub: return combine(e.kids[0], e.kids[1], -1);
+    case Expr::Kind::Neg: return difference(PerCell{0, std::vector<rules::Rational>(size)}, perCell(e.kids[0]), -1);
+    default: return std::nullopt;
+    }
+}
+
+std::optional<z3::expr> SmtEncoding::cellwise(const Expr& e, const State& s) {
+    // a op b as sum_i d(cell i) op c, with d = a - b per cell and c = b - a in constants, in integers.
+    auto d = difference(perCell(e.kids[0]), perCell(e.kids[1]), -1);
+    if (!d) return std::nullopt;
+    std::int64_t scale = d->constant.den();
+    for (const rules::Rational& t : d->term) scale = std::lcm(scale, t.den());
+    auto integer = [&](rules::Rational r) { return (r * rules::Rational(scale)).num(); };
+    std::vector<std::int64_t> term;
+    for (const rules::Rational& t : d->term) term.push_back(integer(t));
+    const std::int64_t c = -integer(d->constant);
+    std::vector<std::int64_t> values(term.begin(), term.end());
+    std::sort(values.begin(), values.end());
+    values.erase(std::unique(values.begin(), values.end()), values.end());
+    const int n = engine_.region().size();
+    auto where = [&](int i, const std::function<bool(std::int64_t)>& ok) {
+        return member(s, i, [&](int combo, CellValue v) { return ok(term[static_cast<std::size_t>(combo * alphabet_ + v)]); });
+    };
+    z3::expr sum = ctx_.int_val(0);
+    std::vector<z3::expr> pos, neg;
+    for (int i = 0; i < n; ++i) {
+        for (std::int64_t w : values)
+            if (w != 0) sum = sum + z3::ite(where(i, [w](std::int64_t t) { return t == w; }), ctx_.int_val(w), ctx_.int_val(0));
+        pos.push_back(where(i, [](std::int64_t t) { return t > 0; }));
+        neg.push_back(where(i, [](std::int64_t t) { return t < 0; }));
+    }
+    const z3::expr atom = compareExprs(e.op, sum, ctx_.int_val(c));
+    // Sign lemmas: a sum at most 0 with a positive cell has a negative one, and so on. The solver
+    // finds these pigeonhole facts only by trying every cell (Progress over general1: if the
+    // mass fits the target and a metamodule lies outside it, some target cell is empty).
+    auto atMost = [&](std::int64_t bound) {  // sum <= bound
+        z3::expr f = ctx_.bool_val(true);
+        if (bound > 0) return f;
+        for (int j = 0; j < n; ++j) {
+            z3::expr other = ctx_.bool_val(false);
+            for (int k = 0; k < n; ++k)
+                if (k != j) other = other || neg[k];
+            f = f && z3::implies(pos[j], other);
+        }
+        if (bound < 0) {
+            z3::expr any = ctx_.bool_val(false);
+            for (int k = 0; k < n; ++k) any = any || neg[k];
+            f = f && any;
+        }
+        return f;
+    };
+    auto atLeast = [&](std::int64_t bound) {  // sum >= bound: the mirror image
+        std::swap(pos, neg);
+        z3::expr f = atMost(-bound);
+        std::swap(pos, neg);
+        return f;
+    };
+    auto signs = [&](rules::CmpOp op) {
+        switch (op) {
+        case rules::CmpOp::Eq: return atMost(c) && atLeast(c);
+        case rules::CmpOp::Ne: return ctx_.bool_val(true);
+        case rules::CmpOp::Lt: return atMost(c - 1);
+        case rules::CmpOp::Le: return atMost(c);
+        case rules::CmpOp::Gt: return atLeast(c + 1);
+        case rules::CmpOp::Ge: return atLeast(c);
+        }
+        return ctx_.bool_val(true);
+    };
+    auto negated = [](rules::CmpOp op) {
+        switch (op) {
+        case rules::CmpOp::Eq: return rules::CmpOp::Ne;
+        case rules::CmpOp::Ne: return rules::CmpOp::Eq;
+        case rules::CmpOp::Lt: return rules::CmpOp::Ge;
+        case rules::CmpOp::Le: return rules::CmpOp::Gt;
+        case rules::CmpOp::Gt: return rules::CmpOp::Le;
+        case rules::CmpOp::Ge: return rules::CmpOp::Lt;
+        }
+        return op;
+    };
+    signLemmas_.push_back(z3::implies(atom, signs(e.op)) && z3::implies(!atom, signs(negated(e.op))));
+    return atom;
+}
+
 z3::expr SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
     const int n = engine_.region().size();
     switch (e.kind) {
@@ -161,7 +275,9 @@ z3::expr SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
     case Expr::Kind::Or: return holds(e.kids[0], s, positive) || holds(e.kids[1], s, positive);
     case Expr::Kind::Implies: return !holds(e.kids[0], s, !positive) || holds(e.kids[1], s, positive);
     case Expr::Kind::Not: return !holds(e.kids[0], s, !positive);
-    case Expr::Kind::Compare: return compareExprs(e.op, number(e.kids[0], s), number(e.kids[1], s));
+    case Expr::Kind::Compare:
+        if (auto f = cellwise(e, s)) return *f;
+        return compareExprs(e.op, number(e.kids[0], s), number(e.kids[1], s));
     case Expr::Kind::Some:
     case Expr::Kind::No:
     case Expr::Kind::All: {
@@ -255,6 +371,8 @@ SmtEncoding::Lemmas SmtEncoding::instantiate() {
             else kept = kept && lemma;
         }
     }
+    for (const z3::expr& l : signLemmas_) kept = kept && l;
+    signLemmas_.clear();
     hypotheses_.clear();
     refutationSets_.clear();
     predicateSets_.clear();
@@ -266,6 +384,30 @@ void SmtEncoding::candidate(const State& s, const std::vector<z3::expr>& members
         if (state == s.is[0][0].id() && std::equal(set.begin(), set.end(), members.begin(), [](const z3::expr& a, const z3::expr& b) { return z3::eq(a, b); }))
             return;
     predicateSets_.emplace_back(s.is[0][0].id(), members);
+}
+
+void SmtEncoding::leftSideSets(const State& s) {
+    // A test is its acceptance table; shapes (rule and orientation) share most tests.
+    const int combos = engine_.comboCount(), n = engine_.region().size();
+    std::vector<std::vector<char>> seen;
+    std::vector<char> shapeDone;
+    for (int placed = 0; placed < static_cast<int>(engine_.instances().size()); ++placed) {
+        const rules::Engine::Placed& p = engine_.instances()[placed];
+        if (p.shape >= static_cast<int>(shapeDone.size())) shapeDone.resize(p.shape + 1, 0);
+        if (shapeDone[p.shape]) continue;
+        shapeDone[p.shape] = 1;
+        for (int k = 0; k < p.size; ++k) {
+            std::vector<char> table;
+            for (int c = 0; c < combos; ++c)
+                for (int v = 0; v < alphabet_; ++v) table.push_back(engine_.lhsAccepts(placed, k, c, static_cast<CellValue>(v)));
+            if (std::find(seen.begin(), seen.end(), table) != seen.end()) continue;
+            seen.push_back(table);
+            std::vector<z3::expr> cells;
+            for (int i = 0; i < n; ++i)
+                cells.push_back(member(s, i, [&](int c, CellValue v) { return table[static_cast<std::size_t>(c * alphabet_ + v)] != 0; }));
+            candidate(s, cells);
+        }
+    }
 }
 
 z3::expr SmtEncoding::connected(const rules::CellPredicate& pred, const State& s, bool positive) {
@@ -498,6 +640,12 @@ z3::expr SmtEncoding::lexLessAfter(const std::vector<Expr>& ranking, int placed,
         less = d < 0 || (d == 0 && less);
     }
     return less;
+}
+
+z3::expr SmtEncoding::keptAfter(const std::vector<Expr>& ranking, int placed, const State& after, const State& before) {
+    z3::expr same = ctx_.bool_val(true);
+    for (const Expr& component : ranking) same = same && delta(component, placed, after, before) == 0;
+    return same;
 }
 
 std::vector<CellValue> SmtEncoding::decode(const z3::model& m, const State& s) const {

@@ -48,6 +48,8 @@ public:
     /// (rank of a) <lex (rank of b) when b steps to a by placed instance p: numbers are linear in counts and mass, so
     /// with the frame condition their change is a sum over the instance's own cells.
     z3::expr lexLessAfter(const std::vector<rules::Expr>& ranking, int placed, const State& after, const State& before);
+    /// Every component of the ranking is the same after the step as before.
+    z3::expr keptAfter(const std::vector<rules::Expr>& ranking, int placed, const State& after, const State& before);
     z3::expr massUnits(const State& s);
     /// Lemmas for the solver: every connectivity or reachability hypothesis made since the last
     /// call, restated for the cut and stray sets the refutations made since then, or without
@@ -61,6 +63,16 @@ public:
         bool differ = false;
     };
     Lemmas instantiate();
+    /// Records, for the lemmas, the cells of s each distinct left-side test of the rules accepts
+    /// (Progress: in a connected ensemble holding both a C and a D, some C is next to some D).
+    void leftSideSets(const State& s);
+
+    /// A number that is a constant plus the same function of (inputs, state) summed over cells:
+    /// counts without cell guards, mass, and their sums and differences.
+    struct PerCell {
+        rules::Rational constant;
+        std::vector<rules::Rational> term;  // [combo * alphabet + state]
+    };
 
     /// Decodes a configuration from a model.
     std::vector<rules::CellValue> decode(const z3::model& m, const State& s) const;
@@ -89,6 +101,9 @@ private:
         z3::expr witness;
         unsigned state;  // id of the state's first variable
     };
+    std::optional<PerCell> perCell(const rules::Expr& e) const;
+    /// A comparison of such numbers as one integer sum over cells, with its sign lemmas recorded.
+    std::optional<z3::expr> cellwise(const rules::Expr& e, const State& s);
     z3::expr isCut(const std::vector<z3::expr>& members, const std::vector<z3::expr>& in) const;
     z3::expr isStray(const Reachability& r, const std::vector<z3::expr>& in) const;
     /// Free set variables for a refutation; they and their complement among `members` are recorded.
@@ -114,6 +129,7 @@ private:
     int counter_ = 0;
     std::vector<Hypothesis> hypotheses_;
     std::vector<std::vector<z3::expr>> refutationSets_;
+    std::vector<z3::expr> signLemmas_;
     std::vector<std::pair<unsigned, std::vector<z3::expr>>> predicateSets_;  // by state
 };
 

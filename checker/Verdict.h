@@ -2,6 +2,7 @@
 // The outcome of checking one property, with its evidence.
 
 #include "checker/Trace.h"
+#include "rules/Ir.h"
 
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -18,6 +19,14 @@ inline std::string verdictName(Verdict v) {
 /// As a proof says it: proved, counterexample, unknown.
 inline std::string proofVerdictName(Verdict v) {
     return v == Verdict::Holds ? "proved" : v == Verdict::Violated ? "counterexample" : "unknown";
+}
+
+/// How a ranking's excepted rules read in a verdict: ", and every step of transfer keeps it".
+inline std::string exceptText(const rules::Property& ranking) {
+    std::string names;
+    for (std::size_t i = 0; i < ranking.except.size(); ++i)
+        names += (i == 0 ? "" : i + 1 == ranking.except.size() ? " and " : ", ") + ranking.except[i];
+    return names.empty() ? "" : ", and every step of " + names + " keeps it";
 }
 
 struct PropertyResult {

@@ -140,6 +140,7 @@ struct Property {
     std::vector<Expr> exprs;  // Invariant: {expr}; Progress: {assumption} or {}; Ranking: the components;
                               // Holonomic: {count(P)} where P says which cells hold a complete
                               // metamodule (`by occupancy of D | C`), or {}
+    std::vector<std::string> except;  // Ranking: rules whose steps must keep it instead (resource moves)
     enum class Adjacency { Occupancy, Move } adjacency = Adjacency::Occupancy;  // Holonomic
     enum class Quantity { Mass, Count } quantity = Quantity::Mass;              // Conserves
     SourceLoc loc;

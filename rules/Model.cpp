@@ -165,6 +165,11 @@ Model::Model(const System& system, const Lattice& lattice)
     }
 }
 
+bool Model::ruleNamed(int rule, const std::vector<std::string>& names) const {
+    const DirectedRule& r = rules_[rule];
+    return std::find(names.begin(), names.end(), r.name) != names.end() || std::find(names.begin(), names.end(), r.rule->name) != names.end();
+}
+
 int Model::shapeCount(int rule) const {
     return static_cast<int>(std::count_if(shapes_.begin(), shapes_.end(), [&](const RuleShape& s) { return s.rule == rule; }));
 }

@@ -71,6 +71,8 @@ public:
     const std::vector<RuleShape>& shapes() const { return shapes_; }
     /// Number of shapes of each directed rule after deduplication (0: the rule repeats another).
     int shapeCount(int rule) const;
+    /// Directed rule `rule` is among `names` (a `<=>` rule's name covers both directions).
+    bool ruleNamed(int rule, const std::vector<std::string>& names) const;
     /// Directed rules whose every orientation repeats an orientation of an earlier rule, with it.
     const std::vector<std::pair<int, int>>& duplicates() const { return duplicates_; }
 

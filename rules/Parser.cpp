@@ -21,7 +21,7 @@ namespace {
 
 const std::set<std::string> kReserved{"if",
                                       "and", "or", "not", "implies", "assuming", "by", "nbr", "none", "dir", "true",
-                                      "false", "count", "all", "some", "no", "connected", "reaches", "any", "of"};
+                                      "false", "count", "all", "some", "no", "connected", "reaches", "any", "of", "except"};
 
 int editDistance(const std::string& a, const std::string& b) {
     std::vector<int> row(b.size() + 1);
@@ -507,6 +507,16 @@ private:
             expect(":", "after the ranking's name");
             do p.exprs.push_back(numberExpr());
             while (accept(","));
+            // Resource moves (general_n's transfers) belong to the allocator, which seed 000's
+            // Lemma 3 leaves out: their steps must keep the ranking instead of decreasing it.
+            if (accept("except")) do {
+                    const Token& r = identifier("a rule");
+                    if (!ruleNames_.count(r.text)) {
+                        const std::string hint = suggestion(r.text, std::vector<std::string>(ruleNames_.begin(), ruleNames_.end()));
+                        fail(r.loc, "unknown rule '" + r.text + "' after 'except'" + (hint.empty() ? "; declare the rule before the ranking" : hint));
+                    }
+                    p.except.push_back(r.text);
+                } while (accept(","));
         } else if (k == "progress") {
             p.kind = Property::Kind::Progress;
             p.name = optionalName("progress");

@@ -176,6 +176,7 @@ std::string printSystem(const System& s) {
         case Property::Kind::Ranking:
             out << "ranking " << p.name << ":";
             for (std::size_t i = 0; i < p.exprs.size(); ++i) out << (i ? ", " : " ") << printExpr(s, p.exprs[i]);
+            for (std::size_t i = 0; i < p.except.size(); ++i) out << (i ? ", " : " except ") << p.except[i];
             break;
         case Property::Kind::Progress:
             out << "progress";

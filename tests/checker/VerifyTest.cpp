@@ -4,8 +4,12 @@
 
 #include "CheckSupport.h"
 #include "checker/Obligations.h"
+#include "checker/SmtEncoding.h"
 
 #include <filesystem>
+#include <memory>
+#include <optional>
+#include <random>
 #include <sstream>
 #include <z3++.h>
 
@@ -60,6 +64,123 @@ TEST_CASE("the planner's Safety, Termination and Progress are proved on square:3
     for (const char* p : {"safety", "termination", "progress"}) {
         CAPTURE(p);
         CHECK(result(r, p).verdict == Verdict::Holds);
+    }
+}
+
+TEST_CASE("counts and masses compared cell by cell, with their sign lemmas, agree with the engine") {
+    // Rational masses, every comparison, constants on both sides, and both polarities (a
+    // negated comparison's lemmas are those of the opposite comparison).
+    test::World w(test::parse(R"(system compare
+field res: D | C | B1
+input target
+mass D = 1, C = 3/2, B1 = 1/2
+rule transfer: C D <=> D C
+invariant ge: connected(target) and mass >= count(target)
+invariant le: mass + mass <= count(target) + count(target) + count(target)
+invariant eq: mass - count(C) == count(target) - 1
+invariant lt: -mass < count(D) + 2 - count(target)
+invariant gt: mass > 3 + count(B1)
+invariant ne: count(C) != count(D)
+invariant one: count(C) <= 1
+invariant two: count(D) + count(target) >= 2
+)"),
+                  "square:3x2");
+    const int n = w.region.size();
+    const rules::Engine every(*w.model, w.region, std::vector<std::uint32_t>(n, 0), true);
+    // One encoding per property and polarity; each configuration is tried in its own scope.
+    struct Query {
+        const rules::Property* property = nullptr;
+        bool positive = true;
+        std::unique_ptr<z3::context> ctx = std::make_unique<z3::context>();
+        std::unique_ptr<checker::SmtEncoding> enc;
+        std::optional<checker::SmtEncoding::State> s;
+        std::unique_ptr<z3::solver> solver;
+    };
+    std::vector<Query> queries;
+    for (const rules::Property& p : w.model->system().properties)
+        for (bool positive : {true, false}) {
+            Query& q = queries.emplace_back();
+            q.property = &p, q.positive = positive;
+            q.enc = std::make_unique<checker::SmtEncoding>(*q.ctx, every);
+            q.s = q.enc->state("c");
+            const z3::expr f = q.enc->holds(p.exprs[0], *q.s, positive);
+            q.solver = std::make_unique<z3::solver>(*q.ctx);
+            for (const z3::expr& fact : q.enc->facts()) q.solver->add(fact);
+            q.solver->add(positive ? f : !f);
+            q.solver->add(q.enc->instantiate().all);
+        }
+    std::mt19937 random(7);
+    int held = 0, failed = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        std::vector<rules::CellValue> cells(n);
+        std::vector<std::uint32_t> inputs(n);
+        for (int i = 0; i < n; ++i) {
+            cells[i] = static_cast<rules::CellValue>(random() % w.model->alphabet().size());
+            inputs[i] = random() % 2;
+        }
+        const rules::Engine concrete(*w.model, w.region, inputs);
+        for (Query& q : queries) {
+            const bool truth = concrete.holds(q.property->exprs[0], cells.data());
+            if (q.positive) (truth ? held : failed)++;
+            CAPTURE(trial);
+            CAPTURE(q.property->name);
+            CAPTURE(q.positive);
+            q.solver->push();
+            q.solver->add(q.enc->configurationIs(*q.s, cells));
+            q.solver->add(q.enc->inputsAre(inputs));
+            CHECK(q.solver->check() == (truth == q.positive ? z3::sat : z3::unsat));
+            q.solver->pop();
+        }
+    }
+    CHECK(held > 100);
+    CHECK(failed > 100);
+}
+
+TEST_CASE("the planner over general1: Progress proved on square:4x3, and refuted without the upper bound on mass") {
+    test::World w = test::World::library("planner_general1", "square:4x3");
+    CHECK(result(prove(w, {"progress"}), "progress").verdict == Verdict::Holds);
+    // Three creators and a one-cell target: nothing to delete with, nowhere to transfer to.
+    std::string text = rules::readTextFile(std::string(HOLON_TEST_DIR) + "/../rules/library/planner_general1.holon");
+    const std::string bound = " and mass <= count(target) + count(target)";
+    REQUIRE(text.find(bound) != std::string::npos);
+    text.erase(text.find(bound), bound.size());
+    test::World unbounded(test::parse(text), "square:4x3");
+    const auto r = prove(unbounded, {"progress"});
+    const auto& stuck = result(r, "progress");
+    REQUIRE(stuck.verdict == Verdict::Violated);
+    CHECK(checker::confirmCounterexample(stuck, *unbounded.model, unbounded.region));
+}
+
+TEST_CASE("a ranking with excepted rules: transfers must keep it, the planner's own steps decrease it") {
+    const std::string text = rules::readTextFile(std::string(HOLON_TEST_DIR) + "/../rules/library/planner_general1.holon");
+    auto variant = [&](const std::string& except) {
+        std::string t = text;
+        const std::string clause = " except transfer";
+        REQUIRE(t.find(clause) != std::string::npos);
+        t.replace(t.find(clause), clause.size(), except);
+        return test::parse(t);
+    };
+    struct Case {
+        std::string except, rule;  // rule: the one the counterexample names, or none
+    };
+    for (const Case& k : {Case{" except transfer", ""}, Case{"", "transfer"}, Case{" except transfer, path_create", "path_create"}}) {
+        CAPTURE(k.except);
+        test::World w(variant(k.except), "square:3x3");
+        const auto report = prove(w, {"termination"});
+        const auto& proof = result(report, "termination");
+        auto explored = test::checkAll(variant(k.except), "square:3x1");
+        const auto& check = explored.property("termination");
+        if (k.rule.empty()) {
+            CHECK(proof.verdict == Verdict::Holds);
+            CHECK(proof.summary.find("every step of transfer keeps it") != std::string::npos);
+            CHECK(check.verdict == Verdict::Holds);
+            continue;
+        }
+        REQUIRE(proof.verdict == Verdict::Violated);
+        CHECK(proof.witness["rule"].get<std::string>().rfind(k.rule, 0) == 0);
+        CHECK(checker::confirmCounterexample(proof, *w.model, w.region));
+        CHECK(check.verdict == Verdict::Violated);
+        explored.replayAll();
     }
 }
 
