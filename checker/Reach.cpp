@@ -167,7 +167,7 @@ ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadSta
     // are fixed in every clause; otherwise they are arguments of reach, set by the initial clause.
     const bool sharedInputs = std::all_of(initial.begin(), initial.end(), [&](const auto& c) { return c.inputs == initial.front().inputs; });
 
-    SmtEncoding enc(ctx, engine, false);
+    SmtEncoding enc(ctx, engine, SmtEncoding::Use::HornClauses);
     std::vector<Atom> atoms;
     for (int i = 0; i < region.size(); ++i) {
         const rules::Vec v = region.cell(i);

@@ -25,8 +25,8 @@ namespace holon::checker {
 using rules::CellValue;
 using rules::Expr;
 
-SmtEncoding::SmtEncoding(z3::context& ctx, const rules::Engine& engine, bool rankExtremes)
-    : ctx_(ctx), engine_(engine), alphabet_(engine.model().alphabet().size()), rankExtremes_(rankExtremes) {
+SmtEncoding::SmtEncoding(z3::context& ctx, const rules::Engine& engine, Use use)
+    : ctx_(ctx), engine_(engine), alphabet_(engine.model().alphabet().size()), use_(use) {
     const int inputs = static_cast<int>(engine.model().system().inputs.size());
     for (int i = 0; i < engine.region().size(); ++i) {
         std::vector<z3::expr> bits;
@@ -276,7 +276,8 @@ z3::expr SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
     case Expr::Kind::Implies: return !holds(e.kids[0], s, !positive) || holds(e.kids[1], s, positive);
     case Expr::Kind::Not: return !holds(e.kids[0], s, !positive);
     case Expr::Kind::Compare:
-        if (auto f = cellwise(e, s)) return *f;
+        if (use_ == Use::Queries)
+            if (auto f = cellwise(e, s)) return *f;
         return compareExprs(e.op, number(e.kids[0], s), number(e.kids[1], s));
     case Expr::Kind::Some:
     case Expr::Kind::No:
@@ -465,7 +466,7 @@ z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
     // onto a cell of highest rank (a P leaf, in the planner's Progress argument). Without them the
     // solver finds these extremes by descent through the ranks.
     std::optional<z3::expr> lowest, highest;
-    if (rankExtremes_) lowest = fresh("prank_low", ctx_.int_sort()), highest = fresh("prank_high", ctx_.int_sort());
+    if (use_ == Use::Queries) lowest = fresh("prank_low", ctx_.int_sort()), highest = fresh("prank_high", ctx_.int_sort());
     z3::expr f = ctx_.bool_val(true), some = ctx_.bool_val(false), atLowest = ctx_.bool_val(false), atHighest = ctx_.bool_val(false);
     for (int i = 0; i < n; ++i) {
         z3::expr ok = ctx_.bool_val(false);
@@ -474,7 +475,7 @@ z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
             if (j < 0) continue;
             ok = ok || (r.steps[i][d] && (r.to[j] || (r.from[j] && rank[j] < rank[i])));
         }
-        if (!rankExtremes_) {
+        if (use_ != Use::Queries) {
             f = f && z3::implies(r.from[i], ok);
             continue;
         }
@@ -483,7 +484,7 @@ z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
         atLowest = atLowest || (r.from[i] && rank[i] == *lowest);
         atHighest = atHighest || (r.from[i] && rank[i] == *highest);
     }
-    if (rankExtremes_) f = f && z3::implies(some, atLowest && atHighest);
+    if (use_ == Use::Queries) f = f && z3::implies(some, atLowest && atHighest);
     return hypothesis(f, {r.from, r, ctx_.bool_val(true), s.is[0][0].id()});
 }
 

@@ -14,10 +14,13 @@ namespace holon::checker {
 
 class SmtEncoding {
 public:
+    /// What the formulas are for. Spacer (Horn clauses) is sensitive to how a formula is written,
+    /// and the helpers that speed up ordinary queries slow it down: for Horn clauses,
+    /// pointer-reachability witnesses do not name their lowest and highest rank, and comparisons of
+    /// counts and masses stay two sums instead of one sum of per-cell differences (see the .cpp).
+    enum class Use { Queries, HornClauses };
     /// `engine` must cover every input combination (Engine(..., true)) when inputs are left open.
-    /// `rankExtremes`: pointer-reachability witnesses also name their lowest and highest rank (see
-    /// the .cpp); Horn-clause queries leave them out, where the extra integers slow Spacer down.
-    SmtEncoding(z3::context& ctx, const rules::Engine& engine, bool rankExtremes = true);
+    SmtEncoding(z3::context& ctx, const rules::Engine& engine, Use use = Use::Queries);
 
     /// A configuration, one-hot: is[i][v] says cell i holds state v; exactly one per cell (the
     /// domain constraints go to `facts()`).
@@ -123,7 +126,7 @@ private:
     z3::context& ctx_;
     const rules::Engine& engine_;
     int alphabet_;
-    bool rankExtremes_;
+    Use use_;
     std::vector<std::vector<z3::expr>> inputBits_;  // [cell][input]
     std::vector<z3::expr> facts_;
     int counter_ = 0;
