@@ -31,7 +31,9 @@ std::string stopReasonName(StopReason r) {
 
 Explorer::Explorer(const rules::Engine& engine, Options options)
     : engine_(&engine), options_(std::move(options)),
-      store_(StateLayout(engine.region().size(), engine.model().alphabet().size())) {}
+      store_(StateLayout(engine.region().size(), engine.model().alphabet().size(), options_.onWords && WordSuccessors::fits(engine))) {
+    if (store_.layout().planeMajor()) words_ = std::make_unique<WordSuccessors>(engine, store_.layout());
+}
 
 std::vector<CellValue> Explorer::cells(StateId id) const {
     std::vector<CellValue> c(engine_->region().size());
@@ -44,8 +46,7 @@ StateId Explorer::addInitial(const CellValue* cells) {
     std::vector<std::uint64_t> packed(store_.layout().words());
     store_.layout().pack(cells, packed.data());
     store_.reserve(1);
-    parent_.resize(store_.capacityUsed() + 1, kNoState);
-    via_.resize(store_.capacityUsed() + 1, -1);
+    resizeLinks(store_.capacityUsed() + 1);
     auto [id, inserted] = store_.insert(packed.data());
     if (inserted) {
         frontier_.push_back(id);
@@ -123,8 +124,7 @@ void Explorer::addAllLegal() {
                 throw InputError("region " + engine_->region().spec() + " has more than --max-states=" +
                                  std::to_string(options_.limits.maxStates) + " legal configurations; raise the limit or choose a smaller region");
             if (!rank) store_.reserve(count);
-            parent_.resize(store_.capacityUsed() + count, kNoState);
-            via_.resize(store_.capacityUsed() + count, -1);
+            resizeLinks(store_.capacityUsed() + count);
             for (std::size_t k = 0; k < count; ++k) {
                 const std::uint64_t* packed = &list[k * store_.layout().words()];
                 StateId id;
@@ -156,12 +156,25 @@ void Explorer::gather(StateId id, Successors& out) const {
     // parent's words and its table slot is prefetched.
     const StateLayout& layout = store_.layout();
     const int words = layout.words();
-    std::vector<CellValue>& cells = out.cells;
-    cells.resize(engine_->region().size());
-    unpack(id, cells.data());
     const std::uint64_t* base = store_.state(id);
     out.from = id;
     out.packed.clear(), out.keys.clear(), out.via.clear();
+    if (words_) {
+        WordSuccessors::Loaded& loaded = out.loaded;
+        words_->load(base, loaded, ranked());
+        const std::uint64_t index = ranked() ? indexOf(loaded.cells) : 0;
+        words_->forEach(loaded, [&](int p, const std::uint64_t* delta, std::uint64_t indexDelta) {
+            out.via.push_back(p);
+            if (ranked()) return out.keys.push_back(index + indexDelta);
+            for (int w = 0; w < words; ++w) out.packed.push_back(base[w] ^ delta[w]);
+        });
+        if (!ranked())
+            for (std::size_t k = 0; k < out.via.size(); ++k) out.keys.push_back(store_.prefetch(&out.packed[k * words]));
+        return;
+    }
+    std::vector<CellValue>& cells = out.cells;
+    cells.resize(engine_->region().size());
+    unpack(id, cells.data());
     const std::uint64_t index = ranked() ? indexOf(cells.data()) : 0;
     engine_->forEachMatch(cells.data(), [&](int p) {
         const rules::Engine::Placed& placed = engine_->instances()[p];
@@ -201,20 +214,31 @@ void Explorer::resolve(const Successors& s, rules::Engine::Evaluator& ev, Found&
         if (sid == kNoState) {
             if (complete_) continue;
             const std::uint64_t* successor = &s.packed[k * words];
-            if (!loaded) ev.load(s.cells.data()), loaded = true;
-            ev.apply(s.via[k], saved);
-            const bool legal = ev.legal();
+            bool legal;
+            const CellValue* cells = nullptr;
+            if (words_) {
+                legal = words_->legal(successor, &s.loaded);
+            } else {
+                if (!loaded) ev.load(s.cells.data()), loaded = true;
+                ev.apply(s.via[k], saved);
+                legal = ev.legal();
+                cells = ev.cells();
+            }
             if (legal) {
                 const auto [added, inserted] = store_.insert(successor, s.keys[k]);
                 sid = added;
                 if (inserted) {
-                    parent_[sid] = s.from;
-                    via_[sid] = s.via[k];
+                    parent_[sid] = s.from + 1;
+                    via_[sid] = s.via[k] + 1;
                     found.next.push_back(sid);
-                    if (options_.onState) options_.onState(sid, ev.cells());
+                    if (options_.onState) {
+                        thread_local std::vector<CellValue> unpacked;
+                        if (!cells) unpacked.resize(engine_->region().size()), unpack(sid, unpacked.data()), cells = unpacked.data();
+                        options_.onState(sid, cells);
+                    }
                 }
             }
-            ev.undo(s.via[k], saved);
+            if (!words_) ev.undo(s.via[k], saved);
             if (!legal) continue;
         }
         // Two instances with the same effect are one edge of the graph.
@@ -273,8 +297,7 @@ const ExploreStats& Explorer::explore() {
             const std::size_t end = std::min(frontier_.size(), pos + chunk);
             if (!complete_) {  // a complete store gains no states
                 store_.reserve((end - pos) * branching);
-                parent_.resize(store_.capacityUsed() + (end - pos) * branching, kNoState);
-                via_.resize(parent_.size(), -1);
+                resizeLinks(store_.capacityUsed() + (end - pos) * branching);
             }
             auto work = [&](int t) {
                 const std::size_t per = (end - pos + threads - 1) / threads;
@@ -310,10 +333,9 @@ const ExploreStats& Explorer::explore() {
     std::sort(terminal_.begin(), terminal_.end());
     stats_.states = store_.size();
     store_.shrinkToFit();
-    parent_.resize(store_.capacityUsed());
-    parent_.shrink_to_fit();
-    via_.resize(store_.capacityUsed());
-    via_.shrink_to_fit();
+    resizeLinks(store_.capacityUsed());
+    parent_.shrinkToFit();
+    via_.shrinkToFit();
     if (options_.recordEdges) buildRows(found);
     stats_.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     stats_.bytes = store_.bytes() + rankingBytes() + parent_.size() * 8 + succ_.size() * 8 + rowStart_.size() * 8;
@@ -349,7 +371,7 @@ std::vector<StateId> Explorer::ids() const {
 
 std::vector<std::pair<StateId, std::int32_t>> Explorer::pathTo(StateId id) const {
     std::vector<std::pair<StateId, std::int32_t>> path;
-    for (StateId s = id; s != kNoState; s = parent_[s]) path.push_back({s, via_[s]});
+    for (StateId s = id; s != kNoState; s = parent(s)) path.push_back({s, via(s)});
     std::reverse(path.begin(), path.end());
     return path;
 }

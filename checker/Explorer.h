@@ -4,12 +4,14 @@
 // cleanly and say what was left.
 
 #include "checker/StateStore.h"
+#include "checker/WordSuccessors.h"
 #include "rules/Engine.h"
 
 #include <bit>
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,9 @@ public:
         /// addAllLegal indexes the legal configurations by rank when the candidates are few
         /// enough; false keeps the hash table (the tests compare both).
         bool rankAllLegal = true;
+        /// On regions of at most 64 cells, successors and legality on words (WordSuccessors);
+        /// false keeps the cell-by-cell path of larger regions (the tests compare both).
+        bool onWords = true;
         /// Called from worker threads for every newly stored state (id, unpacked cells); must be
         /// thread-safe. Used for per-state property checks.
         std::function<void(StateId, const CellValue*)> onState;
@@ -71,9 +76,9 @@ public:
     std::vector<CellValue> cells(StateId id) const;
     /// BFS tree: the state a state was first reached from (kNoState for initial ones), and the placed
     /// instance that led to it.
-    StateId parent(StateId id) const { return parent_[id]; }
-    std::int32_t via(StateId id) const { return via_[id]; }
-    bool isInitial(StateId id) const { return parent_[id] == kNoState && !store_.isHole(id); }
+    StateId parent(StateId id) const { return parent_[id] - 1; }  // 0 - 1 wraps to kNoState
+    std::int32_t via(StateId id) const { return via_[id] - 1; }
+    bool isInitial(StateId id) const { return parent(id) == kNoState && !store_.isHole(id); }
     /// Ids of states stored so far, holes excluded, in id order.
     std::vector<StateId> ids() const;
     /// States with no enabled instance at all.
@@ -92,7 +97,8 @@ private:
     /// that lead to them.
     struct Successors {
         StateId from = kNoState;
-        std::vector<CellValue> cells;  // of `from`, unpacked
+        std::vector<CellValue> cells;  // of `from`, unpacked (the cell-by-cell path)
+        WordSuccessors::Loaded loaded;  // of `from` (the word path)
         std::vector<std::uint64_t> packed, keys;  // keys: hash in the store, or the candidate index when ranked
         std::vector<std::int32_t> via;
     };
@@ -110,8 +116,12 @@ private:
     const rules::Engine* engine_;
     Options options_;
     StateStore store_;
-    std::vector<StateId> parent_;
-    std::vector<std::int32_t> via_;
+    std::unique_ptr<WordSuccessors> words_;  // regions of at most 64 cells
+    // One more than the parent's id and the instance's index, so that the zero pages a PageArray
+    // grows into read as "none" without being written.
+    PageArray<StateId> parent_;
+    PageArray<std::int32_t> via_;
+    void resizeLinks(std::size_t n) { parent_.resize(n), via_.resize(n); }
     std::vector<StateId> frontier_;
     std::vector<StateId> terminal_;
     bool complete_ = false;  // the store holds every legal configuration (after addAllLegal)

@@ -13,20 +13,45 @@
 
 namespace holon::checker {
 
-StateLayout::StateLayout(int cells, int alphabetSize) : cells_(cells) {
+StateLayout::StateLayout(int cells, int alphabetSize, bool planeMajor) : cells_(cells), planeMajor_(planeMajor && cells <= 64) {
     bits_ = std::max(1, static_cast<int>(std::bit_width(static_cast<unsigned>(alphabetSize - 1))));
     perWord_ = 64 / bits_;
-    words_ = (cells + perWord_ - 1) / perWord_;
+    words_ = planeMajor_ ? (cells * bits_ + 63) / 64 : (cells + perWord_ - 1) / perWord_;
     mask_ = bits_ == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits_) - 1;
+    cellMask_ = cells >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << cells) - 1;
 }
 
 void StateLayout::pack(const CellValue* cells, std::uint64_t* out) const {
     for (int w = 0; w < words_; ++w) out[w] = 0;
+    if (planeMajor_) {
+        for (int j = 0; j < bits_; ++j) {
+            std::uint64_t p = 0;
+            for (int i = 0; i < cells_; ++i) p |= static_cast<std::uint64_t>((cells[i] >> j) & 1u) << i;
+            flip(out, j, p);
+        }
+        return;
+    }
     for (int i = 0; i < cells_; ++i) out[i / perWord_] |= static_cast<std::uint64_t>(cells[i]) << ((i % perWord_) * bits_);
 }
 
 void StateLayout::unpack(const std::uint64_t* in, CellValue* cells) const {
+    if (planeMajor_) {
+        for (int i = 0; i < cells_; ++i) cells[i] = 0;
+        for (int j = 0; j < bits_; ++j)
+            for (std::uint64_t p = plane(in, j); p; p &= p - 1) cells[std::countr_zero(p)] |= static_cast<CellValue>(1u << j);
+        return;
+    }
     for (int i = 0; i < cells_; ++i) cells[i] = static_cast<CellValue>((in[i / perWord_] >> ((i % perWord_) * bits_)) & mask_);
+}
+
+void StateLayout::set(std::uint64_t* packed, int cell, CellValue v) const {
+    if (planeMajor_) {
+        for (int j = 0; j < bits_; ++j)
+            if (((plane(packed, j) >> cell) & 1u) != ((v >> j) & 1u)) flip(packed, j, std::uint64_t{1} << cell);
+        return;
+    }
+    const int w = cell / perWord_, shift = (cell % perWord_) * bits_;
+    packed[w] = (packed[w] & ~(mask_ << shift)) | (static_cast<std::uint64_t>(v) << shift);
 }
 
 std::uint64_t StateLayout::hash(const std::uint64_t* packed) const {
@@ -46,19 +71,19 @@ void StateStore::reserve(std::uint64_t more) {
     const std::uint64_t need = static_cast<std::uint64_t>(capacityUsed()) + more;
     if (need >= 0xFFFFFFF0ull) throw InputError("more than 4 billion states; lower --max-states");
     growArena(need);
-    // Keep the table at most three quarters full even if the arena fills up (in practice far
-    // fewer states are inserted: most successors are already known). Ids then stay below the slot
-    // count, so the tag width changes only when the table is rebuilt anyway.
+    // The table stays at most 7/8 full even if all the room asked for is used, which it almost
+    // never is (most successors are already known), so it is rebuilt rarely. Ids stay below the
+    // slot count, so the tag width changes only when the table is rebuilt anyway.
     std::size_t want = 1024;
-    while (want * 3 < 4 * capacity_) want <<= 1;
-    if (want > slotCount_) rebuildTable(want);
+    while (want * 7 < 8 * need) want <<= 1;
+    if (want > slots_.size()) rebuildTable(want);
 }
 
 void StateStore::growArena(std::size_t need) {
     if (need <= capacity_) return;
-    capacity_ = std::max<std::size_t>(need, capacity_ + capacity_ / 2);
+    capacity_ = need;  // the pages grow by remapping: no copy, so no reason to grow ahead
     arena_.resize(capacity_ * layout_.words());
-    holeFlags_.resize(capacity_, 0);
+    holeFlags_.resize(capacity_);
 }
 
 StateId StateStore::append(const std::uint64_t* packed) {
@@ -72,22 +97,19 @@ StateId StateStore::append(const std::uint64_t* packed) {
 }
 
 void StateStore::rebuildTable(std::size_t want) {
-    std::unique_ptr<std::atomic<std::uint32_t>[]> old = std::move(slots_);
-    const std::size_t oldCount = slotCount_;
+    // Only called while no thread inserts: plain reads and writes.
+    PageArray<std::uint32_t> old = std::move(slots_);
     const std::uint32_t oldMask = tagMask_;
-    slots_ = std::make_unique<std::atomic<std::uint32_t>[]>(want);
-    slotCount_ = want;
+    slots_.resize(want);  // fresh pages: every slot empty
     const int idBits = std::bit_width(want);
     tagMask_ = idBits >= 32 ? 0 : ~std::uint32_t{0} << idBits;
-    for (std::size_t i = 0; i < want; ++i) slots_[i].store(0, std::memory_order_relaxed);
-    for (std::size_t i = 0; i < oldCount; ++i) {
-        const std::uint32_t s = old[i].load(std::memory_order_relaxed);
+    for (const std::uint32_t s : old) {
         if (!s) continue;
         const StateId id = (s & ~oldMask) - 1;
         const std::uint64_t h = layout_.hash(state(id));
         std::size_t pos = h & (want - 1);
-        while (slots_[pos].load(std::memory_order_relaxed)) pos = (pos + 1) & (want - 1);
-        slots_[pos].store(tagOf(h) | (id + 1), std::memory_order_relaxed);
+        while (slots_[pos]) pos = (pos + 1) & (want - 1);
+        slots_[pos] = tagOf(h) | (id + 1);
     }
 }
 
@@ -103,28 +125,28 @@ void StateStore::shrinkToFit() {
     const std::size_t used = capacityUsed();
     capacity_ = std::max<std::size_t>(used, 1);
     arena_.resize(capacity_ * layout_.words());
-    arena_.shrink_to_fit();
+    arena_.shrinkToFit();
     holeFlags_.resize(capacity_);
-    holeFlags_.shrink_to_fit();
+    holeFlags_.shrinkToFit();
     std::size_t want = 1024;
     while (want < 2 * (used - appended_)) want <<= 1;
-    rebuildTable(want);
+    if (want != slots_.size()) rebuildTable(want);
 }
 
 std::pair<StateId, bool> StateStore::insert(const std::uint64_t* packed, std::uint64_t hash) {
     const int words = layout_.words();
-    const std::size_t mask = slotCount_ - 1;
+    const std::size_t mask = slots_.size() - 1;
     const std::uint32_t tag = tagOf(hash);
     std::size_t pos = hash & mask;
     StateId mine = kNoState;
     while (true) {
-        std::uint32_t s = slots_[pos].load(std::memory_order_acquire);
+        std::uint32_t s = slot(pos).load(std::memory_order_acquire);
         if (s == 0) {
             if (mine == kNoState) {
                 mine = next_.fetch_add(1, std::memory_order_relaxed);
                 std::memcpy(&arena_[static_cast<std::size_t>(mine) * words], packed, sizeof(std::uint64_t) * words);
             }
-            if (slots_[pos].compare_exchange_strong(s, tag | (mine + 1), std::memory_order_acq_rel)) return {mine, true};
+            if (slot(pos).compare_exchange_strong(s, tag | (mine + 1), std::memory_order_acq_rel)) return {mine, true};
         }
         if ((s & tagMask_) == tag && sameWords(state(idIn(s)), packed, words)) {
             if (mine != kNoState) {
@@ -139,23 +161,23 @@ std::pair<StateId, bool> StateStore::insert(const std::uint64_t* packed, std::ui
 
 StateId StateStore::find(const std::uint64_t* packed, std::uint64_t hash) const {
     const int words = layout_.words();
-    const std::size_t mask = slotCount_ - 1;
+    const std::size_t mask = slots_.size() - 1;
     const std::uint32_t tag = tagOf(hash);
     for (std::size_t pos = hash & mask;; pos = (pos + 1) & mask) {
-        const std::uint32_t s = slots_[pos].load(std::memory_order_acquire);
+        const std::uint32_t s = slot(pos).load(std::memory_order_acquire);
         if (s == 0) return kNoState;
         if ((s & tagMask_) == tag && sameWords(state(idIn(s)), packed, words)) return idIn(s);
     }
 }
 
 std::size_t StateStore::bytes() const {
-    return arena_.size() * sizeof(std::uint64_t) + slotCount_ * sizeof(std::uint32_t) + holeFlags_.size();
+    return arena_.size() * sizeof(std::uint64_t) + slots_.size() * sizeof(std::uint32_t) + holeFlags_.size();
 }
 
 double StateStore::bytesPerState() const {
     const double n = static_cast<double>(std::max<std::uint64_t>(1, size()));
     // What a stored state costs: its packed words, its table slots at the current load, its flag.
-    return layout_.words() * 8.0 + static_cast<double>(slotCount_) * sizeof(StateId) / n + 1.0;
+    return layout_.words() * 8.0 + static_cast<double>(slots_.size()) * sizeof(StateId) / n + 1.0;
 }
 
 }  // namespace holon::checker

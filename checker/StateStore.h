@@ -3,6 +3,7 @@
 // arena and indexed by an open-addressing hash table. Insertion is lock-free so several threads can
 // expand states at once; growing happens between phases.
 
+#include "checker/PageArray.h"
 #include "rules/Model.h"
 
 #include <atomic>
@@ -17,24 +18,39 @@ using rules::CellValue;
 using StateId = std::uint32_t;
 constexpr StateId kNoState = 0xFFFFFFFFu;
 
-/// How a configuration of n cells over an alphabet packs into 64-bit words (no cell straddles a word).
+/// How a configuration of n cells over an alphabet packs into 64-bit words. Cell-major: a cell's
+/// bits side by side, no cell straddling a word. Plane-major (regions of at most 64 cells): plane j
+/// holds bit j of every cell's state, planes back to back (a plane may straddle two words), so
+/// the word-parallel successor generator reads a plane with a shift.
 class StateLayout {
 public:
-    StateLayout(int cells, int alphabetSize);
+    StateLayout(int cells, int alphabetSize, bool planeMajor = false);
     int words() const { return words_; }
     int bitsPerCell() const { return bits_; }
+    bool planeMajor() const { return planeMajor_; }
     void pack(const CellValue* cells, std::uint64_t* out) const;
     void unpack(const std::uint64_t* in, CellValue* cells) const;
     std::uint64_t hash(const std::uint64_t* packed) const;
     /// Overwrites one cell of a packed state.
-    void set(std::uint64_t* packed, int cell, CellValue v) const {
-        const int w = cell / perWord_, shift = (cell % perWord_) * bits_;
-        packed[w] = (packed[w] & ~(mask_ << shift)) | (static_cast<std::uint64_t>(v) << shift);
+    void set(std::uint64_t* packed, int cell, CellValue v) const;
+    /// Plane-major only: plane j of a packed state (bit c is bit j of cell c's state).
+    std::uint64_t plane(const std::uint64_t* packed, int j) const {
+        const int at = j * cells_, w = at >> 6, shift = at & 63;
+        std::uint64_t p = packed[w] >> shift;
+        if (shift && w + 1 < words_) p |= packed[w + 1] << (64 - shift);
+        return p & cellMask_;
+    }
+    /// Plane-major only: XORs `bits` (a word over cells) into plane j of a packed state.
+    void flip(std::uint64_t* packed, int j, std::uint64_t bits) const {
+        const int at = j * cells_, w = at >> 6, shift = at & 63;
+        packed[w] ^= bits << shift;
+        if (shift && w + 1 < words_) packed[w + 1] ^= bits >> (64 - shift);
     }
 
 private:
     int cells_, bits_, perWord_, words_;
-    std::uint64_t mask_;
+    bool planeMajor_;
+    std::uint64_t mask_, cellMask_;
 };
 
 class StateStore {
@@ -59,15 +75,16 @@ public:
     /// Hints the cache about the table slot a state hashes to; returns the hash for insert().
     std::uint64_t prefetch(const std::uint64_t* packed) const {
         const std::uint64_t h = layout_.hash(packed);
-        __builtin_prefetch(&slots_[h & (slotCount_ - 1)]);
+        __builtin_prefetch(&slots_[h & (slots_.size() - 1)]);
         return h;
     }
     /// The second stage of a look-up pipeline: once prefetch()'s slot is in cache, hints the cache
     /// about the first stored state whose tag matches, the one find() and insert() compare against.
     void prefetchStored(std::uint64_t hash) const {
         const std::uint32_t tag = tagOf(hash);
-        for (std::size_t pos = hash & (slotCount_ - 1);; pos = (pos + 1) & (slotCount_ - 1)) {
-            const std::uint32_t s = slots_[pos].load(std::memory_order_relaxed);
+        const std::size_t mask = slots_.size() - 1;
+        for (std::size_t pos = hash & mask;; pos = (pos + 1) & mask) {
+            const std::uint32_t s = slot(pos).load(std::memory_order_relaxed);
             if (!s) return;
             if ((s & tagMask_) == tag) return __builtin_prefetch(state(idIn(s)));
         }
@@ -87,14 +104,14 @@ private:
     // rejected without reading it.
     std::uint32_t tagOf(std::uint64_t hash) const { return static_cast<std::uint32_t>(hash >> 32) & tagMask_; }
     StateId idIn(std::uint32_t slot) const { return (slot & ~tagMask_) - 1; }
+    std::atomic_ref<std::uint32_t> slot(std::size_t pos) const { return std::atomic_ref<std::uint32_t>(slots_[pos]); }
     void rebuildTable(std::size_t slots);
 
     StateLayout layout_;
-    std::vector<std::uint64_t> arena_;
-    std::unique_ptr<std::atomic<std::uint32_t>[]> slots_;
-    std::size_t slotCount_ = 0;
+    PageArray<std::uint64_t> arena_;
+    mutable PageArray<std::uint32_t> slots_;  // read and written through atomic_ref
     std::uint32_t tagMask_ = 0;
-    std::vector<std::uint8_t> holeFlags_;
+    PageArray<std::uint8_t> holeFlags_;
     std::atomic<StateId> next_{0};
     std::atomic<StateId> holes_{0};
     std::size_t capacity_ = 0;  // states the arena holds without growing

@@ -126,6 +126,28 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
         for (std::size_t k = 0; k < predicateMasks_.size(); ++k)
             for (int v = 0; v < std::min(64, tables_.alphabet()); ++v)
                 if (test(predicateMasks_[k], combo, static_cast<CellValue>(v))) predicateStates_[combo * predicateMasks_.size() + k] |= std::uint64_t{1} << v;
+    // Which constraints words decide, and the words each of their predicates needs.
+    std::function<bool(const CompiledExpr&)> onWords = [&](const CompiledExpr& e) {
+        if (e.cellGuard || e.kind == Expr::Kind::Reaches) return false;
+        if (e.predicate >= 0 && std::find(constraintPredicates_.begin(), constraintPredicates_.end(), e.predicate) == constraintPredicates_.end())
+            constraintPredicates_.push_back(e.predicate);
+        if (e.kind == Expr::Kind::Mass) constraintsUseMass_ = true;
+        return std::all_of(e.kids.begin(), e.kids.end(), onWords);
+    };
+    constraintsOnWords_ = region.size() <= 64 && tables_.alphabet() <= 64 && std::all_of(compiledConstraints_.begin(), compiledConstraints_.end(), onWords);
+    std::function<void(const CompiledExpr&)> split = [&](const CompiledExpr& e) {
+        if (e.kind == Expr::Kind::And && !e.cellGuard) std::for_each(e.kids.begin(), e.kids.end(), split);
+        else conjuncts_.push_back(&e);
+    };
+    std::for_each(compiledConstraints_.begin(), compiledConstraints_.end(), split);
+    if (constraintsOnWords_) {
+        const int a = tables_.alphabet();
+        predicateCells_.assign(predicateMasks_.size() * a, 0);
+        for (int c = 0; c < region.size(); ++c)
+            for (std::size_t k = 0; k < predicateMasks_.size(); ++k)
+                for (int v = 0; v < a; ++v)
+                    if ((predicateStates_[combo_[c] * predicateMasks_.size() + k] >> v) & 1u) predicateCells_[k * a + v] |= std::uint64_t{1} << c;
+    }
     if (region.size() <= 64) {
         neighbourBits_.assign(region.size(), 0);
         for (int i = 0; i < region.size(); ++i)
@@ -139,6 +161,52 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
         // An irregular region needs many shifts; then the cell-by-cell walk is cheaper.
         if (static_cast<int>(shifts_.size()) > 2 * lattice.degree()) shifts_.clear();
     }
+}
+
+bool Engine::hasGuards() const {
+    for (int s = 0; s < tables_.shapeCount(); ++s)
+        if (tables_.shape(s).hasGuard) return true;
+    return false;
+}
+
+bool Engine::legalIn(const std::uint64_t* occupied, const std::uint64_t* legalBefore) const {
+    const int a = tables_.alphabet();
+    auto member = [&](const std::uint64_t* cellsIn, int k) {
+        const std::uint64_t* byState = &predicateCells_[static_cast<std::size_t>(k) * a];
+        std::uint64_t m = 0;
+        for (int v = 0; v < a; ++v) m |= cellsIn[v] & byState[v];
+        return m;
+    };
+    thread_local std::vector<std::uint64_t> members;
+    members.resize(predicateMasks_.size());
+    for (int k : constraintPredicates_) members[k] = member(occupied, k);
+    std::int64_t mass = 0;
+    if (constraintsUseMass_)
+        for (int v = 0; v < a; ++v) mass += std::popcount(occupied[v]) * tables_.massUnitsOf(static_cast<CellValue>(v));
+    for (const CompiledExpr* c : conjuncts_) {
+        const bool holds = c->kind == Expr::Kind::Connected && legalBefore ? stillConnected(member(legalBefore, c->predicate), members[c->predicate])
+                                                                          : holdsOn(*c, members.data(), mass, nullptr);
+        if (!holds) return false;
+    }
+    return true;
+}
+
+bool Engine::stillConnected(std::uint64_t before, std::uint64_t now) const {
+    // Every component of `now` holds a neighbour of a removed cell (the components of before minus
+    // the removed cells each touch one, before being connected), an added cell, or, when nothing
+    // was removed, all of `before`. So `now` is connected exactly when one of these reaches all
+    // the others, and a flood from one of them can stop as soon as it has.
+    const std::uint64_t removed = before & ~now, added = now & ~before;
+    if (!removed && !added) return true;
+    if (!now) return true;
+    std::uint64_t targets = (around(removed) & now) | added;
+    if (!removed) targets |= before & (~before + 1);
+    std::uint64_t reached = targets & (~targets + 1), frontier = reached;
+    while (frontier && (targets & ~reached)) {
+        frontier = around(frontier) & now & ~reached;
+        reached |= frontier;
+    }
+    return !(targets & ~reached);
 }
 
 bool Engine::lhsAccepts(int placed, int k, int combo, CellValue v) const { return test(tables_.shape(placed_[placed].shape).lhs[k], combo, v); }
@@ -249,65 +317,66 @@ void Engine::Evaluator::undo(int placed, const CellValue* saved) {
 bool Engine::Evaluator::legal() const {
     if (!small_) return engine_->legal(cells_.data());
     for (const CompiledExpr& c : engine_->compiledConstraints_)
-        if (!fastHolds(c)) return false;
+        if (!engine_->holdsOn(c, members_.data(), mass_, cells_.data())) return false;
     return true;
 }
 
-Rational Engine::Evaluator::fastNumber(const CompiledExpr& e) const {
+Rational Engine::numberOn(const CompiledExpr& e, const std::uint64_t* members, std::int64_t mass, const CellValue* cells) const {
     auto kid = [&](int k) -> const CompiledExpr& { return e.kids[k]; };
-    if (e.cellGuard) return engine_->number(*e.source, cells_.data());
+    if (e.cellGuard) return number(*e.source, cells);
     switch (e.kind) {
     case Expr::Kind::Number: return e.value;
-    case Expr::Kind::Count: return std::popcount(members_[e.predicate]);
-    case Expr::Kind::Mass: return Rational(mass_, engine_->tables_.massDenominator());
-    case Expr::Kind::Add: return fastNumber(kid(0)) + fastNumber(kid(1));
-    case Expr::Kind::Sub: return fastNumber(kid(0)) - fastNumber(kid(1));
-    case Expr::Kind::Neg: return -fastNumber(kid(0));
-    default: return engine_->number(*e.source, cells_.data());
+    case Expr::Kind::Count: return std::popcount(members[e.predicate]);
+    case Expr::Kind::Mass: return Rational(mass, tables_.massDenominator());
+    case Expr::Kind::Add: return numberOn(kid(0), members, mass, cells) + numberOn(kid(1), members, mass, cells);
+    case Expr::Kind::Sub: return numberOn(kid(0), members, mass, cells) - numberOn(kid(1), members, mass, cells);
+    case Expr::Kind::Neg: return -numberOn(kid(0), members, mass, cells);
+    default: return number(*e.source, cells);
     }
 }
 
-bool Engine::Evaluator::fastHolds(const CompiledExpr& e) const {
+bool Engine::holdsOn(const CompiledExpr& e, const std::uint64_t* members, std::int64_t mass, const CellValue* cells) const {
     auto kid = [&](int k) -> const CompiledExpr& { return e.kids[k]; };
-    if (e.cellGuard) return engine_->holds(*e.source, cells_.data());
+    if (e.cellGuard) return holds(*e.source, cells);
     switch (e.kind) {
     case Expr::Kind::Bool: return e.value.num() != 0;
-    case Expr::Kind::And: return fastHolds(kid(0)) && fastHolds(kid(1));
-    case Expr::Kind::Or: return fastHolds(kid(0)) || fastHolds(kid(1));
-    case Expr::Kind::Implies: return !fastHolds(kid(0)) || fastHolds(kid(1));
-    case Expr::Kind::Not: return !fastHolds(kid(0));
-    case Expr::Kind::Compare: return compare(e.op, fastNumber(kid(0)), fastNumber(kid(1)));
-    case Expr::Kind::Some: return members_[e.predicate] != 0;
-    case Expr::Kind::No: return members_[e.predicate] == 0;
+    case Expr::Kind::And: return holdsOn(kid(0), members, mass, cells) && holdsOn(kid(1), members, mass, cells);
+    case Expr::Kind::Or: return holdsOn(kid(0), members, mass, cells) || holdsOn(kid(1), members, mass, cells);
+    case Expr::Kind::Implies: return !holdsOn(kid(0), members, mass, cells) || holdsOn(kid(1), members, mass, cells);
+    case Expr::Kind::Not: return !holdsOn(kid(0), members, mass, cells);
+    case Expr::Kind::Compare: return compare(e.op, numberOn(kid(0), members, mass, cells), numberOn(kid(1), members, mass, cells));
+    case Expr::Kind::Some: return members[e.predicate] != 0;
+    case Expr::Kind::No: return members[e.predicate] == 0;
     case Expr::Kind::All: {
-        const int n = static_cast<int>(cells_.size());
+        const int n = region_->size();
         const std::uint64_t all = n == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
-        return members_[e.predicate] == all;
+        return members[e.predicate] == all;
     }
-    case Expr::Kind::Connected: {
-        const std::uint64_t m = members_[e.predicate];
-        if (!m) return true;
-        std::uint64_t reached = m & (~m + 1), frontier = reached;
-        if (!engine_->shifts_.empty()) {
-            // Grow the reached set a layer at a time; a cell with no neighbour in m fails at once.
-            if ((m & (m - 1)) && (m & ~engine_->neighboursOf(m))) return false;
-            while (frontier) {
-                frontier = engine_->neighboursOf(frontier) & m & ~reached;
-                reached |= frontier;
-            }
-            return reached == m;
-        }
+    case Expr::Kind::Connected: return connectedCells(members[e.predicate]);
+    default: return holds(*e.source, cells);
+    }
+}
+
+bool Engine::connectedCells(std::uint64_t m) const {
+    if (!m) return true;
+    std::uint64_t reached = m & (~m + 1), frontier = reached;
+    if (!shifts_.empty()) {
+        // Grow the reached set a layer at a time; a cell with no neighbour in m fails at once.
+        if ((m & (m - 1)) && (m & ~neighboursOf(m))) return false;
         while (frontier) {
-            const int i = std::countr_zero(frontier);
-            frontier &= frontier - 1;
-            const std::uint64_t add = engine_->neighbourBits_[i] & m & ~reached;
-            reached |= add;
-            frontier |= add;
+            frontier = neighboursOf(frontier) & m & ~reached;
+            reached |= frontier;
         }
         return reached == m;
     }
-    default: return engine_->holds(*e.source, cells_.data());
+    while (frontier) {
+        const int i = std::countr_zero(frontier);
+        frontier &= frontier - 1;
+        const std::uint64_t add = neighbourBits_[i] & m & ~reached;
+        reached |= add;
+        frontier |= add;
     }
+    return reached == m;
 }
 
 int Engine::countCells(const Expr& e, const CellValue* cells, bool withCellGuard) const {

@@ -65,6 +65,29 @@ public:
             }
         }
     }
+    /// Small regions (WordMatcher): f(placed) for every instance whose left side and guard hold,
+    /// given the cells in each state as words (`occupied[v]`); `cells` is read only by guards.
+    template <class F>
+    void forEachMatchIn(const std::uint64_t* occupied, const CellValue* cells, F&& f) const {
+        const int shapes = static_cast<int>(model_->shapes().size());
+        words_->forEachShapeIn(occupied, [&](int s, std::uint64_t anchors) {
+            const bool guarded = tables_.shape(s).hasGuard;
+            for (; anchors; anchors &= anchors - 1) {
+                const std::int32_t p = placedIndex_[static_cast<std::size_t>(std::countr_zero(anchors)) * shapes + s];
+                if (!guarded || guardHolds(cells, placed_[p])) f(p);
+            }
+        });
+    }
+    bool matchesOnWords() const { return words_ != nullptr; }
+    bool hasGuards() const;
+    /// Small regions: the constraints can be decided from the cells in each state alone
+    /// (legalIn); false when one needs more, such as a cell guard or a pointer walk.
+    bool constraintsOnWords() const { return constraintsOnWords_; }
+    /// Every constraint holds, given the cells in each state (`occupied[v]`); needs
+    /// constraintsOnWords(). `legalBefore`, when given, holds the cells in each state of a legal
+    /// configuration this one differs from in a few cells (its parent in a search): a connectivity
+    /// conjunct is then decided around the cells that changed.
+    bool legalIn(const std::uint64_t* occupied, const std::uint64_t* legalBefore = nullptr) const;
     /// The state pattern cell k of an instance takes when the instance fires; `old[j]` is the
     /// state of its pattern cell j before.
     CellValue rewritten(const Placed& p, int k, const CellValue* old) const {
@@ -132,8 +155,6 @@ public:
     private:
         /// Cell `cell` now holds `value`: its bit in every predicate word follows.
         void updateMembers(int cell, CellValue value);
-        bool fastHolds(const CompiledExpr& n) const;
-        Rational fastNumber(const CompiledExpr& n) const;
         const Engine* engine_;
         std::vector<CellValue> cells_;
         std::vector<std::uint64_t> members_;  // per predicate index
@@ -200,6 +221,19 @@ private:
     };
     std::vector<CompiledExpr> compiledConstraints_;
     CompiledExpr compileExpr(const Expr& e) const;
+    /// A compiled expression on predicate words (`members[k]`: the cells predicate k accepts) and
+    /// the mass; `cells` (null when absent) serves the parts words cannot decide.
+    bool holdsOn(const CompiledExpr& e, const std::uint64_t* members, std::int64_t mass, const CellValue* cells) const;
+    Rational numberOn(const CompiledExpr& e, const std::uint64_t* members, std::int64_t mass, const CellValue* cells) const;
+    /// Small regions: whether a set of cells is connected (a flood fill on words).
+    bool connectedCells(std::uint64_t cells) const;
+    /// Whether the cells `now` are connected, given that `before` was; they differ in a few cells.
+    bool stillConnected(std::uint64_t before, std::uint64_t now) const;
+    bool constraintsOnWords_ = false;
+    bool constraintsUseMass_ = false;
+    std::vector<const CompiledExpr*> conjuncts_;  // the constraints, split at `and`
+    std::vector<int> constraintPredicates_;       // predicate indices the constraints read
+    std::vector<std::uint64_t> predicateCells_;   // small regions: [predicate * alphabet + state]: cells accepting the state
     std::vector<std::uint64_t> neighbourBits_;  // small regions: per cell, its neighbours as a mask
     /// Small regions: the neighbours of a set of cells as a few word shifts. Cells whose neighbour
     /// sits `delta` indices away form one mask (in a box, one per direction), so the neighbours of
@@ -212,6 +246,13 @@ private:
     std::uint64_t neighboursOf(std::uint64_t r) const {
         std::uint64_t out = 0;
         for (const Shift& s : shifts_) out |= s.delta > 0 ? (r & s.from) << s.delta : (r & s.from) >> -s.delta;
+        return out;
+    }
+    /// The same on any small region: by shifts where the region has them, else cell by cell.
+    std::uint64_t around(std::uint64_t r) const {
+        if (!shifts_.empty()) return neighboursOf(r);
+        std::uint64_t out = 0;
+        for (; r; r &= r - 1) out |= neighbourBits_[std::countr_zero(r)];
         return out;
     }
 };

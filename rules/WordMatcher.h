@@ -31,8 +31,13 @@ public:
     void forEachShape(const CellValue* cells, F&& f) const {
         std::uint64_t occupied[64] = {};  // per state, the cells in it
         for (int c = 0; c < regionSize_; ++c) occupied[cells[c]] |= std::uint64_t{1} << c;
+        forEachShapeIn(occupied, f);
+    }
+    /// The same, from the cells in each state: `occupied[v]` holds the cells in state v.
+    template <class F>
+    void forEachShapeIn(const std::uint64_t* occupied, F&& f) const {
         thread_local std::vector<std::uint64_t> accepted;
-        accepted.assign(tests_.size(), 0);
+        accepted.resize(tests_.size());
         for (std::size_t t = 0; t < tests_.size(); ++t) {
             const std::uint64_t* byState = &testCells_[t * alphabet_];
             std::uint64_t a = 0;

@@ -91,3 +91,54 @@ TEST_CASE("limits stop the search cleanly with a partial report") {
 TEST_CASE("a region too large for --all is refused with a message") {
     CHECK_THROWS_WITH_AS(test::checkAll(rules::librarySystem("general2"), "square:8x8"), doctest::Contains("too many to enumerate"), holon::InputError);
 }
+
+TEST_CASE("successors and legality on words give the graph the cell-by-cell path gives") {
+    // Every kind of rule the library has: guards, inputs, pointers, integer fields, copies (moves),
+    // pattern quantifiers, 19-cell shapes on a hex disk (no word shifts there); from random full
+    // configurations, so the legality of new states is decided (a complete --all store never asks).
+    struct Case {
+        std::string stem, spec, start;  // start: a picture in examples/hex/checker, else random
+    };
+    const std::vector<Case> cases = {{"pixel", "square:4x3", ""},           {"general1", "square:3x3", ""},
+                                     {"general_lock2", "square:3x2", ""},      {"planner_intermediate", "square:3x3", ""},
+                                     {"planner_general2", "square:3x2", ""},   {"roombots_reserve", "square:4x3", ""},
+                                     {"hex_holes", "hex:r4", "neck.txt"},      {"hex_collapse", "hex:r3", "blob.txt"},
+                                     {"pixel", "cubic:3x2x2", ""}};
+    for (const auto& [stem, spec, start] : cases) {
+        CAPTURE(stem);
+        CAPTURE(spec);
+        const test::World world(rules::librarySystem(stem), spec);
+        std::uint64_t seed = 12345;
+        auto next = [&] { return seed = seed * 6364136223846793005ull + 1442695040888963407ull, seed >> 33; };
+        std::vector<std::uint32_t> inputs(world.region.size());
+        for (auto& in : inputs) in = static_cast<std::uint32_t>(next() & ((1u << world.system.inputs.size()) - 1));
+        const rules::Engine engine(*world.model, world.region, inputs);
+        const int a = world.model->alphabet().size();
+        std::vector<std::vector<rules::CellValue>> starts;
+        if (!start.empty()) starts.push_back(world.ascii(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/../examples/hex/checker/" + start)).cells);
+        for (int k = 0; start.empty() && starts.size() < 3 && k < 1000; ++k) {
+            std::vector<rules::CellValue> cells(world.region.size());
+            for (auto& c : cells) c = static_cast<rules::CellValue>(1 + next() % (a - 1));
+            if (k % 2) cells[next() % cells.size()] = 0;
+            if (engine.legal(cells.data())) starts.push_back(cells);
+        }
+        REQUIRE(!starts.empty());
+        std::vector<std::set<std::pair<std::vector<rules::CellValue>, std::vector<rules::CellValue>>>> graphs;
+        for (bool onWords : {true, false}) {
+            checker::Explorer::Options options;
+            options.onWords = onWords;
+            options.limits.maxStates = 200000;
+            checker::Explorer ex(engine, options);
+            for (const auto& s : starts) ex.addInitial(s.data());
+            ex.explore();
+            std::set<std::pair<std::vector<rules::CellValue>, std::vector<rules::CellValue>>> edges;
+            for (checker::StateId s : ex.ids()) {
+                CHECK(engine.legal(ex.cells(s).data()));
+                for (std::uint64_t e = ex.rowStart()[s]; e < ex.rowStart()[s + 1]; ++e) edges.insert({ex.cells(s), ex.cells(ex.successors()[e])});
+            }
+            graphs.push_back(std::move(edges));
+        }
+        CHECK(graphs[0].size() > 10);
+        CHECK(graphs[0] == graphs[1]);
+    }
+}

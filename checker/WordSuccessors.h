@@ -1,0 +1,65 @@
+#pragma once
+// The explorer's successor generator on regions of at most 64 cells: the edges of seed 000 §II-B's
+// reconfiguration graph (one rule instance each) computed with word operations. A configuration
+// is stored plane-major (StateLayout), so each plane is a word and the cells in each state are a
+// few word operations; every instance is matched at once (Engine::forEachMatchIn, the bitboard
+// move generation of chess programs) and a successor is the stored words XOR a delta. An
+// instance whose left side admits one state per cell has one delta, computed when the generator is
+// built; the others compute theirs from the states of their cells. Legality is decided on the
+// successor's words (Engine::legalIn). Larger regions keep the cell-by-cell path; tests hold both
+// to the reference interpreter.
+
+#include "checker/StateStore.h"
+#include "rules/Engine.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace holon::checker {
+
+class WordSuccessors {
+  public:
+    static constexpr int kMaxPlanes = 6;         // alphabets of at most 64 states
+    static constexpr int kMaxWords = kMaxPlanes; // 64 cells per plane
+    /// Usable when the region has at most 64 cells and the engine matches on words.
+    static bool fits(const rules::Engine& engine);
+    /// `layout` must be plane-major.
+    WordSuccessors(const rules::Engine& engine, const StateLayout& layout);
+
+    /// One configuration, read once for all its successors.
+    struct Loaded {
+        std::uint64_t occupied[64]; // per state, the cells in it
+        CellValue cells[64];        // filled when `withCells` was asked or a rule needs them
+    };
+    void load(const std::uint64_t* packed, Loaded& out, bool withCells) const;
+    /// f(placed, delta, indexDelta) for every enabled instance: the successor's stored words are
+    /// the configuration's XOR `delta`, and its candidate index (the sum of state x alphabet^cell)
+    /// is the configuration's plus `indexDelta`, modulo 2^64.
+    template <class F> void forEach(const Loaded& l, F&& f) const {
+        std::uint64_t delta[kMaxWords];
+        engine_->forEachMatchIn(l.occupied, l.cells, [&](int p) {
+            if (fixed_[p])
+                return f(p, &fixedDelta_[static_cast<std::size_t>(p) * words_], fixedIndexDelta_[p]);
+            f(p, delta, computeDelta(p, l.cells, delta));
+        });
+    }
+    /// Every constraint holds in the stored configuration; `parent`, a legal configuration it
+    /// differs from in a few cells, lets connectivity be decided around the cells that changed.
+    bool legal(const std::uint64_t* packed, const Loaded* parent = nullptr) const;
+
+  private:
+    /// Writes the delta of an instance whose cells' states decide it; returns its index delta.
+    std::uint64_t computeDelta(int placed, const CellValue* cells, std::uint64_t* delta) const;
+    void occupiedOf(const std::uint64_t* packed, std::uint64_t* occupied) const;
+
+    const rules::Engine* engine_;
+    const StateLayout* layout_;
+    int alphabet_, planes_, words_;
+    bool needCells_;                        // some rule has a guard or an instance without a fixed delta
+    std::vector<std::uint64_t> placeValue_; // alphabet^cell, modulo 2^64
+    std::vector<char> fixed_;               // per instance
+    std::vector<std::uint64_t> fixedDelta_; // [instance * words]
+    std::vector<std::uint64_t> fixedIndexDelta_;
+};
+
+} // namespace holon::checker
