@@ -46,7 +46,7 @@ StateId Explorer::addInitial(const CellValue* cells) {
     std::vector<std::uint64_t> packed(store_.layout().words());
     store_.layout().pack(cells, packed.data());
     store_.reserve(1);
-    resizeLinks(store_.capacityUsed() + 1);
+    growLinks(store_.capacityUsed() + 1);
     auto [id, inserted] = store_.insert(packed.data());
     if (inserted) {
         frontier_.push_back(id);
@@ -124,7 +124,7 @@ void Explorer::addAllLegal() {
                 throw InputError("region " + engine_->region().spec() + " has more than --max-states=" +
                                  std::to_string(options_.limits.maxStates) + " legal configurations; raise the limit or choose a smaller region");
             if (!rank) store_.reserve(count);
-            resizeLinks(store_.capacityUsed() + count);
+            growLinks(store_.capacityUsed() + count);
             for (std::size_t k = 0; k < count; ++k) {
                 const std::uint64_t* packed = &list[k * store_.layout().words()];
                 StateId id;
@@ -208,6 +208,7 @@ void Explorer::resolve(const Successors& s, rules::Engine::Evaluator& ev, Found&
     CellValue saved[rules::Engine::kMaxCells];
     thread_local std::vector<StateId> seen;
     seen.clear();
+    std::uint64_t edges = 0;
     bool loaded = false;
     for (std::size_t k = 0; k < s.via.size(); ++k) {
         StateId sid = ranked() ? rankOf(s.keys[k]) : store_.find(&s.packed[k * words], s.keys[k]);
@@ -217,7 +218,7 @@ void Explorer::resolve(const Successors& s, rules::Engine::Evaluator& ev, Found&
             bool legal;
             const CellValue* cells = nullptr;
             if (words_) {
-                legal = words_->legal(successor, &s.loaded);
+                legal = words_->legal(successor, s.loaded, s.via[k]);
             } else {
                 if (!loaded) ev.load(s.cells.data()), loaded = true;
                 ev.apply(s.via[k], saved);
@@ -242,12 +243,15 @@ void Explorer::resolve(const Successors& s, rules::Engine::Evaluator& ev, Found&
             if (!legal) continue;
         }
         // Two instances with the same effect are one edge of the graph.
-        if (std::find(seen.begin(), seen.end(), sid) != seen.end()) continue;
-        seen.push_back(sid);
+        if (!words_ || !words_->unique(s.via[k])) {
+            if (std::find(seen.begin(), seen.end(), sid) != seen.end()) continue;
+            seen.push_back(sid);
+        }
+        ++edges;
         if (options_.recordEdges) found.edges.push_back({s.from, {sid, s.via[k]}});
     }
-    if (seen.empty()) found.terminal.push_back(s.from);
-    found.edgeCount += seen.size();
+    if (edges == 0) found.terminal.push_back(s.from);
+    found.edgeCount += edges;
 }
 
 void Explorer::expandRange(std::size_t lo, std::size_t hi, Found& found) {
@@ -297,7 +301,7 @@ const ExploreStats& Explorer::explore() {
             const std::size_t end = std::min(frontier_.size(), pos + chunk);
             if (!complete_) {  // a complete store gains no states
                 store_.reserve((end - pos) * branching);
-                resizeLinks(store_.capacityUsed() + (end - pos) * branching);
+                growLinks(store_.capacityUsed() + (end - pos) * branching);
             }
             auto work = [&](int t) {
                 const std::size_t per = (end - pos + threads - 1) / threads;
@@ -333,7 +337,8 @@ const ExploreStats& Explorer::explore() {
     std::sort(terminal_.begin(), terminal_.end());
     stats_.states = store_.size();
     store_.shrinkToFit();
-    resizeLinks(store_.capacityUsed());
+    parent_.resize(store_.capacityUsed());
+    via_.resize(store_.capacityUsed());
     parent_.shrinkToFit();
     via_.shrinkToFit();
     if (options_.recordEdges) buildRows(found);

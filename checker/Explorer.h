@@ -121,7 +121,11 @@ private:
     // grows into read as "none" without being written.
     PageArray<StateId> parent_;
     PageArray<std::int32_t> via_;
-    void resizeLinks(std::size_t n) { parent_.resize(n), via_.resize(n); }
+    /// Room for links up to id n (they only grow until the search ends: shrinking and growing
+    /// again would clear the headroom's pages for nothing).
+    void growLinks(std::size_t n) {
+        if (n > parent_.size()) parent_.resize(n), via_.resize(n);
+    }
     std::vector<StateId> frontier_;
     std::vector<StateId> terminal_;
     bool complete_ = false;  // the store holds every legal configuration (after addAllLegal)

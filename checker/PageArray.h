@@ -21,7 +21,7 @@ template <class T> class PageArray {
     static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>,
                   "plain values only");
 
-  public:
+public:
     PageArray() = default;
     PageArray(const PageArray&) = delete;
     PageArray& operator=(const PageArray&) = delete;
@@ -67,7 +67,7 @@ template <class T> class PageArray {
             std::swap(mapped_, o.mapped_);
     }
 
-  private:
+private:
     /// Room for n elements without remapping; at least doubles a small mapping.
     void reserve(std::size_t n) {
         const std::size_t want = roundUp(n * sizeof(T));
@@ -99,4 +99,4 @@ template <class T> class PageArray {
     std::size_t mapped_ = 0; // bytes
 };
 
-} // namespace holon::checker
+}  // namespace holon::checker

@@ -54,17 +54,6 @@ void StateLayout::set(std::uint64_t* packed, int cell, CellValue v) const {
     packed[w] = (packed[w] & ~(mask_ << shift)) | (static_cast<std::uint64_t>(v) << shift);
 }
 
-std::uint64_t StateLayout::hash(const std::uint64_t* packed) const {
-    std::uint64_t h = 0x9E3779B97F4A7C15ull;
-    for (int w = 0; w < words_; ++w) {
-        std::uint64_t x = packed[w] + h;
-        x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-        x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-        h = x ^ (x >> 31);
-    }
-    return h;
-}
-
 StateStore::StateStore(const StateLayout& layout) : layout_(layout) { reserve(1024); }
 
 void StateStore::reserve(std::uint64_t more) {

@@ -30,7 +30,16 @@ public:
     bool planeMajor() const { return planeMajor_; }
     void pack(const CellValue* cells, std::uint64_t* out) const;
     void unpack(const std::uint64_t* in, CellValue* cells) const;
-    std::uint64_t hash(const std::uint64_t* packed) const;
+    std::uint64_t hash(const std::uint64_t* packed) const {
+        std::uint64_t h = 0x9E3779B97F4A7C15ull;
+        for (int w = 0; w < words_; ++w) {
+            std::uint64_t x = packed[w] + h;
+            x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+            x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+            h = x ^ (x >> 31);
+        }
+        return h;
+    }
     /// Overwrites one cell of a packed state.
     void set(std::uint64_t* packed, int cell, CellValue v) const;
     /// Plane-major only: plane j of a packed state (bit c is bit j of cell c's state).

@@ -2,6 +2,7 @@
 
 #include "checker/WordSuccessors.h"
 
+#include <algorithm>
 #include <bit>
 
 namespace holon::checker {
@@ -20,7 +21,9 @@ WordSuccessors::WordSuccessors(const rules::Engine& engine, const StateLayout& l
     fixed_.assign(instances.size(), 0);
     fixedDelta_.assign(instances.size() * words_, 0);
     fixedIndexDelta_.assign(instances.size(), 0);
+    fixedChange_.resize(instances.size());
     CellValue cells[64] = {};
+    std::vector<CellValue> pinned(instances.size() * rules::Engine::kMaxCells);  // fixed instances' left sides
     for (std::size_t p = 0; p < instances.size(); ++p) {
         // Fixed when every pattern cell's left side admits exactly one state for its inputs: then
         // a match says what every cell holds, and the delta follows.
@@ -39,7 +42,49 @@ WordSuccessors::WordSuccessors(const rules::Engine& engine, const StateLayout& l
             continue;
         }
         fixed_[p] = 1;
+        for (int k = 0; k < placed.size; ++k) pinned[p * rules::Engine::kMaxCells + k] = cells[placed.cells[k]];
         fixedIndexDelta_[p] = computeDelta(static_cast<int>(p), cells, &fixedDelta_[p * words_]);
+        if (!engine.constraintsOnWords()) continue;
+        CellValue old[rules::Engine::kMaxCells];
+        for (int k = 0; k < placed.size; ++k) old[k] = cells[placed.cells[k]];
+        for (int k = 0; k < placed.size; ++k) engine.addChange(placed.cells[k], old[k], engine.rewritten(placed, k, old), fixedChange_[p]);
+    }
+    findUnique(pinned);
+}
+
+void WordSuccessors::findUnique(const std::vector<CellValue>& pinned) {
+    // Instance q can have p's effect only if it rewrites every cell p changes, so the candidates
+    // are the instances that read p's first changed cell. A fixed q has it only with the same
+    // delta and a left side that agrees with p's on the cells they share; an instance whose delta
+    // depends on the states might have it.
+    const auto& instances = engine_->instances();
+    constexpr int kCells = rules::Engine::kMaxCells;
+    unique_.assign(instances.size(), 0);
+    for (std::size_t p = 0; p < instances.size(); ++p) {
+        if (!fixed_[p]) continue;
+        const std::uint64_t* delta = &fixedDelta_[p * words_];
+        int first = -1;
+        for (int k = 0; k < instances[p].size && first < 0; ++k)
+            for (int j = 0; j < planes_; ++j)
+                if ((layout_->plane(delta, j) >> instances[p].cells[k]) & 1u) first = instances[p].cells[k];
+        bool unique = true;
+        for (const std::int32_t q : engine_->instancesAt(first < 0 ? instances[p].cells[0] : first)) {
+            if (q == static_cast<std::int32_t>(p)) continue;
+            if (!fixed_[q]) {
+                unique = false;
+                break;
+            }
+            if (!std::equal(delta, delta + words_, &fixedDelta_[static_cast<std::size_t>(q) * words_])) continue;
+            bool agree = true;
+            for (int a = 0; a < instances[p].size; ++a)
+                for (int b = 0; b < instances[q].size; ++b)
+                    if (instances[p].cells[a] == instances[q].cells[b] && pinned[p * kCells + a] != pinned[q * kCells + b]) agree = false;
+            if (agree) {
+                unique = false;
+                break;
+            }
+        }
+        unique_[p] = unique;
     }
 }
 
@@ -64,32 +109,39 @@ std::uint64_t WordSuccessors::computeDelta(int placed, const CellValue* cells, s
 }
 
 void WordSuccessors::occupiedOf(const std::uint64_t* packed, std::uint64_t* occupied) const {
-    // The cells in state v: the planes where v has a 1, and the complements where it has a 0.
-    std::uint64_t planes[kMaxPlanes];
-    for (int j = 0; j < planes_; ++j) planes[j] = layout_->plane(packed, j);
+    // The cells in state v, by doubling: after plane j, occupied[v] for v < 2^(j+1) holds the
+    // cells whose low j + 1 bits are v's.
     const int n = engine_->region().size();
-    const std::uint64_t all = n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
-    for (int v = 0; v < alphabet_; ++v) {
-        std::uint64_t in = all;
-        for (int j = 0; j < planes_; ++j) in &= (v >> j) & 1 ? planes[j] : ~planes[j];
-        occupied[v] = in;
+    occupied[0] = n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
+    for (int j = 0, half = 1; j < planes_; ++j, half <<= 1) {
+        const std::uint64_t plane = layout_->plane(packed, j);
+        for (int v = 0; v < half; ++v) occupied[v + half] = occupied[v] & plane, occupied[v] &= ~plane;
     }
 }
 
 void WordSuccessors::load(const std::uint64_t* packed, Loaded& out, bool withCells) const {
     occupiedOf(packed, out.occupied);
     if (withCells || needCells_) layout_->unpack(packed, out.cells);
+    if (engine_->constraintsOnWords()) engine_->constraintWords(out.occupied, out.words);
 }
 
-bool WordSuccessors::legal(const std::uint64_t* packed, const Loaded* parent) const {
+bool WordSuccessors::legal(const std::uint64_t* packed, const Loaded& parent, int placed) const {
     if (!engine_->constraintsOnWords()) {
         CellValue cells[64];
         layout_->unpack(packed, cells);
         return engine_->legal(cells);
     }
-    std::uint64_t occupied[64];
-    occupiedOf(packed, occupied);
-    return engine_->legalIn(occupied, parent ? parent->occupied : nullptr);
+    rules::Engine::ConstraintWords now;
+    if (fixed_[placed]) {
+        const rules::Engine::ConstraintWords& change = fixedChange_[placed];
+        const int used = engine_->constraintWordCount();
+        for (int w = 0; w < used; ++w) now.members[w] = parent.words.members[w] ^ change.members[w];
+        now.mass = parent.words.mass + change.mass;
+    } else {
+        std::uint64_t occupied[64];
+        occupiedOf(packed, occupied);
+        engine_->constraintWords(occupied, now);
+    }
+    return engine_->legalOn(now, &parent.words);
 }
-
-} // namespace holon::checker
+}  // namespace holon::checker

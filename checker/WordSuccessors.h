@@ -18,7 +18,7 @@
 namespace holon::checker {
 
 class WordSuccessors {
-  public:
+public:
     static constexpr int kMaxPlanes = 6;         // alphabets of at most 64 states
     static constexpr int kMaxWords = kMaxPlanes; // 64 cells per plane
     /// Usable when the region has at most 64 cells and the engine matches on words.
@@ -28,8 +28,9 @@ class WordSuccessors {
 
     /// One configuration, read once for all its successors.
     struct Loaded {
-        std::uint64_t occupied[64]; // per state, the cells in it
-        CellValue cells[64];        // filled when `withCells` was asked or a rule needs them
+        std::uint64_t occupied[64];              // per state, the cells in it
+        CellValue cells[64];                     // filled when `withCells` was asked or a rule needs them
+        rules::Engine::ConstraintWords words;    // when the constraints are decided on words
     };
     void load(const std::uint64_t* packed, Loaded& out, bool withCells) const;
     /// f(placed, delta, indexDelta) for every enabled instance: the successor's stored words are
@@ -43,23 +44,30 @@ class WordSuccessors {
             f(p, delta, computeDelta(p, l.cells, delta));
         });
     }
-    /// Every constraint holds in the stored configuration; `parent`, a legal configuration it
-    /// differs from in a few cells, lets connectivity be decided around the cells that changed.
-    bool legal(const std::uint64_t* packed, const Loaded* parent = nullptr) const;
+    /// No other instance ever has the same effect in a configuration where both are enabled, so
+    /// the edge needs no de-duplication.
+    bool unique(int placed) const { return unique_[placed] != 0; }
+    /// Every constraint holds in the successor `packed` of `parent` (a legal configuration) by
+    /// instance `placed`. For an instance with a fixed delta the constraint words are the
+    /// parent's changed by a fixed amount; connectivity is decided around the cells that changed.
+    bool legal(const std::uint64_t* packed, const Loaded& parent, int placed) const;
 
-  private:
+private:
     /// Writes the delta of an instance whose cells' states decide it; returns its index delta.
     std::uint64_t computeDelta(int placed, const CellValue* cells, std::uint64_t* delta) const;
     void occupiedOf(const std::uint64_t* packed, std::uint64_t* occupied) const;
+    void findUnique(const std::vector<CellValue>& pinned);
 
     const rules::Engine* engine_;
     const StateLayout* layout_;
     int alphabet_, planes_, words_;
     bool needCells_;                        // some rule has a guard or an instance without a fixed delta
     std::vector<std::uint64_t> placeValue_; // alphabet^cell, modulo 2^64
-    std::vector<char> fixed_;               // per instance
+    std::vector<char> fixed_;  // per instance
+    std::vector<char> unique_;  // per instance
     std::vector<std::uint64_t> fixedDelta_; // [instance * words]
     std::vector<std::uint64_t> fixedIndexDelta_;
+    std::vector<rules::Engine::ConstraintWords> fixedChange_;  // per instance, when fixed and on words
 };
 
-} // namespace holon::checker
+}  // namespace holon::checker

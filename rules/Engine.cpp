@@ -131,22 +131,32 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
         if (e.cellGuard || e.kind == Expr::Kind::Reaches) return false;
         if (e.predicate >= 0 && std::find(constraintPredicates_.begin(), constraintPredicates_.end(), e.predicate) == constraintPredicates_.end())
             constraintPredicates_.push_back(e.predicate);
-        if (e.kind == Expr::Kind::Mass) constraintsUseMass_ = true;
         return std::all_of(e.kids.begin(), e.kids.end(), onWords);
     };
-    constraintsOnWords_ = region.size() <= 64 && tables_.alphabet() <= 64 && std::all_of(compiledConstraints_.begin(), compiledConstraints_.end(), onWords);
-    std::function<void(const CompiledExpr&)> split = [&](const CompiledExpr& e) {
-        if (e.kind == Expr::Kind::And && !e.cellGuard) std::for_each(e.kids.begin(), e.kids.end(), split);
-        else conjuncts_.push_back(&e);
-    };
-    std::for_each(compiledConstraints_.begin(), compiledConstraints_.end(), split);
+    constraintsOnWords_ = region.size() <= 64 && tables_.alphabet() <= 64 &&
+                          std::all_of(compiledConstraints_.begin(), compiledConstraints_.end(), onWords) &&
+                          constraintPredicates_.size() <= static_cast<std::size_t>(ConstraintWords::kMax);
     if (constraintsOnWords_) {
+        std::function<CompiledExpr(const CompiledExpr&)> renumber = [&](const CompiledExpr& e) {
+            CompiledExpr w = e;
+            if (e.predicate >= 0)
+                w.predicate = static_cast<int>(std::find(constraintPredicates_.begin(), constraintPredicates_.end(), e.predicate) - constraintPredicates_.begin());
+            for (CompiledExpr& k : w.kids) k = renumber(k);
+            return w;
+        };
+        for (const CompiledExpr& c : compiledConstraints_) wordConstraints_.push_back(renumber(c));
+        std::function<void(const CompiledExpr&)> split = [&](const CompiledExpr& e) {
+            if (e.kind == Expr::Kind::And) std::for_each(e.kids.begin(), e.kids.end(), split);
+            else conjuncts_.push_back(&e);
+        };
+        std::for_each(wordConstraints_.begin(), wordConstraints_.end(), split);
         const int a = tables_.alphabet();
-        predicateCells_.assign(predicateMasks_.size() * a, 0);
+        const std::size_t all = predicateMasks_.size();
+        predicateCells_.assign(constraintPredicates_.size() * a, 0);
         for (int c = 0; c < region.size(); ++c)
-            for (std::size_t k = 0; k < predicateMasks_.size(); ++k)
+            for (std::size_t w = 0; w < constraintPredicates_.size(); ++w)
                 for (int v = 0; v < a; ++v)
-                    if ((predicateStates_[combo_[c] * predicateMasks_.size() + k] >> v) & 1u) predicateCells_[k * a + v] |= std::uint64_t{1} << c;
+                    if ((predicateStates_[combo_[c] * all + constraintPredicates_[w]] >> v) & 1u) predicateCells_[w * a + v] |= std::uint64_t{1} << c;
     }
     if (region.size() <= 64) {
         neighbourBits_.assign(region.size(), 0);
@@ -154,8 +164,9 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
             for (int d = 0; d < lattice.degree(); ++d)
                 if (int j = region.neighbour(i, d); j >= 0) {
                     neighbourBits_[i] |= std::uint64_t{1} << j;
-                    auto it = std::find_if(shifts_.begin(), shifts_.end(), [&](const Shift& s) { return s.delta == j - i; });
-                    if (it == shifts_.end()) it = shifts_.insert(shifts_.end(), {j - i, 0});
+                    const auto left = static_cast<std::uint8_t>(std::max(0, j - i)), right = static_cast<std::uint8_t>(std::max(0, i - j));
+                    auto it = std::find_if(shifts_.begin(), shifts_.end(), [&](const Shift& s) { return s.left == left && s.right == right; });
+                    if (it == shifts_.end()) it = shifts_.insert(shifts_.end(), {0, left, right});
                     it->from |= std::uint64_t{1} << i;
                 }
         // An irregular region needs many shifts; then the cell-by-cell walk is cheaper.
@@ -169,23 +180,31 @@ bool Engine::hasGuards() const {
     return false;
 }
 
-bool Engine::legalIn(const std::uint64_t* occupied, const std::uint64_t* legalBefore) const {
+void Engine::constraintWords(const std::uint64_t* occupied, ConstraintWords& out) const {
     const int a = tables_.alphabet();
-    auto member = [&](const std::uint64_t* cellsIn, int k) {
-        const std::uint64_t* byState = &predicateCells_[static_cast<std::size_t>(k) * a];
+    for (std::size_t w = 0; w < constraintPredicates_.size(); ++w) {
+        const std::uint64_t* byState = &predicateCells_[w * a];
         std::uint64_t m = 0;
-        for (int v = 0; v < a; ++v) m |= cellsIn[v] & byState[v];
-        return m;
-    };
-    thread_local std::vector<std::uint64_t> members;
-    members.resize(predicateMasks_.size());
-    for (int k : constraintPredicates_) members[k] = member(occupied, k);
-    std::int64_t mass = 0;
-    if (constraintsUseMass_)
-        for (int v = 0; v < a; ++v) mass += std::popcount(occupied[v]) * tables_.massUnitsOf(static_cast<CellValue>(v));
+        for (int v = 0; v < a; ++v) m |= occupied[v] & byState[v];
+        out.members[w] = m;
+    }
+    out.mass = 0;
+    for (int v = 0; v < a; ++v) out.mass += std::popcount(occupied[v]) * tables_.massUnitsOf(static_cast<CellValue>(v));
+}
+
+void Engine::addChange(int cell, CellValue from, CellValue to, ConstraintWords& change) const {
+    const int a = tables_.alphabet();
+    for (std::size_t w = 0; w < constraintPredicates_.size(); ++w) {
+        const std::uint64_t* byState = &predicateCells_[w * a];
+        change.members[w] ^= (byState[from] ^ byState[to]) & (std::uint64_t{1} << cell);
+    }
+    change.mass += tables_.massUnitsOf(to) - tables_.massUnitsOf(from);
+}
+
+bool Engine::legalOn(const ConstraintWords& now, const ConstraintWords* before) const {
     for (const CompiledExpr* c : conjuncts_) {
-        const bool holds = c->kind == Expr::Kind::Connected && legalBefore ? stillConnected(member(legalBefore, c->predicate), members[c->predicate])
-                                                                          : holdsOn(*c, members.data(), mass, nullptr);
+        const bool holds = c->kind == Expr::Kind::Connected && before ? stillConnected(before->members[c->predicate], now.members[c->predicate])
+                                                                     : holdsOn(*c, now.members, now.mass, nullptr);
         if (!holds) return false;
     }
     return true;
@@ -193,15 +212,36 @@ bool Engine::legalIn(const std::uint64_t* occupied, const std::uint64_t* legalBe
 
 bool Engine::stillConnected(std::uint64_t before, std::uint64_t now) const {
     // Every component of `now` holds a neighbour of a removed cell (the components of before minus
-    // the removed cells each touch one, before being connected), an added cell, or, when nothing
-    // was removed, all of `before`. So `now` is connected exactly when one of these reaches all
-    // the others, and a flood from one of them can stop as soon as it has.
+    // the removed cells each touch one, before being connected) or an added cell. So `now` is
+    // connected exactly when one of these reaches all the others, and a flood from one of them
+    // can stop as soon as it has.
     const std::uint64_t removed = before & ~now, added = now & ~before;
     if (!removed && !added) return true;
     if (!now) return true;
-    std::uint64_t targets = (around(removed) & now) | added;
-    if (!removed) targets |= before & (~before + 1);
-    std::uint64_t reached = targets & (~targets + 1), frontier = reached;
+    if (!removed && before) {  // before is connected and kept: each added cell must join it through added cells
+        std::uint64_t reached = before, frontier = around(before) & added;
+        while (frontier) {
+            reached |= frontier;
+            frontier = around(frontier) & added & ~reached;
+        }
+        return !(added & ~reached);
+    }
+    const std::uint64_t targets = (around(removed) & now) | added;
+    // Two floods, from the lowest and the highest target, a layer each in turn: a part cut off is
+    // usually small, and its flood dies out after a few layers; otherwise they meet, and the
+    // merged flood goes on until it holds every target.
+    std::uint64_t a = targets & (~targets + 1), b = std::uint64_t{1} << (63 - std::countl_zero(targets));
+    std::uint64_t frontA = a, frontB = b;
+    while (!(a & b)) {
+        frontA = around(frontA) & now & ~a;
+        if (!frontA) return false;
+        a |= frontA;
+        if (a & b) break;
+        frontB = around(frontB) & now & ~b;
+        if (!frontB) return false;
+        b |= frontB;
+    }
+    std::uint64_t reached = a | b, frontier = frontA | frontB;
     while (frontier && (targets & ~reached)) {
         frontier = around(frontier) & now & ~reached;
         reached |= frontier;

@@ -80,14 +80,28 @@ public:
     }
     bool matchesOnWords() const { return words_ != nullptr; }
     bool hasGuards() const;
-    /// Small regions: the constraints can be decided from the cells in each state alone
-    /// (legalIn); false when one needs more, such as a cell guard or a pointer walk.
+    /// Small regions: what the constraints read, as words: for each predicate they name, the
+    /// cells it accepts, and the mass. A rule step changes them by XOR (member bits) and a sum
+    /// (mass) fixed by the states its cells go from and to.
+    struct ConstraintWords {
+        static constexpr int kMax = 16;
+        std::uint64_t members[kMax];  // the first constraintWordCount() are in use
+        std::int64_t mass;
+    };
+    /// The constraints are decided by their words alone (legalOn); false when one needs more,
+    /// such as a cell guard or a pointer walk, or they name more than ConstraintWords::kMax
+    /// predicates.
     bool constraintsOnWords() const { return constraintsOnWords_; }
-    /// Every constraint holds, given the cells in each state (`occupied[v]`); needs
-    /// constraintsOnWords(). `legalBefore`, when given, holds the cells in each state of a legal
-    /// configuration this one differs from in a few cells (its parent in a search): a connectivity
-    /// conjunct is then decided around the cells that changed.
-    bool legalIn(const std::uint64_t* occupied, const std::uint64_t* legalBefore = nullptr) const;
+    /// How many of ConstraintWords::members are in use.
+    int constraintWordCount() const { return static_cast<int>(constraintPredicates_.size()); }
+    /// The constraint words of a configuration given the cells in each state (`occupied[v]`).
+    void constraintWords(const std::uint64_t* occupied, ConstraintWords& out) const;
+    /// Adds to `change` what cell `cell` going from state `from` to `to` does to the words.
+    void addChange(int cell, CellValue from, CellValue to, ConstraintWords& change) const;
+    /// Every constraint holds. `before`, when given, are the words of a legal configuration this
+    /// one differs from in a few cells (its parent in a search): a connectivity conjunct is then
+    /// decided around the cells that changed.
+    bool legalOn(const ConstraintWords& now, const ConstraintWords* before = nullptr) const;
     /// The state pattern cell k of an instance takes when the instance fires; `old[j]` is the
     /// state of its pattern cell j before.
     CellValue rewritten(const Placed& p, int k, const CellValue* old) const {
@@ -230,22 +244,34 @@ private:
     /// Whether the cells `now` are connected, given that `before` was; they differ in a few cells.
     bool stillConnected(std::uint64_t before, std::uint64_t now) const;
     bool constraintsOnWords_ = false;
-    bool constraintsUseMass_ = false;
-    std::vector<const CompiledExpr*> conjuncts_;  // the constraints, split at `and`
-    std::vector<int> constraintPredicates_;       // predicate indices the constraints read
-    std::vector<std::uint64_t> predicateCells_;   // small regions: [predicate * alphabet + state]: cells accepting the state
+    // The constraints again, their predicates numbered by position in constraintPredicates_
+    // (the index into ConstraintWords::members), split at `and`.
+    std::vector<CompiledExpr> wordConstraints_;
+    std::vector<const CompiledExpr*> conjuncts_;
+    std::vector<int> constraintPredicates_;      // predicate indices the constraints read
+    std::vector<std::uint64_t> predicateCells_;  // [word * alphabet + state]: cells whose inputs accept the state
     std::vector<std::uint64_t> neighbourBits_;  // small regions: per cell, its neighbours as a mask
     /// Small regions: the neighbours of a set of cells as a few word shifts. Cells whose neighbour
     /// sits `delta` indices away form one mask (in a box, one per direction), so the neighbours of
     /// every cell in r are the union over steps of (r & from) shifted by delta.
     struct Shift {
-        int delta;
         std::uint64_t from;
+        std::uint8_t left, right;  // delta = left - right; one of them is 0 (branch-free)
     };
     std::vector<Shift> shifts_;
-    std::uint64_t neighboursOf(std::uint64_t r) const {
+    template <std::size_t N>
+    std::uint64_t neighboursBy(std::uint64_t r) const {  // unrolled for boxes: 4 shifts on square2d, 6 on cubic3d
         std::uint64_t out = 0;
-        for (const Shift& s : shifts_) out |= s.delta > 0 ? (r & s.from) << s.delta : (r & s.from) >> -s.delta;
+        for (std::size_t i = 0; i < N; ++i) out |= ((r & shifts_[i].from) << shifts_[i].left) >> shifts_[i].right;
+        return out;
+    }
+    std::uint64_t neighboursOf(std::uint64_t r) const {
+        switch (shifts_.size()) {
+        case 4: return neighboursBy<4>(r);
+        case 6: return neighboursBy<6>(r);
+        }
+        std::uint64_t out = 0;
+        for (const Shift& s : shifts_) out |= ((r & s.from) << s.left) >> s.right;
         return out;
     }
     /// The same on any small region: by shifts where the region has them, else cell by cell.

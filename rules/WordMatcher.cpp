@@ -36,7 +36,7 @@ void WordMatcher::addInstance(int shape, const std::int32_t* cells, int size) {
     for (int k = 0; k < size; ++k) {
         auto& group = pending_[sh.first + k];
         const int delta = cells[k] - anchor;
-        auto it = std::find_if(group.begin(), group.end(), [&](const AnchorShift& a) { return a.delta == delta; });
+        auto it = std::find_if(group.begin(), group.end(), [&](const Pending& a) { return a.delta == delta; });
         if (it == group.end()) it = group.insert(group.end(), {delta, 0});
         it->anchors |= std::uint64_t{1} << anchor;
     }
@@ -47,7 +47,8 @@ void WordMatcher::finish() {
     shifts_.clear();
     for (const auto& group : pending_) {
         shiftStart_.push_back(static_cast<int>(shifts_.size()));
-        shifts_.insert(shifts_.end(), group.begin(), group.end());
+        for (const Pending& g : group)
+            shifts_.push_back({g.anchors, static_cast<std::uint8_t>(std::max(0, g.delta)), static_cast<std::uint8_t>(std::max(0, -g.delta))});
     }
     shiftStart_.push_back(static_cast<int>(shifts_.size()));
     pending_.clear();
