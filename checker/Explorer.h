@@ -99,8 +99,12 @@ private:
         StateId from = kNoState;
         std::vector<CellValue> cells;  // of `from`, unpacked (the cell-by-cell path)
         WordSuccessors::Loaded loaded;  // of `from` (the word path)
-        std::vector<std::uint64_t> packed, keys;  // keys: hash in the store, or the candidate index when ranked
+        // The first `count` entries are the successors; there is room for one per instance of
+        // the region, so listing one is a store. keys: hash in the store, or the candidate index
+        // when ranked.
+        std::vector<std::uint64_t> packed, keys;
         std::vector<std::int32_t> via;
+        std::size_t count = 0;
     };
     /// Per worker thread: what it found in one chunk of the frontier.
     struct Found {

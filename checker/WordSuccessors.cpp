@@ -22,6 +22,7 @@ WordSuccessors::WordSuccessors(const rules::Engine& engine, const StateLayout& l
     fixedDelta_.assign(instances.size() * words_, 0);
     fixedIndexDelta_.assign(instances.size(), 0);
     fixedChange_.resize(instances.size());
+    constraintFree_.assign(instances.size(), 0);
     CellValue cells[64] = {};
     std::vector<CellValue> pinned(instances.size() * rules::Engine::kMaxCells);  // fixed instances' left sides
     for (std::size_t p = 0; p < instances.size(); ++p) {
@@ -48,6 +49,8 @@ WordSuccessors::WordSuccessors(const rules::Engine& engine, const StateLayout& l
         CellValue old[rules::Engine::kMaxCells];
         for (int k = 0; k < placed.size; ++k) old[k] = cells[placed.cells[k]];
         for (int k = 0; k < placed.size; ++k) engine.addChange(placed.cells[k], old[k], engine.rewritten(placed, k, old), fixedChange_[p]);
+        const rules::Engine::ConstraintWords& change = fixedChange_[p];
+        constraintFree_[p] = change.mass == 0 && std::all_of(change.members, change.members + engine.constraintWordCount(), [](std::uint64_t m) { return m == 0; });
     }
     findUnique(pinned);
 }
@@ -122,7 +125,7 @@ void WordSuccessors::occupiedOf(const std::uint64_t* packed, std::uint64_t* occu
 void WordSuccessors::load(const std::uint64_t* packed, Loaded& out, bool withCells) const {
     occupiedOf(packed, out.occupied);
     if (withCells || needCells_) layout_->unpack(packed, out.cells);
-    if (engine_->constraintsOnWords()) engine_->constraintWords(out.occupied, out.words);
+    if (engine_->constraintsOnWords()) engine_->constraintWords(out.occupied, out.legal.words), out.legal.cutsKnown = 0;
 }
 
 bool WordSuccessors::legal(const std::uint64_t* packed, const Loaded& parent, int placed) const {
@@ -131,17 +134,18 @@ bool WordSuccessors::legal(const std::uint64_t* packed, const Loaded& parent, in
         layout_->unpack(packed, cells);
         return engine_->legal(cells);
     }
+    if (fixed_[placed] && constraintFree_[placed]) return true;
     rules::Engine::ConstraintWords now;
     if (fixed_[placed]) {
         const rules::Engine::ConstraintWords& change = fixedChange_[placed];
         const int used = engine_->constraintWordCount();
-        for (int w = 0; w < used; ++w) now.members[w] = parent.words.members[w] ^ change.members[w];
-        now.mass = parent.words.mass + change.mass;
+        for (int w = 0; w < used; ++w) now.members[w] = parent.legal.words.members[w] ^ change.members[w];
+        now.mass = parent.legal.words.mass + change.mass;
     } else {
         std::uint64_t occupied[64];
         occupiedOf(packed, occupied);
         engine_->constraintWords(occupied, now);
     }
-    return engine_->legalOn(now, &parent.words);
+    return engine_->legalOn(now, &parent.legal);
 }
 }  // namespace holon::checker

@@ -30,7 +30,7 @@ public:
     struct Loaded {
         std::uint64_t occupied[64];              // per state, the cells in it
         CellValue cells[64];                     // filled when `withCells` was asked or a rule needs them
-        rules::Engine::ConstraintWords words;    // when the constraints are decided on words
+        rules::Engine::LegalBefore legal;        // when the constraints are decided on words
     };
     void load(const std::uint64_t* packed, Loaded& out, bool withCells) const;
     /// f(placed, delta, indexDelta) for every enabled instance: the successor's stored words are
@@ -68,6 +68,7 @@ private:
     std::vector<std::uint64_t> fixedDelta_; // [instance * words]
     std::vector<std::uint64_t> fixedIndexDelta_;
     std::vector<rules::Engine::ConstraintWords> fixedChange_;  // per instance, when fixed and on words
+    std::vector<char> constraintFree_;  // fixed, and no constraint word changes: legal after any legal state
 };
 
 }  // namespace holon::checker

@@ -146,8 +146,17 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
         };
         for (const CompiledExpr& c : compiledConstraints_) wordConstraints_.push_back(renumber(c));
         std::function<void(const CompiledExpr&)> split = [&](const CompiledExpr& e) {
-            if (e.kind == Expr::Kind::And) std::for_each(e.kids.begin(), e.kids.end(), split);
-            else conjuncts_.push_back(&e);
+            if (e.kind == Expr::Kind::And) {
+                std::for_each(e.kids.begin(), e.kids.end(), split);
+                return;
+            }
+            Conjunct c;
+            c.expr = &e;
+            // Masses are in units of 1/massDenominator(): a linear form with a mass is exact only
+            // when the denominator is 1.
+            c.linear = e.kind == Expr::Kind::Compare && addLinear(e.kids[0], 1, c) && addLinear(e.kids[1], -1, c) &&
+                       (c.massCoefficient == 0 || tables_.massDenominator() == 1);
+            conjuncts_.push_back(std::move(c));
         };
         std::for_each(wordConstraints_.begin(), wordConstraints_.end(), split);
         const int a = tables_.alphabet();
@@ -201,31 +210,48 @@ void Engine::addChange(int cell, CellValue from, CellValue to, ConstraintWords& 
     change.mass += tables_.massUnitsOf(to) - tables_.massUnitsOf(from);
 }
 
-bool Engine::legalOn(const ConstraintWords& now, const ConstraintWords* before) const {
-    for (const CompiledExpr* c : conjuncts_) {
-        const bool holds = c->kind == Expr::Kind::Connected && before ? stillConnected(before->members[c->predicate], now.members[c->predicate])
-                                                                     : holdsOn(*c, now.members, now.mass, nullptr);
+bool Engine::legalOn(const ConstraintWords& now, const LegalBefore* before) const {
+    for (const Conjunct& c : conjuncts_) {
+        bool holds;
+        if (c.linear) {
+            std::int64_t sum = c.constant + c.massCoefficient * now.mass;
+            for (const auto& [word, coefficient] : c.counts) sum += coefficient * std::popcount(now.members[word]);
+            holds = compare<std::int64_t>(c.expr->op, sum, 0);
+        } else if (c.expr->kind == Expr::Kind::Connected && before) {
+            holds = stillConnected(*before, c.expr->predicate, now.members[c.expr->predicate]);
+        } else {
+            holds = holdsOn(*c.expr, now.members, now.mass, nullptr);
+        }
         if (!holds) return false;
     }
     return true;
 }
 
-bool Engine::stillConnected(std::uint64_t before, std::uint64_t now) const {
-    // Every component of `now` holds a neighbour of a removed cell (the components of before minus
-    // the removed cells each touch one, before being connected) or an added cell. So `now` is
-    // connected exactly when one of these reaches all the others, and a flood from one of them
-    // can stop as soon as it has.
+bool Engine::stillConnected(const LegalBefore& legal, int w, std::uint64_t now) const {
+    const std::uint64_t before = legal.words.members[w];
     const std::uint64_t removed = before & ~now, added = now & ~before;
     if (!removed && !added) return true;
     if (!now) return true;
-    if (!removed && before) {  // before is connected and kept: each added cell must join it through added cells
-        std::uint64_t reached = before, frontier = around(before) & added;
+    // Removing one cell keeps a connected set connected unless it is a cut cell. Whatever is
+    // kept connected, each added cell must join through added cells.
+    std::uint64_t kept = removed ? 0 : before;
+    if (removed && !(removed & (removed - 1))) {
+        if (!((legal.cutsKnown >> w) & 1u)) legal.cuts[w] = cutCells(before), legal.cutsKnown |= 1u << w;
+        if (!(removed & legal.cuts[w])) kept = before & ~removed;
+        else if (!added) return false;
+    }
+    if (kept) {
+        std::uint64_t reached = kept, frontier = around(kept) & added;
         while (frontier) {
             reached |= frontier;
             frontier = around(frontier) & added & ~reached;
         }
         return !(added & ~reached);
     }
+    // Every component of `now` holds a neighbour of a removed cell (the components of before minus
+    // the removed cells each touch one, before being connected) or an added cell. So `now` is
+    // connected exactly when one of these reaches all the others, and a flood from one of them
+    // can stop as soon as it has.
     const std::uint64_t targets = (around(removed) & now) | added;
     // Two floods, from the lowest and the highest target, a layer each in turn: a part cut off is
     // usually small, and its flood dies out after a few layers; otherwise they meet, and the
@@ -267,6 +293,24 @@ Engine::CompiledExpr Engine::compileExpr(const Expr& e) const {
     if (!c.cellGuard)
         for (const Expr& k : e.kids) c.kids.push_back(compileExpr(k));
     return c;
+}
+
+bool Engine::addLinear(const CompiledExpr& e, std::int64_t sign, Conjunct& c) {
+    switch (e.kind) {
+    case Expr::Kind::Number:
+        if (!e.value.isInteger()) return false;
+        c.constant += sign * e.value.num();
+        return true;
+    case Expr::Kind::Count:
+        if (e.cellGuard) return false;
+        c.counts.push_back({e.predicate, sign});
+        return true;
+    case Expr::Kind::Mass: c.massCoefficient += sign; return true;
+    case Expr::Kind::Add: return addLinear(e.kids[0], sign, c) && addLinear(e.kids[1], sign, c);
+    case Expr::Kind::Sub: return addLinear(e.kids[0], sign, c) && addLinear(e.kids[1], -sign, c);
+    case Expr::Kind::Neg: return addLinear(e.kids[0], -sign, c);
+    default: return false;
+    }
 }
 
 bool Engine::matches(const CellValue* cells, int placed) const {
@@ -395,6 +439,41 @@ bool Engine::holdsOn(const CompiledExpr& e, const std::uint64_t* members, std::i
     case Expr::Kind::Connected: return connectedCells(members[e.predicate]);
     default: return holds(*e.source, cells);
     }
+}
+
+std::uint64_t Engine::cutCells(std::uint64_t set) const {
+    // Iterative depth-first search: a cell's low point is the earliest discovery time among its
+    // neighbours (other than its parent) and its children's low points; a cell other than the
+    // root is a cut cell when some child's low point is not earlier than its own discovery, the
+    // root when it has two children.
+    std::uint8_t discovered[64], low[64], parent[64], stack[64];
+    std::uint64_t visited = 0, cut = 0;
+    int top = 0, time = 0, rootChildren = 0;
+    const int root = std::countr_zero(set);
+    auto open = [&](int v, int from) {
+        visited |= std::uint64_t{1} << v;
+        discovered[v] = low[v] = static_cast<std::uint8_t>(time++);
+        parent[v] = static_cast<std::uint8_t>(from);
+        stack[top++] = static_cast<std::uint8_t>(v);
+    };
+    open(root, root);
+    while (top) {
+        const int v = stack[top - 1];
+        if (const std::uint64_t next = neighbourBits_[v] & set & ~visited) {
+            open(std::countr_zero(next), v);
+            rootChildren += v == root;
+            continue;
+        }
+        --top;
+        const int p = parent[v];
+        for (std::uint64_t n = neighbourBits_[v] & set & ~(std::uint64_t{1} << p); n; n &= n - 1)
+            low[v] = std::min(low[v], discovered[std::countr_zero(n)]);
+        if (v == root) break;
+        low[p] = std::min(low[p], low[v]);
+        if (p != root && low[v] >= discovered[p]) cut |= std::uint64_t{1} << p;
+    }
+    if (rootChildren >= 2) cut |= std::uint64_t{1} << root;
+    return cut;
 }
 
 bool Engine::connectedCells(std::uint64_t m) const {

@@ -98,10 +98,17 @@ public:
     void constraintWords(const std::uint64_t* occupied, ConstraintWords& out) const;
     /// Adds to `change` what cell `cell` going from state `from` to `to` does to the words.
     void addChange(int cell, CellValue from, CellValue to, ConstraintWords& change) const;
-    /// Every constraint holds. `before`, when given, are the words of a legal configuration this
-    /// one differs from in a few cells (its parent in a search): a connectivity conjunct is then
-    /// decided around the cells that changed.
-    bool legalOn(const ConstraintWords& now, const ConstraintWords* before = nullptr) const;
+    /// The words of a legal configuration that configurations differing from it in a few cells
+    /// are judged against (their parent in a search), with what connectivity tests need of it,
+    /// found once when first asked: the cells whose removal disconnects a set (cut cells).
+    struct LegalBefore {
+        ConstraintWords words;
+        mutable std::uint64_t cuts[ConstraintWords::kMax];
+        mutable std::uint32_t cutsKnown = 0;  // bit w: cuts[w] is computed
+    };
+    /// Every constraint holds. `before`, when given, is a legal configuration this one differs
+    /// from in a few cells: a connectivity conjunct is then decided around the cells that changed.
+    bool legalOn(const ConstraintWords& now, const LegalBefore* before = nullptr) const;
     /// The state pattern cell k of an instance takes when the instance fires; `old[j]` is the
     /// state of its pattern cell j before.
     CellValue rewritten(const Placed& p, int k, const CellValue* old) const {
@@ -239,15 +246,29 @@ private:
     /// the mass; `cells` (null when absent) serves the parts words cannot decide.
     bool holdsOn(const CompiledExpr& e, const std::uint64_t* members, std::int64_t mass, const CellValue* cells) const;
     Rational numberOn(const CompiledExpr& e, const std::uint64_t* members, std::int64_t mass, const CellValue* cells) const;
+
     /// Small regions: whether a set of cells is connected (a flood fill on words).
     bool connectedCells(std::uint64_t cells) const;
-    /// Whether the cells `now` are connected, given that `before` was; they differ in a few cells.
-    bool stillConnected(std::uint64_t before, std::uint64_t now) const;
+    /// Whether the cells `now` are connected, given that the cells of word w of `before` were;
+    /// they differ in a few cells.
+    bool stillConnected(const LegalBefore& before, int w, std::uint64_t now) const;
+    /// The cut cells of a connected, non-empty set (Tarjan's depth-first search on words).
+    std::uint64_t cutCells(std::uint64_t set) const;
     bool constraintsOnWords_ = false;
     // The constraints again, their predicates numbered by position in constraintPredicates_
     // (the index into ConstraintWords::members), split at `and`.
     std::vector<CompiledExpr> wordConstraints_;
-    std::vector<const CompiledExpr*> conjuncts_;
+    /// A conjunct as legalOn evaluates it: a connectivity test, a linear comparison
+    /// sum(coefficient x count of word) + massCoefficient x mass  op  0, or any other expression.
+    struct Conjunct {
+        const CompiledExpr* expr = nullptr;
+        std::vector<std::pair<int, std::int64_t>> counts;  // (word, coefficient)
+        std::int64_t massCoefficient = 0, constant = 0;
+        bool linear = false;
+    };
+    std::vector<Conjunct> conjuncts_;
+    /// Adds sign x e to a conjunct's linear form; false when e is not a sum of counts, masses and integers.
+    static bool addLinear(const CompiledExpr& e, std::int64_t sign, Conjunct& c);
     std::vector<int> constraintPredicates_;      // predicate indices the constraints read
     std::vector<std::uint64_t> predicateCells_;  // [word * alphabet + state]: cells whose inputs accept the state
     std::vector<std::uint64_t> neighbourBits_;  // small regions: per cell, its neighbours as a mask

@@ -74,7 +74,8 @@ using CellPredicate = std::vector<CellTerm>;
 
 enum class CmpOp { Eq, Ne, Lt, Le, Gt, Ge };
 
-inline bool compare(CmpOp op, const Rational& a, const Rational& b) {
+template <class Number>  // Rational, or std::int64_t where both sides are integers
+bool compare(CmpOp op, const Number& a, const Number& b) {
     switch (op) {
     case CmpOp::Eq: return a == b;
     case CmpOp::Ne: return a != b;
