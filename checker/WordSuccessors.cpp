@@ -49,8 +49,7 @@ WordSuccessors::WordSuccessors(const rules::Engine& engine, const StateLayout& l
         CellValue old[rules::Engine::kMaxCells];
         for (int k = 0; k < placed.size; ++k) old[k] = cells[placed.cells[k]];
         for (int k = 0; k < placed.size; ++k) engine.addChange(placed.cells[k], old[k], engine.rewritten(placed, k, old), fixedChange_[p]);
-        const rules::Engine::ConstraintWords& change = fixedChange_[p];
-        constraintFree_[p] = change.mass == 0 && std::all_of(change.members, change.members + engine.constraintWordCount(), [](std::uint64_t m) { return m == 0; });
+        constraintFree_[p] = engine.unchanged(fixedChange_[p]);
     }
     findUnique(pinned);
 }
@@ -125,7 +124,7 @@ void WordSuccessors::occupiedOf(const std::uint64_t* packed, std::uint64_t* occu
 void WordSuccessors::load(const std::uint64_t* packed, Loaded& out, bool withCells) const {
     occupiedOf(packed, out.occupied);
     if (withCells || needCells_) layout_->unpack(packed, out.cells);
-    if (engine_->constraintsOnWords()) engine_->constraintWords(out.occupied, out.legal.words), out.legal.cutsKnown = 0;
+    if (engine_->constraintsOnWords()) engine_->constraintWords(out.occupied, out.legal.words), engine_->prepare(out.legal);
 }
 
 bool WordSuccessors::legal(const std::uint64_t* packed, const Loaded& parent, int placed) const {
@@ -134,18 +133,11 @@ bool WordSuccessors::legal(const std::uint64_t* packed, const Loaded& parent, in
         layout_->unpack(packed, cells);
         return engine_->legal(cells);
     }
-    if (fixed_[placed] && constraintFree_[placed]) return true;
+    if (fixed_[placed]) return constraintFree_[placed] || engine_->legalAfter(parent.legal, fixedChange_[placed]);
     rules::Engine::ConstraintWords now;
-    if (fixed_[placed]) {
-        const rules::Engine::ConstraintWords& change = fixedChange_[placed];
-        const int used = engine_->constraintWordCount();
-        for (int w = 0; w < used; ++w) now.members[w] = parent.legal.words.members[w] ^ change.members[w];
-        now.mass = parent.legal.words.mass + change.mass;
-    } else {
-        std::uint64_t occupied[64];
-        occupiedOf(packed, occupied);
-        engine_->constraintWords(occupied, now);
-    }
+    std::uint64_t occupied[64];
+    occupiedOf(packed, occupied);
+    engine_->constraintWords(occupied, now);
     return engine_->legalOn(now, &parent.legal);
 }
 }  // namespace holon::checker

@@ -67,7 +67,7 @@ private:
     std::vector<char> unique_;  // per instance
     std::vector<std::uint64_t> fixedDelta_; // [instance * words]
     std::vector<std::uint64_t> fixedIndexDelta_;
-    std::vector<rules::Engine::ConstraintWords> fixedChange_;  // per instance, when fixed and on words
+    std::vector<rules::Engine::WordChange> fixedChange_;  // per instance, when fixed and on words
     std::vector<char> constraintFree_;  // fixed, and no constraint word changes: legal after any legal state
 };
 

@@ -154,8 +154,10 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
             c.expr = &e;
             // Masses are in units of 1/massDenominator(): a linear form with a mass is exact only
             // when the denominator is 1.
-            c.linear = e.kind == Expr::Kind::Compare && addLinear(e.kids[0], 1, c) && addLinear(e.kids[1], -1, c) &&
-                       (c.massCoefficient == 0 || tables_.massDenominator() == 1);
+            const bool linear = e.kind == Expr::Kind::Compare && addLinear(e.kids[0], 1, c) && addLinear(e.kids[1], -1, c) &&
+                                (c.massCoefficient == 0 || tables_.massDenominator() == 1);
+            const int sums = static_cast<int>(std::count_if(conjuncts_.begin(), conjuncts_.end(), [](const Conjunct& k) { return k.sum >= 0; }));
+            if (linear && sums < LegalBefore::kMaxSums) c.sum = sums;
             conjuncts_.push_back(std::move(c));
         };
         std::for_each(wordConstraints_.begin(), wordConstraints_.end(), split);
@@ -201,24 +203,43 @@ void Engine::constraintWords(const std::uint64_t* occupied, ConstraintWords& out
     for (int v = 0; v < a; ++v) out.mass += std::popcount(occupied[v]) * tables_.massUnitsOf(static_cast<CellValue>(v));
 }
 
-void Engine::addChange(int cell, CellValue from, CellValue to, ConstraintWords& change) const {
+void Engine::addChange(int cell, CellValue from, CellValue to, WordChange& change) const {
     const int a = tables_.alphabet();
+    const std::uint64_t bit = std::uint64_t{1} << cell;
     for (std::size_t w = 0; w < constraintPredicates_.size(); ++w) {
         const std::uint64_t* byState = &predicateCells_[w * a];
-        change.members[w] ^= (byState[from] ^ byState[to]) & (std::uint64_t{1} << cell);
+        if ((byState[from] & bit) && !(byState[to] & bit)) change.removed[w] |= bit;
+        if (!(byState[from] & bit) && (byState[to] & bit)) change.added[w] |= bit;
     }
     change.mass += tables_.massUnitsOf(to) - tables_.massUnitsOf(from);
+}
+
+bool Engine::unchanged(const WordChange& change) const {
+    for (std::size_t w = 0; w < constraintPredicates_.size(); ++w)
+        if (change.removed[w] | change.added[w]) return false;
+    return change.mass == 0;
+}
+
+std::int64_t Engine::linearSum(const Conjunct& c, const ConstraintWords& w) const {
+    std::int64_t sum = c.constant + c.massCoefficient * w.mass;
+    for (const auto& [word, coefficient] : c.counts) sum += coefficient * std::popcount(w.members[word]);
+    return sum;
+}
+
+void Engine::prepare(LegalBefore& before) const {
+    for (const Conjunct& c : conjuncts_)
+        if (c.sum >= 0) before.sums[c.sum] = linearSum(c, before.words);
+    before.cutsKnown = 0;
 }
 
 bool Engine::legalOn(const ConstraintWords& now, const LegalBefore* before) const {
     for (const Conjunct& c : conjuncts_) {
         bool holds;
-        if (c.linear) {
-            std::int64_t sum = c.constant + c.massCoefficient * now.mass;
-            for (const auto& [word, coefficient] : c.counts) sum += coefficient * std::popcount(now.members[word]);
-            holds = compare<std::int64_t>(c.expr->op, sum, 0);
+        if (c.sum >= 0) {
+            holds = compare<std::int64_t>(c.expr->op, linearSum(c, now), 0);
         } else if (c.expr->kind == Expr::Kind::Connected && before) {
-            holds = stillConnected(*before, c.expr->predicate, now.members[c.expr->predicate]);
+            const std::uint64_t was = before->words.members[c.expr->predicate], is = now.members[c.expr->predicate];
+            holds = stillConnected(*before, c.expr->predicate, was & ~is, is & ~was);
         } else {
             holds = holdsOn(*c.expr, now.members, now.mass, nullptr);
         }
@@ -227,9 +248,32 @@ bool Engine::legalOn(const ConstraintWords& now, const LegalBefore* before) cons
     return true;
 }
 
-bool Engine::stillConnected(const LegalBefore& legal, int w, std::uint64_t now) const {
-    const std::uint64_t before = legal.words.members[w];
-    const std::uint64_t removed = before & ~now, added = now & ~before;
+bool Engine::legalAfter(const LegalBefore& before, const WordChange& change) const {
+    const int words = static_cast<int>(constraintPredicates_.size());
+    for (const Conjunct& c : conjuncts_) {
+        bool holds;
+        if (c.sum >= 0) {
+            // The rewrite's old and new states are fixed, so it changes each count by a fixed amount.
+            std::int64_t sum = before.sums[c.sum] + c.massCoefficient * change.mass;
+            for (const auto& [word, coefficient] : c.counts)
+                sum += coefficient * (std::popcount(change.added[word]) - std::popcount(change.removed[word]));
+            holds = compare<std::int64_t>(c.expr->op, sum, 0);
+        } else if (c.expr->kind == Expr::Kind::Connected) {
+            const int w = c.expr->predicate;
+            holds = stillConnected(before, w, change.removed[w], change.added[w]);
+        } else {
+            ConstraintWords now;
+            for (int w = 0; w < words; ++w) now.members[w] = (before.words.members[w] & ~change.removed[w]) | change.added[w];
+            now.mass = before.words.mass + change.mass;
+            holds = holdsOn(*c.expr, now.members, now.mass, nullptr);
+        }
+        if (!holds) return false;
+    }
+    return true;
+}
+
+bool Engine::stillConnected(const LegalBefore& legal, int w, std::uint64_t removed, std::uint64_t added) const {
+    const std::uint64_t before = legal.words.members[w], now = (before & ~removed) | added;
     if (!removed && !added) return true;
     if (!now) return true;
     // Removing one cell keeps a connected set connected unless it is a cut cell. Whatever is
@@ -248,11 +292,14 @@ bool Engine::stillConnected(const LegalBefore& legal, int w, std::uint64_t now) 
         }
         return !(added & ~reached);
     }
+    return reconnected(now, (around(removed) & now) | added);
+}
+
+bool Engine::reconnected(std::uint64_t now, std::uint64_t targets) const {
     // Every component of `now` holds a neighbour of a removed cell (the components of before minus
-    // the removed cells each touch one, before being connected) or an added cell. So `now` is
-    // connected exactly when one of these reaches all the others, and a flood from one of them
-    // can stop as soon as it has.
-    const std::uint64_t targets = (around(removed) & now) | added;
+    // the removed cells each touch one, before being connected) or an added cell: the targets.
+    // So `now` is connected exactly when one of these reaches all the others, and a flood from
+    // one of them can stop as soon as it has.
     // Two floods, from the lowest and the highest target, a layer each in turn: a part cut off is
     // usually small, and its flood dies out after a few layers; otherwise they meet, and the
     // merged flood goes on until it holds every target.

@@ -96,19 +96,33 @@ public:
     int constraintWordCount() const { return static_cast<int>(constraintPredicates_.size()); }
     /// The constraint words of a configuration given the cells in each state (`occupied[v]`).
     void constraintWords(const std::uint64_t* occupied, ConstraintWords& out) const;
-    /// Adds to `change` what cell `cell` going from state `from` to `to` does to the words.
-    void addChange(int cell, CellValue from, CellValue to, ConstraintWords& change) const;
-    /// The words of a legal configuration that configurations differing from it in a few cells
-    /// are judged against (their parent in a search), with what connectivity tests need of it,
-    /// found once when first asked: the cells whose removal disconnects a set (cut cells).
+    /// What a rewrite with fixed old and new states does to the constraint words: the cells each
+    /// word loses and gains, and the change of mass; built by addChange, one cell at a time.
+    struct WordChange {
+        std::uint64_t removed[ConstraintWords::kMax] = {}, added[ConstraintWords::kMax] = {};
+        std::int64_t mass = 0;
+    };
+    void addChange(int cell, CellValue from, CellValue to, WordChange& change) const;
+    /// The change leaves every constraint word and the mass as they were.
+    bool unchanged(const WordChange& change) const;
+    /// A legal configuration that configurations differing from it in a few cells are judged
+    /// against (their parent in a search): its words, the sums of the constraints' linear
+    /// comparisons, and, found once when first asked, the cells whose removal disconnects a set
+    /// (cut cells).
     struct LegalBefore {
+        static constexpr int kMaxSums = 8;
         ConstraintWords words;
+        std::int64_t sums[kMaxSums];
         mutable std::uint64_t cuts[ConstraintWords::kMax];
         mutable std::uint32_t cutsKnown = 0;  // bit w: cuts[w] is computed
     };
+    /// Fills everything of a LegalBefore but its words.
+    void prepare(LegalBefore& before) const;
     /// Every constraint holds. `before`, when given, is a legal configuration this one differs
     /// from in a few cells: a connectivity conjunct is then decided around the cells that changed.
     bool legalOn(const ConstraintWords& now, const LegalBefore* before = nullptr) const;
+    /// Every constraint holds after `change`, made to the legal configuration `before`.
+    bool legalAfter(const LegalBefore& before, const WordChange& change) const;
     /// The state pattern cell k of an instance takes when the instance fires; `old[j]` is the
     /// state of its pattern cell j before.
     CellValue rewritten(const Placed& p, int k, const CellValue* old) const {
@@ -249,9 +263,11 @@ private:
 
     /// Small regions: whether a set of cells is connected (a flood fill on words).
     bool connectedCells(std::uint64_t cells) const;
-    /// Whether the cells `now` are connected, given that the cells of word w of `before` were;
-    /// they differ in a few cells.
-    bool stillConnected(const LegalBefore& before, int w, std::uint64_t now) const;
+    /// Whether word w of `before`, connected, stays connected when it loses the cells `removed`
+    /// and gains `added`.
+    bool stillConnected(const LegalBefore& before, int w, std::uint64_t removed, std::uint64_t added) const;
+    /// The general case of stillConnected, out of line: `now` is connected when the targets are.
+    [[gnu::noinline]] bool reconnected(std::uint64_t now, std::uint64_t targets) const;
     /// The cut cells of a connected, non-empty set (Tarjan's depth-first search on words).
     std::uint64_t cutCells(std::uint64_t set) const;
     bool constraintsOnWords_ = false;
@@ -264,8 +280,9 @@ private:
         const CompiledExpr* expr = nullptr;
         std::vector<std::pair<int, std::int64_t>> counts;  // (word, coefficient)
         std::int64_t massCoefficient = 0, constant = 0;
-        bool linear = false;
+        int sum = -1;  // linear: its index in LegalBefore::sums, else -1
     };
+    std::int64_t linearSum(const Conjunct& c, const ConstraintWords& w) const;
     std::vector<Conjunct> conjuncts_;
     /// Adds sign x e to a conjunct's linear form; false when e is not a sum of counts, masses and integers.
     static bool addLinear(const CompiledExpr& e, std::int64_t sign, Conjunct& c);

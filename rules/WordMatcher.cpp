@@ -14,7 +14,8 @@ WordMatcher::WordMatcher(const RuleTables& tables, const std::vector<int>& combo
     : regionSize_(static_cast<int>(combo.size())), alphabet_(tables.alphabet()) {
     for (int s = 0; s < tables.shapeCount(); ++s) {
         const RuleTables::Shape& shape = tables.shape(s);
-        shapes_.push_back({0, static_cast<int>(cellTest_.size()), static_cast<int>(shape.lhs.size())});
+        shapes_.push_back({});
+        firstCell_.push_back(static_cast<int>(cellTest_.size()));
         for (const RuleTables::Mask& m : shape.lhs) {
             auto it = std::find_if(tests_.begin(), tests_.end(), [&](const RuleTables::Mask& t) { return t.bits == m.bits; });
             if (it == tests_.end()) it = tests_.insert(tests_.end(), m);
@@ -34,7 +35,7 @@ void WordMatcher::addInstance(int shape, const std::int32_t* cells, int size) {
     const int anchor = cells[0];
     sh.anchors |= std::uint64_t{1} << anchor;
     for (int k = 0; k < size; ++k) {
-        auto& group = pending_[sh.first + k];
+        auto& group = pending_[firstCell_[shape] + k];
         const int delta = cells[k] - anchor;
         auto it = std::find_if(group.begin(), group.end(), [&](const Pending& a) { return a.delta == delta; });
         if (it == group.end()) it = group.insert(group.end(), {delta, 0});
@@ -43,16 +44,18 @@ void WordMatcher::addInstance(int shape, const std::int32_t* cells, int size) {
 }
 
 void WordMatcher::finish() {
-    shiftStart_.clear();
-    shifts_.clear();
-    for (const auto& group : pending_) {
-        shiftStart_.push_back(static_cast<int>(shifts_.size()));
-        for (const Pending& g : group)
-            shifts_.push_back({g.anchors, static_cast<std::uint8_t>(std::max(0, g.delta)), static_cast<std::uint8_t>(std::max(0, -g.delta))});
+    firstCell_.push_back(static_cast<int>(pending_.size()));
+    for (std::size_t s = 0; s < shapes_.size(); ++s) {
+        shapes_[s].first = static_cast<int>(steps_.size());
+        for (int k = firstCell_[s]; k < firstCell_[s + 1]; ++k)
+            for (const Pending& g : pending_[k])
+                steps_.push_back({~g.anchors, cellTest_[k], static_cast<std::uint8_t>(std::max(0, g.delta)), static_cast<std::uint8_t>(std::max(0, -g.delta))});
+        shapes_[s].last = static_cast<int>(steps_.size());
     }
-    shiftStart_.push_back(static_cast<int>(shifts_.size()));
     pending_.clear();
     pending_.shrink_to_fit();
+    firstCell_.clear();
+    cellTest_.clear();
 }
 
 }  // namespace holon::rules

@@ -53,34 +53,32 @@ public:
         for (std::size_t s = 0; s < shapes_.size(); ++s) {
             const Shape& shape = shapes_[s];
             std::uint64_t anchors = shape.anchors;
-            for (int k = shape.first; k < shape.first + shape.size; ++k) {
-                const std::uint64_t a = accepted[cellTest_[k]];
-                std::uint64_t reach = 0;
-                for (int i = shiftStart_[k]; i < shiftStart_[k + 1]; ++i) {
-                    const AnchorShift& sh = shifts_[i];
-                    reach |= ((a >> sh.right) << sh.left) & sh.anchors;
-                }
-                anchors &= reach;
+            for (int i = shape.first; i < shape.last; ++i) {
+                const Step& st = steps_[i];
+                anchors &= ((accepted[st.test] >> st.right) << st.left) | st.others;
             }
             if (anchors) f(static_cast<int>(s), anchors);
         }
     }
 
 private:
-    /// Anchors whose pattern cell sits delta = right - left indices away from them (one of the
-    /// two is 0).
-    struct AnchorShift {
-        std::uint64_t anchors;
+    /// One test of a shape's matching: the anchors whose pattern cell k sits delta = right - left
+    /// indices away from them (one of the two is 0) keep only those where that cell passes
+    /// test k; the other anchors (`others`) are left alone. A pattern cell's groups of anchors
+    /// partition the shape's anchors, so a shape is a run of steps, each one AND.
+    struct Step {
+        std::uint64_t others;
+        int test;
         std::uint8_t right, left;
     };
     struct Shape {
         std::uint64_t anchors = 0;  // first cells of the shape's instances
-        int first = 0, size = 0;    // its pattern cells in cellTest_ / shiftStart_
+        int first = 0, last = 0;    // its steps in steps_
     };
 
     int regionSize_, alphabet_;
     std::vector<Shape> shapes_;
-    std::vector<int> cellTest_;                 // per (shape, pattern cell): index into tests_
+    std::vector<int> cellTest_;                 // per (shape, pattern cell): index into tests_, while instances are added
     std::vector<RuleTables::Mask> tests_;       // distinct left-side masks
     std::vector<std::uint64_t> testCells_;      // [test * alphabet + state]: cells whose combination accepts the state
     struct Pending {
@@ -88,8 +86,8 @@ private:
         std::uint64_t anchors;
     };
     std::vector<std::vector<Pending>> pending_;  // per (shape, pattern cell), while instances are added
-    std::vector<AnchorShift> shifts_;
-    std::vector<int> shiftStart_;               // per (shape, pattern cell), and one past the end
+    std::vector<int> firstCell_;                // per shape: its first (shape, pattern cell), while instances are added
+    std::vector<Step> steps_;
 };
 
 }  // namespace holon::rules
