@@ -10,9 +10,11 @@
 
 #include "checker/Explorer.h"
 
+#include "checker/ConnectedSets.h"
 #include "rules/Error.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <thread>
 
@@ -83,72 +85,197 @@ void Explorer::addAllLegal() {
     // The ranking costs 12 bytes per 64 candidates; it replaces the hash table when that fits
     // comfortably in the memory bound.
     const bool rank = options_.rankAllLegal && static_cast<double>(total) / 64.0 * 12.0 <= static_cast<double>(options_.limits.memoryBytes) / 4.0;
-    if (rank) {
-        legalBits_.assign((total + 63) / 64, 0);
-        placeValue_.assign(n, 1);
-        for (int i = 1; i < n; ++i) placeValue_[i] = placeValue_[i - 1] * static_cast<std::uint64_t>(a);
-    }
-    const int threads = std::max(1, options_.limits.threads);
-    const std::uint64_t batch = 1u << 20;  // a multiple of 64: threads set bits in disjoint words
-    // Enumerate in batches: threads test legality of disjoint index ranges into local lists (in
-    // index order), then the lists are stored in a fixed order so ids are deterministic (and, when
-    // ranked, equal to ranks).
-    for (std::uint64_t base = 0; base < total; base += batch * threads) {
-        std::vector<std::vector<std::uint64_t>> found(threads);
-        auto work = [&](int t) {
-            const std::uint64_t lo = base + batch * t, hi = std::min(total, lo + batch);
-            if (lo >= hi) return;
-            std::vector<CellValue> cells(n);
-            std::uint64_t x = lo;
-            for (int i = 0; i < n; ++i) cells[i] = static_cast<CellValue>(x % a), x /= a;
-            std::vector<std::uint64_t> packed(store_.layout().words());
-            rules::Engine::Evaluator ev(*engine_);
-            ev.load(cells.data());
-            for (std::uint64_t idx = lo; idx < hi; ++idx) {
-                if (ev.legal()) {
-                    store_.layout().pack(ev.cells(), packed.data());
-                    found[t].insert(found[t].end(), packed.begin(), packed.end());
-                    if (rank) legalBits_[idx >> 6] |= std::uint64_t{1} << (idx & 63);
-                }
-                ev.advance();
-            }
-        };
-        std::vector<std::thread> pool;
-        for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
-        work(0);
-        for (auto& th : pool) th.join();
-        std::vector<CellValue> cells(n);
-        for (const auto& list : found) {
-            const std::size_t count = list.size() / store_.layout().words();
-            if (store_.size() + count > options_.limits.maxStates)
-                throw InputError("region " + engine_->region().spec() + " has more than --max-states=" +
-                                 std::to_string(options_.limits.maxStates) + " legal configurations; raise the limit or choose a smaller region");
-            if (!rank) store_.reserve(count);
-            growLinks(store_.capacityUsed() + count);
-            for (std::size_t k = 0; k < count; ++k) {
-                const std::uint64_t* packed = &list[k * store_.layout().words()];
-                StateId id;
-                if (rank) {
-                    id = store_.append(packed);
-                } else {
-                    const auto [added, inserted] = store_.insert(packed);
-                    if (!inserted) continue;
-                    id = added;
-                }
-                frontier_.push_back(id);
-                if (options_.onState) {
-                    unpack(id, cells.data());
-                    options_.onState(id, cells.data());
-                }
-            }
+    placeValue_.assign(n, 1);
+    for (int i = 1; i < n; ++i) placeValue_[i] = placeValue_[i - 1] * static_cast<std::uint64_t>(a);
+    if (rank) legalBits_.assign((total + 63) / 64, 0);
+    // Phase 1, on all threads: the legal candidates. Ranked, each sets its bit; otherwise each job
+    // (an index range, or the connected sets from one lowest cell) lists its packed states, and
+    // the lists are stored in job order, so ids are deterministic.
+    std::vector<std::vector<std::uint64_t>> lists;
+    auto found = [&](std::size_t job, std::uint64_t index) {  // called from every thread, a job on one
+        if (rank) {
+            std::atomic_ref<std::uint64_t>(legalBits_[index >> 6]).fetch_or(std::uint64_t{1} << (index & 63), std::memory_order_relaxed);
+            return;
         }
+        CellValue cells[64];  // a^n <= 4e9: at most 32 cells
+        digits(index, cells);
+        const std::size_t at = lists[job].size();
+        lists[job].resize(at + store_.layout().words());
+        store_.layout().pack(cells, &lists[job][at]);
+    };
+    const rules::CellPredicate* connected = n <= 64 ? engine_->connectedConjunct() : nullptr;
+    if (connected) {
+        lists.resize(n + 1);
+        legalByConnectedSets(*connected, found);
+    } else {
+        const std::uint64_t batch = 1u << 20;
+        lists.resize((total + batch - 1) / batch);
+        legalByIndex(total, batch, found);
     }
+    // Phase 2: store them. Ranked, in candidate order, so that an id is its rank.
+    std::size_t count = 0;
+    if (rank)
+        for (std::uint64_t w : legalBits_) count += std::popcount(w);
+    else
+        for (const auto& list : lists) count += list.size() / store_.layout().words();
+    if (count > options_.limits.maxStates)
+        throw InputError("region " + engine_->region().spec() + " has more than --max-states=" + std::to_string(options_.limits.maxStates) +
+                         " legal configurations; raise the limit or choose a smaller region");
+    if (!rank) store_.reserve(count);
+    growLinks(count);
+    frontier_.reserve(count);
+    std::vector<CellValue> cells(n);
+    std::vector<std::uint64_t> packed(store_.layout().words());
+    auto stored = [&](StateId id) {
+        frontier_.push_back(id);
+        if (options_.onState) unpack(id, cells.data()), options_.onState(id, cells.data());
+    };
     if (rank) {
+        for (std::size_t w = 0; w < legalBits_.size(); ++w)
+            for (std::uint64_t bits = legalBits_[w]; bits; bits &= bits - 1) {
+                digits(w * 64 + static_cast<std::uint64_t>(std::countr_zero(bits)), cells.data());
+                store_.layout().pack(cells.data(), packed.data());
+                stored(store_.append(packed.data()));
+            }
         rankBefore_.resize(legalBits_.size());
         StateId before = 0;
         for (std::size_t w = 0; w < legalBits_.size(); ++w) rankBefore_[w] = before, before += static_cast<StateId>(std::popcount(legalBits_[w]));
+    } else {
+        placeValue_.clear();
+        for (const auto& list : lists)
+            for (std::size_t k = 0; k < list.size(); k += store_.layout().words())
+                if (const auto [id, inserted] = store_.insert(&list[k]); inserted) stored(id);
     }
     complete_ = true;
+}
+
+void Explorer::digits(std::uint64_t index, CellValue* cells) const {
+    // The index's digits in base a, the alphabet size. Indices stay below 2^32 (the candidate
+    // budget), where a reciprocal in double, corrected by one step, divides exactly; a 64-bit
+    // division per digit cost most of the enumeration.
+    const int n = engine_->region().size(), a = engine_->model().alphabet().size();
+    if (!(a & (a - 1))) {
+        const int bits = std::countr_zero(static_cast<unsigned>(a));
+        for (int i = 0; i < n; ++i, index >>= bits) cells[i] = static_cast<CellValue>(index & static_cast<std::uint64_t>(a - 1));
+        return;
+    }
+    const double reciprocal = 1.0 / a;
+    for (int i = 0; i < n; ++i) {
+        auto quotient = static_cast<std::uint64_t>(static_cast<double>(index) * reciprocal);
+        std::int64_t rest = static_cast<std::int64_t>(index) - static_cast<std::int64_t>(quotient * a);
+        if (rest < 0) --quotient, rest += a;
+        if (rest >= a) ++quotient, rest -= a;
+        cells[i] = static_cast<CellValue>(rest);
+        index = quotient;
+    }
+}
+
+template <class Sink>
+void Explorer::legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& found) {
+    // Every candidate, in batches of indices (the index is the number whose digits in base a
+    // are the cells' states): the evaluator follows the few cells that change from one to the
+    // next.
+    const int n = engine_->region().size();
+    std::atomic<std::uint64_t> next{0};
+    auto work = [&] {
+        rules::Engine::Evaluator ev(*engine_);
+        std::vector<CellValue> cells(n);
+        for (std::uint64_t job; (job = next.fetch_add(1)) * batch < total;) {
+            const std::uint64_t lo = job * batch, hi = std::min(total, lo + batch);
+            digits(lo, cells.data());
+            ev.load(cells.data());
+            for (std::uint64_t index = lo; index < hi; ++index, ev.advance())
+                if (ev.legal()) found(job, index);
+        }
+    };
+    runOnThreads(work);
+}
+
+template <class Sink>
+void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink& found) {
+    // Every legal configuration's T cells are connected (T: the predicate of a `connected(T)`
+    // conjunct), so only configurations whose T cells are a connected set (or none) are
+    // candidates: each cell of the set takes a state T accepts, each other cell one it does not.
+    const int n = engine_->region().size(), a = engine_->model().alphabet().size();
+    std::vector<std::vector<CellValue>> in(n), out(n);  // per cell, the states T accepts / rejects
+    for (int c = 0; c < n; ++c)
+        for (int v = 0; v < a; ++v) (engine_->cellMatches(connected, c, static_cast<CellValue>(v)) ? in : out)[c].push_back(static_cast<CellValue>(v));
+    const ConnectedSets sets(engine_->neighbourWords());
+    std::atomic<int> next{0};
+    // The common case: every cell has one state T accepts and one it rejects (pixel: M and _),
+    // so a set is one candidate, whose cells in each state and index follow from the set alone.
+    const bool determined = engine_->constraintsOnWords() &&
+                            std::all_of(in.begin(), in.end(), [](const auto& o) { return o.size() == 1; }) &&
+                            std::all_of(out.begin(), out.end(), [](const auto& o) { return o.size() == 1; });
+    std::vector<std::uint64_t> inCells(a), outCells(a), gain(n);  // gain: index added by a cell joining
+    std::uint64_t base = 0;
+    if (determined)
+        for (int c = 0; c < n; ++c) {
+            inCells[in[c][0]] |= std::uint64_t{1} << c, outCells[out[c][0]] |= std::uint64_t{1} << c;
+            base += out[c][0] * placeValue_[c], gain[c] = (in[c][0] - out[c][0]) * placeValue_[c];  // wraps: unsigned
+        }
+    const int connectedWord = engine_->connectedConjunctWord();  // holds by construction
+    auto work = [&] {
+        std::vector<CellValue> cells(n);
+        std::vector<int> choice(n), varying;
+        std::uint64_t occupied[64];
+        auto one = [&](std::size_t job, std::uint64_t set) {
+            std::uint64_t index = base;
+            for (std::uint64_t b = set; b; b &= b - 1) index += gain[std::countr_zero(b)];
+            for (int v = 0; v < a; ++v) occupied[v] = (set & inCells[v]) | (~set & outCells[v]);
+            rules::Engine::ConstraintWords words;
+            engine_->constraintWords(occupied, words);
+            if (engine_->legalOn(words, nullptr, connectedWord)) found(job, index);
+        };
+        auto each = [&](std::size_t job, std::uint64_t set) {
+            if (determined) return one(job, set);
+            varying.clear();
+            std::uint64_t index = 0;
+            for (int c = 0; c < n; ++c) {
+                const auto& options = (set >> c) & 1u ? in[c] : out[c];
+                if (options.empty()) return;
+                choice[c] = 0, cells[c] = options[0], index += cells[c] * placeValue_[c];
+                if (options.size() > 1) varying.push_back(c);
+            }
+            while (true) {  // every combination of the cells' options: an odometer
+                if (legalCells(cells.data(), occupied)) found(job, index);
+                std::size_t k = 0;
+                for (; k < varying.size(); ++k) {
+                    const int c = varying[k];
+                    const auto& options = (set >> c) & 1u ? in[c] : out[c];
+                    index -= cells[c] * placeValue_[c];
+                    choice[c] = (choice[c] + 1) % static_cast<int>(options.size());
+                    cells[c] = options[choice[c]];
+                    index += cells[c] * placeValue_[c];
+                    if (choice[c] != 0) break;
+                }
+                if (k == varying.size()) return;
+            }
+        };
+        for (int v; (v = next.fetch_add(1)) <= n;) {
+            if (v == n) each(n, 0);  // no T cell at all
+            else sets.forEachFrom(v, [&](std::uint64_t set) { each(v, set); });
+        }
+    };
+    runOnThreads(work);
+}
+
+bool Explorer::legalCells(const CellValue* cells, std::uint64_t* occupied) const {
+    if (!engine_->constraintsOnWords()) return engine_->legal(cells);
+    const int n = engine_->region().size(), a = engine_->model().alphabet().size();
+    for (int v = 0; v < a; ++v) occupied[v] = 0;
+    for (int c = 0; c < n; ++c) occupied[cells[c]] |= std::uint64_t{1} << c;
+    rules::Engine::ConstraintWords words;
+    engine_->constraintWords(occupied, words);
+    return engine_->legalOn(words);
+}
+
+template <class Work>
+void Explorer::runOnThreads(Work& work) const {
+    std::vector<std::thread> pool;
+    for (int t = 1; t < std::max(1, options_.limits.threads); ++t) pool.emplace_back([&] { work(); });
+    work();
+    for (auto& th : pool) th.join();
 }
 
 void Explorer::gather(StateId id, Successors& out) const {
@@ -162,9 +289,11 @@ void Explorer::gather(StateId id, Successors& out) const {
     out.from = id;
     out.count = 0;
     if (words_) {
+        // A two-state alphabet's candidate index is the word of the cells in state 1.
+        const bool binary = engine_->model().alphabet().size() == 2;
         WordSuccessors::Loaded& loaded = out.loaded;
-        words_->load(base, loaded, ranked());
-        const std::uint64_t index = ranked() ? indexOf(loaded.cells) : 0;
+        words_->load(base, loaded, ranked() && !binary);
+        const std::uint64_t index = !ranked() ? 0 : binary ? loaded.occupied[1] : indexOf(loaded.cells);
         words_->forEach(loaded, [&](int p, const std::uint64_t* delta, std::uint64_t indexDelta) {
             const std::size_t k = out.count;
             if (ranked()) {

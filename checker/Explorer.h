@@ -112,6 +112,17 @@ private:
         std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>> edges;
         std::uint64_t edgeCount = 0;
     };
+    /// addAllLegal's first phase: found(job, index) for every legal candidate, from
+    /// every index in turn, or from the connected sets when a conjunct requires connectivity.
+    template <class Sink>
+    void legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& found);
+    template <class Sink>
+    void legalByConnectedSets(const rules::CellPredicate& connected, Sink& found);
+    bool legalCells(const CellValue* cells, std::uint64_t* occupied) const;
+    /// The cells of the candidate with this index (its digits in base alphabet size).
+    void digits(std::uint64_t index, CellValue* cells) const;
+    template <class Work>
+    void runOnThreads(Work& work) const;
     void gather(StateId id, Successors& out) const;
     void resolve(const Successors& s, rules::Engine::Evaluator& ev, Found& found);
     void expandRange(std::size_t lo, std::size_t hi, Found& found);

@@ -185,6 +185,19 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     }
 }
 
+const CellPredicate* Engine::connectedConjunct() const {
+    std::function<const CellPredicate*(const Expr&)> find = [&](const Expr& e) -> const CellPredicate* {
+        if (e.kind == Expr::Kind::Connected) return &e.pred;
+        if (e.kind != Expr::Kind::And) return nullptr;
+        for (const Expr& k : e.kids)
+            if (const CellPredicate* p = find(k)) return p;
+        return nullptr;
+    };
+    for (const Constraint& c : model_->system().constraints)
+        if (const CellPredicate* p = find(c.expr)) return p;
+    return nullptr;
+}
+
 bool Engine::hasGuards() const {
     for (int s = 0; s < tables_.shapeCount(); ++s)
         if (tables_.shape(s).hasGuard) return true;
@@ -232,10 +245,18 @@ void Engine::prepare(LegalBefore& before) const {
     before.cutsKnown = 0;
 }
 
-bool Engine::legalOn(const ConstraintWords& now, const LegalBefore* before) const {
+int Engine::connectedConjunctWord() const {
+    for (const Conjunct& c : conjuncts_)
+        if (c.expr->kind == Expr::Kind::Connected && &c.expr->source->pred == connectedConjunct()) return c.expr->predicate;
+    return -1;
+}
+
+bool Engine::legalOn(const ConstraintWords& now, const LegalBefore* before, int connectedWord) const {
     for (const Conjunct& c : conjuncts_) {
         bool holds;
-        if (c.sum >= 0) {
+        if (c.expr->kind == Expr::Kind::Connected && c.expr->predicate == connectedWord) {
+            holds = true;
+        } else if (c.sum >= 0) {
             holds = compare<std::int64_t>(c.expr->op, linearSum(c, now), 0);
         } else if (c.expr->kind == Expr::Kind::Connected && before) {
             const std::uint64_t was = before->words.members[c.expr->predicate], is = now.members[c.expr->predicate];

@@ -79,6 +79,13 @@ public:
         });
     }
     bool matchesOnWords() const { return words_ != nullptr; }
+    /// The predicate T of a constraint conjunct `connected(T)` (`connected` alone: the occupied
+    /// cells), or null: every legal configuration's T cells are then one connected set.
+    const CellPredicate* connectedConjunct() const;
+    /// The constraint word of connectedConjunct()'s predicate, or -1 (constraints not on words).
+    int connectedConjunctWord() const;
+    /// Small regions: the cells adjacent to each cell, as words.
+    const std::vector<std::uint64_t>& neighbourWords() const { return neighbourBits_; }
     bool hasGuards() const;
     /// Small regions: what the constraints read, as words: for each predicate they name, the
     /// cells it accepts, and the mass. A rule step changes them by XOR (member bits) and a sum
@@ -120,7 +127,8 @@ public:
     void prepare(LegalBefore& before) const;
     /// Every constraint holds. `before`, when given, is a legal configuration this one differs
     /// from in a few cells: a connectivity conjunct is then decided around the cells that changed.
-    bool legalOn(const ConstraintWords& now, const LegalBefore* before = nullptr) const;
+    /// `connectedWord`: a constraint word the caller knows is connected (its test is skipped).
+    bool legalOn(const ConstraintWords& now, const LegalBefore* before = nullptr, int connectedWord = -1) const;
     /// Every constraint holds after `change`, made to the legal configuration `before`.
     bool legalAfter(const LegalBefore& before, const WordChange& change) const;
     /// The state pattern cell k of an instance takes when the instance fires; `old[j]` is the
