@@ -88,20 +88,20 @@ void Explorer::addAllLegal() {
     placeValue_.assign(n, 1);
     for (int i = 1; i < n; ++i) placeValue_[i] = placeValue_[i - 1] * static_cast<std::uint64_t>(a);
     if (rank) legalBits_.assign((total + 63) / 64, 0);
-    // Phase 1, on all threads: the legal candidates. Ranked, each sets its bit; otherwise each job
-    // (an index range, or the connected sets from one lowest cell) lists its packed states, and
-    // the lists are stored in job order, so ids are deterministic.
+    // Phase 1, on all threads: the legal candidates. Ranked, each thread sets bits in a bitmap of
+    // its own (the jobs' indices interleave, and one shared bitmap made two cores slower than
+    // one); otherwise each job (an index range, or the connected sets from one lowest cell) lists
+    // its indices, and the lists are stored in job order, so ids do not depend on the threads.
+    // Where a bitmap per thread would not fit in a quarter of the memory bound, ranked runs list
+    // indices too (the lists hold only legal candidates).
+    const int threads = std::max(1, options_.limits.threads);
+    const bool privateBits = rank && static_cast<double>(threads) * static_cast<double>(total) / 8.0 <= static_cast<double>(options_.limits.memoryBytes) / 4.0;
+    std::vector<PageArray<std::uint64_t>> bitmaps(privateBits ? threads : 0);
+    for (auto& b : bitmaps) b.resize(legalBits_.size());
     std::vector<std::vector<std::uint64_t>> lists;
-    auto found = [&](std::size_t job, std::uint64_t index) {  // called from every thread, a job on one
-        if (rank) {
-            std::atomic_ref<std::uint64_t>(legalBits_[index >> 6]).fetch_or(std::uint64_t{1} << (index & 63), std::memory_order_relaxed);
-            return;
-        }
-        CellValue cells[64];  // a^n <= 4e9: at most 32 cells
-        digits(index, cells);
-        const std::size_t at = lists[job].size();
-        lists[job].resize(at + store_.layout().words());
-        store_.layout().pack(cells, &lists[job][at]);
+    auto found = [&](int thread, std::size_t job, std::uint64_t index) {
+        if (privateBits) bitmaps[thread][index >> 6] |= std::uint64_t{1} << (index & 63);
+        else lists[job].push_back(index);
     };
     const rules::CellPredicate* connected = n <= 64 ? engine_->connectedConjunct() : nullptr;
     if (connected) {
@@ -112,12 +112,19 @@ void Explorer::addAllLegal() {
         lists.resize((total + batch - 1) / batch);
         legalByIndex(total, batch, found);
     }
-    // Phase 2: store them. Ranked, in candidate order, so that an id is its rank.
+    // Phase 2: store them, ranked in candidate order (an id is its rank), else in job order (ids
+    // do not depend on the threads).
+    for (const auto& b : bitmaps)
+        for (std::size_t w = 0; w < legalBits_.size(); ++w) legalBits_[w] |= b[w];
+    bitmaps.clear();
+    if (rank) {
+        for (const auto& list : lists)
+            for (const std::uint64_t index : list) legalBits_[index >> 6] |= std::uint64_t{1} << (index & 63);
+        lists.clear();
+    }
     std::size_t count = 0;
-    if (rank)
-        for (std::uint64_t w : legalBits_) count += std::popcount(w);
-    else
-        for (const auto& list : lists) count += list.size() / store_.layout().words();
+    for (const auto& list : lists) count += list.size();
+    for (const std::uint64_t w : legalBits_) count += std::popcount(w);
     if (count > options_.limits.maxStates)
         throw InputError("region " + engine_->region().spec() + " has more than --max-states=" + std::to_string(options_.limits.maxStates) +
                          " legal configurations; raise the limit or choose a smaller region");
@@ -143,8 +150,11 @@ void Explorer::addAllLegal() {
     } else {
         placeValue_.clear();
         for (const auto& list : lists)
-            for (std::size_t k = 0; k < list.size(); k += store_.layout().words())
-                if (const auto [id, inserted] = store_.insert(&list[k]); inserted) stored(id);
+            for (const std::uint64_t index : list) {
+                digits(index, cells.data());
+                store_.layout().pack(cells.data(), packed.data());
+                if (const auto [id, inserted] = store_.insert(packed.data()); inserted) stored(id);
+            }
     }
     complete_ = true;
 }
@@ -177,7 +187,7 @@ void Explorer::legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& foun
     // next.
     const int n = engine_->region().size();
     std::atomic<std::uint64_t> next{0};
-    auto work = [&] {
+    auto work = [&](int thread) {
         rules::Engine::Evaluator ev(*engine_);
         std::vector<CellValue> cells(n);
         for (std::uint64_t job; (job = next.fetch_add(1)) * batch < total;) {
@@ -185,7 +195,7 @@ void Explorer::legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& foun
             digits(lo, cells.data());
             ev.load(cells.data());
             for (std::uint64_t index = lo; index < hi; ++index, ev.advance())
-                if (ev.legal()) found(job, index);
+                if (ev.legal()) found(thread, job, index);
         }
     };
     runOnThreads(work);
@@ -215,7 +225,7 @@ void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink&
             base += out[c][0] * placeValue_[c], gain[c] = (in[c][0] - out[c][0]) * placeValue_[c];  // wraps: unsigned
         }
     const int connectedWord = engine_->connectedConjunctWord();  // holds by construction
-    auto work = [&] {
+    auto work = [&](int thread) {
         std::vector<CellValue> cells(n);
         std::vector<int> choice(n), varying;
         std::uint64_t occupied[64];
@@ -225,7 +235,7 @@ void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink&
             for (int v = 0; v < a; ++v) occupied[v] = (set & inCells[v]) | (~set & outCells[v]);
             rules::Engine::ConstraintWords words;
             engine_->constraintWords(occupied, words);
-            if (engine_->legalOn(words, nullptr, connectedWord)) found(job, index);
+            if (engine_->legalOn(words, nullptr, connectedWord)) found(thread, job, index);
         };
         auto each = [&](std::size_t job, std::uint64_t set) {
             if (determined) return one(job, set);
@@ -238,7 +248,7 @@ void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink&
                 if (options.size() > 1) varying.push_back(c);
             }
             while (true) {  // every combination of the cells' options: an odometer
-                if (legalCells(cells.data(), occupied)) found(job, index);
+                if (legalCells(cells.data(), occupied)) found(thread, job, index);
                 std::size_t k = 0;
                 for (; k < varying.size(); ++k) {
                     const int c = varying[k];
@@ -273,8 +283,8 @@ bool Explorer::legalCells(const CellValue* cells, std::uint64_t* occupied) const
 template <class Work>
 void Explorer::runOnThreads(Work& work) const {
     std::vector<std::thread> pool;
-    for (int t = 1; t < std::max(1, options_.limits.threads); ++t) pool.emplace_back([&] { work(); });
-    work();
+    for (int t = 1; t < std::max(1, options_.limits.threads); ++t) pool.emplace_back([&work, t] { work(t); });
+    work(0);
     for (auto& th : pool) th.join();
 }
 
@@ -334,13 +344,19 @@ void Explorer::gather(StateId id, Successors& out) const {
         for (std::size_t k = 0; k < out.count; ++k) out.keys[k] = store_.prefetch(&out.packed[k * words]);
 }
 
-void Explorer::resolve(const Successors& s, rules::Engine::Evaluator& ev, Found& found) {
+Explorer::Worker::Worker(const rules::Engine& engine, int words) : ev(engine) {
+    const std::size_t room = engine.instances().size();  // successors of one state at most
+    for (Successors& s : ring) s.packed.resize(room * words), s.keys.resize(room), s.via.resize(room);
+}
+
+void Explorer::resolve(const Successors& s, Worker& worker) {
     // Only legal states are ever stored, so a successor found needs no constraint check; one not
     // found is new if gather already decided it is legal (on words), is checked with the
     // incremental evaluator (cell by cell), or, when the store already holds every legal
     // configuration (--all), known to be illegal.
     const int words = store_.layout().words();
     CellValue saved[rules::Engine::kMaxCells];
+    rules::Engine::Evaluator& ev = worker.ev;
     thread_local std::vector<StateId> seen;
     seen.clear();
     std::uint64_t edges = 0;
@@ -361,12 +377,12 @@ void Explorer::resolve(const Successors& s, rules::Engine::Evaluator& ev, Found&
                 cells = ev.cells();
             }
             if (legal) {
-                const auto [added, inserted] = store_.insert(successor, s.keys[k]);
+                const auto [added, inserted] = store_.insert(successor, s.keys[k], worker.ids);
                 sid = added;
                 if (inserted) {
                     parent_[sid] = s.from + 1;
                     via_[sid] = s.via[k] + 1;
-                    found.next.push_back(sid);
+                    worker.next.push_back(sid);
                     if (options_.onState) {
                         thread_local std::vector<CellValue> unpacked;
                         if (!cells) unpacked.resize(engine_->region().size()), unpack(sid, unpacked.data()), cells = unpacked.data();
@@ -383,28 +399,25 @@ void Explorer::resolve(const Successors& s, rules::Engine::Evaluator& ev, Found&
             seen.push_back(sid);
         }
         ++edges;
-        if (options_.recordEdges) found.edges.push_back({s.from, {sid, s.via[k]}});
+        if (options_.recordEdges) worker.edges.push_back({s.from, {sid, s.via[k]}});
     }
-    if (edges == 0) found.terminal.push_back(s.from);
-    found.edgeCount += edges;
+    if (edges == 0) worker.terminal.push_back(s.from);
+    worker.edgeCount += edges;
 }
 
-void Explorer::expandRange(std::size_t lo, std::size_t hi, Found& found) {
+void Explorer::expandRange(std::size_t lo, std::size_t hi, Worker& worker) {
     // A software pipeline over the frontier, so that a look-up finds its data in cache: the
     // successors of state k are generated (their table slots prefetched) while those of state k - 1
     // have their stored states (or their words of the ranking) prefetched and those of state k - 2
     // are looked up.
-    rules::Engine::Evaluator ev(*engine_);
-    Successors ring[3];
-    const std::size_t room = engine_->instances().size();
-    for (Successors& s : ring) s.packed.resize(room * store_.layout().words()), s.keys.resize(room), s.via.resize(room);
+    Successors* ring = worker.ring;
     for (std::size_t k = lo; k < hi + 2; ++k) {
         if (k < hi) gather(frontier_[k], ring[k % 3]);
         if (k >= lo + 1 && k - 1 < hi) {
             const Successors& s = ring[(k - 1) % 3];
             for (std::size_t j = 0; j < s.count; ++j) ranked() ? prefetchRank(s.keys[j]) : store_.prefetchStored(s.keys[j]);
         }
-        if (k >= lo + 2) resolve(ring[(k - 2) % 3], ev, found);
+        if (k >= lo + 2) resolve(ring[(k - 2) % 3], worker);
     }
 }
 
@@ -416,7 +429,12 @@ const ExploreStats& Explorer::explore() {
     const std::uint64_t branching = std::max<std::size_t>(1, engine_->instances().size());
     // A chunk reserves room for chunk * branching new states; keep that headroom near a million.
     const std::uint64_t chunk = std::max<std::uint64_t>(64, std::min<std::uint64_t>(1u << 14, (1u << 20) / branching));
-    std::vector<Found> found(threads);
+    std::vector<Worker> workers;
+    for (int t = 0; t < threads; ++t) workers.emplace_back(*engine_, store_.layout().words());
+    // Threads take the chunk a piece at a time: the two cores of a shared host seldom run at the
+    // same speed, and an even split leaves the faster one waiting.
+    constexpr std::size_t kPiece = 256;
+    const std::uint64_t blockRoom = static_cast<std::uint64_t>(threads) * StateStore::IdBlock::kSize;
     const std::size_t edgeBytes = options_.recordEdges ? 12 : 0;
     stats_ = {};
     while (!frontier_.empty() && stats_.stopped == StopReason::Finished) {
@@ -424,7 +442,7 @@ const ExploreStats& Explorer::explore() {
         for (std::size_t pos = 0; pos < frontier_.size(); pos += chunk) {
             const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
             std::size_t edgesHeld = 0;
-            for (const Found& f : found) edgesHeld += f.edges.size();
+            for (const Worker& w : workers) edgesHeld += w.edges.size();
             const std::size_t bytes = store_.bytes() + parent_.size() * 8 + edgesHeld * edgeBytes;
             if (store_.size() >= options_.limits.maxStates) stats_.stopped = StopReason::MaxStates;
             else if (options_.limits.timeoutSeconds > 0 && elapsed >= options_.limits.timeoutSeconds) stats_.stopped = StopReason::Timeout;
@@ -435,23 +453,23 @@ const ExploreStats& Explorer::explore() {
             }
             const std::size_t end = std::min(frontier_.size(), pos + chunk);
             if (!complete_) {  // a complete store gains no states
-                store_.reserve((end - pos) * branching);
-                growLinks(store_.capacityUsed() + (end - pos) * branching);
+                store_.reserve((end - pos) * branching + blockRoom);
+                growLinks(store_.capacityUsed() + (end - pos) * branching + blockRoom);
             }
+            std::atomic<std::size_t> cursor{pos};
             auto work = [&](int t) {
-                const std::size_t per = (end - pos + threads - 1) / threads;
-                const std::size_t lo = std::min(end, pos + per * t), hi = std::min(end, lo + per);
-                expandRange(lo, hi, found[t]);
+                for (std::size_t lo; (lo = cursor.fetch_add(kPiece)) < end;) expandRange(lo, std::min(end, lo + kPiece), workers[t]);
             };
             std::vector<std::thread> pool;
             for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
             work(0);
             for (auto& th : pool) th.join();
-            for (Found& f : found) {
-                nextLevel.insert(nextLevel.end(), f.next.begin(), f.next.end());
-                terminal_.insert(terminal_.end(), f.terminal.begin(), f.terminal.end());
-                stats_.edges += f.edgeCount;
-                f.next.clear(), f.terminal.clear(), f.edgeCount = 0;
+            for (Worker& w : workers) {
+                store_.release(w.ids);
+                nextLevel.insert(nextLevel.end(), w.next.begin(), w.next.end());
+                terminal_.insert(terminal_.end(), w.terminal.begin(), w.terminal.end());
+                stats_.edges += w.edgeCount;
+                w.next.clear(), w.terminal.clear(), w.edgeCount = 0;
             }
             stats_.states = store_.size();
             if (options_.onProgress && std::chrono::duration<double>(Clock::now() - last).count() > 0.5) {
@@ -476,22 +494,22 @@ const ExploreStats& Explorer::explore() {
     via_.resize(store_.capacityUsed());
     parent_.shrinkToFit();
     via_.shrinkToFit();
-    if (options_.recordEdges) buildRows(found);
+    if (options_.recordEdges) buildRows(workers);
     stats_.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     stats_.bytes = store_.bytes() + rankingBytes() + parent_.size() * 8 + succ_.size() * 8 + rowStart_.size() * 8;
     return stats_;
 }
 
-void Explorer::buildRows(std::vector<Found>& perThread) {
+void Explorer::buildRows(std::vector<Worker>& perThread) {
     const std::size_t n = store_.capacityUsed();
     rowStart_.assign(n + 1, 0);
-    for (const Found& f : perThread)
+    for (const Worker& f : perThread)
         for (const auto& e : f.edges) ++rowStart_[e.first + 1];
     for (std::size_t i = 0; i < n; ++i) rowStart_[i + 1] += rowStart_[i];
     succ_.resize(rowStart_[n]);
     succVia_.resize(rowStart_[n]);
     std::vector<std::uint64_t> fill(rowStart_.begin(), rowStart_.end() - 1);
-    for (Found& f : perThread) {
+    for (Worker& f : perThread) {
         auto& list = f.edges;
         for (const auto& e : list) {
             succ_[fill[e.first]] = e.second.first;

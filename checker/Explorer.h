@@ -106,13 +106,17 @@ private:
         std::vector<std::int32_t> via;
         std::size_t count = 0;
     };
-    /// Per worker thread: what it found in one chunk of the frontier.
-    struct Found {
+    /// Per worker thread: its tools, kept from chunk to chunk, and what it found in the chunk.
+    struct Worker {
+        Worker(const rules::Engine& engine, int words);
+        rules::Engine::Evaluator ev;
+        Successors ring[3];  // expandRange's pipeline
+        StateStore::IdBlock ids;
         std::vector<StateId> next, terminal;
         std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>> edges;
         std::uint64_t edgeCount = 0;
     };
-    /// addAllLegal's first phase: found(job, index) for every legal candidate, from
+    /// addAllLegal's first phase: found(thread, job, index) for every legal candidate, from
     /// every index in turn, or from the connected sets when a conjunct requires connectivity.
     template <class Sink>
     void legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& found);
@@ -121,12 +125,13 @@ private:
     bool legalCells(const CellValue* cells, std::uint64_t* occupied) const;
     /// The cells of the candidate with this index (its digits in base alphabet size).
     void digits(std::uint64_t index, CellValue* cells) const;
+    /// work(t) on each thread t.
     template <class Work>
     void runOnThreads(Work& work) const;
     void gather(StateId id, Successors& out) const;
-    void resolve(const Successors& s, rules::Engine::Evaluator& ev, Found& found);
-    void expandRange(std::size_t lo, std::size_t hi, Found& found);
-    void buildRows(std::vector<Found>& perThread);
+    void resolve(const Successors& s, Worker& worker);
+    void expandRange(std::size_t lo, std::size_t hi, Worker& worker);
+    void buildRows(std::vector<Worker>& workers);
 
     const rules::Engine* engine_;
     Options options_;

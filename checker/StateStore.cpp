@@ -1,8 +1,8 @@
 // Packed state storage in the manner of explicit-state model checkers (Storm, SPIN, LTSmin): a
 // configuration is a bit vector of ceil(log2 |alphabet|) bits per cell; the arena holds them back to
 // back and a linear-probing table of 32-bit slots (id and hash tag) finds them. Threads insert with
-// one compare-and-swap on the table slot after writing the arena; when two threads race to add the
-// same new state, the loser's reserved id becomes a hole that is skipped everywhere.
+// one compare-and-swap on the table slot after writing the arena; each takes its ids from blocks of
+// its own, and the ids a block did not use become holes that are skipped everywhere.
 
 #include "checker/StateStore.h"
 
@@ -122,7 +122,11 @@ void StateStore::shrinkToFit() {
     if (want != slots_.size()) rebuildTable(want);
 }
 
-std::pair<StateId, bool> StateStore::insert(const std::uint64_t* packed, std::uint64_t hash) {
+void StateStore::release(IdBlock& ids) {
+    for (; ids.next < ids.end; ++ids.next) holeFlags_[ids.next] = 1, holes_.fetch_add(1, std::memory_order_relaxed);
+}
+
+std::pair<StateId, bool> StateStore::insert(const std::uint64_t* packed, std::uint64_t hash, IdBlock& ids) {
     const int words = layout_.words();
     const std::size_t mask = slots_.size() - 1;
     const std::uint32_t tag = tagOf(hash);
@@ -132,16 +136,14 @@ std::pair<StateId, bool> StateStore::insert(const std::uint64_t* packed, std::ui
         std::uint32_t s = slot(pos).load(std::memory_order_acquire);
         if (s == 0) {
             if (mine == kNoState) {
-                mine = next_.fetch_add(1, std::memory_order_relaxed);
+                if (ids.next == ids.end) ids.next = next_.fetch_add(ids.size, std::memory_order_relaxed), ids.end = ids.next + ids.size;
+                mine = ids.next++;
                 std::memcpy(&arena_[static_cast<std::size_t>(mine) * words], packed, sizeof(std::uint64_t) * words);
             }
             if (slot(pos).compare_exchange_strong(s, tag | (mine + 1), std::memory_order_acq_rel)) return {mine, true};
         }
         if ((s & tagMask_) == tag && sameWords(state(idIn(s)), packed, words)) {
-            if (mine != kNoState) {
-                holeFlags_[mine] = 1;
-                holes_.fetch_add(1, std::memory_order_relaxed);
-            }
+            if (mine != kNoState) --ids.next;  // another thread added it first: the id goes back to the block
             return {idIn(s), false};
         }
         pos = (pos + 1) & mask;

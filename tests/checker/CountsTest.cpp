@@ -142,3 +142,26 @@ TEST_CASE("successors and legality on words give the graph the cell-by-cell path
         CHECK(graphs[0] == graphs[1]);
     }
 }
+
+TEST_CASE("--all stores the same states whether threads keep a bitmap each or list indices") {
+    // hex:r2 has 2^19 candidates for pixel. A quarter of 450 KiB (115,200 bytes) holds the
+    // ranking (98,304 bytes) and one thread's 64 KiB bitmap, not two: two threads list indices.
+    const test::World world(rules::librarySystem("pixel"), "hex:r2");
+    const rules::Engine engine(*world.model, world.region, {});
+    std::vector<std::vector<std::vector<rules::CellValue>>> stored;
+    for (int threads : {1, 2}) {
+        checker::Explorer::Options options;
+        options.limits.threads = threads;
+        options.limits.memoryBytes = 450 << 10;
+        checker::Explorer ex(engine, options);
+        ex.addAllLegal();
+        std::vector<std::vector<rules::CellValue>> states;
+        for (checker::StateId s : ex.ids()) {
+            CHECK(ex.find(ex.cells(s).data()) == s);
+            states.push_back(ex.cells(s));
+        }
+        stored.push_back(std::move(states));
+    }
+    CHECK(stored[0].size() > 1000);
+    CHECK(stored[0] == stored[1]);  // ids are ranks either way: the same order
+}
