@@ -302,7 +302,7 @@ void Explorer::gather(StateId id, Successors& out) const {
         // A two-state alphabet's candidate index is the word of the cells in state 1.
         const bool binary = engine_->model().alphabet().size() == 2;
         WordSuccessors::Loaded& loaded = out.loaded;
-        words_->load(base, loaded, ranked() && !binary);
+        words_->load(base, loaded, ranked() && !binary, !complete_);
         const std::uint64_t index = !ranked() ? 0 : binary ? loaded.occupied[1] : indexOf(loaded.cells);
         words_->forEach(loaded, [&](int p, const std::uint64_t* delta, std::uint64_t indexDelta) {
             const std::size_t k = out.count;

@@ -22,7 +22,7 @@ WordSuccessors::WordSuccessors(const rules::Engine& engine, const StateLayout& l
     fixedDelta_.assign(instances.size() * words_, 0);
     fixedIndexDelta_.assign(instances.size(), 0);
     fixedChange_.resize(instances.size());
-    constraintFree_.assign(instances.size(), 0);
+    firstCheck_.assign(instances.size() + 1, 0);
     CellValue cells[64] = {};
     std::vector<CellValue> pinned(instances.size() * rules::Engine::kMaxCells);  // fixed instances' left sides
     for (std::size_t p = 0; p < instances.size(); ++p) {
@@ -49,9 +49,66 @@ WordSuccessors::WordSuccessors(const rules::Engine& engine, const StateLayout& l
         CellValue old[rules::Engine::kMaxCells];
         for (int k = 0; k < placed.size; ++k) old[k] = cells[placed.cells[k]];
         for (int k = 0; k < placed.size; ++k) engine.addChange(placed.cells[k], old[k], engine.rewritten(placed, k, old), fixedChange_[p]);
-        constraintFree_[p] = engine.unchanged(fixedChange_[p]);
+        const auto checks = engine.compileChange(fixedChange_[p]);
+        firstCheck_[p] = static_cast<std::uint32_t>(checks_.size());
+        checks_.insert(checks_.end(), checks.begin(), checks.end());
+        firstCheck_[p + 1] = static_cast<std::uint32_t>(checks_.size());
     }
     findUnique(pinned);
+    matcher_ = engine.newWordMatcher();
+    if (engine.constraintsOnWords()) addFilters();
+    matcher_->finish();
+}
+
+void WordSuccessors::addFilters() {
+    // Per shape, the (word, pattern cell) removals every instance of it makes; the instances'
+    // cut-cell checks on them become the matcher's filter.
+    using Kind = rules::Engine::Check::Kind;
+    const auto& instances = engine_->instances();
+    std::vector<std::vector<std::pair<int, int>>> common(engine_->model().shapes().size());
+    std::vector<char> seen(common.size(), 0);
+    for (std::size_t p = 0; p < instances.size(); ++p) {
+        const int shape = instances[p].shape;
+        std::vector<std::pair<int, int>> removals;
+        if (fixed_[p])
+            for (std::uint32_t i = firstCheck_[p]; i < firstCheck_[p + 1]; ++i)
+                if (checks_[i].kind == Kind::Removed) {
+                    const int cell = std::countr_zero(checks_[i].bits);
+                    for (int k = 0; k < instances[p].size; ++k)
+                        if (instances[p].cells[k] == cell) removals.push_back({checks_[i].index, k});
+                }
+        if (!seen[shape]) common[shape] = removals, seen[shape] = 1;
+        else std::erase_if(common[shape], [&](const auto& r) { return std::find(removals.begin(), removals.end(), r) == removals.end(); });
+    }
+    for (std::size_t shape = 0; shape < common.size(); ++shape)
+        for (const auto& [word, k] : common[shape]) {
+            auto it = std::find(filteredWord_.begin(), filteredWord_.end(), word);
+            if (it == filteredWord_.end()) {
+                if (static_cast<int>(filteredWord_.size()) == kMaxFilters) continue;
+                filteredWord_.push_back(word);
+                matcher_->addWordTest();
+                it = filteredWord_.end() - 1;
+            }
+            matcher_->require(static_cast<int>(shape), k, static_cast<int>(it - filteredWord_.begin()));
+        }
+    // The filtered instances' cut-cell checks are now the matcher's: drop them.
+    std::vector<rules::Engine::Check> kept;
+    std::vector<std::uint32_t> first(firstCheck_.size(), 0);
+    for (std::size_t p = 0; p < instances.size(); ++p) {
+        first[p] = static_cast<std::uint32_t>(kept.size());
+        const auto& filtered = common[instances[p].shape];
+        for (std::uint32_t i = firstCheck_[p]; i < firstCheck_[p + 1]; ++i) {
+            const rules::Engine::Check& c = checks_[i];
+            const bool dropped = c.kind == Kind::Removed && std::find(filteredWord_.begin(), filteredWord_.end(), c.index) != filteredWord_.end() &&
+                                 std::any_of(filtered.begin(), filtered.end(), [&](const auto& r) {
+                                     return r.first == c.index && instances[p].cells[r.second] == std::countr_zero(c.bits);
+                                 });
+            if (!dropped) kept.push_back(c);
+        }
+    }
+    first[instances.size()] = static_cast<std::uint32_t>(kept.size());
+    checks_ = std::move(kept);
+    firstCheck_ = std::move(first);
 }
 
 void WordSuccessors::findUnique(const std::vector<CellValue>& pinned) {
@@ -121,10 +178,11 @@ void WordSuccessors::occupiedOf(const std::uint64_t* packed, std::uint64_t* occu
     }
 }
 
-void WordSuccessors::load(const std::uint64_t* packed, Loaded& out, bool withCells) const {
+void WordSuccessors::load(const std::uint64_t* packed, Loaded& out, bool withCells, bool prune) const {
     occupiedOf(packed, out.occupied);
     if (withCells || needCells_) layout_->unpack(packed, out.cells);
     if (engine_->constraintsOnWords()) engine_->constraintWords(out.occupied, out.legal.words), engine_->prepare(out.legal);
+    for (std::size_t f = 0; f < filteredWord_.size(); ++f) out.allowed[f] = prune ? ~engine_->cutsOf(out.legal, filteredWord_[f]) : ~std::uint64_t{0};
 }
 
 bool WordSuccessors::legal(const std::uint64_t* packed, const Loaded& parent, int placed) const {
@@ -133,7 +191,8 @@ bool WordSuccessors::legal(const std::uint64_t* packed, const Loaded& parent, in
         layout_->unpack(packed, cells);
         return engine_->legal(cells);
     }
-    if (fixed_[placed]) return constraintFree_[placed] || engine_->legalAfter(parent.legal, fixedChange_[placed]);
+    if (fixed_[placed])
+        return engine_->legalAfter(parent.legal, &checks_[firstCheck_[placed]], firstCheck_[placed + 1] - firstCheck_[placed], fixedChange_[placed]);
     rules::Engine::ConstraintWords now;
     std::uint64_t occupied[64];
     occupiedOf(packed, occupied);

@@ -13,6 +13,7 @@
 #include "rules/Engine.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace holon::checker {
@@ -26,19 +27,23 @@ public:
     /// `layout` must be plane-major.
     WordSuccessors(const rules::Engine& engine, const StateLayout& layout);
 
+    static constexpr int kMaxFilters = 8;
     /// One configuration, read once for all its successors.
     struct Loaded {
+        std::uint64_t allowed[kMaxFilters];  // per filter, the cells whose removal keeps its word connected
         std::uint64_t occupied[64];              // per state, the cells in it
         CellValue cells[64];                     // filled when `withCells` was asked or a rule needs them
         rules::Engine::LegalBefore legal;        // when the constraints are decided on words
     };
-    void load(const std::uint64_t* packed, Loaded& out, bool withCells) const;
+    /// `prune`: successors that a connectivity constraint rules out are not listed at all (a
+    /// search that decides legality); otherwise (--all, where the store decides) they may be.
+    void load(const std::uint64_t* packed, Loaded& out, bool withCells, bool prune) const;
     /// f(placed, delta, indexDelta) for every enabled instance: the successor's stored words are
     /// the configuration's XOR `delta`, and its candidate index (the sum of state x alphabet^cell)
     /// is the configuration's plus `indexDelta`, modulo 2^64.
     template <class F> void forEach(const Loaded& l, F&& f) const {
         std::uint64_t delta[kMaxWords];
-        engine_->forEachMatchIn(l.occupied, l.cells, [&](int p) {
+        engine_->forEachMatchIn(*matcher_, l.occupied, l.allowed, l.cells, [&](int p) {
             if (fixed_[p])
                 return f(p, &fixedDelta_[static_cast<std::size_t>(p) * words_], fixedIndexDelta_[p]);
             f(p, delta, computeDelta(p, l.cells, delta));
@@ -48,7 +53,7 @@ public:
     /// the edge needs no de-duplication.
     bool unique(int placed) const { return unique_[placed] != 0; }
     /// Every constraint holds in the successor `packed` of `parent` (a legal configuration) by
-    /// instance `placed`. For an instance with a fixed delta the constraint words are the
+    /// instance `placed`, listed by forEach after a pruning load. For an instance with a fixed delta the constraint words are the
     /// parent's changed by a fixed amount; connectivity is decided around the cells that changed.
     bool legal(const std::uint64_t* packed, const Loaded& parent, int placed) const;
 
@@ -57,6 +62,9 @@ private:
     std::uint64_t computeDelta(int placed, const CellValue* cells, std::uint64_t* delta) const;
     void occupiedOf(const std::uint64_t* packed, std::uint64_t* occupied) const;
     void findUnique(const std::vector<CellValue>& pinned);
+    /// Filters for the matcher: shapes all of whose instances remove their pattern cell k from
+    /// a word that must stay connected match only where that cell is not a cut cell.
+    void addFilters();
 
     const rules::Engine* engine_;
     const StateLayout* layout_;
@@ -68,7 +76,10 @@ private:
     std::vector<std::uint64_t> fixedDelta_; // [instance * words]
     std::vector<std::uint64_t> fixedIndexDelta_;
     std::vector<rules::Engine::WordChange> fixedChange_;  // per instance, when fixed and on words
-    std::vector<char> constraintFree_;  // fixed, and no constraint word changes: legal after any legal state
+    std::vector<rules::Engine::Check> checks_;            // fixed instances' compiled changes, back to back
+    std::vector<std::uint32_t> firstCheck_;               // per instance and one past the end: its checks in checks_
+    std::unique_ptr<rules::WordMatcher> matcher_;         // the engine's instances, with the filters
+    std::vector<int> filteredWord_;                       // per filter: the constraint word whose cut cells it excludes
 };
 
 }  // namespace holon::checker

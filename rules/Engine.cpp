@@ -101,8 +101,7 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     for (int p = 0; p < static_cast<int>(placed_.size()); ++p)
         placedIndex_[static_cast<std::size_t>(placed_[p].cells[0]) * tables_.shapeCount() + placed_[p].shape] = p;
     if (WordMatcher::fits(region.size(), tables_.alphabet())) {
-        words_ = std::make_unique<WordMatcher>(tables_, combo_);
-        for (const Placed& p : placed_) words_->addInstance(p.shape, p.cells, p.size);
+        words_ = newWordMatcher();
         words_->finish();
     }
     std::vector<const CellPredicate*> preds;
@@ -185,6 +184,12 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     }
 }
 
+std::unique_ptr<WordMatcher> Engine::newWordMatcher() const {
+    auto matcher = std::make_unique<WordMatcher>(tables_, combo_);
+    for (const Placed& p : placed_) matcher->addInstance(p.shape, p.cells, p.size);
+    return matcher;
+}
+
 const CellPredicate* Engine::connectedConjunct() const {
     std::function<const CellPredicate*(const Expr&)> find = [&](const Expr& e) -> const CellPredicate* {
         if (e.kind == Expr::Kind::Connected) return &e.pred;
@@ -227,12 +232,6 @@ void Engine::addChange(int cell, CellValue from, CellValue to, WordChange& chang
     change.mass += tables_.massUnitsOf(to) - tables_.massUnitsOf(from);
 }
 
-bool Engine::unchanged(const WordChange& change) const {
-    for (std::size_t w = 0; w < constraintPredicates_.size(); ++w)
-        if (change.removed[w] | change.added[w]) return false;
-    return change.mass == 0;
-}
-
 std::int64_t Engine::linearSum(const Conjunct& c, const ConstraintWords& w) const {
     std::int64_t sum = c.constant + c.massCoefficient * w.mass;
     for (const auto& [word, coefficient] : c.counts) sum += coefficient * std::popcount(w.members[word]);
@@ -269,24 +268,50 @@ bool Engine::legalOn(const ConstraintWords& now, const LegalBefore* before, int 
     return true;
 }
 
-bool Engine::legalAfter(const LegalBefore& before, const WordChange& change) const {
-    const int words = static_cast<int>(constraintPredicates_.size());
+std::vector<Engine::Check> Engine::compileChange(const WordChange& change) const {
+    std::vector<Check> checks;
     for (const Conjunct& c : conjuncts_) {
-        bool holds;
+        Check k{Check::Kind::General};
+        k.expr = c.expr;
+        k.op = c.expr->op;
         if (c.sum >= 0) {
-            // The rewrite's old and new states are fixed, so it changes each count by a fixed amount.
-            std::int64_t sum = before.sums[c.sum] + c.massCoefficient * change.mass;
+            k.kind = Check::Kind::Sum, k.index = c.sum;
+            k.delta = c.massCoefficient * change.mass;
             for (const auto& [word, coefficient] : c.counts)
-                sum += coefficient * (std::popcount(change.added[word]) - std::popcount(change.removed[word]));
-            holds = compare<std::int64_t>(c.expr->op, sum, 0);
+                k.delta += coefficient * (std::popcount(change.added[word]) - std::popcount(change.removed[word]));
+            if (k.delta == 0) continue;
         } else if (c.expr->kind == Expr::Kind::Connected) {
             const int w = c.expr->predicate;
-            holds = stillConnected(before, w, change.removed[w], change.added[w]);
-        } else {
+            const std::uint64_t removed = change.removed[w], added = change.added[w];
+            if (!removed && !added) continue;
+            k.index = w, k.bits = added, k.removed = removed;
+            k.kind = removed && !(removed & (removed - 1)) && !added ? Check::Kind::Removed
+                     : !removed                                      ? Check::Kind::Attached
+                                                                     : Check::Kind::Connected;
+            if (k.kind == Check::Kind::Removed) k.bits = removed;
+        }
+        checks.push_back(k);
+    }
+    return checks;
+}
+
+bool Engine::legalAfter(const LegalBefore& before, const Check* checks, std::size_t count, const WordChange& change) const {
+    for (std::size_t i = 0; i < count; ++i) {
+        const Check& k = checks[i];
+        bool holds = true;
+        switch (k.kind) {
+        case Check::Kind::Sum: holds = compare<std::int64_t>(k.op, before.sums[k.index] + k.delta, 0); break;
+        case Check::Kind::Removed: holds = !(cutsOf(before, k.index) & k.bits); break;
+        case Check::Kind::Attached:
+        case Check::Kind::Connected: holds = stillConnected(before, k.index, k.removed, k.bits); break;
+        case Check::Kind::General: {
             ConstraintWords now;
-            for (int w = 0; w < words; ++w) now.members[w] = (before.words.members[w] & ~change.removed[w]) | change.added[w];
+            for (std::size_t w = 0; w < constraintPredicates_.size(); ++w)
+                now.members[w] = (before.words.members[w] & ~change.removed[w]) | change.added[w];
             now.mass = before.words.mass + change.mass;
-            holds = holdsOn(*c.expr, now.members, now.mass, nullptr);
+            holds = holdsOn(*k.expr, now.members, now.mass, nullptr);
+            break;
+        }
         }
         if (!holds) return false;
     }
@@ -300,9 +325,9 @@ bool Engine::stillConnected(const LegalBefore& legal, int w, std::uint64_t remov
     // Removing one cell keeps a connected set connected unless it is a cut cell. Whatever is
     // kept connected, each added cell must join through added cells.
     std::uint64_t kept = removed ? 0 : before;
+    if (!kept && !removed) return connectedCells(now);  // nothing before: the added cells alone
     if (removed && !(removed & (removed - 1))) {
-        if (!((legal.cutsKnown >> w) & 1u)) legal.cuts[w] = cutCells(before), legal.cutsKnown |= 1u << w;
-        if (!(removed & legal.cuts[w])) kept = before & ~removed;
+        if (!(removed & cutsOf(legal, w))) kept = before & ~removed;
         else if (!added) return false;
     }
     if (kept) {
@@ -510,6 +535,7 @@ bool Engine::holdsOn(const CompiledExpr& e, const std::uint64_t* members, std::i
 }
 
 std::uint64_t Engine::cutCells(std::uint64_t set) const {
+    if (!set) return 0;
     // Iterative depth-first search: a cell's low point is the earliest discovery time among its
     // neighbours (other than its parent) and its children's low points; a cell other than the
     // root is a cut cell when some child's low point is not earlier than its own discovery, the

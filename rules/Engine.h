@@ -16,6 +16,8 @@
 namespace holon::rules {
 
 class Engine {
+    struct CompiledExpr;  // a constraint's expression, compiled (below)
+
 public:
     static constexpr int kMaxCells = RuleTables::kMaxCells;
     using GuardNode = RuleTables::GuardNode;
@@ -69,15 +71,28 @@ public:
     /// given the cells in each state as words (`occupied[v]`); `cells` is read only by guards.
     template <class F>
     void forEachMatchIn(const std::uint64_t* occupied, const CellValue* cells, F&& f) const {
-        const int shapes = static_cast<int>(model_->shapes().size());
-        words_->forEachShapeIn(occupied, [&](int s, std::uint64_t anchors) {
-            const bool guarded = tables_.shape(s).hasGuard;
-            for (; anchors; anchors &= anchors - 1) {
-                const std::int32_t p = placedIndex_[static_cast<std::size_t>(std::countr_zero(anchors)) * shapes + s];
-                if (!guarded || guardHolds(cells, placed_[p])) f(p);
-            }
-        });
+        forEachMatchIn(*words_, occupied, nullptr, cells, f);
     }
+    /// The same with a matcher of the caller's (newWordMatcher, with tests of its own whose words
+    /// are `extra`).
+    template <class F>
+    void forEachMatchIn(const WordMatcher& matcher, const std::uint64_t* occupied, const std::uint64_t* extra, const CellValue* cells,
+                        F&& f) const {
+        const int shapes = static_cast<int>(model_->shapes().size());
+        matcher.forEachShapeIn(
+            occupied,
+            [&](int s, std::uint64_t anchors) {
+                const bool guarded = tables_.shape(s).hasGuard;
+                for (; anchors; anchors &= anchors - 1) {
+                    const std::int32_t p = placedIndex_[static_cast<std::size_t>(std::countr_zero(anchors)) * shapes + s];
+                    if (!guarded || guardHolds(cells, placed_[p])) f(p);
+                }
+            },
+            extra);
+    }
+    /// A word matcher for this engine's instances, not yet finished: the caller may add tests
+    /// (WordMatcher::addWordTest, require) before WordMatcher::finish.
+    std::unique_ptr<WordMatcher> newWordMatcher() const;
     bool matchesOnWords() const { return words_ != nullptr; }
     /// The predicate T of a constraint conjunct `connected(T)` (`connected` alone: the occupied
     /// cells), or null: every legal configuration's T cells are then one connected set.
@@ -110,8 +125,6 @@ public:
         std::int64_t mass = 0;
     };
     void addChange(int cell, CellValue from, CellValue to, WordChange& change) const;
-    /// The change leaves every constraint word and the mass as they were.
-    bool unchanged(const WordChange& change) const;
     /// A legal configuration that configurations differing from it in a few cells are judged
     /// against (their parent in a search): its words, the sums of the constraints' linear
     /// comparisons, and, found once when first asked, the cells whose removal disconnects a set
@@ -125,12 +138,36 @@ public:
     };
     /// Fills everything of a LegalBefore but its words.
     void prepare(LegalBefore& before) const;
+    /// The cut cells of constraint word `word` of a legal configuration, found when first asked.
+    std::uint64_t cutsOf(const LegalBefore& before, int word) const {
+        if (!((before.cutsKnown >> word) & 1u)) before.cuts[word] = cutCells(before.words.members[word]), before.cutsKnown |= 1u << word;
+        return before.cuts[word];
+    }
     /// Every constraint holds. `before`, when given, is a legal configuration this one differs
     /// from in a few cells: a connectivity conjunct is then decided around the cells that changed.
     /// `connectedWord`: a constraint word the caller knows is connected (its test is skipped).
     bool legalOn(const ConstraintWords& now, const LegalBefore* before = nullptr, int connectedWord = -1) const;
-    /// Every constraint holds after `change`, made to the legal configuration `before`.
-    bool legalAfter(const LegalBefore& before, const WordChange& change) const;
+    /// A WordChange against the constraint conjuncts: only what can fail after it. A conjunct
+    /// the change leaves as it was needs no check (the configuration before was legal).
+    struct Check {
+        enum class Kind : std::uint8_t {
+            Sum,       // sums[index] + delta  op  0
+            Removed,   // word `index` loses one cell, `bits`: it must not be a cut cell
+            Attached,  // word `index` gains the cells `bits`: they must join it
+            Connected, // word `index` loses `removed` and gains `bits`
+            General,   // any other conjunct, on the words after the change
+        };
+        Kind kind;
+        CmpOp op = CmpOp::Eq;
+        int index = 0;
+        std::int64_t delta = 0;
+        std::uint64_t bits = 0, removed = 0;
+        const CompiledExpr* expr = nullptr;
+    };
+    std::vector<Check> compileChange(const WordChange& change) const;
+    /// Every constraint holds after a fixed change, compiled to `checks` (and described by
+    /// `change` for general checks), made to the legal configuration `before`.
+    bool legalAfter(const LegalBefore& before, const Check* checks, std::size_t count, const WordChange& change) const;
     /// The state pattern cell k of an instance takes when the instance fires; `old[j]` is the
     /// state of its pattern cell j before.
     CellValue rewritten(const Placed& p, int k, const CellValue* old) const {
@@ -173,9 +210,6 @@ public:
     /// Whether one cell in state v satisfies a predicate of this system's expressions.
     bool cellMatches(const CellPredicate& pred, int cell, CellValue v) const { return predicateAccepts(pred, combo_[cell], v); }
     Rational number(const Expr& e, const CellValue* cells) const;
-
-private:
-    struct CompiledExpr;
 
 public:
     /// Incremental evaluation of the non-local constraints while one thread walks through

@@ -45,13 +45,18 @@ void WordMatcher::addInstance(int shape, const std::int32_t* cells, int size) {
 
 void WordMatcher::finish() {
     firstCell_.push_back(static_cast<int>(pending_.size()));
+    auto stepsOf = [&](int cell, int test) {
+        for (const Pending& g : pending_[cell])
+            steps_.push_back({~g.anchors, test, static_cast<std::uint8_t>(std::max(0, g.delta)), static_cast<std::uint8_t>(std::max(0, -g.delta))});
+    };
     for (std::size_t s = 0; s < shapes_.size(); ++s) {
         shapes_[s].first = static_cast<int>(steps_.size());
-        for (int k = firstCell_[s]; k < firstCell_[s + 1]; ++k)
-            for (const Pending& g : pending_[k])
-                steps_.push_back({~g.anchors, cellTest_[k], static_cast<std::uint8_t>(std::max(0, g.delta)), static_cast<std::uint8_t>(std::max(0, -g.delta))});
+        for (int k = firstCell_[s]; k < firstCell_[s + 1]; ++k) stepsOf(k, cellTest_[k]);
+        for (const Filter& f : filters_)
+            if (f.shape == static_cast<int>(s)) stepsOf(firstCell_[s] + f.k, static_cast<int>(tests_.size()) + f.test);
         shapes_[s].last = static_cast<int>(steps_.size());
     }
+    filters_.clear();
     pending_.clear();
     pending_.shrink_to_fit();
     firstCell_.clear();

@@ -22,7 +22,12 @@ public:
     /// Registers one instance: shape `shape` with its pattern cells at region indices `cells`
     /// (the first is its anchor).
     void addInstance(int shape, const std::int32_t* cells, int size);
-    /// Lays the instances out for matching; call once, after the last addInstance.
+    /// A test whose word the caller supplies at match time (forEachShapeIn's `extra`); returns
+    /// its index among the extra words.
+    int addWordTest() { return extraTests_++; }
+    /// Instances of `shape` match only where pattern cell k lies in extra word `test`.
+    void require(int shape, int k, int test) { filters_.push_back({shape, k, test}); }
+    /// Lays the instances out for matching; call once, after the last addInstance and require.
     void finish();
 
     /// Calls f(shape, anchors) for every shape, `anchors` holding the first cells of its instances
@@ -33,9 +38,10 @@ public:
         for (int c = 0; c < regionSize_; ++c) occupied[cells[c]] |= std::uint64_t{1} << c;
         forEachShapeIn(occupied, f);
     }
-    /// The same, from the cells in each state: `occupied[v]` holds the cells in state v.
+    /// The same, from the cells in each state: `occupied[v]` holds the cells in state v, and
+    /// `extra` the words of the tests added by addWordTest.
     template <class F>
-    void forEachShapeIn(const std::uint64_t* occupied, F&& f) const {
+    void forEachShapeIn(const std::uint64_t* occupied, F&& f, const std::uint64_t* extra = nullptr) const {
         // Loops with fixed trip counts and shifts without branches: the branch predictor learns
         // them, where an early exit on the data mispredicts (measured: a third of the explorer's
         // mispredictions came from here).
@@ -43,13 +49,15 @@ public:
         std::uint64_t onStack[kOnStack];
         thread_local std::vector<std::uint64_t> onHeap;
         std::uint64_t* accepted = onStack;
-        if (tests_.size() > kOnStack) onHeap.resize(tests_.size()), accepted = onHeap.data();
+        const std::size_t all = tests_.size() + extraTests_;
+        if (all > kOnStack) onHeap.resize(all), accepted = onHeap.data();
         for (std::size_t t = 0; t < tests_.size(); ++t) {
             const std::uint64_t* byState = &testCells_[t * alphabet_];
             std::uint64_t a = 0;
             for (int v = 0; v < alphabet_; ++v) a |= occupied[v] & byState[v];
             accepted[t] = a;
         }
+        for (int e = 0; e < extraTests_; ++e) accepted[tests_.size() + e] = extra[e];
         for (std::size_t s = 0; s < shapes_.size(); ++s) {
             const Shape& shape = shapes_[s];
             std::uint64_t anchors = shape.anchors;
@@ -88,6 +96,11 @@ private:
     std::vector<std::vector<Pending>> pending_;  // per (shape, pattern cell), while instances are added
     std::vector<int> firstCell_;                // per shape: its first (shape, pattern cell), while instances are added
     std::vector<Step> steps_;
+    int extraTests_ = 0;
+    struct Filter {
+        int shape, k, test;
+    };
+    std::vector<Filter> filters_;  // until finish()
 };
 
 }  // namespace holon::rules
