@@ -346,7 +346,7 @@ void Explorer::gather(StateId id, Successors& out) const {
 
 Explorer::Worker::Worker(const rules::Engine& engine, int words) : ev(engine) {
     const std::size_t room = engine.instances().size();  // successors of one state at most
-    for (Successors& s : ring) s.packed.resize(room * words), s.keys.resize(room), s.via.resize(room);
+    for (Successors& s : ring) s.packed.resize(room * words), s.keys.resize(room), s.probe.resize(room), s.via.resize(room);
 }
 
 void Explorer::resolve(const Successors& s, Worker& worker) {
@@ -362,7 +362,7 @@ void Explorer::resolve(const Successors& s, Worker& worker) {
     std::uint64_t edges = 0;
     bool loaded = false;
     for (std::size_t k = 0; k < s.count; ++k) {
-        StateId sid = ranked() ? rankOf(s.keys[k]) : store_.find(&s.packed[k * words], s.keys[k]);
+        StateId sid = ranked() ? rankOf(s.keys[k]) : store_.find(&s.packed[k * words], s.keys[k], s.probe[k]);
         if (sid == kNoState) {
             if (complete_) continue;
             const std::uint64_t* successor = &s.packed[k * words];
@@ -414,8 +414,11 @@ void Explorer::expandRange(std::size_t lo, std::size_t hi, Worker& worker) {
     for (std::size_t k = lo; k < hi + 2; ++k) {
         if (k < hi) gather(frontier_[k], ring[k % 3]);
         if (k >= lo + 1 && k - 1 < hi) {
-            const Successors& s = ring[(k - 1) % 3];
-            for (std::size_t j = 0; j < s.count; ++j) ranked() ? prefetchRank(s.keys[j]) : store_.prefetchStored(s.keys[j]);
+            Successors& s = ring[(k - 1) % 3];
+            if (ranked())
+                for (std::size_t j = 0; j < s.count; ++j) prefetchRank(s.keys[j]);
+            else
+                for (std::size_t j = 0; j < s.count; ++j) s.probe[j] = store_.prefetchStored(s.keys[j]);
         }
         if (k >= lo + 2) resolve(ring[(k - 2) % 3], worker);
     }

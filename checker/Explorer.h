@@ -103,6 +103,7 @@ private:
         // the region, so listing one is a store. keys: hash in the store, or the candidate index
         // when ranked.
         std::vector<std::uint64_t> packed, keys;
+        std::vector<std::uint64_t> probe;  // where the look-up resumes (StateStore::prefetchStored)
         std::vector<std::int32_t> via;
         std::size_t count = 0;
     };

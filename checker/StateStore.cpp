@@ -150,11 +150,11 @@ std::pair<StateId, bool> StateStore::insert(const std::uint64_t* packed, std::ui
     }
 }
 
-StateId StateStore::find(const std::uint64_t* packed, std::uint64_t hash) const {
+StateId StateStore::find(const std::uint64_t* packed, std::uint64_t hash, std::size_t from) const {
     const int words = layout_.words();
     const std::size_t mask = slots_.size() - 1;
     const std::uint32_t tag = tagOf(hash);
-    for (std::size_t pos = hash & mask;; pos = (pos + 1) & mask) {
+    for (std::size_t pos = from;; pos = (pos + 1) & mask) {
         const std::uint32_t s = slot(pos).load(std::memory_order_acquire);
         if (s == 0) return kNoState;
         if ((s & tagMask_) == tag && sameWords(state(idIn(s)), packed, words)) return idIn(s);

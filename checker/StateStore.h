@@ -101,18 +101,25 @@ public:
         return h;
     }
     /// The second stage of a look-up pipeline: once prefetch()'s slot is in cache, hints the cache
-    /// about the first stored state whose tag matches, the one find() and insert() compare against.
-    void prefetchStored(std::uint64_t hash) const {
+    /// about the first stored state whose tag matches, the one find() compares against. Returns
+    /// where that walk stopped (at that state's slot or at an empty one): find() may resume there,
+    /// since a slot once filled never empties.
+    std::size_t prefetchStored(std::uint64_t hash) const {
         const std::uint32_t tag = tagOf(hash);
         const std::size_t mask = slots_.size() - 1;
         for (std::size_t pos = hash & mask;; pos = (pos + 1) & mask) {
             const std::uint32_t s = slot(pos).load(std::memory_order_relaxed);
-            if (!s) return;
-            if ((s & tagMask_) == tag) return __builtin_prefetch(state(idIn(s)));
+            if (!s) return pos;
+            if ((s & tagMask_) == tag) {
+                __builtin_prefetch(state(idIn(s)));
+                return pos;
+            }
         }
     }
     StateId find(const std::uint64_t* packed) const { return find(packed, layout_.hash(packed)); }
-    StateId find(const std::uint64_t* packed, std::uint64_t hash) const;
+    StateId find(const std::uint64_t* packed, std::uint64_t hash) const { return find(packed, hash, hash & (slots_.size() - 1)); }
+    /// find() from a position prefetchStored returned for this hash.
+    StateId find(const std::uint64_t* packed, std::uint64_t hash, std::size_t from) const;
     const std::uint64_t* state(StateId id) const { return &arena_[static_cast<std::size_t>(id) * layout_.words()]; }
     /// An id of a block that its thread did not use (IdBlock).
     bool isHole(StateId id) const { return holeFlags_[id] != 0; }
