@@ -11,6 +11,7 @@
 #include "checker/Explorer.h"
 
 #include "checker/ConnectedSets.h"
+#include "checker/WorkerPool.h"
 #include "rules/Error.h"
 
 #include <algorithm>
@@ -405,14 +406,14 @@ void Explorer::resolve(const Successors& s, Worker& worker) {
     worker.edgeCount += edges;
 }
 
-void Explorer::expandRange(std::size_t lo, std::size_t hi, Worker& worker) {
+void Explorer::expandRange(const StateId* states, std::size_t lo, std::size_t hi, Worker& worker) {
     // A software pipeline over the frontier, so that a look-up finds its data in cache: the
     // successors of state k are generated (their table slots prefetched) while those of state k - 1
     // have their stored states (or their words of the ranking) prefetched and those of state k - 2
     // are looked up.
     Successors* ring = worker.ring;
     for (std::size_t k = lo; k < hi + 2; ++k) {
-        if (k < hi) gather(frontier_[k], ring[k % 3]);
+        if (k < hi) gather(states[k], ring[k % 3]);
         if (k >= lo + 1 && k - 1 < hi) {
             Successors& s = ring[(k - 1) % 3];
             if (ranked())
@@ -434,15 +435,34 @@ const ExploreStats& Explorer::explore() {
     const std::uint64_t chunk = std::max<std::uint64_t>(64, std::min<std::uint64_t>(1u << 14, (1u << 20) / branching));
     std::vector<Worker> workers;
     for (int t = 0; t < threads; ++t) workers.emplace_back(*engine_, store_.layout().words());
-    // Threads take the chunk a piece at a time: the two cores of a shared host seldom run at the
-    // same speed, and an even split leaves the faster one waiting.
+    WorkerPool pool(threads);
+    // A level's states are kept by the worker that found them, and each worker expands a slice of
+    // its own list first (their words were written from its core, so they are in its cache),
+    // then helps with the others'. Threads take slices a piece at a time: the cores of a shared
+    // host seldom run at the same speed, and an even split leaves the faster one waiting.
     constexpr std::size_t kPiece = 256;
+    struct alignas(64) Cursor {
+        std::atomic<std::size_t> next{0};
+        std::size_t end = 0;
+    };
+    std::vector<Cursor> cursors(threads);
+    std::vector<std::vector<StateId>> level(threads), next(threads);
+    level[0] = std::move(frontier_);
+    frontier_.clear();
     const std::uint64_t blockRoom = static_cast<std::uint64_t>(threads) * StateStore::IdBlock::kSize;
     const std::size_t edgeBytes = options_.recordEdges ? 12 : 0;
+    auto sizeOf = [](const std::vector<std::vector<StateId>>& lists) {
+        std::size_t n = 0;
+        for (const auto& l : lists) n += l.size();
+        return n;
+    };
     stats_ = {};
-    while (!frontier_.empty() && stats_.stopped == StopReason::Finished) {
-        std::vector<StateId> nextLevel;
-        for (std::size_t pos = 0; pos < frontier_.size(); pos += chunk) {
+    while (sizeOf(level) > 0 && stats_.stopped == StopReason::Finished) {
+        const std::size_t chunks = (sizeOf(level) + chunk - 1) / chunk;
+        for (std::size_t c = 0; c < chunks; ++c) {
+            auto from = [&](int t, std::size_t k) { return level[t].size() * k / chunks; };  // slice k of list t
+            std::size_t left = 0;  // states of this level not yet expanded
+            for (int t = 0; t < threads; ++t) left += level[t].size() - from(t, c);
             const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
             std::size_t edgesHeld = 0;
             for (const Worker& w : workers) edgesHeld += w.edges.size();
@@ -451,25 +471,29 @@ const ExploreStats& Explorer::explore() {
             else if (options_.limits.timeoutSeconds > 0 && elapsed >= options_.limits.timeoutSeconds) stats_.stopped = StopReason::Timeout;
             else if (bytes >= options_.limits.memoryBytes) stats_.stopped = StopReason::Memory;
             if (stats_.stopped != StopReason::Finished) {
-                stats_.frontier = frontier_.size() - pos + nextLevel.size();
+                stats_.frontier = left + sizeOf(next);
                 break;
             }
-            const std::size_t end = std::min(frontier_.size(), pos + chunk);
-            if (!complete_) {  // a complete store gains no states
-                store_.reserve((end - pos) * branching + blockRoom);
-                growLinks(store_.capacityUsed() + (end - pos) * branching + blockRoom);
+            std::size_t size = 0;
+            for (int t = 0; t < threads; ++t) {
+                cursors[t].next = from(t, c), cursors[t].end = from(t, c + 1);
+                size += cursors[t].end - from(t, c);
             }
-            std::atomic<std::size_t> cursor{pos};
-            auto work = [&](int t) {
-                for (std::size_t lo; (lo = cursor.fetch_add(kPiece)) < end;) expandRange(lo, std::min(end, lo + kPiece), workers[t]);
-            };
-            std::vector<std::thread> pool;
-            for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
-            work(0);
-            for (auto& th : pool) th.join();
-            for (Worker& w : workers) {
+            if (!complete_) {  // a complete store gains no states
+                store_.reserve(size * branching + blockRoom);
+                growLinks(store_.capacityUsed() + size * branching + blockRoom);
+            }
+            pool.run([&](int t) {
+                for (int i = 0; i < threads; ++i) {
+                    const int u = (t + i) % threads;
+                    for (std::size_t lo; (lo = cursors[u].next.fetch_add(kPiece)) < cursors[u].end;)
+                        expandRange(level[u].data(), lo, std::min(cursors[u].end, lo + kPiece), workers[t]);
+                }
+            });
+            for (int t = 0; t < threads; ++t) {
+                Worker& w = workers[t];
                 store_.release(w.ids);
-                nextLevel.insert(nextLevel.end(), w.next.begin(), w.next.end());
+                next[t].insert(next[t].end(), w.next.begin(), w.next.end());
                 terminal_.insert(terminal_.end(), w.terminal.begin(), w.terminal.end());
                 stats_.edges += w.edgeCount;
                 w.next.clear(), w.terminal.clear(), w.edgeCount = 0;
@@ -478,16 +502,17 @@ const ExploreStats& Explorer::explore() {
             if (options_.onProgress && std::chrono::duration<double>(Clock::now() - last).count() > 0.5) {
                 last = Clock::now();
                 stats_.seconds = std::chrono::duration<double>(last - start).count();
-                stats_.frontier = frontier_.size() - end + nextLevel.size();
+                stats_.frontier = left - size + sizeOf(next);
                 options_.onProgress(stats_);
             }
         }
         if (stats_.stopped != StopReason::Finished) break;
-        frontier_ = std::move(nextLevel);
-        if (!frontier_.empty()) ++stats_.depth;
-        if (!frontier_.empty() && options_.decided && options_.decided()) {
+        std::swap(level, next);
+        for (auto& l : next) l.clear();
+        if (sizeOf(level) > 0) ++stats_.depth;
+        if (sizeOf(level) > 0 && options_.decided && options_.decided()) {
             stats_.stopped = StopReason::Decided;
-            stats_.frontier = frontier_.size();
+            stats_.frontier = sizeOf(level);
         }
     }
     std::sort(terminal_.begin(), terminal_.end());

@@ -131,7 +131,7 @@ private:
     void runOnThreads(Work& work) const;
     void gather(StateId id, Successors& out) const;
     void resolve(const Successors& s, Worker& worker);
-    void expandRange(std::size_t lo, std::size_t hi, Worker& worker);
+    void expandRange(const StateId* states, std::size_t lo, std::size_t hi, Worker& worker);
     void buildRows(std::vector<Worker>& workers);
 
     const rules::Engine* engine_;
