@@ -400,7 +400,7 @@ void Explorer::resolve(const Successors& s, Worker& worker) {
             seen.push_back(sid);
         }
         ++edges;
-        if (options_.recordEdges) worker.edges.push_back({s.from, {sid, s.via[k]}});
+        if (options_.recordEdges) worker.edges.push_back({s.from, sid, s.via[k]});
     }
     if (edges == 0) worker.terminal.push_back(s.from);
     worker.edgeCount += edges;
@@ -532,19 +532,18 @@ void Explorer::buildRows(std::vector<Worker>& perThread) {
     const std::size_t n = store_.capacityUsed();
     rowStart_.assign(n + 1, 0);
     for (const Worker& f : perThread)
-        for (const auto& e : f.edges) ++rowStart_[e.first + 1];
+        for (const Worker::Edge& e : f.edges) ++rowStart_[e.from + 1];
     for (std::size_t i = 0; i < n; ++i) rowStart_[i + 1] += rowStart_[i];
     succ_.resize(rowStart_[n]);
     succVia_.resize(rowStart_[n]);
     std::vector<std::uint64_t> fill(rowStart_.begin(), rowStart_.end() - 1);
     for (Worker& f : perThread) {
-        auto& list = f.edges;
-        for (const auto& e : list) {
-            succ_[fill[e.first]] = e.second.first;
-            succVia_[fill[e.first]++] = e.second.second;
+        for (const Worker::Edge& e : f.edges) {
+            succ_[fill[e.from]] = e.to;
+            succVia_[fill[e.from]++] = e.via;
         }
-        list.clear();
-        list.shrink_to_fit();
+        f.edges.resize(0);
+        f.edges.shrinkToFit();
     }
 }
 

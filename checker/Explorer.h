@@ -114,7 +114,11 @@ private:
         Successors ring[3];  // expandRange's pipeline
         StateStore::IdBlock ids;
         std::vector<StateId> next, terminal;
-        std::vector<std::pair<StateId, std::pair<StateId, std::int32_t>>> edges;
+        struct Edge {
+            StateId from, to;
+            std::int32_t via;
+        };
+        PageArray<Edge> edges;  // grows by remapping: 39 M edges for pixel on 5x5
         std::uint64_t edgeCount = 0;
     };
     /// addAllLegal's first phase: found(thread, job, index) for every legal candidate, from

@@ -55,6 +55,10 @@ public:
         }
         size_ = n;
     }
+    void push_back(const T& value) {
+        resize(size_ + 1);
+        data_[size_ - 1] = value;
+    }
     /// Gives back the pages beyond size().
     void shrinkToFit() {
         const std::size_t want = roundUp(size_ * sizeof(T));

@@ -31,6 +31,11 @@ TEST_CASE("a page array grows without losing elements, and new elements are zero
     CHECK(a[5] == 42u);
     a.resize(100);
     CHECK(a[6] == 0u);
+    for (std::uint32_t i = 0; i < 1'000'000; ++i) a.push_back(i);
+    CHECK(a.size() == 1'000'100);
+    CHECK(a[100] == 0u);
+    CHECK(a[1'000'099] == 999'999u);
+    a.resize(100);
     PageArray<std::uint32_t> b = std::move(a);
     CHECK(a.empty());
     CHECK(b.size() == 100);
