@@ -192,7 +192,7 @@ bool WordSuccessors::legal(const std::uint64_t* packed, const Loaded& parent, in
         return engine_->legal(cells);
     }
     if (fixed_[placed])
-        return engine_->legalAfter(parent.legal, &checks_[firstCheck_[placed]], firstCheck_[placed + 1] - firstCheck_[placed], fixedChange_[placed]);
+        return engine_->legalAfter(parent.legal, checks_.data() + firstCheck_[placed], firstCheck_[placed + 1] - firstCheck_[placed], fixedChange_[placed]);
     rules::Engine::ConstraintWords now;
     std::uint64_t occupied[64];
     occupiedOf(packed, occupied);
