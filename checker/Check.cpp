@@ -83,31 +83,6 @@ bool violatedAtNearest(PropertyResult& r, const Explorer& ex, const std::vector<
     return true;
 }
 
-/// Cells outside the largest connected part of the occupied cells (to mark a disconnection).
-std::vector<int> cutOff(const rules::Region& region, const std::vector<CellValue>& cells) {
-    std::vector<int> comp(region.size(), -1), sizes;
-    for (int s = 0; s < region.size(); ++s) {
-        if (!cells[s] || comp[s] >= 0) continue;
-        const int id = static_cast<int>(sizes.size());
-        sizes.push_back(0);
-        std::vector<int> stack{s};
-        comp[s] = id;
-        while (!stack.empty()) {
-            const int i = stack.back();
-            stack.pop_back();
-            ++sizes[id];
-            for (int d = 0; d < region.lattice().degree(); ++d)
-                if (int j = region.neighbour(i, d); j >= 0 && cells[j] && comp[j] < 0) comp[j] = id, stack.push_back(j);
-        }
-    }
-    std::vector<int> out;
-    if (sizes.size() < 2) return out;
-    const int biggest = static_cast<int>(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
-    for (int i = 0; i < region.size(); ++i)
-        if (cells[i] && comp[i] != biggest) out.push_back(i);
-    return out;
-}
-
 }  // namespace
 
 CheckReport check(const rules::Model& model, const rules::Region& region, const CheckOptions& options, Exploration* keep) {
@@ -202,16 +177,13 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
                 if (ex->pathTo(s).size() < ex->pathTo(best).size()) best = s;
             r.verdict = Verdict::Violated;
             r.trace = traceTo(*ex, best);
-            // Mark what a person should look at: the cells whose local condition fails, else the
-            // cells cut off from the largest part.
+            // Mark what a person should look at: the cells that make it false.
             const auto last = ex->cells(best);
-            r.trace->marked = e.guardFailures(p.exprs[0], last.data());
-            const bool local = !r.trace->marked.empty();
-            if (!local) r.trace->marked = cutOff(region, last);
+            r.trace->marked = e.failureCells(p.exprs[0], last.data());
             r.witness = {{"state", best}, {"distance", r.trace->steps.size() - 1}};
             r.summary = "violated after " + stepCount(r.trace->steps.size() - 1);
             r.trace->description = "invariant '" + p.name + "' fails after " + stepCount(r.trace->steps.size() - 1) +
-                                   (local ? "; crossed cells break its local condition" : r.trace->marked.empty() ? "" : "; crossed cells are cut off");
+                                   (r.trace->marked.empty() ? "" : "; crossed cells show where");
             break;
         }
         case rules::Property::Kind::Conserves: {

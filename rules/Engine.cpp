@@ -601,17 +601,57 @@ int Engine::countCells(const Expr& e, const CellValue* cells, bool withCellGuard
     return n;
 }
 
-std::vector<int> Engine::guardFailures(const Expr& e, const CellValue* cells) const {
+std::vector<int> Engine::failureCells(const Expr& e, const CellValue* cells) const {
     std::vector<int> out;
-    if (e.kind == Expr::Kind::And) {
+    if (holds(e, cells)) return out;
+    const int n = region_->size();
+    auto where = [&](const Mask& m, auto&& also) {
+        for (std::int32_t i = 0; i < n; ++i)
+            if (test(m, combo_[i], cells[i]) && also(i)) out.push_back(i);
+    };
+    switch (e.kind) {
+    case Expr::Kind::And:
+    case Expr::Kind::Or:  // a false `or`: every disjunct is false
         for (const Expr& k : e.kids)
-            for (int i : guardFailures(k, cells)) out.push_back(i);
-    } else if (e.kind == Expr::Kind::All && hasCellGuard(e)) {
+            for (int i : failureCells(k, cells)) out.push_back(i);
+        break;
+    case Expr::Kind::No:
+        if (e.around == -1 && e.kids.empty()) where(predicateMask(e.pred), [](int) { return true; });
+        break;
+    case Expr::Kind::All:
+        if (hasCellGuard(e)) {
+            const GuardNode& guard = cellGuards_.at(&e);
+            where(predicateMask(e.pred), [&](std::int32_t i) { return !tables_.guard(guard, RegionCells{region_, cells, combo_.data()}, &i); });
+        }
+        break;
+    case Expr::Kind::Connected: {
+        if (e.around != -1) break;
+        // The parts of the T cells; every part but the largest is cut off.
         const Mask& m = predicateMask(e.pred);
-        const GuardNode& guard = cellGuards_.at(&e);
-        for (std::int32_t i = 0; i < region_->size(); ++i)
-            if (test(m, combo_[i], cells[i]) && !tables_.guard(guard, RegionCells{region_, cells, combo_.data()}, &i)) out.push_back(i);
+        std::vector<int> part(n, -1), sizes;
+        for (int s = 0; s < n; ++s) {
+            if (part[s] >= 0 || !test(m, combo_[s], cells[s])) continue;
+            const int id = static_cast<int>(sizes.size());
+            sizes.push_back(0);
+            std::vector<int> stack{s};
+            part[s] = id;
+            while (!stack.empty()) {
+                const int i = stack.back();
+                stack.pop_back();
+                ++sizes[id];
+                for (int d = 0; d < model_->lattice().degree(); ++d)
+                    if (const int j = region_->neighbour(i, d); j >= 0 && part[j] < 0 && test(m, combo_[j], cells[j])) part[j] = id, stack.push_back(j);
+            }
+        }
+        const int largest = static_cast<int>(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
+        where(m, [&](int i) { return part[i] != largest; });
+        break;
     }
+    default:
+        break;
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
 }
 

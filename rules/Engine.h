@@ -204,9 +204,11 @@ public:
     /// Evaluate a non-local expression of this system (a constraint, the goal, a property) on a
     /// configuration. Thread-safe: every predicate is compiled in the constructor.
     bool holds(const Expr& e, const CellValue* cells) const;
-    /// The cells that make a condition of this system false through a cell guard: for each
-    /// `all(T: G)` among its conjuncts that fails, the T cells where G does not hold.
-    std::vector<int> guardFailures(const Expr& e, const CellValue* cells) const;
+    /// The cells that show why a condition of this system is false, for a picture: for each false
+    /// conjunct (and every disjunct of a false `or`), the T cells of a false `no(T)`, the T cells
+    /// outside the largest connected part of a false `connected(T)`, the T cells where G fails in
+    /// `all(T: G)`. Empty where the condition is true or its failure has no cells (a comparison).
+    std::vector<int> failureCells(const Expr& e, const CellValue* cells) const;
     /// Whether one cell in state v satisfies a predicate of this system's expressions.
     bool cellMatches(const CellPredicate& pred, int cell, CellValue v) const { return predicateAccepts(pred, combo_[cell], v); }
     Rational number(const Expr& e, const CellValue* cells) const;

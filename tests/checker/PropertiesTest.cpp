@@ -196,7 +196,7 @@ TEST_CASE("hex holes: deletion as the paper words it breaks a neighbouring hole,
     REQUIRE(holes.verdict == Verdict::Violated);
     CHECK(holes.trace->steps.size() == 4);  // two moves toward the surface, one deletion
     CHECK(holes.trace->marked.size() == 1);  // the neighbouring hole's cell that lost its shepherd
-    CHECK(holes.trace->description.find("local condition") != std::string::npos);
+    CHECK(holes.trace->description.find("crossed cells show where") != std::string::npos);
     shared.replayAll();
 
     auto neck = test::checkFrom(rules::librarySystem("hex_holes"), "hex:r4", kNeck, "");
