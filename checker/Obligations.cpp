@@ -225,12 +225,17 @@ Obligation notEncoded(const std::string& name, const std::string& kind, const st
 }
 
 /// Progress fails at s (Lemma 2): outside the goal, under the property's assumption, and no
-/// instance matches. Only for systems without non-local constraints, where matching is enabledness.
+/// instance is enabled. With non-local constraints s is legal and an instance is enabled only if
+/// its successor is legal too (seed 000 §II-C): each one fails to match or leads to an illegal
+/// configuration (its successor written over s's variables, no new ones).
 z3::expr stuck(SmtEncoding& enc, const SmtEncoding::State& s, const rules::Engine& e, const rules::Property& progress) {
     const rules::System& system = e.model().system();
     z3::expr q = system.goal ? !enc.holds(*system.goal, s, false) : s.is[0][0].ctx().bool_val(true);
     if (!progress.exprs.empty()) q = q && enc.holds(progress.exprs[0], s, true);
-    for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) q = q && !enc.matches(placed, s);
+    const bool constrained = !system.constraints.empty();
+    if (constrained) q = q && enc.legal(s);
+    for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed)
+        q = q && (constrained ? !(enc.matches(placed, s) && enc.legal(enc.successor(placed, s), false)) : !enc.matches(placed, s));
     enc.leftSideSets(s);
     return q;
 }
@@ -240,8 +245,14 @@ bool stuckAt(const std::vector<CellValue>& c, const rules::Engine& e, const rule
     const rules::System& system = e.model().system();
     if (system.goal && e.holds(*system.goal, c.data())) return false;
     if (!progress.exprs.empty() && !e.holds(progress.exprs[0], c.data())) return false;
-    for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed)
-        if (e.matches(c.data(), placed)) return false;
+    std::vector<CellValue> next;
+    for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) {
+        if (!e.matches(c.data(), placed)) continue;
+        CellValue saved[rules::Engine::kMaxCells];
+        next = c;
+        e.apply(next.data(), placed, saved);
+        if (e.legal(next.data())) return false;
+    }
     return true;
 }
 
@@ -428,18 +439,14 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             break;
         }
         case rules::Property::Kind::Progress: {
-            if (!system.constraints.empty()) {
-                report.obligations.push_back(notEncoded(p.name, "progress",
-                                                        "not encoded for systems with non-local constraints (enabledness would need a successor per instance); use holon check"));
-                break;
-            }
             auto c = enc.state("c");
             z3::expr q = stuck(enc, c, e, p);
             for (const rules::Property* inv : invariants) q = q && enc.holds(inv->exprs[0], c, true);
             auto decode = [&](const z3::model& m, PropertyResult& r) {
                 Trace t;
                 t.steps.push_back({enc.decode(m, c), -1});
-                t.description = "every invariant holds, the goal is not reached, and no rule is enabled";
+                t.description = "every invariant holds, the goal is not reached, and no rule is enabled" +
+                                std::string(system.constraints.empty() ? "" : " (or each leads to an illegal configuration)");
                 r.trace = t;
                 r.summary = t.description;
                 r.witness = {{"inputs", inputsOf(m, ctx, e)}};
@@ -508,7 +515,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             targets.push_back({&p, [&p](SmtEncoding& enc, const SmtEncoding::State& s) { return !enc.holds(p.exprs[0], s, false); },
                                [&p](const std::vector<CellValue>& c, const rules::Engine& en) { return !en.holds(p.exprs[0], c.data()); },
                                "invariant '" + p.name + "' fails"});
-        else if (p.kind == rules::Property::Kind::Progress && system.constraints.empty())
+        else if (p.kind == rules::Property::Kind::Progress)
             targets.push_back({&p, [&p, &e](SmtEncoding& enc, const SmtEncoding::State& s) { return stuck(enc, s, e, p); },
                                [&p](const std::vector<CellValue>& c, const rules::Engine& en) { return stuckAt(c, en, p); },
                                "a deadlock outside the goal"});

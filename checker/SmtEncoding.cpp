@@ -34,6 +34,12 @@ SmtEncoding::SmtEncoding(z3::context& ctx, const rules::Engine& engine, Use use)
             bits.push_back(ctx_.bool_const(("in_" + engine.model().system().inputs[k] + "_" + std::to_string(i)).c_str()));
         inputBits_.push_back(bits);
     }
+    // Many inputs (roombots_reserve's eight walks) and every combination of them: acceptance()
+    // expands on the input bits. With one or two inputs the disjunction over combinations is
+    // short, and Spacer's strengthenings were found on that form (general2 Progress@reach: 1.5 s).
+    const std::uint32_t all = std::uint32_t{1} << inputs;
+    for (std::uint32_t b = 0; b < all && inputs >= 3 && inputs <= 16; ++b) comboOfBits_.push_back(engine.tables().comboIndex(b));
+    if (std::find(comboOfBits_.begin(), comboOfBits_.end(), -1) != comboOfBits_.end()) comboOfBits_.clear();
 }
 
 z3::expr SmtEncoding::fresh(const std::string& prefix, const z3::sort& sort) {
@@ -85,30 +91,55 @@ z3::expr SmtEncoding::inputCombo(int cell, int combo) const {
     return all;
 }
 
-z3::expr SmtEncoding::member(const State& s, int cell, const std::function<bool(int, CellValue)>& accepts) {
-    // A cell outside the region (cell < 0) is empty with no inputs.
-    if (cell < 0) return ctx_.bool_val(accepts(0, 0));
-    z3::expr any = ctx_.bool_val(false);
+std::vector<std::pair<int, z3::expr>> SmtEncoding::acceptance(int cell, const std::function<bool(int, CellValue)>& accepts) {
+    std::vector<std::pair<int, z3::expr>> out;
     const int combos = engine_.comboCount();
     for (int v = 0; v < alphabet_; ++v) {
         std::vector<int> yes;
         for (int c = 0; c < combos; ++c)
             if (accepts(c, static_cast<CellValue>(v))) yes.push_back(c);
         if (yes.empty()) continue;
-        const z3::expr& is = s.is[cell][v];
         if (static_cast<int>(yes.size()) == combos) {
-            any = any || is;
+            out.push_back({v, ctx_.bool_val(true)});
             continue;
         }
-        z3::expr when = ctx_.bool_val(false);
-        for (int c : yes) when = when || inputCombo(cell, c);
-        any = any || (is && when);
+        if (comboOfBits_.empty()) {  // some combinations only: one conjunction of input literals each
+            z3::expr when = ctx_.bool_val(false);
+            for (int c : yes) when = when || inputCombo(cell, c);
+            out.push_back({v, when});
+            continue;
+        }
+        // Every combination: Shannon expansion on the input bits, so that a condition on two
+        // inputs reads `a and b`, not a disjunction over the 2^k combinations (8 inputs: 64 of them).
+        std::vector<char> accepted(comboOfBits_.size());
+        for (std::size_t b = 0; b < comboOfBits_.size(); ++b) accepted[b] = std::find(yes.begin(), yes.end(), comboOfBits_[b]) != yes.end();
+        std::function<z3::expr(int, std::uint32_t)> expand = [&](int k, std::uint32_t bits) -> z3::expr {
+            if (k < 0) return ctx_.bool_val(accepted[bits] != 0);
+            const z3::expr off = expand(k - 1, bits), on = expand(k - 1, bits | (std::uint32_t{1} << k));
+            if (z3::eq(off, on)) return off;
+            return ((inputBits_[cell][k] && on) || (!inputBits_[cell][k] && off)).simplify();
+        };
+        out.push_back({v, expand(static_cast<int>(inputBits_[cell].size()) - 1, 0)});
     }
+    return out;
+}
+
+z3::expr SmtEncoding::member(const State& s, int cell, const std::function<bool(int, CellValue)>& accepts) {
+    // A cell outside the region (cell < 0) is empty with no inputs.
+    if (cell < 0) return ctx_.bool_val(accepts(0, 0));
+    z3::expr any = ctx_.bool_val(false);
+    for (const auto& [v, when] : acceptance(cell, accepts)) any = any || (s.is[cell][v] && when);
     return any.simplify();
 }
 
 z3::expr SmtEncoding::memberPred(const State& s, int cell, const rules::CellPredicate& pred) {
-    return member(s, cell, [&](int c, CellValue v) { return engine_.predicateAccepts(pred, c, v); });
+    if (cell < 0) return ctx_.bool_val(engine_.predicateAccepts(pred, 0, 0));
+    auto it = predicateAcceptance_.find({&pred, cell});
+    if (it == predicateAcceptance_.end())
+        it = predicateAcceptance_.emplace(std::make_pair(&pred, cell), acceptance(cell, [&](int c, CellValue v) { return engine_.predicateAccepts(pred, c, v); })).first;
+    z3::expr any = ctx_.bool_val(false);
+    for (const auto& [v, when] : it->second) any = any || (s.is[cell][v] && when);
+    return any.simplify();
 }
 
 z3::expr SmtEncoding::memberCounted(const State& s, std::int32_t cell, const Expr& quantifier) {
@@ -488,10 +519,29 @@ z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
     return hypothesis(f, {r.from, r, ctx_.bool_val(true), s.is[0][0].id()});
 }
 
-z3::expr SmtEncoding::legal(const State& s) {
+z3::expr SmtEncoding::legal(const State& s, bool positive) {
     z3::expr all = ctx_.bool_val(true);
-    for (const rules::Constraint& c : engine_.model().system().constraints) all = all && holds(c.expr, s, true);
+    for (const rules::Constraint& c : engine_.model().system().constraints) all = all && holds(c.expr, s, positive);
     return all;
+}
+
+SmtEncoding::State SmtEncoding::successor(int placed, const State& s) const {
+    State t = s;
+    const auto& p = engine_.instances()[placed];
+    for (int k = 0; k < p.size; ++k) {
+        const int cell = p.cells[k], copy = engine_.rhsCopyFrom(placed, k);
+        if (copy >= 0) {
+            t.is[cell] = s.is[p.cells[copy]];
+            continue;
+        }
+        for (int w = 0; w < alphabet_; ++w) {
+            z3::expr becomes = ctx_.bool_val(false);
+            for (int v = 0; v < alphabet_; ++v)
+                if (engine_.rhsValue(placed, k, static_cast<CellValue>(v)) == w) becomes = becomes || s.is[cell][v];
+            t.is[cell][w] = becomes;
+        }
+    }
+    return t;
 }
 
 std::vector<z3::expr> SmtEncoding::acceptedSites(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {

@@ -5,6 +5,7 @@
 #include "rules/Engine.h"
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,7 +42,11 @@ public:
     /// witnesses (ranks), and under odd negations by refutations (a cut, a pointer-closed set).
     z3::expr holds(const rules::Expr& e, const State& s, bool positive = true);
     z3::expr number(const rules::Expr& e, const State& s);
-    z3::expr legal(const State& s);
+    /// Every constraint holds; `positive` as for holds() (false where the result is negated).
+    z3::expr legal(const State& s, bool positive = true);
+    /// The configuration placed instance p leads s to, as expressions over s (no new variables):
+    /// its pattern cells rewritten, every other cell as in s. Meaningful where p matches.
+    State successor(int placed, const State& s) const;
     /// Placed instance p fires from `from` to `to` (left side, guard, rewrite, and frame).
     z3::expr fires(int placed, const State& from, const State& to);
     /// Left side and guard of placed instance p hold (locally enabled).
@@ -84,6 +89,11 @@ private:
     z3::expr member(const State& s, int cell, const std::function<bool(int combo, rules::CellValue v)>& accepts);
     z3::expr memberPred(const State& s, int cell, const rules::CellPredicate& pred);
     z3::expr inputCombo(int cell, int combo) const;
+    /// Per state some input combination lets `accepts` take: the condition on the cell's input
+    /// bits under which it does (true when every combination does).
+    std::vector<std::pair<int, z3::expr>> acceptance(int cell, const std::function<bool(int, rules::CellValue)>& accepts);
+    std::map<std::pair<const rules::CellPredicate*, int>, std::vector<std::pair<int, z3::expr>>> predicateAcceptance_;
+    std::vector<int> comboOfBits_;  // when every input combination is covered: [input bits] -> combination
     /// A compiled guard; `cells` are the region indices of the pattern cells it names.
     z3::expr guard(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s);
     z3::expr guardNumber(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s);

@@ -50,6 +50,7 @@ void writeRun(const std::filesystem::path& dir, const Job& j, const rb::Setting&
             << a.forceX << ',' << a.forceY << ',' << a.seat << '\n';
     std::ofstream(dir / ("feet_" + name(j) + ".svg")) << rb::footTraceSvg(setting, j.result);
     std::ofstream(dir / ("assembly_" + name(j) + ".svg")) << rb::assemblySvg(setting, j.result);
+    if (!j.result.coordination.empty()) std::ofstream(dir / ("coordination_" + name(j) + ".json")) << j.result.coordination;
 }
 
 /// Collisions of the runs that did not deadlock, and of all runs.

@@ -12,8 +12,8 @@
 
 namespace holon::planner::roombots {
 
-/// greedy, slope, step: Eq. 2 (a)-(c); reserve: each metamodule reserves the collision clouds of its
-/// whole planned walk before it starts, in seeding order.
+/// greedy, slope, step: Eq. 2 (a)-(c); reserve: in seeding order, each metamodule plans its whole
+/// walk and starts when roombots_reserve.holon lets it (no walk under way shares a floor column).
 enum class Strategy : std::uint8_t { Greedy, Slope, Step, Reserve };
 const char* strategyName(Strategy s);
 Strategy parseStrategy(const std::string& name);  // throws InputError
@@ -39,6 +39,9 @@ struct AssemblyResult {
     std::vector<std::array<Cell, 4>> cells;  // every metamodule's cells at the end
     std::vector<std::vector<std::array<Cell, 4>>> snapshots;  // every metamodule's cells each time a seed was filled
     std::string reason;        // why a deadlock was declared
+    /// reserve: the coordination rule's start configuration with the walks the run took as its
+    /// inputs, a configuration file for `holon check rules/library/roombots_reserve.holon`.
+    std::string coordination;
 };
 
 struct AssemblyOptions {

@@ -1,11 +1,11 @@
 // holon's reservation strategy (seed 001 §VI asks for consensus on priorities; this is one): seeds are
 // assigned in seeding order to the nearest free metamodule; in that order each metamodule plans a
 // shortest walk to its seed (A* over foot, yaw and joint setting, around placed and standing
-// metamodules and the seeds of metamodules already under way) and starts only once it can reserve
-// every cell its whole walk sweeps; cells are released as it passes. A started walk never waits, so
-// every reservation is released and no metamodule waits forever (no deadlock), and a body only ever
-// occupies cells its owner has reserved (no collision). The collision test of World.cpp still runs,
-// so the claim is measured, not assumed.
+// metamodules and the seeds of metamodules already under way) and asks the coordination rule
+// (roombots_reserve.holon, CoordinationRule.cpp) to start it: the rule fires only when no walk under
+// way shares a floor column with this one. A started walk never waits, so it ends and the next
+// metamodule can start (no deadlock), and walks under way cover disjoint columns (no collision). The
+// collision test of World.cpp still runs, so the claim is measured, not assumed.
 
 #include "planner/roombots/Reservation.h"
 
@@ -13,17 +13,25 @@ namespace holon::planner::roombots::detail {
 
 AssemblyResult Reservation::run() {
     assignSeeds();
+    int reach = 0;  // how far from its foot a metamodule's body or clouds reach across the floor
+    for (int j = 0; j < kJointSettings; ++j) {
+        for (const Cell& c : postures_[j].cells) reach = std::max({reach, std::abs(c.x), std::abs(c.y)});
+        for (const Transition& t : table_.from(coupling_, Joints::fromIndex(j)))
+            for (const Cell& c : t.cloud) reach = std::max({reach, std::abs(c.x), std::abs(c.y)});
+    }
+    std::vector<Cell> feet;
+    for (int i : order_) feet.push_back(bodies_[i].foot);
+    rule_.emplace(floor_, reach, feet);
     for (int i = 0; i < static_cast<int>(bodies_.size()); ++i) events_.push({0.0, i});
-    for (const Body& b : bodies_)
-        for (const Cell& c : b.cells) reserved_[c] = static_cast<int>(&b - bodies_.data());
     startWaiting();
     while (!events_.empty() && !done()) {
         const auto [t, i] = events_.top();
         events_.pop();
         now_ = t;
-        advanceReserved(i);
+        advance(i);
         startWaiting();
     }
+    result_.coordination = rule_->configurationJson();
     return finish();
 }
 
@@ -137,12 +145,15 @@ std::vector<Move> Reservation::plan(int i, const CellSet& blocked) const {
 }
 
 
-/// In seeding order, metamodules start whenever their whole walk can be reserved; a metamodule
-/// never starts before one earlier in the order.
+/// In seeding order, each metamodule plans its walk and starts when the coordination rule fires its
+/// start; a metamodule never starts before one earlier in the order.
 void Reservation::startWaiting() {
     for (int i : order_) {
         Body& b = bodies_[i];
         if (b.started) continue;
+        // Only a new plan (a metamodule started or sat since) can change the rule's answer.
+        if (planned_ == std::make_pair(i, version_)) return;
+        planned_ = {i, version_};
         CellSet blocked;
         bool othersMoving = false;
         for (std::size_t n = 0; n < bodies_.size(); ++n) {
@@ -154,42 +165,42 @@ void Reservation::startWaiting() {
                 blocked.insert(setting_.recipe.seeds[o.seed].cells.begin(), setting_.recipe.seeds[o.seed].cells.end());
             }
         }
-        if (planned_ != std::make_pair(i, version_)) {  // replan only when a metamodule started or was placed
-            waitingPath_ = plan(i, blocked);
-            planned_ = {i, version_};
-        }
-        std::vector<Move>& path = waitingPath_;
+        std::vector<Move> path = plan(i, blocked);
         if (path.empty()) {
             if (!othersMoving) deadlock("metamodule " + std::to_string(i) + " has no walk to seed " + std::to_string(b.seed));
             return;
         }
-        for (const Move& m : path)
-            for (const Cell& c : m.cloud) {
-                const auto it = reserved_.find(c);
-                if (it != reserved_.end() && it->second != i) return;  // wait for a release
-            }
-        for (const Move& m : path)
-            for (const Cell& c : m.cloud) reserved_[c] = i;
+        if (!rule_->start(b.seed, columns(i, path))) return;  // a walk under way shares a column
         b.started = true;
         ++version_;
         paths_[i] = std::move(path);
-        advanceReserved(i);
+        advance(i);
     }
 }
 
+std::vector<Cell> Reservation::columns(int i, const std::vector<Move>& path) const {
+    CellSet seen;
+    std::vector<Cell> out;
+    auto add = [&](const Cell& c) {
+        const Cell column{c.x, c.y, 0};
+        if (seen.insert(column).second) out.push_back(column);
+    };
+    for (const Cell& c : bodies_[i].cells) add(c);
+    for (const Move& m : path) {
+        for (const Cell& c : m.cloud) add(c);
+        for (const Cell& c : m.cells) add(c);
+    }
+    return out;
+}
 
-/// The body's previous action (if any) has ended: release what the rest of the walk does not need
-/// and start the next action.
-void Reservation::advanceReserved(int i) {
+/// The body's previous action (if any) has ended: start the next, or sit when the walk is done.
+void Reservation::advance(int i) {
     Body& b = bodies_[i];
     auto& path = paths_[i];
     if (!b.started || b.placed) return;
     if (b.moving >= 0 && b.moving > now_) return;  // the start of a walk already scheduled this body
-    CellSet keep(b.cells.begin(), b.cells.end());
-    for (const Move& m : path) keep.insert(m.cloud.begin(), m.cloud.end());
-    for (const Cell& c : b.cloud)
-        if (!keep.count(c) && reserved_.count(c) && reserved_[c] == i) reserved_.erase(c);
     if (path.empty()) {
+        rule_->sit(b.seed);
         placed(i);
         ++version_;
         return;

@@ -1,12 +1,13 @@
 #pragma once
-// holon's reservation strategy for Roombots assembly (the coordination rule of
-// rules/library/roombots_reserve.holon on the kinematic model), and the walk planner it rests on,
+// holon's reservation strategy for Roombots assembly (rules/library/roombots_reserve.holon, run by
+// the rule engine, coordinating walks on the kinematic model), and the walk planner it rests on,
 // which the automatic seeding recipe also asks. Internal to planner/roombots.
 
+#include "planner/roombots/CoordinationRule.h"
 #include "planner/roombots/World.h"
 
 #include <map>
-#include <unordered_map>
+#include <optional>
 
 namespace holon::planner::roombots::detail {
 
@@ -28,16 +29,17 @@ private:
     void assignSeeds();
     /// A* over (foot, yaw, joint setting): the fewest actions to stand seated in the body's seed.
     std::vector<Move> plan(int i, const CellSet& blocked) const;
-    /// In seeding order, metamodules start whenever their whole walk can be reserved; a metamodule
-    /// never starts before one earlier in the order.
+    /// In seeding order, each metamodule plans its walk and starts when the coordination rule
+    /// fires its start; a metamodule never starts before one earlier in the order.
     void startWaiting();
-    /// The body's previous action (if any) has ended: release what the rest of the walk does not need
-    /// and start the next action.
-    void advanceReserved(int i);
+    /// The body's previous action (if any) has ended: start the next, or sit when the walk is done.
+    void advance(int i);
+    /// Every floor column the walk's body and collision clouds cover, from standing at the start.
+    std::vector<Cell> columns(int i, const std::vector<Move>& path) const;
 
     double maxStep_ = 1;
     std::vector<int> order_;
-    std::unordered_map<Cell, int, CellHash> reserved_;
+    std::optional<CoordinationRule> rule_;
     std::map<int, std::vector<Move>> paths_;
     std::vector<Move> waitingPath_;  // the plan of the next metamodule to start
     std::pair<int, int> planned_{-1, -1};

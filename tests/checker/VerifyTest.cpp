@@ -243,6 +243,21 @@ TEST_CASE("mass conservation: proved for general_n, refuted for the leaky create
     CHECK(test::checkAll(broken("general1_leaky"), "square:3x2").property("mass_conservation").verdict == Verdict::Violated);
 }
 
+TEST_CASE("progress under non-local constraints: a rule enables only into a legal configuration") {
+    // roombots_reserve coordinates by constraints alone: proved on every configuration and every
+    // set of walks. The blocking wait (a walk may not cross a waiting one's) deadlocks, and the
+    // counterexample is a legal stuck configuration the reference interpreter confirms.
+    test::World good = test::World::library("roombots_reserve", "square:2x2");
+    CHECK(result(prove(good, {"progress"}), "progress").verdict == Verdict::Holds);
+    test::World blocking(broken("roombots_blocking_wait"), "square:2x2");
+    const auto r = prove(blocking, {"progress"});
+    const auto& stuck = result(r, "progress");
+    REQUIRE(stuck.verdict == Verdict::Violated);
+    std::string why;
+    CHECK(checker::confirmCounterexample(stuck, *blocking.model, blocking.region, &why));
+    CAPTURE(why);
+}
+
 TEST_CASE("symbolic holonomy agrees with the explorer") {
     for (const char* spec : {"square:3x3", "hex:r1"}) {
         for (const char* stem : {"pixel", "intermediate"}) {
