@@ -1,10 +1,9 @@
 #pragma once
-// rules/library/roombots_reserve.holon run by the rule engine on the floor grid: the reservation
-// strategy asks it whether a metamodule may start its walk, and tells it when one sits. Internal to
-// planner/roombots.
+// rules/library/roombots_reserve.holon run on the floor grid: the reservation strategy asks it
+// whether a metamodule may start its walk, and tells it when one sits. Internal to planner/roombots.
 
 #include "planner/roombots/World.h"
-#include "rules/Engine.h"
+#include "rules/Interpreter.h"
 
 #include <memory>
 
@@ -17,27 +16,24 @@ public:
     /// than the rule file has walks.
     CoordinationRule(const Floor& floor, int reach, const std::vector<Cell>& feet);
     ~CoordinationRule();
-    /// The metamodule filling seed k asks to start a walk that sweeps `cells`: the engine fires its
-    /// start rule when it matches and leads to a legal configuration. False: it must wait.
+    /// The metamodule filling seed k asks to start a walk that sweeps `cells`: its start rule
+    /// fires when it is enabled (it matches and leads to a legal configuration). False: it waits.
     bool start(int seed, const std::vector<Cell>& cells);
     /// Its walk done, the metamodule of seed k sits (its rule must fire: a logic error otherwise).
     void sit(int seed);
-    int seeds() const { return static_cast<int>(feet_.size()); }
-    /// The start configuration (every metamodule waiting) with the walks started so far as
-    /// inputs, as a configuration file `holon check` reads.
+    /// The start configuration (every metamodule waiting) with the walks set so far as inputs,
+    /// as a configuration file `holon check` reads.
     std::string configurationJson() const;
 
 private:
-    struct Compiled;
-    /// Fires rule `name` + (seed + 1) at the seed's metamodule if it matches and leaves the
-    /// configuration legal.
+    struct System;
+    /// Fires rule `name` + (seed + 1) at the seed's metamodule if it is enabled.
     bool fire(const std::string& name, int seed);
     int indexOf(const Cell& c) const;
 
-    std::unique_ptr<Compiled> compiled_;
+    std::unique_ptr<System> system_;
     std::vector<Cell> feet_;
-    std::vector<std::uint32_t> inputs_;  // per region cell: the walk bits
-    std::vector<rules::CellValue> cells_, waiting_;
+    rules::Configuration now_, waiting_;
     int x0_ = 0, y0_ = 0;
 };
 

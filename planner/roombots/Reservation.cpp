@@ -9,6 +9,8 @@
 
 #include "planner/roombots/Reservation.h"
 
+#include <unordered_map>
+
 namespace holon::planner::roombots::detail {
 
 AssemblyResult Reservation::run() {

@@ -1,6 +1,6 @@
 #pragma once
 // holon's reservation strategy for Roombots assembly (rules/library/roombots_reserve.holon, run by
-// the rule engine, coordinating walks on the kinematic model), and the walk planner it rests on,
+// the reference interpreter, coordinating walks on the kinematic model), and the walk planner it rests on,
 // which the automatic seeding recipe also asks. Internal to planner/roombots.
 
 #include "planner/roombots/CoordinationRule.h"
