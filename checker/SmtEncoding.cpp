@@ -127,9 +127,7 @@ std::vector<std::pair<int, z3::expr>> SmtEncoding::acceptance(int cell, const st
 z3::expr SmtEncoding::member(const State& s, int cell, const std::function<bool(int, CellValue)>& accepts) {
     // A cell outside the region (cell < 0) is empty with no inputs.
     if (cell < 0) return ctx_.bool_val(accepts(0, 0));
-    z3::expr any = ctx_.bool_val(false);
-    for (const auto& [v, when] : acceptance(cell, accepts)) any = any || (s.is[cell][v] && when);
-    return any.simplify();
+    return inStateWhen(s, cell, acceptance(cell, accepts));
 }
 
 z3::expr SmtEncoding::memberPred(const State& s, int cell, const rules::CellPredicate& pred) {
@@ -137,8 +135,12 @@ z3::expr SmtEncoding::memberPred(const State& s, int cell, const rules::CellPred
     auto it = predicateAcceptance_.find({&pred, cell});
     if (it == predicateAcceptance_.end())
         it = predicateAcceptance_.emplace(std::make_pair(&pred, cell), acceptance(cell, [&](int c, CellValue v) { return engine_.predicateAccepts(pred, c, v); })).first;
+    return inStateWhen(s, cell, it->second);
+}
+
+z3::expr SmtEncoding::inStateWhen(const State& s, int cell, const std::vector<std::pair<int, z3::expr>>& accepted) const {
     z3::expr any = ctx_.bool_val(false);
-    for (const auto& [v, when] : it->second) any = any || (s.is[cell][v] && when);
+    for (const auto& [v, when] : accepted) any = any || (s.is[cell][v] && when);
     return any.simplify();
 }
 

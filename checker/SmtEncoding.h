@@ -92,6 +92,8 @@ private:
     /// Per state some input combination lets `accepts` take: the condition on the cell's input
     /// bits under which it does (true when every combination does).
     std::vector<std::pair<int, z3::expr>> acceptance(int cell, const std::function<bool(int, rules::CellValue)>& accepts);
+    /// The cell is in one of the accepted states under its condition.
+    z3::expr inStateWhen(const State& s, int cell, const std::vector<std::pair<int, z3::expr>>& accepted) const;
     std::map<std::pair<const rules::CellPredicate*, int>, std::vector<std::pair<int, z3::expr>>> predicateAcceptance_;
     std::vector<int> comboOfBits_;  // when every input combination is covered: [input bits] -> combination
     /// A compiled guard; `cells` are the region indices of the pattern cells it names.
