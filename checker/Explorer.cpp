@@ -199,7 +199,7 @@ void Explorer::legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& foun
                 if (ev.legal()) found(thread, job, index);
         }
     };
-    runOnThreads(work);
+    WorkerPool(std::max(1, options_.limits.threads)).run(work);
 }
 
 template <class Sink>
@@ -268,7 +268,7 @@ void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink&
             else sets.forEachFrom(v, [&](std::uint64_t set) { each(v, set); });
         }
     };
-    runOnThreads(work);
+    WorkerPool(std::max(1, options_.limits.threads)).run(work);
 }
 
 bool Explorer::legalCells(const CellValue* cells, std::uint64_t* occupied) const {
@@ -279,14 +279,6 @@ bool Explorer::legalCells(const CellValue* cells, std::uint64_t* occupied) const
     rules::Engine::ConstraintWords words;
     engine_->constraintWords(occupied, words);
     return engine_->legalOn(words);
-}
-
-template <class Work>
-void Explorer::runOnThreads(Work& work) const {
-    std::vector<std::thread> pool;
-    for (int t = 1; t < std::max(1, options_.limits.threads); ++t) pool.emplace_back([&work, t] { work(t); });
-    work(0);
-    for (auto& th : pool) th.join();
 }
 
 void Explorer::gather(StateId id, Successors& out) const {

@@ -130,9 +130,6 @@ private:
     bool legalCells(const CellValue* cells, std::uint64_t* occupied) const;
     /// The cells of the candidate with this index (its digits in base alphabet size).
     void digits(std::uint64_t index, CellValue* cells) const;
-    /// work(t) on each thread t.
-    template <class Work>
-    void runOnThreads(Work& work) const;
     void gather(StateId id, Successors& out) const;
     void resolve(const Successors& s, Worker& worker);
     void expandRange(const StateId* states, std::size_t lo, std::size_t hi, Worker& worker);
