@@ -6,7 +6,7 @@
 // move generation of chess programs) and a successor is the stored words XOR a delta. An
 // instance whose left side admits one state per cell has one delta, computed when the generator is
 // built; the others compute theirs from the states of their cells. Legality is decided on the
-// successor's words (Engine::legalIn). Larger regions keep the cell-by-cell path; tests hold both
+// successor's words (Engine::legalAfter, legalOn). Larger regions keep the cell-by-cell path; tests hold both
 // to the reference interpreter.
 
 #include "checker/StateStore.h"

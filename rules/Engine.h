@@ -67,14 +67,9 @@ public:
             }
         }
     }
-    /// Small regions (WordMatcher): f(placed) for every instance whose left side and guard hold,
-    /// given the cells in each state as words (`occupied[v]`); `cells` is read only by guards.
-    template <class F>
-    void forEachMatchIn(const std::uint64_t* occupied, const CellValue* cells, F&& f) const {
-        forEachMatchIn(*words_, occupied, nullptr, cells, f);
-    }
-    /// The same with a matcher of the caller's (newWordMatcher, with tests of its own whose words
-    /// are `extra`).
+    /// Small regions: f(placed) for every instance whose left side and guard hold, given the cells
+    /// in each state as words (`occupied[v]`), by a matcher of the caller's (newWordMatcher, with
+    /// tests of its own whose words are `extra`); `cells` is read only by guards.
     template <class F>
     void forEachMatchIn(const WordMatcher& matcher, const std::uint64_t* occupied, const std::uint64_t* extra, const CellValue* cells,
                         F&& f) const {
@@ -107,15 +102,13 @@ public:
     /// (mass) fixed by the states its cells go from and to.
     struct ConstraintWords {
         static constexpr int kMax = 16;
-        std::uint64_t members[kMax];  // the first constraintWordCount() are in use
+        std::uint64_t members[kMax];  // one per predicate the constraints read
         std::int64_t mass;
     };
     /// The constraints are decided by their words alone (legalOn); false when one needs more,
     /// such as a cell guard or a pointer walk, or they name more than ConstraintWords::kMax
     /// predicates.
     bool constraintsOnWords() const { return constraintsOnWords_; }
-    /// How many of ConstraintWords::members are in use.
-    int constraintWordCount() const { return static_cast<int>(constraintPredicates_.size()); }
     /// The constraint words of a configuration given the cells in each state (`occupied[v]`).
     void constraintWords(const std::uint64_t* occupied, ConstraintWords& out) const;
     /// What a rewrite with fixed old and new states does to the constraint words: the cells each
