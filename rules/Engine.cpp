@@ -245,8 +245,9 @@ void Engine::prepare(LegalBefore& before) const {
 }
 
 int Engine::connectedConjunctWord() const {
+    const CellPredicate* connected = connectedConjunct();
     for (const Conjunct& c : conjuncts_)
-        if (c.expr->kind == Expr::Kind::Connected && &c.expr->source->pred == connectedConjunct()) return c.expr->predicate;
+        if (c.expr->kind == Expr::Kind::Connected && &c.expr->source->pred == connected) return c.expr->predicate;
     return -1;
 }
 

@@ -41,7 +41,6 @@ private:
     std::vector<int> order_;
     std::optional<CoordinationRule> rule_;
     std::map<int, std::vector<Move>> paths_;
-    std::vector<Move> waitingPath_;  // the plan of the next metamodule to start
     std::pair<int, int> planned_{-1, -1};
     int version_ = 0;
 };

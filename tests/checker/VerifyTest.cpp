@@ -254,8 +254,9 @@ TEST_CASE("progress under non-local constraints: a rule enables only into a lega
     const auto& stuck = result(r, "progress");
     REQUIRE(stuck.verdict == Verdict::Violated);
     std::string why;
-    CHECK(checker::confirmCounterexample(stuck, *blocking.model, blocking.region, &why));
+    const bool confirmed = checker::confirmCounterexample(stuck, *blocking.model, blocking.region, &why);
     CAPTURE(why);
+    CHECK(confirmed);
 }
 
 TEST_CASE("symbolic holonomy agrees with the explorer") {
