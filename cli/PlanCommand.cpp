@@ -6,12 +6,14 @@
 #include "planner/Execution.h"
 #include "planner/Monitor.h"
 #include "planner/Report.h"
+#include "planner/hex/DiskMetamodules.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
 
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <unistd.h>
@@ -21,7 +23,7 @@ namespace holon::cli {
 namespace {
 
 struct PlanArgs {
-    std::string rules = "planner_intermediate", from, to, allocator = "random", scheduler = "sync", out, planOut, seedCell, traceOut;
+    std::string rules = "planner_intermediate", from, to, allocator = "random", scheduler = "sync", out, planOut, seedCell, traceOut, hexDisks;
     std::vector<std::string> noWarnings;
     int scale = 1;
     std::uint64_t seed = 1;
@@ -49,6 +51,33 @@ std::optional<planner::Vec> parseCell(const std::string& text) {
     return v;
 }
 
+constexpr std::size_t kMaxDiskMetamodules = 200;  // every move is searched and replayed; 145 metamodules take minutes
+
+/// --hex-disks: the plan's disk moves (JSON Lines), start and end pictures, and an independent
+/// replay of every move. Returns false when a template had no disk motion or the replay failed.
+bool writeDisks(const std::string& dir, const planner::hex::DiskMetamodules& disks, const planner::Execution& execution, bool failed) {
+    std::filesystem::create_directories(dir);
+    std::ofstream moves(dir + "/disk_moves.jsonl");
+    for (const planner::hex::DiskMove& m : disks.moves())
+        moves << nlohmann::json{{"instance", m.instance}, {"rule", m.rule}, {"from", {m.from.x, m.from.y}}, {"to", {m.to.x, m.to.y}}, {"pivot", {m.pivot.x, m.pivot.y}}}.dump()
+              << '\n';
+    std::ofstream(dir + "/disks.svg") << planner::hex::disksSvg({{"start", disks.startDisks()}, {"end", disks.disks()}});
+    std::cout << "  hex disks: " << disks.side() << "x" << disks.side() << " disks per metamodule slot, " << disks.disksPerUnit() << " per unit of mass; "
+              << disks.moves().size() << " pivot moves, in " << dir << "/disk_moves.jsonl and disks.svg\n";
+    if (failed) {
+        std::cout << "  hex disks FAILED: " << disks.failure() << '\n';
+        return false;
+    }
+    std::string why;
+    if (!disks.slotsMatch(execution.cells(), why)) {
+        std::cout << "  hex disks FAILED: " << why << '\n';
+        return false;
+    }
+    const std::string fault = planner::hex::replayDiskMoves(disks.startDisks(), disks.moves());
+    std::cout << "  hex disks replayed: " << (fault.empty() ? "every move a pivot into an empty cell, all disks connected after each" : "FAILED at " + fault) << '\n';
+    return fault.empty();
+}
+
 int run(const PlanArgs& a) {
     auto system = loadRules(rulePath(a.rules), a.noWarnings);
     if (!system) return 2;
@@ -68,10 +97,18 @@ int run(const PlanArgs& a) {
     planner::Execution execution(problem, *allocator, options);
     planner::Report report(problem, execution, {a.out, a.planOut, !a.quiet && isatty(STDERR_FILENO) != 0});
     std::unique_ptr<planner::Monitor> monitor = a.check ? std::make_unique<planner::Monitor>(problem, execution) : nullptr;
+    std::unique_ptr<planner::hex::DiskMetamodules> disks;
+    bool disksFailed = false;
+    if (!a.hexDisks.empty()) {
+        if (problem.start.cells.size() + problem.target.cells.size() > kMaxDiskMetamodules)
+            throw InputError("--hex-disks: at most " + std::to_string(kMaxDiskMetamodules) + " metamodules in start and target together (every disk move is replayed and checked); use a smaller --scale");
+        disks = std::make_unique<planner::hex::DiskMetamodules>(problem);
+    }
     planner::RunObserver observer;
     observer.fired = [&](std::int64_t anchor, int shape, const planner::BoxEngine::Value* old) {
         report.fired(anchor, shape, old);
         if (monitor) monitor->fired(anchor, shape, old);
+        if (disks && !disksFailed) disksFailed = !disks->fired(anchor, shape, old, execution.cells());
     };
     observer.roundEnd = [&](const planner::RunStats& stats) {
         report.roundEnd(stats);
@@ -101,6 +138,7 @@ int run(const PlanArgs& a) {
         if (monitor) std::cout << "  monitor: " << monitor->summary() << '\n';
         if (!a.out.empty()) std::cout << "  wrote " << a.out << "/ (summary.json, completion.csv, snapshots)\n";
     }
+    if (disks && !writeDisks(a.hexDisks, *disks, execution, disksFailed)) return 1;
     if (monitor && monitor->violated()) {
         const std::string trace = !a.traceOut.empty() ? a.traceOut : !a.out.empty() ? a.out + "/violation.itf.json" : "";
         if (!trace.empty()) {
@@ -131,6 +169,7 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_flag("--check", a->check, "monitor connectivity, mass and the system's constraints after every step or round");
     sub->add_flag("--json", a->json, "print the summary as JSON");
     sub->add_option("--out", a->out, "write summary.json, completion.csv and SVG snapshots into this folder");
+    sub->add_option("--hex-disks", a->hexDisks, "2D general_n plans: realise every template as pivot moves of hex-lattice disks (seed 000 Fig. 4a); write disk_moves.jsonl and disks.svg into this folder");
     sub->add_option("--plan-out", a->planOut, "write the plan as JSON Lines (one fired instance per line)");
     sub->add_option("--max-steps", a->maxSteps, "stop after this many steps");
     sub->add_option("--max-rounds", a->maxRounds, "stop after this many rounds");
