@@ -91,7 +91,8 @@ void writeOutputs(const HexArgs& a, const std::vector<planner::hex::SculptResult
 std::vector<std::string> improvements(const planner::hex::SculptOptions& o) {
     std::vector<std::string> on;
     const std::pair<bool, const char*> flags[] = {{o.dropOverhangs, "drop-overhangs"}, {o.flexibleGrowth, "flexible-growth"}, {o.roll, "roll"},
-                                                  {o.deleteOverflow, "delete-overflow"}, {o.growInside, "grow-inside"}, {o.keepConnected, "keep-connected"}};
+                                                  {o.deleteOverflow, "delete-overflow"}, {o.growInside, "grow-inside"}, {o.keepConnected, "keep-connected"},
+                                                  {o.migrate, "migrate"}, {o.balance, "balance"}};
     for (const auto& [set, name] : flags)
         if (set) on.push_back(name);
     return on;
@@ -139,7 +140,9 @@ int run(HexArgs a) {
                   << ")\n  max stability " << 100 * stability.mean << "% (std " << 100 * stability.std << ")\n  islands " << islands.mean
                   << " modules (std " << islands.std << ")\n  seconds per run " << seconds.mean << '\n'
                   << "  first run: " << runs[0].counts.created << " holes created, " << runs[0].counts.deleted << " deleted, " << runs[0].startHoles
-                  << " at start, " << runs[0].endHoles << " at end; " << runs[0].counts.collapsed << " collapses, " << runs[0].counts.steered << " steered\n";
+                  << " at start, " << runs[0].endHoles << " at end; " << runs[0].counts.collapsed << " collapses, " << runs[0].counts.steered << " steered, " << runs[0].counts.migrated << " migrations\n"
+                  << "  first run's last timestep: " << runs[0].residue.outside << " modules outside the target, " << runs[0].residue.emptyInside
+                  << " target points empty (" << runs[0].residue.walledIn << " walled in), " << runs[0].residue.holeCellsOutside << " hole cells outside\n";
     }
     return 0;
 }
@@ -167,7 +170,9 @@ Run addHexCommand(CLI::App& app) {
     sub->add_flag("--roll", a->setup.options.roll, "outside the target, surface modules roll down one-hop slopes");
     sub->add_flag("--delete-overflow", a->setup.options.deleteOverflow, "modules outside the target delete holes in growth regions too");
     sub->add_flag("--grow-inside", a->setup.options.growInside, "growth only where the new shepherd group lies inside the target");
-    sub->add_flag("--keep-connected", a->setup.options.keepConnected, "refuse deletions and collapses that split the mass locally");
+    sub->add_flag("--keep-connected", a->setup.options.keepConnected, "refuse every deletion and collapse that would cut the mass apart");
+    sub->add_flag("--migrate", a->setup.options.migrate, "modules outside the target roll along the surface toward empty target points");
+    sub->add_flag("--balance", a->setup.options.balance, "keep the live holes to (target area - modules) / 7: no creation at it, surface deletion above it");
     sub->add_option("--threads", a->threads, "parallel runs (default: the machine's cores)");
     sub->add_option("--out", a->out, "directory for series.csv, series.svg (metrics over time) and SVG frames of the first run");
     sub->add_flag("--json", a->json, "print a JSON summary");

@@ -1,6 +1,7 @@
-// hex_holes.holon, hex_growth.holon and hex_collapse.holon placed on the hex array's board by the
-// planner's compiled engine (seed 003 §IV-D: a hole moves by shifting its three leading shepherds
-// to the trailing edge; §IV-E: a growth node makes a hole; §IV-F: column collapse). The systems
+// hex_holes.holon, hex_growth.holon, hex_collapse.holon and hex_migrate.holon placed on the hex
+// array's board by the planner's compiled engine (seed 003 §IV-D: a hole moves by shifting its three
+// leading shepherds to the trailing edge; §IV-E: a growth node makes a hole; §IV-F: column collapse;
+// holon's surface migration, a pivot roll as seed 000 Fig. 1a). The systems
 // name the same cell states in the same order, so their engines share one cell array. An
 // orientation is found by geometry: pattern cell 1 of a hole move is the new centre next to the
 // old one at the anchor; pattern cell 1 of a collapse is the first cell of the column the module
@@ -10,6 +11,7 @@
 
 #include "rules/Error.h"
 #include "rules/Library.h"
+#include "rules/Printer.h"
 
 namespace holon::planner::hex {
 
@@ -49,9 +51,11 @@ HoleRules::HoleRules(const HexArray& array, const std::vector<std::uint8_t>& tar
     : holeSystem_(std::make_unique<Compiled>("hex_holes", array, target)),
       collapseSystem_(std::make_unique<Compiled>("hex_collapse", array, target)),
       growthSystem_(std::make_unique<Compiled>("hex_growth", array, target)),
-      holeEngine_(holeSystem_->engine.get()), collapseEngine_(collapseSystem_->engine.get()), growthEngine_(growthSystem_->engine.get()) {
+      migrateSystem_(std::make_unique<Compiled>("hex_migrate", array, target)),
+      holeEngine_(holeSystem_->engine.get()), collapseEngine_(collapseSystem_->engine.get()), growthEngine_(growthSystem_->engine.get()),
+      migrateEngine_(migrateSystem_->engine.get()) {
     const rules::Alphabet& alphabet = holeSystem_->model->alphabet();
-    for (const Compiled* c : {collapseSystem_.get(), growthSystem_.get()}) {
+    for (const Compiled* c : {collapseSystem_.get(), growthSystem_.get(), migrateSystem_.get()}) {
         const rules::Alphabet& other = c->model->alphabet();
         for (int v = 0; v < alphabet.size() || v < other.size(); ++v)
             if (v >= alphabet.size() || v >= other.size() || alphabet.name(static_cast<rules::CellValue>(v)) != other.name(static_cast<rules::CellValue>(v)))
@@ -76,6 +80,19 @@ HoleRules::HoleRules(const HexArray& array, const std::vector<std::uint8_t>& tar
                     collapse_[c.side][hops][(direction(*collapseEngine_, s) - c.side + 6) % 6] = s;
     for (int d = 0; d < 6; ++d)
         if (move_[d] < 0) throw InputError("hex_holes.holon: no hole_move toward direction " + std::to_string(d));
+    // The compiled engine does not evaluate non-local constraints; the sculptor enforces exactly
+    // one, connectivity of the whole mass, with MassTree, so the file may declare no other.
+    const rules::System& migrate = migrateSystem_->system;
+    if (migrate.constraints.size() != 1 || rules::printExpr(migrate, migrate.constraints[0].expr) != "connected")
+        throw InputError("hex_migrate.holon: `holon hex` enforces the one constraint `connected`; declare that and no other");
+    for (auto& m : migrate_) m = {-1, -1};
+    for (int s = 0; s < migrateEngine_->shapeCount(); ++s) {
+        const std::string& name = migrateSystem_->ruleName(s);
+        const int side = name == "migrate" ? 0 : name == "migrate_mirrored" ? 1 : -1;
+        if (side >= 0) migrate_[direction(*migrateEngine_, s)][side] = s;
+    }
+    for (int d = 0; d < 6; ++d)
+        if (migrate_[d][0] < 0 || migrate_[d][1] < 0) throw InputError("hex_migrate.holon: no migrate or migrate_mirrored toward direction " + std::to_string(d));
     for (int s = 0; s < growthEngine_->shapeCount(); ++s)
         if (growthSystem_->ruleName(s) == "hole_create") create_ = s;
     if (create_ < 0) throw InputError("hex_growth.holon: no rule hole_create");

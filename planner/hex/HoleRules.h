@@ -1,7 +1,7 @@
 #pragma once
 // The lattice rewrites of hole motion, compiled for one hex array: rules/library/hex_holes.holon
-// (hole move, deletion), hex_growth.holon (hole creation) and hex_collapse.holon (column collapse)
-// placed on the array's board by the planner's compiled engine. The sculptor's ensemble is the
+// (hole move, deletion), hex_growth.holon (hole creation), hex_collapse.holon (column collapse) and
+// hex_migrate.holon (surface migration) placed on the array's board by the planner's compiled engine. The sculptor's ensemble is the
 // engines' shared cell array, and a hole moves, is created or a column collapses by applying the
 // rule's instance (seed 003 §IV-D, §IV-E, §IV-F): the same rules `holon check` and `holon verify`
 // examine.
@@ -10,6 +10,7 @@
 #include "planner/hex/HexArray.h"
 #include "rules/Model.h"
 
+#include <array>
 #include <memory>
 
 namespace holon::planner::hex {
@@ -26,6 +27,8 @@ public:
     const BoxEngine& holeEngine() const { return *holeEngine_; }
     const BoxEngine& collapseEngine() const { return *collapseEngine_; }
     const BoxEngine& growthEngine() const { return *growthEngine_; }
+    /// hex_migrate's rules; their constraint `connected` is the caller's to enforce (MassTree).
+    const BoxEngine& migrateEngine() const { return *migrateEngine_; }
     /// The hole_create shape, anchored at the growth node.
     int create() const { return create_; }
     /// The cell states: a module, a hole's rim cell, a hole's centre (empty is 0).
@@ -38,15 +41,19 @@ public:
     /// that steps onto the column in direction gravity + `side` (0 fall, 1 roll, 2 up, 5 down)
     /// whose head lies `hops` below; the landing cell is pattern cell `hops`. -1 if none.
     int collapse(int side, int hops, int gravity) const { return collapse_[side][hops][gravity]; }
+    /// The migration shapes (anchored at the moving module) that roll it one cell in direction d,
+    /// about the pivot on either side of the move: pattern cell 1 is the landing cell.
+    const std::array<int, 2>& migrate(int d) const { return migrate_[d]; }
 
 private:
     struct Compiled;
-    std::unique_ptr<Compiled> holeSystem_, collapseSystem_, growthSystem_;
-    const BoxEngine *holeEngine_ = nullptr, *collapseEngine_ = nullptr, *growthEngine_ = nullptr;
+    std::unique_ptr<Compiled> holeSystem_, collapseSystem_, growthSystem_, migrateSystem_;
+    const BoxEngine *holeEngine_ = nullptr, *collapseEngine_ = nullptr, *growthEngine_ = nullptr, *migrateEngine_ = nullptr;
     int create_ = -1;
     Value module_ = 0, rim_ = 0, centre_ = 0;
     int move_[6] = {};
     int collapse_[6][4][6] = {};
+    std::array<int, 2> migrate_[6] = {};
 };
 
 }  // namespace holon::planner::hex

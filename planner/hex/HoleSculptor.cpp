@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <stdexcept>
 
 namespace holon::planner::hex {
@@ -19,6 +20,31 @@ namespace {
 
 double cartesianX(Vec v) { return v.x + 0.5 * v.y; }
 double cartesianY(Vec v) { return -HexArray::kRowHeight * v.y; }
+
+/// The root of the connectivity tree: the point of source and target farthest from their edges
+/// (of the source alone when they do not meet); it stays filled throughout.
+std::int64_t deepestCell(const HexArray& array, const std::vector<std::uint8_t>& source, const std::vector<std::uint8_t>& target) {
+    std::vector<std::uint8_t> mask(array.size(), 0);
+    bool meet = false;
+    for (std::int64_t i : array.points()) meet |= source[i] && target[i];
+    for (std::int64_t i : array.points()) mask[i] = source[i] && (target[i] || !meet);
+    std::vector<int> depth(array.size(), -1);
+    std::deque<std::int64_t> queue;
+    for (std::int64_t i : array.points()) {
+        bool edge = false;
+        for (int d = 0; d < 6; ++d) edge |= !mask[i + array.step(d)];
+        if (mask[i] && edge) depth[i] = 0, queue.push_back(i);
+    }
+    std::int64_t deepest = queue.front();
+    while (!queue.empty()) {
+        const std::int64_t c = queue.front();
+        queue.pop_front();
+        deepest = c;
+        for (int d = 0; d < 6; ++d)
+            if (const std::int64_t m = c + array.step(d); mask[m] && depth[m] < 0) depth[m] = depth[c] + 1, queue.push_back(m);
+    }
+    return deepest;
+}
 
 }  // namespace
 
@@ -53,6 +79,13 @@ HoleSculptor::HoleSculptor(const HexArray& array, const std::vector<std::uint8_t
     for (std::int64_t i : array.points())
         if (source[i]) set(i, rules_->module());
     placeInitialHoles();
+    std::int64_t area = 0;
+    for (std::int64_t i : array.points()) area += target[i] != 0;
+    holeBudget_ = std::max<std::int64_t>(0, (area - modules_) / 7);
+    if (options_.keepConnected || options_.migrate || options_.balance) {
+        tree_ = std::make_unique<MassTree>(array, [this](std::int64_t i) { return filled(i); });
+        tree_->rebuild(deepestCell(array, source, target));
+    }
 
     for (std::int64_t i : array.points())
         if (plan.regionOf[i] >= 0) activePoints_.push_back(i);
@@ -180,6 +213,8 @@ void HoleSculptor::step() {
             if (module(k) && onSurface(k)) smooth(k, plan_->regions[plan_->regionOf[k]].gravity);
         }
     }
+    if (options_.balance && liveHoles_ > holeBudget_) deleteSurplus();
+    if (options_.migrate) migrate();
     ++time_;
 }
 
@@ -197,7 +232,7 @@ void HoleSculptor::activate(std::int64_t k) {
 // hex_growth.holon's hole_create run through the compiled engine. The count below only decides
 // whether --flexible-growth has a module to spill or borrow first; the rule checks the rest.
 void HoleSculptor::tryCreate(std::int64_t k) {
-    if (!(*target_)[k]) return;
+    if (!(*target_)[k] || (options_.balance && liveHoles_ >= holeBudget_)) return;
     int modules = 0;
     for (std::int64_t o : disk2_) {
         const std::int64_t i = k + o;
@@ -220,20 +255,26 @@ void HoleSculptor::tryCreate(std::int64_t k) {
             if (modules == 11 && module(c) && !shepherdsAnother(c, -1) && !(*target_)[c]) borrow = c;
         }
         if (spill < 0 && borrow < 0) return;
-        if (borrow >= 0 && options_.keepConnected && splitsLocally(borrow, {borrow}, {})) return;
     }
     // A spilled module leaves the disk for the spill point, a borrowed one enters an empty disk point:
     // the disk then holds the 12 modules the rule rearranges (which ones is immaterial).
-    for (std::int64_t o : disk2_) {
-        const std::int64_t i = k + o;
-        if (spill >= 0 && i != k && module(i)) {
-            set(i, 0), set(spill, rules_->module()), spill = -1;
-        } else if (borrow >= 0 && !cells_[i]) {
-            set(borrow, 0), set(i, rules_->module()), borrow = -1;
+    if (spill >= 0 || borrow >= 0) {
+        std::int64_t from = borrow, to = spill;
+        for (std::int64_t o : disk2_) {
+            const std::int64_t i = k + o;
+            if (from < 0 && i != k && module(i)) from = i;
+            if (to < 0 && !cells_[i]) to = i;
         }
+        if (tree_ && !tree_->change({from}, {to})) return;
+        set(from, 0), set(to, rules_->module());
     }
     const BoxEngine& growth = rules_->growthEngine();
     if (!growth.matches(cells_.data(), k, rules_->create())) throw std::logic_error("hole_create does not match a growth node with 12 modules");
+    std::int64_t newlyFilled[19];
+    int fills = 0;
+    for (std::int64_t o : disk2_)
+        if (!cells_[k + o]) newlyFilled[fills++] = k + o;
+    if (tree_ && !tree_->change(nullptr, 0, newlyFilled, fills)) throw std::logic_error("a hole's creation cut the mass apart");
     apply(growth, k, rules_->create());
     holeAt_[k] = static_cast<std::int32_t>(holesById_.size());
     holesById_.push_back({k, static_cast<int>(random_.below(6)), time_ + 1, true});
@@ -271,17 +312,48 @@ void HoleSculptor::tryDelete(std::int64_t k, int gravity) {
     // longer favour the extremities over a 10,000-step run as §IV-B says it does.
     const double p = 1.0 + std::log(nearPerimeter_[k] / std::max(maxDistance_ - time_ / options_.decay, 1.0));
     if (static_cast<double>(random_.next() >> 11) * 0x1p-53 >= p) return;
-    std::vector<std::int64_t> emptied = nearestTheSurface(id, towardSurface(c, k, up)), filledNow;
+    const std::vector<std::int64_t> emptied = nearestTheSurface(id, towardSurface(c, k, up));
     if (emptied.empty()) return;
-    if (options_.keepConnected && splitsLocally(c, emptied, filledNow)) {
+    if (tree_ && !tree_->change(emptied, {})) {
         ++counts_.refusedSplits;
         return;
     }
+    remove(id, emptied);
+}
+
+void HoleSculptor::remove(int id, const std::vector<std::int64_t>& emptied) {
+    const std::int64_t c = holesById_[id].centre;
     for (std::int64_t o : disk1_) set(c + o, rules_->module());
     for (std::int64_t i : emptied) set(i, 0);
     holeAt_[c] = -1;
     holesById_[id].alive = false;
     --liveHoles_, ++counts_.deleted;
+}
+
+// holon's improvement (--balance, not in seed 003): the ensemble's volume, modules plus seven
+// points per hole, must equal the target's area for compliance to reach 100%, so the right number
+// of live holes is a constant, (area - modules) / 7. Creation stops at it; above it, a hole whose
+// shepherd group reaches the surface anywhere is deleted there, as a deletion node would (the
+// seven shepherds nearest the surface fill it), if the mass stays connected. Whatever target
+// points that uncovers, migration fills from the modules still outside. The count is a sum over
+// the mass, which an ensemble gathers along the spanning tree MassTree keeps.
+void HoleSculptor::deleteSurplus() {
+    std::vector<int> order;
+    for (int id = 0; id < static_cast<int>(holesById_.size()); ++id)
+        if (holesById_[id].alive) order.push_back(id);
+    random_.shuffle(order);
+    for (int id : order) {
+        if (liveHoles_ <= holeBudget_) return;
+        const std::int64_t c = holesById_[id].centre;
+        int toward = -1;
+        for (std::size_t j = 0; j < ring2_.size() && toward < 0; ++j)
+            if (!shepherdsAnother(c + ring2_[j], id) && onSurface(c + ring2_[j])) toward = towardSurface(c, c + ring2_[j], 0);
+        if (toward < 0) continue;
+        const std::vector<std::int64_t> emptied = nearestTheSurface(id, toward);
+        if (emptied.empty() || !tree_->change(emptied, {})) continue;
+        remove(id, emptied);
+        ++counts_.surplusDeleted;
+    }
 }
 
 // Choice: "the portion of the hole's shepherd group closest to the perimeter" is the 7 shepherds
@@ -335,13 +407,16 @@ void HoleSculptor::smooth(std::int64_t k, int gravity) {
     // column only one hop lower, and rolls down the slope at 60° from gravity, so that the thin
     // filaments deletion leaves behind drain towards the target instead of standing.
     const bool roll = options_.roll && !(*target_)[k];
+    // With --migrate, migration alone moves the modules outside the target: collapse pulling them
+    // along gravity and migration along the surface would undo each other's moves.
+    if (options_.migrate && !(*target_)[k]) return;
     for (int side : {0, 2, 5, 1}) {
         if ((side == 1 && !roll) || (side == 0 && !options_.dropOverhangs)) continue;  // --drop-overhangs: fall into a gap
         for (int hops = 1; hops <= 3; ++hops) {
             const int shape = rules_->collapse(side, hops, gravity);
             if (shape < 0 || (hops == 1 && (side == 2 || side == 5) && !roll) || !engine.matches(cells_.data(), k, shape)) continue;
             const std::int64_t to = k + engine.cellSteps(shape)[hops];
-            if (options_.keepConnected && splitsLocally(k, {k}, {to})) {
+            if (tree_ && !tree_->change({k}, {to})) {
                 ++counts_.refusedSplits;
                 break;  // the next side
             }
@@ -352,45 +427,71 @@ void HoleSculptor::smooth(std::int64_t k, int gravity) {
     }
 }
 
-// holon's improvement (not in seed 003): would emptying `emptied` and filling `filledNow` split
-// the filled cells of the radius-3 disk around `centre` into more pieces than before? The disk's
-// pieces may still meet outside it, so this refuses some harmless changes, never a local split.
-bool HoleSculptor::splitsLocally(std::int64_t centre, const std::vector<std::int64_t>& emptied, const std::vector<std::int64_t>& filledNow) const {
-    auto pieces = [&](bool after) {
-        std::array<std::int8_t, 37> state{};  // 0 empty, 1 filled unvisited, 2 visited
-        auto cell = [&](std::size_t j) { return centre + disk3_[j]; };
-        for (std::size_t j = 0; j < disk3_.size(); ++j) {
-            const std::int64_t i = cell(j);
-            bool f = filled(i);
-            if (after) {
-                if (std::find(emptied.begin(), emptied.end(), i) != emptied.end()) f = false;
-                if (std::find(filledNow.begin(), filledNow.end(), i) != filledNow.end()) f = true;
+// holon's improvement (--migrate, not in seed 003): every module outside the target that is no
+// shepherd rolls one cell along the surface (hex_migrate.holon, through the compiled engine) to the
+// empty neighbour nearest an empty target point, counted in rolls along the surface, when the
+// mass stays connected without it (the rules' constraint, by MassTree). Deletion leaves walls one
+// module thick outside the target that neither holes nor column collapse can clear; they drain
+// this way, tip first, and fill the target points that creation leaves at the target's edge. Where
+// the field does not reach (behind a wall, inside its loops), a module retracts instead: it rolls to
+// a cell next to a filled neighbour nearer MassTree's root than itself, so walls shrink toward the
+// mass until their modules meet the field.
+void HoleSculptor::migrate() {
+    // The field: rolls along the surface to an empty target point (about a filled common
+    // neighbour, the other one empty). It is computed once per timestep with every migrant where
+    // it stands, so a migrant must not trust a value whose next roll pivots on its own body.
+    towardEmpty_.assign(cells_.size(), -1);
+    std::vector<std::int64_t> frontier, next, movers;
+    for (std::int64_t i : array_->points()) {
+        if (!filled(i) && (*target_)[i]) towardEmpty_[i] = 0, frontier.push_back(i);
+        if (module(i) && !(*target_)[i]) movers.push_back(i);
+    }
+    for (std::int32_t hops = 1; !frontier.empty(); ++hops, frontier.swap(next)) {
+        next.clear();
+        for (std::int64_t c : frontier)
+            for (int d = 0; d < 6; ++d) {
+                const std::int64_t n = c + array_->step(d);
+                if (towardEmpty_[n] >= 0 || !array_->inside(n) || filled(n)) continue;
+                if (filled(c + array_->step(d + 1)) != filled(c + array_->step(d - 1))) towardEmpty_[n] = hops, next.push_back(n);
             }
-            state[j] = f;
+    }
+    // Whether a module that leaves `from` for b can roll on from b down the field, with `from` empty.
+    const auto continues = [&](std::int64_t b, std::int64_t from) {
+        if (towardEmpty_[b] == 0) return true;
+        for (int d = 0; d < 6; ++d) {
+            const std::int64_t c = b + array_->step(d);
+            if (c == from || filled(c) || towardEmpty_[c] != towardEmpty_[b] - 1) continue;
+            const std::int64_t p1 = b + array_->step(d + 1), p2 = b + array_->step(d - 1);
+            if ((p1 != from && filled(p1)) != (p2 != from && filled(p2))) return true;
         }
-        int count = 0;
-        for (std::size_t s = 0; s < disk3_.size(); ++s) {
-            if (state[s] != 1) continue;
-            ++count;
-            std::array<std::size_t, 37> stack{};
-            std::size_t top = 0;
-            stack[top++] = s, state[s] = 2;
-            while (top) {
-                const std::int64_t i = cell(stack[--top]);
-                for (std::size_t j = 0; j < disk3_.size(); ++j)
-                    if (state[j] == 1) {
-                        const std::int64_t delta = cell(j) - i;
-                        for (int d = 0; d < 6; ++d)
-                            if (delta == array_->step(d)) {
-                                state[j] = 2, stack[top++] = j;
-                                break;
-                            }
-                    }
-            }
-        }
-        return count;
+        return false;
     };
-    return pieces(true) > pieces(false);
+    random_.shuffle(movers);
+    const BoxEngine& engine = rules_->migrateEngine();
+    for (std::int64_t m : movers) {
+        // Down the field where it reaches the module; elsewhere toward the root: to a cell next to a
+        // filled neighbour whose potential is below the module's own, so that a wall the field does
+        // not reach shrinks toward the mass, tip first.
+        std::pair<int, std::int32_t> best{1, tree_->distance(m) - 1};
+        int bestShape = -1;
+        std::int64_t bestCell = -1;
+        for (int d = 0; d < 6; ++d) {
+            const std::int64_t b = m + array_->step(d);
+            if (filled(b) || !array_->inside(b)) continue;
+            std::pair<int, std::int32_t> rank{0, towardEmpty_[b]};
+            if (towardEmpty_[b] < 0 || !continues(b, m)) {
+                rank = {1, std::numeric_limits<std::int32_t>::max()};
+                for (int e = 0; e < 6; ++e)
+                    if (const std::int64_t n = b + array_->step(e); n != m && filled(n)) rank.second = std::min(rank.second, tree_->distance(n));
+            }
+            if (rank >= best) continue;
+            for (int shape : rules_->migrate(d))
+                if (engine.matches(cells_.data(), m, shape)) best = rank, bestShape = shape, bestCell = b;
+        }
+        if (bestShape < 0 || !tree_->change({m}, {bestCell})) continue;
+        apply(engine, m, bestShape);
+        ++counts_.migrated;
+    }
 }
 
 std::vector<std::int64_t> HoleSculptor::holeCentres() const {
@@ -433,6 +534,31 @@ std::int64_t HoleSculptor::islands() const {
         largest = std::max(largest, mods);
     }
     return modules_ - largest;
+}
+
+SculptResidue HoleSculptor::residue() const {
+    SculptResidue r;
+    r.holes = liveHoles_;
+    // Empty points reachable from an empty point outside the target without crossing the mass.
+    std::vector<std::uint8_t> open(cells_.size(), 0);
+    std::vector<std::int64_t> stack;
+    for (std::int64_t i : array_->points())
+        if (!filled(i) && !(*target_)[i]) open[i] = 1, stack.push_back(i);
+    while (!stack.empty()) {
+        const std::int64_t c = stack.back();
+        stack.pop_back();
+        for (int d = 0; d < 6; ++d) {
+            const std::int64_t m = c + array_->step(d);
+            if (array_->inside(m) && !open[m] && !filled(m)) open[m] = 1, stack.push_back(m);
+        }
+    }
+    for (std::int64_t i : array_->points()) {
+        const bool inTarget = (*target_)[i] != 0;
+        if (module(i) && !inTarget) ++r.outside;
+        if (holeCell(i) && !inTarget) ++r.holeCellsOutside;
+        if (!filled(i) && inTarget) ++r.emptyInside, r.walledIn += !open[i];
+    }
+    return r;
 }
 
 }  // namespace holon::planner::hex

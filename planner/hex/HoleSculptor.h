@@ -7,6 +7,7 @@
 #include "planner/Random.h"
 #include "planner/hex/HexArray.h"
 #include "planner/hex/HoleRules.h"
+#include "planner/hex/MassTree.h"
 #include "planner/hex/TriRegions.h"
 
 #include <cstdint>
@@ -19,17 +20,26 @@ struct SculptOptions {
     double decay = 25;            // c_decay of the temperature test (§IV-E), in timesteps per diameter
     double holeDensity = 0.01;    // initial holes per lattice point of the source
     int startWindow = 100;        // initial holes start moving at a uniformly random timestep below this
-    bool keepConnected = false;   // holon's improvement: refuse deletions and collapses that split the mass locally
+    bool keepConnected = false;   // holon's improvement: refuse every change that would cut the mass apart (MassTree)
     bool dropOverhangs = false;   // holon's improvement: a column head with a gap below it falls into the gap
     bool roll = false;            // holon's improvement: outside the target, surface modules roll down one-hop slopes
     bool deleteOverflow = false;  // holon's improvement: modules outside the target delete holes in growth regions too
     bool growInside = false;      // holon's improvement: growth only where the new shepherd group lies inside the target
     bool flexibleGrowth = false;  // holon's improvement: growth with one module more or fewer than a shepherd group
+    bool migrate = false;         // holon's improvement: modules outside the target roll along the surface to empty target points
+    bool balance = false;         // holon's improvement: keep the holes to the number that makes the volume the target's area
     std::uint64_t seed = 1;
 };
 
+/// Where the wrong lattice points are (compliance counts them): modules outside the target, target
+/// points empty (of those, how many no empty path joins to the empty points outside the target:
+/// voids walled in by the mass), hole cells outside the target, and the holes alive.
+struct SculptResidue {
+    std::int64_t outside = 0, emptyInside = 0, walledIn = 0, holeCellsOutside = 0, holes = 0;
+};
+
 struct SculptCounts {
-    std::int64_t created = 0, deleted = 0, steered = 0, collapsed = 0, holeMoves = 0, refusedSplits = 0;
+    std::int64_t created = 0, deleted = 0, steered = 0, collapsed = 0, holeMoves = 0, refusedSplits = 0, migrated = 0, surplusDeleted = 0;
 };
 
 class HoleSculptor {
@@ -50,6 +60,7 @@ public:
     double compliance() const;
     /// Modules outside the largest connected mass (modules and hole cells, 6-adjacency).
     std::int64_t islands() const;
+    SculptResidue residue() const;
     bool module(std::int64_t i) const { return cells_[i] == rules_->module(); }
     /// Centres of the holes alive now.
     std::vector<std::int64_t> holeCentres() const;
@@ -80,10 +91,12 @@ private:
     void tryCreate(std::int64_t k);
     void tryDelete(std::int64_t k, int gravity);
     void smooth(std::int64_t k, int gravity);
+    void migrate();
+    void deleteSurplus();
+    void remove(int id, const std::vector<std::int64_t>& emptied);
     int towardSurface(std::int64_t centre, std::int64_t node, int up) const;
     std::vector<std::int64_t> nearestTheSurface(int id, int toward) const;
     bool shepherdsAnother(std::int64_t i, int id) const;
-    bool splitsLocally(std::int64_t centre, const std::vector<std::int64_t>& emptied, const std::vector<std::int64_t>& filledNow) const;
 
     const HexArray* array_;
     const std::vector<std::uint8_t>* target_;
@@ -92,6 +105,8 @@ private:
     Random random_;
     int time_ = 0;
     std::unique_ptr<const HoleRules> rules_;
+    std::unique_ptr<MassTree> tree_;            // with keepConnected or migrate: the connectivity test
+    std::vector<std::int32_t> towardEmpty_;     // with migrate: rolls along the surface to an empty target point
     std::vector<Value> cells_;                  // the ensemble, as hex_holes.holon's cell states
     std::vector<std::uint8_t> class_;           // class: 0 stays filled, 1 stays empty, 2 to fill, 3 to empty
     std::vector<std::int32_t> holeAt_;          // per hole centre: its hole's id; -1 elsewhere
@@ -101,6 +116,7 @@ private:
     double maxDistance_ = 1;                    // d_max
     std::int64_t classSize_[4] = {}, classCorrect_[4] = {};
     std::int64_t modules_ = 0, liveHoles_ = 0;
+    std::int64_t holeBudget_ = 0;               // (target area - modules) / 7: the holes that fill the target exactly
     SculptCounts counts_;
     // Offsets (index steps): ring 1, disk of radius 1 and 2, ring 2 and 3, radius-3 disk, and per
     // direction the shepherds ordered by how far they lie toward the direction.

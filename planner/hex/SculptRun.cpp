@@ -38,6 +38,7 @@ SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const 
     result.endHoles = sculptor.holes();
     result.islands = sculptor.islands();
     result.counts = sculptor.counts();
+    result.residue = sculptor.residue();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     return result;
 }

@@ -19,6 +19,7 @@ struct SculptResult {
     int steps = 0, triRegions = 0;
     double maxCompleteness = 0, maxStability = 0, maxCompliance = 0, finalCompliance = 0, seconds = 0;
     SculptCounts counts;
+    SculptResidue residue;             // at the end of the run
     std::vector<SculptSample> series;  // one sample per timestep, after it
 };
 

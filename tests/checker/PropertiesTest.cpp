@@ -234,6 +234,29 @@ TEST_CASE("hex growth (seed 003 §IV-E): one counting rule makes whole holes and
     CHECK(eleven.property("mass_conservation").verdict == Verdict::Violated);
 }
 
+TEST_CASE("hex migration (holon's finishing move): a wall outside the target drains without cutting the mass, and without the constraint it cuts") {
+    // A wall one module thick stands outside the target (the lower two rows); every module of it
+    // rolls about a neighbour, and `constraint connected` filters the rolls that cut the mass.
+    const char* wall = "   . . . .\n  . . M . .\n . . M . . .\n. . M M . . .\n . M M . . .\n  M M M . .\n   M M . .\n";
+    const char* lower = "   . . . .\n  . . . . .\n . . . . . .\n. . . . . . .\n x x x x x x\n  x x x x x\n   x x x x\n";
+    auto m = test::checkFrom(rules::librarySystem("hex_migrate"), "hex:r3", wall, lower);
+    CHECK(m.property("holes").verdict == Verdict::Holds);
+    CHECK(m.property("one_mass").verdict == Verdict::Holds);
+    CHECK(m.property("mass_conservation").verdict == Verdict::Holds);
+    // Pivot moves alone can jam: some configurations reached have no roll that keeps the mass whole.
+    CHECK(m.property("deadlock").verdict == Verdict::Violated);
+    std::string text = rules::readTextFile(rules::libraryDir() + "/hex_migrate.holon");
+    const std::string constraint = "constraint connected\n";
+    const auto at = text.find(constraint);
+    REQUIRE(at != std::string::npos);
+    text.erase(at, constraint.size());
+    auto cut = test::checkFrom(test::parse(text), "hex:r3", wall, lower, {}, {"one_mass"});
+    const auto& split = cut.property("one_mass");
+    REQUIRE(split.verdict == Verdict::Violated);
+    CHECK(split.trace->steps.size() == 2);  // the first roll already cuts
+    cut.replayAll();
+}
+
 TEST_CASE("hex collapse (seed 003 §IV-F): every collapse keeps the mass connected and the holes whole, and without the arc test it does not") {
     const char* blob = "   . . . .\n  . . . . .\n . . . M M .\nM M M M . . .\n . . M . . .\n  . M . . .\n   . . . .\n";
     auto c = test::checkFrom(rules::librarySystem("hex_collapse"), "hex:r3", blob, "");

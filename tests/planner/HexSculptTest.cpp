@@ -44,13 +44,14 @@ TEST_CASE("every timestep conserves the modules and keeps every hole and its she
         CAPTURE(plan);
         const std::string p = plan;
         const std::string from = p.substr(0, p.find(' ')), to = p.substr(p.find(' ') + 1);
-        for (int variant : {0, 1, 2}) {  // the paper's algorithm, --keep-connected, --improved (everything)
+        for (int variant : {0, 1, 2, 3}) {  // the paper's algorithm, --keep-connected, the local improvements, --migrate --balance too
             const HexArray array(60);
             const auto source = sculptShape(array, from, "--from"), target = sculptShape(array, to, "--to");
             const TriPlan tri = planTriRegions(array, source, target, 6.0);
             SculptOptions options;
             options.keepConnected = variant >= 1, options.decay = 5, options.seed = 7;
-            options.dropOverhangs = options.flexibleGrowth = options.roll = options.deleteOverflow = options.growInside = variant == 2;
+            options.dropOverhangs = options.flexibleGrowth = options.roll = options.deleteOverflow = options.growInside = variant >= 2;
+            options.migrate = options.balance = variant == 3;
             HoleSculptor s(array, source, target, tri, options);
             const std::int64_t modules = countModules(s);
             REQUIRE(modules == s.modules());
@@ -59,7 +60,9 @@ TEST_CASE("every timestep conserves the modules and keeps every hole and its she
                 s.step();
                 REQUIRE(countModules(s) == modules);
                 requireHolesIntact(s);
+                if (variant >= 1) REQUIRE(s.islands() == 0);  // MassTree refuses every cut
             }
+            if (variant == 3) CHECK(s.counts().migrated > 0);
             // The run did something: holes moved, were created and consumed, columns collapsed.
             CHECK(s.counts().holeMoves > 1000);
             CHECK(s.counts().created > 0);
