@@ -78,11 +78,12 @@ void writeOutputs(const HexArgs& a, const std::vector<planner::hex::SculptResult
     std::ofstream(fs::path(a.out) / "series.svg") << seriesSvg(runs, a.setup.steps);
     std::ofstream csv(fs::path(a.out) / "series.csv");
     csv << "step";
-    for (std::size_t r = 0; r < runs.size(); ++r) csv << ",completeness" << r << ",stability" << r << ",compliance" << r;
+    for (std::size_t r = 0; r < runs.size(); ++r) csv << ",completeness" << r << ",stability" << r << ",compliance" << r << ",holes" << r;
     csv << '\n';
     for (int t = 0; t < a.setup.steps; ++t) {
         csv << t + 1;
-        for (const auto& run : runs) csv << ',' << run.series[t].completeness << ',' << run.series[t].stability << ',' << run.series[t].compliance;
+        for (const auto& run : runs)
+            csv << ',' << run.series[t].completeness << ',' << run.series[t].stability << ',' << run.series[t].compliance << ',' << run.series[t].holes;
         csv << '\n';
     }
 }
@@ -140,7 +141,7 @@ int run(HexArgs a) {
                   << ")\n  max stability " << 100 * stability.mean << "% (std " << 100 * stability.std << ")\n  islands " << islands.mean
                   << " modules (std " << islands.std << ")\n  seconds per run " << seconds.mean << '\n'
                   << "  first run: " << runs[0].counts.created << " holes created, " << runs[0].counts.deleted << " deleted, " << runs[0].startHoles
-                  << " at start, " << runs[0].endHoles << " at end; " << runs[0].counts.collapsed << " collapses, " << runs[0].counts.steered << " steered, " << runs[0].counts.migrated << " migrations\n"
+                  << " at start, " << runs[0].endHoles << " at end (" << runs[0].holeBudget << " fill the target exactly); " << runs[0].counts.collapsed << " collapses, " << runs[0].counts.steered << " steered, " << runs[0].counts.migrated << " migrations\n"
                   << "  first run's last timestep: " << runs[0].residue.outside << " modules outside the target, " << runs[0].residue.emptyInside
                   << " target points empty (" << runs[0].residue.walledIn << " walled in), " << runs[0].residue.holeCellsOutside << " hole cells outside\n";
     }
@@ -163,16 +164,16 @@ Run addHexCommand(CLI::App& app) {
     sub->add_option("--hole-density", a->setup.options.holeDensity, "initial holes per source lattice point");
     sub->add_flag_callback("--improved", [a] {
         auto& o = a->setup.options;
-        o.dropOverhangs = o.flexibleGrowth = o.roll = o.deleteOverflow = o.growInside = o.keepConnected = true;
-    }, "all of holon's improvements: --drop-overhangs --flexible-growth --roll --delete-overflow --grow-inside --keep-connected");
+        o.dropOverhangs = o.flexibleGrowth = o.roll = o.deleteOverflow = o.growInside = o.keepConnected = o.migrate = o.balance = true;
+    }, "all of holon's improvements: --drop-overhangs --flexible-growth --roll --delete-overflow --grow-inside --keep-connected --migrate --balance");
     sub->add_flag("--drop-overhangs", a->setup.options.dropOverhangs, "a column head with a gap below it falls into the gap");
     sub->add_flag("--flexible-growth", a->setup.options.flexibleGrowth, "growth nodes also start with one module more or fewer in their disk");
-    sub->add_flag("--roll", a->setup.options.roll, "outside the target, surface modules roll down one-hop slopes");
+    sub->add_flag("--roll", a->setup.options.roll, "outside the target, surface modules roll down one-hop slopes (with --migrate, migration moves them instead)");
     sub->add_flag("--delete-overflow", a->setup.options.deleteOverflow, "modules outside the target delete holes in growth regions too");
     sub->add_flag("--grow-inside", a->setup.options.growInside, "growth only where the new shepherd group lies inside the target");
     sub->add_flag("--keep-connected", a->setup.options.keepConnected, "refuse every deletion and collapse that would cut the mass apart");
-    sub->add_flag("--migrate", a->setup.options.migrate, "modules outside the target roll along the surface toward empty target points");
-    sub->add_flag("--balance", a->setup.options.balance, "keep the live holes to (target area - modules) / 7: no creation at it, surface deletion above it");
+    sub->add_flag("--migrate", a->setup.options.migrate, "modules outside the target move along the surface toward empty target points");
+    sub->add_flag("--balance", a->setup.options.balance, "hold the live holes at (target area - modules) / 7: creation stops there, deletion below it only as growth asks, surplus holes deleted at the surface");
     sub->add_option("--threads", a->threads, "parallel runs (default: the machine's cores)");
     sub->add_option("--out", a->out, "directory for series.csv, series.svg (metrics over time) and SVG frames of the first run");
     sub->add_flag("--json", a->json, "print a JSON summary");

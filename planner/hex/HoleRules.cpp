@@ -1,7 +1,7 @@
 // hex_holes.holon, hex_growth.holon, hex_collapse.holon and hex_migrate.holon placed on the hex
 // array's board by the planner's compiled engine (seed 003 §IV-D: a hole moves by shifting its three
 // leading shepherds to the trailing edge; §IV-E: a growth node makes a hole; §IV-F: column collapse;
-// holon's surface migration, a pivot roll as seed 000 Fig. 1a). The systems
+// holon's surface migration). The systems
 // name the same cell states in the same order, so their engines share one cell array. An
 // orientation is found by geometry: pattern cell 1 of a hole move is the new centre next to the
 // old one at the anchor; pattern cell 1 of a collapse is the first cell of the column the module
@@ -85,14 +85,15 @@ HoleRules::HoleRules(const HexArray& array, const std::vector<std::uint8_t>& tar
     const rules::System& migrate = migrateSystem_->system;
     if (migrate.constraints.size() != 1 || rules::printExpr(migrate, migrate.constraints[0].expr) != "connected")
         throw InputError("hex_migrate.holon: `holon hex` enforces the one constraint `connected`; declare that and no other");
-    for (auto& m : migrate_) m = {-1, -1};
+    std::fill(std::begin(migrate_), std::end(migrate_), -1);
+    std::fill(std::begin(advance_), std::end(advance_), -1);
     for (int s = 0; s < migrateEngine_->shapeCount(); ++s) {
         const std::string& name = migrateSystem_->ruleName(s);
-        const int side = name == "migrate" ? 0 : name == "migrate_mirrored" ? 1 : -1;
-        if (side >= 0) migrate_[direction(*migrateEngine_, s)][side] = s;
+        if (name == "migrate") migrate_[direction(*migrateEngine_, s)] = s;
+        if (name == "advance") advance_[direction(*migrateEngine_, s)] = s;
     }
     for (int d = 0; d < 6; ++d)
-        if (migrate_[d][0] < 0 || migrate_[d][1] < 0) throw InputError("hex_migrate.holon: no migrate or migrate_mirrored toward direction " + std::to_string(d));
+        if (migrate_[d] < 0 || advance_[d] < 0) throw InputError("hex_migrate.holon: needs rules migrate and advance in every direction");
     for (int s = 0; s < growthEngine_->shapeCount(); ++s)
         if (growthSystem_->ruleName(s) == "hole_create") create_ = s;
     if (create_ < 0) throw InputError("hex_growth.holon: no rule hole_create");

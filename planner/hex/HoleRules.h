@@ -10,7 +10,6 @@
 #include "planner/hex/HexArray.h"
 #include "rules/Model.h"
 
-#include <array>
 #include <memory>
 
 namespace holon::planner::hex {
@@ -41,9 +40,10 @@ public:
     /// that steps onto the column in direction gravity + `side` (0 fall, 1 roll, 2 up, 5 down)
     /// whose head lies `hops` below; the landing cell is pattern cell `hops`. -1 if none.
     int collapse(int side, int hops, int gravity) const { return collapse_[side][hops][gravity]; }
-    /// The migration shapes (anchored at the moving module) that roll it one cell in direction d,
-    /// about the pivot on either side of the move: pattern cell 1 is the landing cell.
-    const std::array<int, 2>& migrate(int d) const { return migrate_[d]; }
+    /// The migration shape (anchored at the moving module) that moves it one cell in direction d.
+    int migrate(int d) const { return migrate_[d]; }
+    /// The advance shape (anchored at the module inside the target) that moves it one cell in direction d.
+    int advance(int d) const { return advance_[d]; }
 
 private:
     struct Compiled;
@@ -53,7 +53,7 @@ private:
     Value module_ = 0, rim_ = 0, centre_ = 0;
     int move_[6] = {};
     int collapse_[6][4][6] = {};
-    std::array<int, 2> migrate_[6] = {};
+    int migrate_[6] = {}, advance_[6] = {};
 };
 
 }  // namespace holon::planner::hex

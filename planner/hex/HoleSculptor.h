@@ -11,6 +11,7 @@
 #include "planner/hex/TriRegions.h"
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -26,7 +27,7 @@ struct SculptOptions {
     bool deleteOverflow = false;  // holon's improvement: modules outside the target delete holes in growth regions too
     bool growInside = false;      // holon's improvement: growth only where the new shepherd group lies inside the target
     bool flexibleGrowth = false;  // holon's improvement: growth with one module more or fewer than a shepherd group
-    bool migrate = false;         // holon's improvement: modules outside the target roll along the surface to empty target points
+    bool migrate = false;         // holon's improvement: modules outside the target move along the surface to empty target points
     bool balance = false;         // holon's improvement: keep the holes to the number that makes the volume the target's area
     std::uint64_t seed = 1;
 };
@@ -53,6 +54,8 @@ public:
     int time() const { return time_; }
     std::int64_t modules() const { return modules_; }
     std::int64_t holes() const { return liveHoles_; }
+    /// (target area - modules) / 7: the live holes with which the volume equals the target's area.
+    std::int64_t holeBudget() const { return holeBudget_; }
     const SculptCounts& counts() const { return counts_; }
     /// §V-A's metrics; a lattice point counts as filled when it holds a module or belongs to a hole.
     double completeness() const;
@@ -91,7 +94,7 @@ private:
     void tryCreate(std::int64_t k);
     void tryDelete(std::int64_t k, int gravity);
     void smooth(std::int64_t k, int gravity);
-    void migrate();
+    void migrate();  // SurfaceMigration.cpp
     void deleteSurplus();
     void remove(int id, const std::vector<std::int64_t>& emptied);
     int towardSurface(std::int64_t centre, std::int64_t node, int up) const;
@@ -106,7 +109,13 @@ private:
     int time_ = 0;
     std::unique_ptr<const HoleRules> rules_;
     std::unique_ptr<MassTree> tree_;            // with keepConnected or migrate: the connectivity test
-    std::vector<std::int32_t> towardEmpty_;     // with migrate: rolls along the surface to an empty target point
+    std::vector<std::int32_t> towardEmpty_;     // with migrate: moves along the surface to an empty target point
+    struct Arrival {
+        std::int32_t value = std::numeric_limits<std::int32_t>::max();  // the field value a migrant arrived with
+        int time = 0;
+    };
+    std::vector<Arrival> arrival_;              // with migrate: per cell, how its migrant arrived there
+    static constexpr int kArrivalMemory = 16;   // timesteps an arrival value binds the migrant
     std::vector<Value> cells_;                  // the ensemble, as hex_holes.holon's cell states
     std::vector<std::uint8_t> class_;           // class: 0 stays filled, 1 stays empty, 2 to fill, 3 to empty
     std::vector<std::int32_t> holeAt_;          // per hole centre: its hole's id; -1 elsewhere
@@ -117,6 +126,8 @@ private:
     std::int64_t classSize_[4] = {}, classCorrect_[4] = {};
     std::int64_t modules_ = 0, liveHoles_ = 0;
     std::int64_t holeBudget_ = 0;               // (target area - modules) / 7: the holes that fill the target exactly
+    std::int64_t growthDemand_ = 0;             // --balance: growth nodes this timestep that the budget held back
+    std::int64_t deletionLicences_ = 0;         // --balance: deletions below the budget still allowed this timestep
     SculptCounts counts_;
     // Offsets (index steps): ring 1, disk of radius 1 and 2, ring 2 and 3, radius-3 disk, and per
     // direction the shepherds ordered by how far they lie toward the direction.

@@ -21,12 +21,13 @@ SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const 
     SculptResult result;
     result.modules = sculptor.modules();
     result.startHoles = sculptor.holes();
+    result.holeBudget = sculptor.holeBudget();
     result.triRegions = static_cast<int>(plan.regions.size());
     result.series.reserve(setup.steps);
     for (int t = 0; t < setup.steps; ++t) {
         sculptor.step();
         const SculptSample s{static_cast<float>(sculptor.completeness()), static_cast<float>(sculptor.stability()),
-                             static_cast<float>(sculptor.compliance())};
+                             static_cast<float>(sculptor.compliance()), static_cast<std::int32_t>(sculptor.holes())};
         result.series.push_back(s);
         result.maxCompleteness = std::max<double>(result.maxCompleteness, s.completeness);
         result.maxStability = std::max<double>(result.maxStability, s.stability);

@@ -12,10 +12,11 @@ namespace holon::planner::hex {
 
 struct SculptSample {
     float completeness, stability, compliance;
+    std::int32_t holes;  // alive after the timestep
 };
 
 struct SculptResult {
-    std::int64_t modules = 0, startHoles = 0, endHoles = 0, islands = 0;
+    std::int64_t modules = 0, startHoles = 0, endHoles = 0, holeBudget = 0, islands = 0;
     int steps = 0, triRegions = 0;
     double maxCompleteness = 0, maxStability = 0, maxCompliance = 0, finalCompliance = 0, seconds = 0;
     SculptCounts counts;

@@ -73,6 +73,25 @@ TEST_CASE("every timestep conserves the modules and keeps every hole and its she
     }
 }
 
+TEST_CASE("holon's improvements sculpt all three plans to at least 99.5% compliance with no module cut off") {
+    // The issue's target is 99% and zero islands in all 12 experiments (README: 99.9% and more over
+    // 10 repetitions); the smallest arrays, where one wrong point weighs most, are the quick test.
+    for (const char* plan : {"square T", "T square", "rectangle circle"}) {
+        CAPTURE(plan);
+        const std::string p = plan;
+        SculptSetup setup;
+        setup.from = p.substr(0, p.find(' ')), setup.to = p.substr(p.find(' ') + 1);
+        setup.size = 100, setup.steps = 4000;
+        SculptOptions& o = setup.options;
+        o.dropOverhangs = o.flexibleGrowth = o.roll = o.deleteOverflow = o.growInside = o.keepConnected = o.migrate = o.balance = true;
+        const SculptResult r = runSculpt(setup);
+        CHECK(r.maxCompliance >= 0.995);
+        CHECK(r.islands == 0);
+        CHECK(r.counts.migrated > 0);
+        CHECK(r.endHoles <= r.holeBudget);  // --balance: creation stops at the budget
+    }
+}
+
 TEST_CASE("tri-regions: growth where filling dominates, every changing point covered") {
     const HexArray array(80);
     const auto source = sculptShape(array, "square", "--from"), target = sculptShape(array, "T", "--to");
