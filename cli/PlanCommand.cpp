@@ -51,19 +51,26 @@ std::optional<planner::Vec> parseCell(const std::string& text) {
     return v;
 }
 
-constexpr std::size_t kMaxDiskMetamodules = 200;  // every move is searched and replayed; 145 metamodules take minutes
+constexpr std::size_t kMaxDiskMetamodules = 500;  // every move is written out, about 2,300 per template (80 bytes each), and replayed
 
 /// --hex-disks: the plan's disk moves (JSON Lines), start and end pictures, and an independent
 /// replay of every move. Returns false when a template had no disk motion or the replay failed.
 bool writeDisks(const std::string& dir, const planner::hex::DiskMetamodules& disks, const planner::Execution& execution, bool failed) {
     std::filesystem::create_directories(dir);
+    // Millions of lines for a few dozen metamodules: written directly (rule names are identifiers).
     std::ofstream moves(dir + "/disk_moves.jsonl");
-    for (const planner::hex::DiskMove& m : disks.moves())
-        moves << nlohmann::json{{"instance", m.instance}, {"rule", m.rule}, {"from", {m.from.x, m.from.y}}, {"to", {m.to.x, m.to.y}}, {"pivot", {m.pivot.x, m.pivot.y}}}.dump()
-              << '\n';
+    std::string line;
+    for (const planner::hex::DiskMove& m : disks.moves()) {
+        const auto pair = [&](planner::Vec v) { line += '[' + std::to_string(v.x) + ',' + std::to_string(v.y) + ']'; };
+        line = "{\"instance\":" + std::to_string(m.instance) + ",\"rule\":\"" + m.rule + "\",\"from\":";
+        pair(m.from), line += ",\"to\":", pair(m.to), line += ",\"pivot\":", pair(m.pivot), line += "}\n";
+        moves << line;
+    }
     std::ofstream(dir + "/disks.svg") << planner::hex::disksSvg({{"start", disks.startDisks()}, {"end", disks.disks()}});
-    std::cout << "  hex disks: " << disks.side() << "x" << disks.side() << " disks per metamodule slot, " << disks.disksPerUnit() << " per unit of mass; "
-              << disks.moves().size() << " pivot moves, in " << dir << "/disk_moves.jsonl and disks.svg\n";
+    std::ofstream(dir + "/creation.svg") << planner::hex::sequenceSvg(disks.design(), 0, 6);
+    std::cout << "  hex disks: " << disks.side() << "x" << disks.side() << " disks per metamodule slot, " << disks.disksPerUnit()
+              << " per unit of mass (the ring); creation " << disks.design().base(0).size() << " pivot moves; " << disks.moves().size() << " pivot moves in all, in "
+              << dir << "/disk_moves.jsonl, disks.svg and creation.svg\n";
     if (failed) {
         std::cout << "  hex disks FAILED: " << disks.failure() << '\n';
         return false;
@@ -101,7 +108,7 @@ int run(const PlanArgs& a) {
     bool disksFailed = false;
     if (!a.hexDisks.empty()) {
         if (problem.start.cells.size() + problem.target.cells.size() > kMaxDiskMetamodules)
-            throw InputError("--hex-disks: at most " + std::to_string(kMaxDiskMetamodules) + " metamodules in start and target together (every disk move is replayed and checked); use a smaller --scale");
+            throw InputError("--hex-disks: at most " + std::to_string(kMaxDiskMetamodules) + " metamodules in start and target together (every disk move, about 2,300 a template, is written out and replayed); use a smaller --scale");
         disks = std::make_unique<planner::hex::DiskMetamodules>(problem);
     }
     planner::RunObserver observer;
