@@ -10,7 +10,13 @@
 #  4. column collapse, every gravity and order, from an 8-module blob (112,668 states) and around a
 #     hole: the mass stays connected and the hole whole;
 #  5. hole creation from a blob where three growth nodes compete: every hole made is whole, the
-#     module count kept; and for every configuration of hex:r3 (Z3).
+#     module count kept; and for every configuration of hex:r3 (Z3);
+#  6. holon's migration (hex_migrate.holon): a wall one module thick outside the target, and four
+#     modules above a slot one cell wide: every interleaving keeps every hole whole and the mass in
+#     one piece. goal_reachable fails in some states: left to itself, `advance` moves voids inward as
+#     well as out (holon hex fires it only outward, a non-local choice); without `advance` the wall
+#     drains from every state it reaches, and the slot fills only with it
+#     (tests/checker/PropertiesTest.cpp).
 # Every trace is replayed through the reference interpreter. Needs a build (bash scripts/build).
 set -u
 cd "$(dirname "$0")/../.."
@@ -36,4 +42,8 @@ echo
     --property holes --property mass_conservation
 echo
 "$holon" verify rules/library/hex_growth.holon --region hex:r3
+echo
+"$holon" check rules/library/hex_migrate.holon --region hex:r3 --from $in/wall.txt --input target=$in/lower_rows.txt | sed -n '1,9p'
+echo
+"$holon" check rules/library/hex_migrate.holon --region hex:r3 --from $in/slot.txt --input target=$in/below_row0.txt | sed -n '1,9p'
 echo "(pictures in $out/)"

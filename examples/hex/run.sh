@@ -19,7 +19,8 @@ for plan in "square T" "T square" "rectangle circle"; do
     read -r mm _ <<<"$(field completeness <<<"$out")"; read -r sm _ <<<"$(field stability <<<"$out")"
     read -r im is <<<"$(field islands <<<"$out")"; read -r sec _ <<<"$(field seconds <<<"$out")"
     tri=$(sed -n 's/.*"tri_regions":\([0-9]*\).*/\1/p' <<<"$out")
-    printf "| %s -> %s | %d | %.0f | %s | %.2f (%.2f) | %.2f | %.2f | %.1f (%.1f) | %.1f |\n" "$from" "$to" "$n" "$mod" "$tri" \
-      "$(echo "$cm*100" | bc -l)" "$(echo "$cs*100" | bc -l)" "$(echo "$mm*100" | bc -l)" "$(echo "$sm*100" | bc -l)" "$im" "$is" "$sec"
+    # awk, not bc: the JSON may print a standard deviation as 1.2e-05
+    awk -v f="$from" -v t="$to" -v n="$n" -v mod="$mod" -v tri="$tri" -v cm="$cm" -v cs="$cs" -v mm="$mm" -v sm="$sm" -v im="$im" -v is="$is" -v sec="$sec" \
+      'BEGIN { printf "| %s -> %s | %d | %.0f | %s | %.2f (%.2f) | %.2f | %.2f | %.1f (%.1f) | %.1f |\n", f, t, n, mod, tri, 100*cm, 100*cs, 100*mm, 100*sm, im, is, sec }' 
   done
 done
