@@ -140,7 +140,8 @@ int run(HexArgs a) {
                   << "% (std " << 100 * compliance.std << ")\n  max completeness " << 100 * completeness.mean << "% (std " << 100 * completeness.std
                   << ")\n  max stability " << 100 * stability.mean << "% (std " << 100 * stability.std << ")\n  islands " << islands.mean
                   << " modules (std " << islands.std << ")\n  seconds per run " << seconds.mean << '\n'
-                  << "  first run: " << runs[0].counts.created << " holes created, " << runs[0].counts.deleted << " deleted, " << runs[0].startHoles
+                  << "  first run: " << runs[0].counts.created << " holes created, " << runs[0].counts.deleted << " deleted ("
+                  << runs[0].counts.surplusDeleted << " as surplus), " << runs[0].startHoles
                   << " at start, " << runs[0].endHoles << " at end (" << runs[0].holeBudget << " fill the target exactly); " << runs[0].counts.collapsed << " collapses, " << runs[0].counts.steered << " steered, " << runs[0].counts.migrated << " migrations\n"
                   << "  first run's last timestep: " << runs[0].residue.outside << " modules outside the target, " << runs[0].residue.emptyInside
                   << " target points empty (" << runs[0].residue.walledIn << " walled in), " << runs[0].residue.holeCellsOutside << " hole cells outside\n";

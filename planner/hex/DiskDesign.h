@@ -50,8 +50,6 @@ public:
     /// axial coordinates with slot a's origin at `origin`. Empty with ok = false if the levels are
     /// not one unit apart.
     std::vector<PivotMove> sequence(int a0, int b0, int a1, int b1, bool alongY, Vec origin, bool& ok) const;
-    /// Moves per base sequence (a unit from level k + 1 in A... ), for reports.
-    std::size_t movesFor(int receiverLevel) const { return base_[receiverLevel].size(); }
     /// The base sequence with the receiver at `receiverLevel` (B east of A, A at the origin).
     const std::vector<PivotMove>& base(int receiverLevel) const { return base_[receiverLevel]; }
 

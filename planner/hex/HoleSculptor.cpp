@@ -488,7 +488,6 @@ std::int64_t HoleSculptor::islands() const {
 
 SculptResidue HoleSculptor::residue() const {
     SculptResidue r;
-    r.holes = liveHoles_;
     // Empty points reachable from an empty point outside the target without crossing the mass.
     std::vector<std::uint8_t> open(cells_.size(), 0);
     std::vector<std::int64_t> stack;

@@ -34,9 +34,9 @@ struct SculptOptions {
 
 /// Where the wrong lattice points are (compliance counts them): modules outside the target, target
 /// points empty (of those, how many no empty path joins to the empty points outside the target:
-/// voids walled in by the mass), hole cells outside the target, and the holes alive.
+/// voids walled in by the mass), and hole cells outside the target.
 struct SculptResidue {
-    std::int64_t outside = 0, emptyInside = 0, walledIn = 0, holeCellsOutside = 0, holes = 0;
+    std::int64_t outside = 0, emptyInside = 0, walledIn = 0, holeCellsOutside = 0;
 };
 
 struct SculptCounts {
