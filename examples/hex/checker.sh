@@ -16,7 +16,8 @@
 #     one piece. goal_reachable fails in some states: left to itself, `advance` moves voids inward as
 #     well as out (holon hex fires it only outward, a non-local choice); without `advance` the wall
 #     drains from every state it reaches, and the slot fills only with it
-#     (tests/checker/PropertiesTest.cpp).
+#     (tests/checker/PropertiesTest.cpp); for every configuration of hex:r3 (Z3) both rules keep
+#     every hole whole and the mass in one piece.
 # Every trace is replayed through the reference interpreter. Needs a build (bash scripts/build).
 set -u
 cd "$(dirname "$0")/../.."
@@ -46,4 +47,6 @@ echo
 "$holon" check rules/library/hex_migrate.holon --region hex:r3 --from $in/wall.txt --input target=$in/lower_rows.txt | sed -n '1,9p'
 echo
 "$holon" check rules/library/hex_migrate.holon --region hex:r3 --from $in/slot.txt --input target=$in/below_row0.txt | sed -n '1,9p'
+echo
+"$holon" verify rules/library/hex_migrate.holon --region hex:r3
 echo "(pictures in $out/)"

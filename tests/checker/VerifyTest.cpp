@@ -307,6 +307,14 @@ TEST_CASE("hex growth makes whole holes for every configuration of hex:r3, keepi
     CHECK(result(r, "mass_conservation").verdict == Verdict::Holds);
 }
 
+TEST_CASE("hex migration keeps every hole whole and the mass in one piece for every configuration of hex:r2") {
+    test::World w(rules::librarySystem("hex_migrate"), "hex:r2");
+    const auto r = prove(w, {"holes", "one_mass", "mass_conservation"});
+    CHECK(result(r, "holes").verdict == Verdict::Holds);
+    CHECK(result(r, "one_mass").verdict == Verdict::Holds);  // the constraint filters every cutting move
+    CHECK(result(r, "mass_conservation").verdict == Verdict::Holds);
+}
+
 namespace {
 
 /// planner_general2 on square:3x2 from one F creator, one U creator and a U destroyer outside the
