@@ -2,12 +2,17 @@
 // of slots A (west) and B (east) is the whole world of the search: a move is allowed only if both
 // cells next to both its ends lie in the pair (so the pivot rule never reads a neighbouring slot),
 // the pair's disks are one connected set after it, and it leaves the rings alone outside the door.
-// A sequence has three phases: the door's disks roll into the pockets beside it, the payload unit
-// rolls from A's pocket into B's (B's ring, when B was empty), and the parked disks close the door.
-// Each disk goes by a shortest pivot path (breadth-first search with the disk lifted). Disks leave
-// A nearest the door first and fill B farthest from the door first, so no later disk must pass an
-// earlier one. The payload is placed in whole orbits of the slot's symmetries (half turn, mirror
-// q <-> r), so the layouts are the same seen from every side and one search serves four directions.
+// A sequence has three phases. The door's three disks on each side roll into their own pocket
+// (not right beside the door, where a parked disk would rest on the next door disk). The unit
+// moves: each disk by a shortest pivot path (breadth-first search with the disk lifted), leaving A
+// nearest the door first and filling B in the reverse of an order in which B's new disks could
+// leave through the open door one by one, so that every target is reachable when its turn comes.
+// The doors close, B's first, from B's own parked disks or, when B was empty, from A through A's
+// door; top down, since once its other cells are filled only the lowest door cell can still be
+// entered from A. The payload is placed in whole orbits of the slot's symmetries (half turn,
+// mirror q <-> r), so the layouts are the same seen from every side and one search serves all four
+// directions. The smallest odd side (and, for it, the smallest free zone around the doors) for
+// which every sequence is found is the design.
 
 #include "planner/hex/DiskDesign.h"
 
@@ -191,6 +196,12 @@ bool DiskDesign::build(int s, int doorZone) {
             return i == 0 || i == s - 1 || v.y == 0 || v.y == s - 1;
         };
         const Vec doorway{s, m, 0};
+        const auto nearDoor = [&](Vec c) {
+            for (const auto* cells : {&doorA, &doorB})
+                for (Vec e : *cells)
+                    if (distance(c, e) < 2) return true;
+            return false;
+        };
         // Phase 1: the door's disks roll into their own pocket, onto free cells no goal needs.
         std::vector<Vec> parked;
         for (const auto* door : {&doorA, &doorB})
@@ -201,13 +212,6 @@ bool DiskDesign::build(int s, int doorZone) {
                 const bool cuts = !pair.connected();
                 pair.set(d, true);
                 if (cuts) return false;
-                // Not next to the door: a disk parked there would rest on the door's next disk.
-                const auto nearDoor = [&](Vec c) {
-                    for (const auto* cells : {&doorA, &doorB})
-                        for (Vec e : *cells)
-                            if (distance(c, e) < 2) return true;
-                    return false;
-                };
                 const auto moves = pair.path(d, [&](Vec c) { return inA(c) != a || onRing(c) || nearDoor(c) || contains(goal, c) ? -1 : distance(c, d); });
                 if (moves.empty()) return false;
                 commit(moves);
