@@ -8,7 +8,6 @@
 #include "planner/hex/HoleSculptor.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <deque>
 #include <stdexcept>
