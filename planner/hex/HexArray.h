@@ -58,6 +58,24 @@ private:
     std::vector<std::int64_t> points_;
 };
 
+/// Hops from `sources` (0) to every cell reachable through cells where `passable(next, from)`
+/// holds, by breadth-first search in layers, the sources in the order given; -1 where not reached.
+/// `last`, when given, receives the last cell reached (in that order).
+template <class Passable>
+std::vector<std::int32_t> hopsFrom(const HexArray& array, std::vector<std::int64_t> sources, Passable passable, std::int64_t* last = nullptr) {
+    std::vector<std::int32_t> hops(static_cast<std::size_t>(array.size()), -1);
+    for (std::int64_t c : sources) hops[c] = 0;
+    std::vector<std::int64_t> next;
+    for (std::int32_t level = 1; !sources.empty(); ++level, sources.swap(next)) {
+        if (last) *last = sources.back();
+        next.clear();
+        for (std::int64_t c : sources)
+            for (int d = 0; d < 6; ++d)
+                if (const std::int64_t n = c + array.step(d); hops[n] < 0 && passable(n, c)) hops[n] = level, next.push_back(n);
+    }
+    return hops;
+}
+
 /// Axial offsets of the cells at exactly / at most distance r from the origin.
 std::vector<Vec> hexRing(int r);
 std::vector<Vec> hexDisk(int r);

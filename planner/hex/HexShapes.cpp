@@ -53,6 +53,9 @@ std::vector<std::uint8_t> readPicture(const HexArray& array, const std::string& 
     return shape;
 }
 
+
+}  // namespace
+
 bool connected(const HexArray& array, const std::vector<std::uint8_t>& shape) {
     std::vector<std::uint8_t> seen(shape.size(), 0);
     std::vector<std::int64_t> stack;
@@ -73,8 +76,6 @@ bool connected(const HexArray& array, const std::vector<std::uint8_t>& shape) {
         }
     return reached == total;
 }
-
-}  // namespace
 
 std::vector<std::uint8_t> sculptShape(const HexArray& array, const std::string& spec, const std::string& role) {
     std::vector<std::uint8_t> shape;

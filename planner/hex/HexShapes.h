@@ -15,6 +15,9 @@ namespace holon::planner::hex {
 /// that is empty or not connected.
 std::vector<std::uint8_t> sculptShape(const HexArray& array, const std::string& spec, const std::string& role);
 
+/// Whether the filled lattice points form one connected set (six neighbours); true when none are.
+bool connected(const HexArray& array, const std::vector<std::uint8_t>& shape);
+
 /// The number of filled lattice points.
 std::int64_t filledCount(const HexArray& array, const std::vector<std::uint8_t>& shape);
 

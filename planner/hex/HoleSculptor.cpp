@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <stdexcept>
 
 namespace holon::planner::hex {
@@ -26,21 +25,14 @@ std::int64_t deepestCell(const HexArray& array, const std::vector<std::uint8_t>&
     bool meet = false;
     for (std::int64_t i : array.points()) meet |= source[i] && target[i];
     for (std::int64_t i : array.points()) mask[i] = source[i] && (target[i] || !meet);
-    std::vector<int> depth(array.size(), -1);
-    std::deque<std::int64_t> queue;
+    std::vector<std::int64_t> edge;
     for (std::int64_t i : array.points()) {
-        bool edge = false;
-        for (int d = 0; d < 6; ++d) edge |= !mask[i + array.step(d)];
-        if (mask[i] && edge) depth[i] = 0, queue.push_back(i);
+        bool open = false;
+        for (int d = 0; d < 6; ++d) open |= !mask[i + array.step(d)];
+        if (mask[i] && open) edge.push_back(i);
     }
-    std::int64_t deepest = queue.front();
-    while (!queue.empty()) {
-        const std::int64_t c = queue.front();
-        queue.pop_front();
-        deepest = c;
-        for (int d = 0; d < 6; ++d)
-            if (const std::int64_t m = c + array.step(d); mask[m] && depth[m] < 0) depth[m] = depth[c] + 1, queue.push_back(m);
-    }
+    std::int64_t deepest = edge.front();
+    hopsFrom(array, edge, [&](std::int64_t n, std::int64_t) { return mask[n] != 0; }, &deepest);
     return deepest;
 }
 
@@ -90,21 +82,13 @@ HoleSculptor::HoleSculptor(const HexArray& array, const std::vector<std::uint8_t
     random_.shuffle(activePoints_);
 
     // d_near by breadth-first search from the target's perimeter; d_max over the source's perimeter.
-    std::vector<int> hops(array.size(), -1);
-    std::deque<std::int64_t> queue;
+    std::vector<std::int64_t> perimeter;
     for (std::int64_t i : array.points()) {
         bool edge = false;
         for (int d = 0; d < 6; ++d) edge |= target[i + array.step(d)] != target[i];
-        if (edge && target[i]) hops[i] = 0, queue.push_back(i);
+        if (edge && target[i]) perimeter.push_back(i);
     }
-    while (!queue.empty()) {
-        const std::int64_t c = queue.front();
-        queue.pop_front();
-        for (int d = 0; d < 6; ++d) {
-            const std::int64_t m = c + array.step(d);
-            if (array.inside(m) && hops[m] < 0) hops[m] = hops[c] + 1, queue.push_back(m);
-        }
-    }
+    const std::vector<std::int32_t> hops = hopsFrom(array, perimeter, [&](std::int64_t n, std::int64_t) { return array.inside(n); });
     for (std::int64_t i : array.points()) {
         nearPerimeter_[i] = std::max(hops[i], 1);
         bool edge = false;
@@ -488,23 +472,16 @@ std::int64_t HoleSculptor::islands() const {
 SculptResidue HoleSculptor::residue() const {
     SculptResidue r;
     // Empty points reachable from an empty point outside the target without crossing the mass.
-    std::vector<std::uint8_t> open(cells_.size(), 0);
-    std::vector<std::int64_t> stack;
+    std::vector<std::int64_t> outsideEmpty;
     for (std::int64_t i : array_->points())
-        if (!filled(i) && !(*target_)[i]) open[i] = 1, stack.push_back(i);
-    while (!stack.empty()) {
-        const std::int64_t c = stack.back();
-        stack.pop_back();
-        for (int d = 0; d < 6; ++d) {
-            const std::int64_t m = c + array_->step(d);
-            if (array_->inside(m) && !open[m] && !filled(m)) open[m] = 1, stack.push_back(m);
-        }
-    }
+        if (!filled(i) && !(*target_)[i]) outsideEmpty.push_back(i);
+    const std::vector<std::int32_t> open =
+        hopsFrom(*array_, outsideEmpty, [&](std::int64_t n, std::int64_t) { return array_->inside(n) && !filled(n); });
     for (std::int64_t i : array_->points()) {
         const bool inTarget = (*target_)[i] != 0;
         if (module(i) && !inTarget) ++r.outside;
         if (holeCell(i) && !inTarget) ++r.holeCellsOutside;
-        if (!filled(i) && inTarget) ++r.emptyInside, r.walledIn += !open[i];
+        if (!filled(i) && inTarget) ++r.emptyInside, r.walledIn += open[i] < 0;
     }
     return r;
 }

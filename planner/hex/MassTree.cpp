@@ -9,7 +9,8 @@
 // shortest-path search that starts from their neighbours outside the lost set; one that cannot be
 // reached was cut off (every cell of a cut-off piece has all its parents among the emptied or the
 // lost cells), and the change is refused. So the answer is exact whenever the lost set fits the
-// limit, and the potential stays an upper bound on the true hop count, refreshed by rebuild().
+// limit. The potential is the true hop count after rebuild() and an upper bound on it as changes
+// are made; holon hex does not refresh it during a run.
 
 #include "planner/hex/MassTree.h"
 
@@ -34,22 +35,10 @@ MassTree::MassTree(const HexArray& array, std::function<bool(std::int64_t)> fill
 
 void MassTree::rebuild(std::int64_t root) {
     root_ = root;
-    std::fill(d_.begin(), d_.end(), -1);
     if (!filled_(root)) throw std::logic_error("MassTree: the root is not filled");
-    std::vector<std::int64_t> frontier{root}, next;
-    d_[root] = 0;
-    std::int64_t reached = 1;
-    for (std::int32_t level = 1; !frontier.empty(); ++level, frontier.swap(next)) {
-        next.clear();
-        for (std::int64_t c : frontier)
-            for (int k = 0; k < 6; ++k) {
-                const std::int64_t n = c + array_->step(k);
-                if (d_[n] < 0 && filled_(n)) d_[n] = level, next.push_back(n), ++reached;
-            }
-    }
-    std::int64_t filled = 0;
-    for (std::int64_t i : array_->points()) filled += filled_(i);
-    if (filled != reached) throw std::logic_error("MassTree: the mass is not connected");
+    d_ = hopsFrom(*array_, {root}, [&](std::int64_t n, std::int64_t) { return filled_(n); });
+    for (std::int64_t i : array_->points())
+        if (filled_(i) && d_[i] < 0) throw std::logic_error("MassTree: the mass is not connected");
 }
 
 bool MassTree::filledAfter(std::int64_t i) const {
@@ -144,7 +133,6 @@ bool MassTree::change(const std::int64_t* emptied, int emptiedCount, const std::
     }
     for (std::int64_t c : lost)
         if (d_[c] == kUnreached) return finish(false);  // cut off from the root
-    reseated_ += static_cast<std::int64_t>(lost.size());
     for (int e = 0; e < emptiedCount; ++e) setD(emptied[e], -1);
     return finish(true);
 }

@@ -36,8 +36,6 @@ public:
 
     /// The potential of a filled cell (-1 for an empty one).
     std::int32_t distance(std::int64_t i) const { return d_[i]; }
-    /// Cells whose parents were lost and re-seated so far (a measure of the work done).
-    std::int64_t reseated() const { return reseated_; }
 
     static constexpr int kReseatLimit = 4096;
 
@@ -46,7 +44,7 @@ private:
 
     const HexArray* array_;
     std::function<bool(std::int64_t)> filled_;
-    std::int64_t root_ = -1, reseated_ = 0;
+    std::int64_t root_ = -1;
     std::vector<std::int32_t> d_;
     // Scratch for one change: 1 emptied, 2 filled now, 3 lost its parents (being re-seated).
     std::vector<std::uint8_t> mark_;

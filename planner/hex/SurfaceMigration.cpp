@@ -36,40 +36,21 @@ void HoleSculptor::migrate() {
             if (const std::int64_t n = i + array_->step(d); array_->inside(n) && !filled(n) && !(*target_)[n]) return true;
         return false;
     };
-    towardEmpty_.assign(cells_.size(), -1);
     if (arrival_.empty()) arrival_.assign(cells_.size(), Arrival{});
-    std::vector<std::int64_t> frontier, next, movers, enclosed;
+    std::vector<std::int64_t> emptyTarget, movers, enclosed, open;
     for (std::int64_t i : array_->points()) {
-        if (!filled(i) && (*target_)[i]) towardEmpty_[i] = 0, frontier.push_back(i);
+        if (!filled(i) && (*target_)[i]) emptyTarget.push_back(i);
+        if (!filled(i) && !(*target_)[i] && touchesMass(i)) open.push_back(i);
         if (module(i) && !(*target_)[i]) movers.push_back(i);
     }
+    towardEmpty_ = hopsFrom(*array_, emptyTarget, [&](std::int64_t n, std::int64_t from) { return array_->inside(n) && !filled(n) && touchesMass(from); });
     // Enclosed points (empty target points no empty point outside the target touches) and, when
     // there are any, every point's hops to the open surface (empty points outside the target that
     // touch the mass), the potential a void descends.
-    for (std::int64_t r : frontier)
+    for (std::int64_t r : emptyTarget)
         if (!touchesOutside(r)) enclosed.push_back(r);
-    std::vector<std::int32_t> toOpen;
-    if (!enclosed.empty()) {
-        toOpen.assign(cells_.size(), -1);
-        std::vector<std::int64_t> layer, following;
-        for (std::int64_t i : array_->points())
-            if (!filled(i) && !(*target_)[i] && touchesMass(i)) toOpen[i] = 0, layer.push_back(i);
-        for (std::int32_t hops = 1; !layer.empty(); ++hops, layer.swap(following)) {
-            following.clear();
-            for (std::int64_t c : layer)
-                for (int d = 0; d < 6; ++d)
-                    if (const std::int64_t n = c + array_->step(d); toOpen[n] < 0 && array_->inside(n)) toOpen[n] = hops, following.push_back(n);
-        }
-    }
-    for (std::int32_t hops = 1; !frontier.empty(); ++hops, frontier.swap(next)) {
-        next.clear();
-        for (std::int64_t c : frontier)
-            for (int d = 0; d < 6; ++d) {
-                const std::int64_t n = c + array_->step(d);
-                if (towardEmpty_[n] >= 0 || !array_->inside(n) || filled(n) || !touchesMass(c)) continue;
-                towardEmpty_[n] = hops, next.push_back(n);
-            }
-    }
+    const std::vector<std::int32_t> toOpen =
+        enclosed.empty() ? std::vector<std::int32_t>{} : hopsFrom(*array_, open, [&](std::int64_t n, std::int64_t) { return array_->inside(n); });
 
     random_.shuffle(movers);
     const BoxEngine& engine = rules_->migrateEngine();

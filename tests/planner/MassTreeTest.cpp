@@ -4,6 +4,7 @@
 // have a neighbour one hop nearer the root.
 
 #include "planner/Random.h"
+#include "planner/hex/HexShapes.h"
 #include "planner/hex/MassTree.h"
 
 #include <doctest/doctest.h>
@@ -13,24 +14,6 @@
 using namespace holon::planner::hex;
 
 namespace {
-
-bool connectedBySearch(const HexArray& a, const std::vector<std::uint8_t>& filled) {
-    std::vector<std::uint8_t> seen(filled.size(), 0);
-    std::vector<std::int64_t> stack;
-    std::int64_t total = 0, reached = 0;
-    for (std::int64_t i : a.points())
-        if (filled[i]) {
-            ++total;
-            if (stack.empty() && reached == 0) stack.push_back(i), seen[i] = 1;
-            while (!stack.empty()) {
-                const std::int64_t c = stack.back();
-                stack.pop_back(), ++reached;
-                for (int k = 0; k < 6; ++k)
-                    if (const std::int64_t n = c + a.step(k); filled[n] && !seen[n]) seen[n] = 1, stack.push_back(n);
-            }
-        }
-    return reached == total;
-}
 
 void requireParents(const HexArray& a, const MassTree& tree, const std::vector<std::uint8_t>& filled) {
     for (std::int64_t i : a.points()) {
@@ -80,7 +63,7 @@ TEST_CASE("MassTree accepts a change exactly when the mass stays connected") {
             std::vector<std::uint8_t> after = filled;
             for (std::int64_t c : emptied) after[c] = 0;
             for (std::int64_t c : filledNow) after[c] = 1;
-            const bool expected = connectedBySearch(a, after);
+            const bool expected = connected(a, after);  // HexShapes: a search of the whole mass
             REQUIRE(tree.change(emptied, filledNow) == expected);
             if (expected) filled = after, ++accepted;
             else ++refused;
