@@ -19,7 +19,6 @@
 
 #include "planner/Problem.h"
 
-#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -47,8 +46,9 @@ public:
     const std::vector<Vec>& layout(int level) const { return layouts_[level]; }
     /// The moves that take slots a (lower coordinate along the axis) and b (a + 1 along x, or
     /// along y when `alongY`) from levels (a0, b0) to (a1, b1), one unit changing hands; in global
-    /// axial coordinates with slot a's origin at `origin`. Empty with ok = false if the levels are
-    /// not one unit apart.
+    /// axial coordinates with slot a's origin at `origin`. Empty with ok = false if no sequence
+    /// joins them: the levels are not one unit apart, or neither the giver before nor the receiver
+    /// after holds the heaviest level (C), which every template of general_n has.
     std::vector<PivotMove> sequence(int a0, int b0, int a1, int b1, bool alongY, Vec origin, bool& ok) const;
     /// The base sequence with the receiver at `receiverLevel` (B east of A, A at the origin).
     const std::vector<PivotMove>& base(int receiverLevel) const { return base_[receiverLevel]; }

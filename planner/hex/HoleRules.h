@@ -1,10 +1,10 @@
 #pragma once
 // The lattice rewrites of hole motion, compiled for one hex array: rules/library/hex_holes.holon
 // (hole move, deletion), hex_growth.holon (hole creation), hex_collapse.holon (column collapse) and
-// hex_migrate.holon (surface migration) placed on the array's board by the planner's compiled engine. The sculptor's ensemble is the
-// engines' shared cell array, and a hole moves, is created or a column collapses by applying the
-// rule's instance (seed 003 §IV-D, §IV-E, §IV-F): the same rules `holon check` and `holon verify`
-// examine.
+// hex_migrate.holon (surface migration) placed on the array's board by the planner's compiled
+// engine. The sculptor's ensemble is the engines' shared cell array, and a hole moves, is created
+// or a column collapses by applying the rule's instance (seed 003 §IV-D, §IV-E, §IV-F): the same
+// rules `holon check` and `holon verify` examine.
 
 #include "planner/BoxEngine.h"
 #include "planner/hex/HexArray.h"

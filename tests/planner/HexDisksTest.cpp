@@ -52,14 +52,13 @@ TEST_CASE("every motion sequence of the hex disk design holds whatever the neigh
         for (int level = 1; level <= units; ++level) CHECK(design.layout(level).size() == static_cast<std::size_t>(level * design.disksPerUnit()));
         // Every move of every base sequence rolls within the pair: both cells next to both its
         // ends lie in slots A or B, so no neighbouring slot's content can matter.
+        const rules::Lattice& hex = rules::Lattice::get(rules::LatticeKind::Hex2D);
         for (int k = 0; k < units; ++k)
             for (const auto& m : design.base(k))
                 for (int d = 0; d < 6; ++d)
-                    if (m.from + rules::Lattice::get(rules::LatticeKind::Hex2D).direction(d) == m.to) {
-                        const auto& hex = rules::Lattice::get(rules::LatticeKind::Hex2D);
+                    if (m.from + hex.direction(d) == m.to)
                         for (Vec c : {m.from + hex.direction((d + 1) % 6), m.from + hex.direction((d + 5) % 6)})
                             CHECK((c.x >= 0 && c.y >= 0 && c.x < 2 * s && c.y < s));
-                    }
         int checked = 0;
         for (const bool alongY : {false, true})
             for (int a0 = 0; a0 <= units; ++a0)
