@@ -22,6 +22,12 @@ bool CheckReport::violated() const {
     return std::any_of(properties.begin(), properties.end(), [](const PropertyResult& p) { return p.verdict == Verdict::Violated; });
 }
 
+Verdict CheckReport::overall() const {
+    Verdict v = Verdict::Holds;
+    for (const PropertyResult& p : properties) v = combine(v, p.verdict);
+    return v;
+}
+
 nlohmann::json CheckReport::toJson() const {
     nlohmann::json props = nlohmann::json::array();
     for (const PropertyResult& p : properties)

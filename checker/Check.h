@@ -30,6 +30,8 @@ struct CheckReport {
     std::size_t bytesPerState = 0;
     std::vector<PropertyResult> properties;
     bool violated() const;
+    /// Every property's verdict combined: a violation wins, then unknown.
+    Verdict overall() const;
     nlohmann::json toJson() const;
 };
 

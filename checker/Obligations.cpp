@@ -32,6 +32,12 @@ bool VerifyReport::counterexample() const {
     return false;
 }
 
+Verdict VerifyReport::overall() const {
+    Verdict v = Verdict::Holds;
+    for (const Obligation& o : obligations) v = combine(v, o.result.verdict);
+    return v;
+}
+
 nlohmann::json VerifyReport::toJson() const {
     nlohmann::json props = nlohmann::json::array();
     for (const Obligation& o : obligations)

@@ -31,6 +31,8 @@ struct VerifyReport {
     std::string system, region;
     std::vector<Obligation> obligations;
     bool counterexample() const;
+    /// Every obligation's verdict combined: a counterexample wins, then unknown.
+    Verdict overall() const;
     nlohmann::json toJson() const;
 };
 

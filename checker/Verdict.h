@@ -12,6 +12,13 @@ namespace holon::checker {
 
 enum class Verdict { Holds, Violated, Unknown };
 
+/// The verdict of several properties together: violated if any is, else unknown if any is.
+inline Verdict combine(Verdict a, Verdict b) {
+    if (a == Verdict::Violated || b == Verdict::Violated) return Verdict::Violated;
+    if (a == Verdict::Unknown || b == Verdict::Unknown) return Verdict::Unknown;
+    return Verdict::Holds;
+}
+
 /// As the explorer says it: holds, violated, unknown.
 inline std::string verdictName(Verdict v) {
     return v == Verdict::Holds ? "holds" : v == Verdict::Violated ? "violated" : "unknown";

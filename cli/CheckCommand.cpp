@@ -99,7 +99,7 @@ int run(const CheckArgs& a) {
 
     if (a.json) {
         std::cout << report.toJson().dump(2) << '\n';
-        return report.violated() ? 1 : 0;
+        return exitCodeFor(report.overall());
     }
     const auto& s = report.stats;
     std::cout << system->name << " on " << region.spec() << (a.all ? ", every legal configuration" : ", reachable from " + std::to_string(a.from.size()) + " configuration(s)") << '\n';
@@ -117,7 +117,7 @@ int run(const CheckArgs& a) {
                   << " (replayed through the reference interpreter)\n"
                   << checker::drawTraceAscii(*shown->trace, engine);
     }
-    return report.violated() ? 1 : 0;
+    return exitCodeFor(report.overall());
 }
 
 }  // namespace

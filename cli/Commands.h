@@ -1,11 +1,27 @@
 #pragma once
 // Each subcommand registers itself on the app and returns the function that runs it; the function
-// returns the process exit code (0 success, 1 a checked property does not hold, 2 bad input).
+// returns the process exit code, the same contract for every subcommand (ExitCode below).
+
+#include "checker/Verdict.h"
 
 #include <CLI/CLI.hpp>
 #include <functional>
 
 namespace holon::cli {
+
+/// 0 every requested property holds / the job is done; 1 a property does not hold / the plan did
+/// not complete; 2 bad input or usage; 3 undecided (a limit, a timeout, the solver's unknown);
+/// 4 an internal error (a bug in holon: please report it).
+enum ExitCode : int { kExitOk = 0, kExitViolated = 1, kExitBadInput = 2, kExitUndecided = 3, kExitInternal = 4 };
+
+inline int exitCodeFor(checker::Verdict v) {
+    switch (v) {
+    case checker::Verdict::Holds: return kExitOk;
+    case checker::Verdict::Violated: return kExitViolated;
+    case checker::Verdict::Unknown: return kExitUndecided;
+    }
+    return kExitInternal;
+}
 
 using Run = std::function<int()>;
 

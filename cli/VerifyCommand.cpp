@@ -78,7 +78,7 @@ int run(const VerifyArgs& a) {
     }
     if (a.json) {
         std::cout << report.toJson().dump(2) << '\n';
-        return report.counterexample() ? 1 : 0;
+        return exitCodeFor(report.overall());
     }
     std::cout << system->name << " on " << region.spec() << ": every configuration of the region"
               << (a.depth > 0 || a.reach ? " (NAME@bmcK: paths of K steps from --from; NAME@reach: every state reachable from --from)" : "")
@@ -108,7 +108,7 @@ int run(const VerifyArgs& a) {
                       << checker::drawCells(region, [&](int i) { return shownInputs[i] ? '#' : '.'; });
         }
     }
-    return report.counterexample() ? 1 : 0;
+    return exitCodeFor(report.overall());
 }
 
 }  // namespace

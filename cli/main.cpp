@@ -1,5 +1,6 @@
 // The `holon` command: one binary, a subcommand per job. Exit codes are the same for every
-// subcommand: 0 success, 1 a checked property does not hold, 2 bad input or usage.
+// subcommand (cli/Commands.h): 0 success, 1 a checked property does not hold, 2 bad input or
+// usage, 3 undecided, 4 an internal error.
 
 #include "cli/Commands.h"
 #include "rules/Error.h"
@@ -33,17 +34,20 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         app.exit(e);
-        return 2;
+        return holon::cli::kExitBadInput;
     }
     try {
         for (auto& [sub, run] : runs)
             if (sub->parsed()) return run();
     } catch (const holon::InputError& e) {
         std::cerr << "holon: error: " << e.what() << '\n';
-        return 2;
+        return holon::cli::kExitBadInput;
     } catch (const std::bad_alloc&) {
-        std::cerr << "holon: error: out of memory; choose a smaller region or a lower --max-states\n";
-        return 2;
+        std::cerr << "holon: error: out of memory before the job could finish; raise the machine's memory or lower --memory / --max-states\n";
+        return holon::cli::kExitUndecided;
+    } catch (const std::exception& e) {
+        std::cerr << "holon: internal error: " << e.what() << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+        return holon::cli::kExitInternal;
     }
-    return 2;
+    return holon::cli::kExitInternal;
 }

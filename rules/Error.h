@@ -1,5 +1,7 @@
 #pragma once
-// The one exception type holon throws for bad input or misuse; the CLI turns it into exit code 2.
+// The two exception types holon throws: InputError for bad input or misuse (the CLI's exit code 2,
+// with a message that names the place and the fix), InternalError for a bug in holon itself (exit
+// code 4, with a request for a report; never shown as bad input).
 
 #include <stdexcept>
 #include <string>
@@ -9,6 +11,11 @@ namespace holon {
 class InputError : public std::runtime_error {
 public:
     explicit InputError(const std::string& message) : std::runtime_error(message) {}
+};
+
+class InternalError : public std::logic_error {
+public:
+    explicit InternalError(const std::string& message) : std::logic_error(message) {}
 };
 
 }  // namespace holon
