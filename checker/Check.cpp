@@ -49,8 +49,8 @@ nlohmann::json CheckReport::toJson() const {
 std::vector<std::string> checkableProperties(const rules::System& system) {
     std::vector<std::string> names;
     for (const rules::Property& p : system.properties) names.push_back(p.name);
-    names.push_back("deadlock");
-    if (system.goal) names.push_back("goal_reachable");
+    // Deadlock is relative to a goal: without one, a state with no enabled rule is merely final.
+    if (system.goal) names.push_back("deadlock"), names.push_back("goal_reachable");
     return names;
 }
 
@@ -83,10 +83,57 @@ bool violatedAtNearest(PropertyResult& r, const Explorer& ex, const std::vector<
     r.verdict = Verdict::Violated;
     r.trace = traceTo(ex, first);
     r.trace->property = r.name;
-    r.summary = std::to_string(count) + " states " + which;
+    r.summary = std::to_string(count) + (count == 1 ? " state " : " states ") + which;
     r.trace->description = description;
     r.witness = {{countKey, count}, {"state", first}, {"distance", r.trace->steps.size() - 1}};
     return true;
+}
+
+/// How far a rule instance reaches, in lattice steps: the largest pattern, twice its radius (an
+/// instance touching the region lies within this of it).
+int ruleReach(const rules::Model& model) {
+    int radius = 0;
+    for (const rules::RuleShape& s : model.shapes())
+        for (rules::Vec v : s.offsets) radius = std::max(radius, std::abs(v.x) + std::abs(v.y) + std::abs(v.z));
+    return std::max(1, 2 * radius);
+}
+
+/// States with no enabled rule, outside the goal and where `assume` holds, split into deadlocks and
+/// edge effects of the bounded region: on the region grown by the rules' reach (outside cells empty,
+/// inputs false) some instance is enabled, so only the region's bound stops the system, not the
+/// design. At most kClassified states are tried on the grown region; the rest count as deadlocks.
+struct Stuck {
+    std::vector<StateId> deadlocks, edgeEffects;
+};
+
+Stuck stuckStates(const Explorer& ex, const rules::Engine& e, const rules::Expr* assume) {
+    constexpr std::size_t kClassified = 10'000;
+    const rules::Model& model = e.model();
+    const rules::Region& region = e.region();
+    const rules::Region grown = region.grown(ruleReach(model));
+    const rules::Interpreter wide(model, grown);
+    Stuck out;
+    std::size_t tried = 0;
+    for (StateId s : ex.terminal()) {
+        const auto cells = ex.cells(s);
+        if (model.system().goal && e.holds(*model.system().goal, cells.data())) continue;
+        if (assume && !e.holds(*assume, cells.data())) continue;
+        bool edge = false;
+        if (tried++ < kClassified) {
+            rules::Configuration c = wide.empty();
+            std::copy(cells.begin(), cells.end(), c.cells.begin());
+            std::copy(e.inputs().begin(), e.inputs().end(), c.inputs.begin());
+            edge = !wide.enabled(c).empty();
+        }
+        (edge ? out.edgeEffects : out.deadlocks).push_back(s);
+    }
+    return out;
+}
+
+/// What a verdict adds about edge effects: ", except 3 states stuck only at the region's edge ...".
+std::string edgeText(const Stuck& stuck) {
+    if (stuck.edgeEffects.empty()) return "";
+    return "; " + std::to_string(stuck.edgeEffects.size()) + " states are stuck only at the region's edge (a rule instance needs cells outside it)";
 }
 
 }  // namespace
@@ -98,7 +145,8 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
         if (std::find(known.begin(), known.end(), name) == known.end()) {
             std::string list;
             for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-            throw InputError("system '" + system.name + "' has no property '" + name + "'; it has: " + list);
+            throw InputError("system '" + system.name + "' has no property '" + name + "'; it has: " + list +
+                             (name == "deadlock" || name == "goal_reachable" ? " (deadlock and goal_reachable are relative to a goal: declare one with 'goal EXPR')" : ""));
         }
     auto selected = [&](const std::string& name) {
         return options.properties.empty() || std::find(options.properties.begin(), options.properties.end(), name) != options.properties.end();
@@ -239,63 +287,64 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
                 break;
             }
             r.verdict = Verdict::Violated;
-            // A livelock: a cycle made of non-decreasing steps, inside one strong component.
-            const Components scc = strongComponents(*ex, flat);
-            std::vector<int> sccSize(scc.count, 0);
-            for (StateId s : ids) ++sccSize[scc.of[s]];
-            StateId cycleAt = kNoState;
+            // Termination fails exactly when the reachable graph has a cycle through a step of a
+            // covered rule (one not excepted), whatever mix of decreasing and non-decreasing steps
+            // it takes; a cycle of excepted steps that keep the ranking is the allocator's (seed
+            // 000 Lemma 3). A cycle on which the ranking never decreases (a livelock) is shown first.
+            const Components flatScc = strongComponents(*ex, flat);
+            const Components whole = strongComponents(*ex, std::vector<char>(succ.size(), 1));
+            StateId cycleFrom = kNoState;
+            std::uint64_t cycleEdge = 0;
+            bool livelock = false;
             for (StateId s : ids)
-                if (sccSize[scc.of[s]] > 1) {
-                    cycleAt = s;
-                    break;
+                for (std::uint64_t k = row[s]; k < row[s + 1] && !livelock; ++k) {
+                    if (flat[k] && flatScc.of[succ[k]] == flatScc.of[s]) cycleFrom = s, cycleEdge = k, livelock = true;
+                    else if (cycleFrom == kNoState && !keptBy(k) && whole.of[succ[k]] == whole.of[s]) cycleFrom = s, cycleEdge = k;
                 }
-            if (cycleAt == kNoState) {
+            if (cycleFrom == kNoState) {
                 r.trace = traceWithStep(*ex, firstFrom, firstBad);
-                r.summary = std::to_string(badEdges) + " steps do not decrease it (no cycle: still terminating here)";
+                r.summary = std::to_string(badEdges) + " steps do not decrease it; the reachable graph has no cycle, so runs still terminate here";
                 r.trace->description = "the last step " + std::string(keptBy(firstBad) ? "changes" : "does not decrease") + " '" + p.name + "'";
-                r.witness = {{"non_decreasing_steps", badEdges}, {"livelock", false}};
-            } else {
-                // Lasso: reach the cycle, go round it once (a successor in the same component, then back).
-                Trace t = traceTo(*ex, cycleAt);
-                StateId nextOnCycle = kNoState;
-                for (std::uint64_t k = row[cycleAt]; k < row[cycleAt + 1]; ++k)
-                    if (flat[k] && scc.of[succ[k]] == scc.of[cycleAt]) nextOnCycle = succ[k];
-                const auto back = GraphView(*ex).shortestPath(nextOnCycle, cycleAt);
-                std::vector<StateId> loop{cycleAt, nextOnCycle};
-                loop.insert(loop.end(), back.begin() + 1, back.end());
-                Trace cycle = traceAlong(*ex, loop);
-                t.loop = static_cast<int>(t.steps.size()) - 1;
-                // ITF: the last state steps back to states[loop], so the repeated state is not written twice.
-                t.steps.insert(t.steps.end(), cycle.steps.begin() + 1, cycle.steps.end() - 1);
-                // Can a fair scheduler leave? Only if some step out of the cycle's strong component
-                // (in the whole graph) decreases the ranking.
-                const Components whole = strongComponents(*ex, std::vector<char>(succ.size(), 1));
-                bool escapable = false;
-                for (StateId s : ids)
-                    if (whole.of[s] == whole.of[cycleAt])
-                        for (std::uint64_t k = row[s]; k < row[s + 1] && !escapable; ++k) escapable = !flat[k];
-                r.trace = t;
-                r.summary = "livelock: a cycle of " + std::to_string(loop.size() - 1) + " steps on which it never decreases" +
-                            (escapable ? " (a fair scheduler can leave it)" : " (trapped: no step out of it decreases it)");
-                r.trace->description = r.summary;
-                r.witness = {{"non_decreasing_steps", badEdges}, {"livelock", true}, {"cycle", loop.size() - 1}, {"escapable", escapable}};
+                r.witness = {{"non_decreasing_steps", badEdges}, {"cycle", false}, {"livelock", false}};
+                break;
             }
+            // Lasso: reach the cycle, take its step, and come back by a shortest path inside the
+            // same strong component (of the non-decreasing steps for a livelock); a self-loop is a
+            // cycle of one step.
+            const StateId next = succ[cycleEdge];
+            std::vector<StateId> loop{cycleFrom};
+            if (next == cycleFrom) loop.push_back(cycleFrom);
+            else
+                for (StateId b : GraphView(*ex, livelock ? &flat : nullptr).shortestPath(next, cycleFrom)) loop.push_back(b);
+            const Trace cycle = traceAlong(*ex, loop);
+            Trace t = traceTo(*ex, cycleFrom);
+            t.loop = static_cast<int>(t.steps.size()) - 1;
+            // ITF: the last state steps back to states[loop], so the repeated state is not written twice.
+            t.steps.insert(t.steps.end(), cycle.steps.begin() + 1, cycle.steps.end() - 1);
+            // Can a fair scheduler leave a livelock? Only if some step from its strong component (in
+            // the whole graph) decreases the ranking; and a mixed cycle only if a step leaves its component.
+            bool escapable = false;
+            for (StateId s : ids)
+                if (whole.of[s] == whole.of[cycleFrom])
+                    for (std::uint64_t k = row[s]; k < row[s + 1] && !escapable; ++k)
+                        escapable = livelock ? !flat[k] : whole.of[succ[k]] != whole.of[s];
+            r.trace = t;
+            const std::size_t length = loop.size() - 1;
+            r.summary = "not terminating: " +
+                        (livelock ? "a cycle of " + stepCount(length) + " on which it never decreases"
+                                  : "a cycle of " + stepCount(length) + " that undoes what it decreases") +
+                        (escapable ? " (a fair scheduler can leave it)" : " (trapped: no step leaves it)");
+            r.trace->description = r.summary;
+            r.witness = {{"non_decreasing_steps", badEdges}, {"cycle", true}, {"livelock", livelock}, {"length", length}, {"escapable", escapable}};
             break;
         }
         case rules::Property::Kind::Progress: {
             r.kind = "progress";
-            for (StateId s : ex->terminal()) {
-                const auto cells = ex->cells(s);
-                if (system.goal && e.holds(*system.goal, cells.data())) continue;
-                if (!p.exprs.empty() && !e.holds(p.exprs[0], cells.data())) continue;
-                r.verdict = Verdict::Violated;
-                r.trace = traceTo(*ex, s);
-                r.summary = "no rule is enabled in a state outside the goal, after " + stepCount(r.trace->steps.size() - 1);
-                r.trace->description = "stuck outside the goal";
-                r.witness = {{"state", s}, {"distance", r.trace->steps.size() - 1}};
-                break;
-            }
-            if (r.verdict != Verdict::Violated) unknownOr(r, "some rule is enabled in every state outside the goal");
+            const Stuck stuck = stuckStates(*ex, e, p.exprs.empty() ? nullptr : &p.exprs[0]);
+            if (!violatedAtNearest(r, *ex, stuck.deadlocks, [](StateId) { return true; }, "outside the goal with no enabled rule",
+                                   "stuck outside the goal: no rule is enabled", "stuck"))
+                unknownOr(r, "some rule is enabled in every state outside the goal" + edgeText(stuck));
+            r.witness["edge_effects"] = stuck.edgeEffects.size();
             break;
         }
         case rules::Property::Kind::Holonomic:
@@ -311,15 +360,16 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
         r.seconds = since(t0);
         report.properties.push_back(std::move(r));
     }
-    if (selected("deadlock")) {
+    if (system.goal && selected("deadlock")) {
         const auto t0 = Clock::now();
         PropertyResult r;
         r.name = "deadlock";
         r.kind = "deadlock";
-        const bool found = violatedAtNearest(
-            r, *ex, ex->terminal(), [&](StateId s) { return !system.goal || !e.holds(*system.goal, ex->cells(s).data()); },
-            "with no enabled rule outside the goal", "a deadlock: no rule is enabled and the goal is not reached", "deadlocks");
-        if (!found) unknownOr(r, "every state outside the goal has an enabled rule");
+        const Stuck stuck = stuckStates(*ex, e, nullptr);
+        if (!violatedAtNearest(r, *ex, stuck.deadlocks, [](StateId) { return true; }, "with no enabled rule outside the goal",
+                               "a deadlock: no rule is enabled and the goal is not reached", "deadlocks"))
+            unknownOr(r, "every state outside the goal has an enabled rule" + edgeText(stuck));
+        r.witness["edge_effects"] = stuck.edgeEffects.size();
         r.seconds = since(t0);
         report.properties.push_back(std::move(r));
     }

@@ -45,7 +45,7 @@ std::vector<CellValue> Explorer::cells(StateId id) const {
 }
 
 StateId Explorer::addInitial(const CellValue* cells) {
-    if (complete_) throw InputError("internal: addInitial after addAllLegal, which already holds every legal configuration");
+    if (complete_) throw InternalError("addInitial after addAllLegal, which already holds every legal configuration");
     std::vector<std::uint64_t> packed(store_.layout().words());
     store_.layout().pack(cells, packed.data());
     store_.reserve(1);
@@ -73,7 +73,7 @@ StateId Explorer::find(const CellValue* cells) const {
 }
 
 void Explorer::addAllLegal() {
-    if (store_.capacityUsed() != 0) throw InputError("internal: addAllLegal on an explorer that already holds states");
+    if (store_.capacityUsed() != 0) throw InternalError("addAllLegal on an explorer that already holds states");
     const int n = engine_->region().size();
     const int a = engine_->model().alphabet().size();
     const double candidates = std::pow(static_cast<double>(a), n);

@@ -66,7 +66,7 @@ private:
 };
 
 Csr buildCsr(const Explorer& ex, const std::vector<char>* keep = nullptr) {
-    if (!ex.hasEdges()) throw InputError("internal: the graph was explored without recording edges");
+    if (!ex.hasEdges()) throw InternalError("the graph was explored without recording edges");
     const std::size_t n = ex.rowStart().size() - 1;
     const std::size_t edges = keep ? static_cast<std::size_t>(std::count(keep->begin(), keep->end(), 1)) : ex.successors().size();
     return Csr(boost::edges_are_sorted, RowEdges(ex, keep, 0), RowEdges(ex, keep, n), static_cast<Csr::vertices_size_type>(n),
@@ -75,7 +75,7 @@ Csr buildCsr(const Explorer& ex, const std::vector<char>* keep = nullptr) {
 
 /// The graph with every edge reversed: a counting sort by target.
 Csr buildReversedCsr(const Explorer& ex) {
-    if (!ex.hasEdges()) throw InputError("internal: the graph was explored without recording edges");
+    if (!ex.hasEdges()) throw InternalError("the graph was explored without recording edges");
     const auto& row = ex.rowStart();
     const auto& succ = ex.successors();
     const std::size_t n = row.size() - 1;
@@ -95,7 +95,7 @@ Csr buildReversedCsr(const Explorer& ex) {
 Components components(const Explorer& ex) {
     // Weak components by union-find over the edges (BGL's disjoint sets): no copy of the graph,
     // where a both-ways CSR for connected_components held every edge twice (pixel on 5x5: 78 M).
-    if (!ex.hasEdges()) throw InputError("internal: the graph was explored without recording edges");
+    if (!ex.hasEdges()) throw InternalError("the graph was explored without recording edges");
     const auto& row = ex.rowStart();
     const auto& succ = ex.successors();
     const std::size_t n = row.size() - 1;
@@ -149,7 +149,7 @@ struct GraphView::Impl {
     Csr graph;
 };
 
-GraphView::GraphView(const Explorer& ex) : impl_(new Impl{buildCsr(ex)}) {}
+GraphView::GraphView(const Explorer& ex, const std::vector<char>* keepEdge) : impl_(new Impl{buildCsr(ex, keepEdge)}) {}
 GraphView::~GraphView() = default;
 
 std::vector<int> GraphView::distancesFrom(StateId from) const {

@@ -24,7 +24,8 @@ std::vector<char> canReach(const Explorer& explorer, const std::vector<StateId>&
 /// The explored graph as a BGL compressed-sparse-row graph, built once for many queries.
 class GraphView {
 public:
-    explicit GraphView(const Explorer& explorer);
+    /// The whole graph, or only the edges `keepEdge` marks.
+    explicit GraphView(const Explorer& explorer, const std::vector<char>* keepEdge = nullptr);
     ~GraphView();
     /// Breadth-first distances (in steps) from a state; -1 where unreachable.
     std::vector<int> distancesFrom(StateId from) const;

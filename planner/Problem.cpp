@@ -46,7 +46,7 @@ rules::CellValue findState(const rules::Alphabet& alphabet, const std::vector<st
         }
         if (ok) return static_cast<rules::CellValue>(v);
     }
-    throw InputError("internal: the planner's start state is not in the alphabet");
+    throw InternalError("the planner's start state is not in the alphabet");
 }
 
 }  // namespace

@@ -99,7 +99,7 @@ std::optional<TransportPlan> planTransport(const Problem& problem, const std::ve
 std::int64_t transferLowerBound(const Problem& problem) {
     if (!movesResources(problem)) return -1;
     const std::optional<TransportPlan> plan = planTransport(problem, problem.cells);
-    if (!plan) throw InputError("internal: the transport problem has no solution; the mass check should have refused this problem");
+    if (!plan) throw InternalError("the transport problem has no solution; the mass check should have refused this problem");
     return plan->cost;
 }
 

@@ -429,7 +429,7 @@ void Engine::undo(CellValue* cells, int placed, const CellValue* saved) const {
 
 const Engine::Mask& Engine::predicateMask(const CellPredicate& pred) const {
     auto it = predicateIndex_.find(&pred);
-    if (it == predicateIndex_.end()) throw InputError("internal: an expression that is not part of the system was evaluated");
+    if (it == predicateIndex_.end()) throw InternalError("an expression that is not part of the system was evaluated");
     return predicateMasks_[it->second];
 }
 

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
+#include <set>
+#include <tuple>
 
 namespace holon::rules {
 
@@ -81,6 +83,23 @@ Region Region::hexagon(int radius) {
         for (int q = -radius; q <= radius; ++q)
             if (std::abs(q + r) <= radius) cells.push_back({q, r, 0});
     return Region(Lattice::get(LatticeKind::Hex2D), "hex:r" + std::to_string(radius), std::move(cells));
+}
+
+Region Region::grown(int margin) const {
+    std::vector<Vec> cells = cells_;
+    std::set<std::tuple<int, int, int>> seen;
+    for (Vec c : cells_) seen.insert({c.x, c.y, c.z});
+    std::size_t layerStart = 0;
+    for (int step = 0; step < margin; ++step) {
+        const std::size_t layerEnd = cells.size();
+        for (std::size_t k = layerStart; k < layerEnd; ++k)
+            for (Vec d : lattice_->directions()) {
+                const Vec n = cells[k] + d;
+                if (seen.insert({n.x, n.y, n.z}).second) cells.push_back(n);
+            }
+        layerStart = layerEnd;
+    }
+    return Region(*lattice_, spec_ + "+" + std::to_string(margin), std::move(cells));
 }
 
 Region Region::parse(std::string_view spec, std::size_t maxCells) {

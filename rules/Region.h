@@ -16,6 +16,9 @@ public:
     static Region parse(std::string_view spec, std::size_t maxCells = 1u << 26);
     static Region box(const Lattice& lattice, Vec size);
     static Region hexagon(int radius);
+    /// The region and every lattice point within `margin` neighbour steps of it; the region's cells
+    /// keep their indices (0..size()-1), the added ones follow.
+    Region grown(int margin) const;
 
     const Lattice& lattice() const { return *lattice_; }
     const std::string& spec() const { return spec_; }
