@@ -80,6 +80,18 @@ std::string drawCells(const rules::Region& r, const std::function<char(int)>& ch
     return out.str();
 }
 
+std::string drawInputsAscii(const rules::Engine& e) {
+    const auto& names = e.model().system().inputs;
+    std::ostringstream out;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        bool any = false;
+        for (std::uint32_t bits : e.inputs()) any = any || ((bits >> k) & 1u);
+        out << "-- input " << names[k] << (any ? ":\n" : ": holds in no cell\n");
+        if (any) out << drawCells(e.region(), [&](int i) { return (e.inputs()[i] >> k) & 1u ? '#' : '.'; });
+    }
+    return out.str();
+}
+
 std::string drawTraceAscii(const Trace& t, const rules::Engine& e) {
     std::ostringstream out;
     for (std::size_t k = 0; k < t.steps.size(); ++k) {
@@ -178,6 +190,11 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
                         << "\" stroke=\"black\" stroke-width=\"2\"/>\n";
                 }
             }
+            std::string inputMarks;
+            for (std::size_t n = 0; n < e.model().system().inputs.size(); ++n)
+                if ((e.inputs()[i] >> n) & 1u) inputMarks += (inputMarks.empty() ? "" : ",") + std::to_string(n + 1);
+            if (!inputMarks.empty())
+                out << "<text x=\"" << cx - s / 2 + 3 << "\" y=\"" << cy - s / 2 + 9 << "\" font-size=\"7\" fill=\"#222\">" << inputMarks << "</text>\n";
             if (k + 1 == t.steps.size() && std::find(t.marked.begin(), t.marked.end(), i) != t.marked.end())
                 out << "<path d=\"M" << cx - 8 << "," << cy - 8 << " L" << cx + 8 << "," << cy + 8 << " M" << cx + 8 << "," << cy - 8 << " L"
                     << cx - 8 << "," << cy + 8 << "\" stroke=\"#d62728\" stroke-width=\"3\"/>\n";
@@ -196,6 +213,12 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
     for (const auto& [name, c] : colour) {
         out << "<rect x=\"" << lx << "\" y=\"" << ly << "\" width=\"14\" height=\"14\" fill=\"" << c << "\"/><text x=\"" << lx + 18 << "\" y=\"" << ly + 11 << "\">" << name << "</text>\n";
         lx += 30 + 7 * name.size();
+    }
+    const auto& inputs = e.model().system().inputs;
+    for (std::size_t n = 0; n < inputs.size(); ++n) {
+        const std::string text = std::to_string(n + 1) + ": input " + inputs[n];
+        out << "<text x=\"" << lx << "\" y=\"" << ly + 11 << "\" font-size=\"9\" fill=\"#222\">" << text << "</text>\n";
+        lx += 12 + 6 * text.size();
     }
     out << "</svg>\n";
     return out.str();

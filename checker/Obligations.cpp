@@ -16,9 +16,11 @@
 
 #include "checker/Reach.h"
 #include "checker/SmtEncoding.h"
+#include "rules/ConfigIo.h"
 #include "rules/Error.h"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -53,6 +55,29 @@ std::string fileSafe(std::string s) {
     for (char& c : s)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '_';
     return s;
+}
+
+std::vector<std::uint32_t> inputsOf(const z3::model& m, z3::context& ctx, const rules::Engine& e) {
+    std::vector<std::uint32_t> in(e.region().size(), 0);
+    for (int i = 0; i < e.region().size(); ++i)
+        for (std::size_t k = 0; k < e.model().system().inputs.size(); ++k) {
+            z3::expr b = ctx.bool_const(("in_" + e.model().system().inputs[k] + "_" + std::to_string(i)).c_str());
+            if (m.eval(b, true).is_true()) in[i] |= 1u << k;
+        }
+    return in;
+}
+
+/// Per-cell input bits by input name, as a configuration's JSON writes them: {"target": [[0, 0], ...]}.
+nlohmann::json inputsJson(const rules::Engine& e, const std::vector<std::uint32_t>& bits) {
+    nlohmann::json out = nlohmann::json::object();
+    const auto& names = e.model().system().inputs;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        nlohmann::json cells = nlohmann::json::array();
+        for (int i = 0; i < e.region().size(); ++i)
+            if ((bits[i] >> k) & 1u) cells.push_back(rules::pointJson(e.region().lattice(), e.region().cell(i)));
+        out[names[k]] = cells;
+    }
+    return out;
 }
 
 class Runner {
@@ -129,6 +154,7 @@ public:
         } else if (result == "sat") {
             o.result.verdict = Verdict::Violated;
             decode(solver->get_model(), o.result);
+            recordInputs(solver->get_model(), ctx, o.result);
             if (o.result.trace) o.result.trace->property = name;
         } else {
             o.result.verdict = Verdict::Unknown;
@@ -138,6 +164,15 @@ public:
     }
 
     const rules::Engine& engine() const { return engine_; }
+
+    /// A counterexample holds for the inputs the solver chose (free, or fixed to a problem's): they
+    /// go with it into the confirmation, the pictures and the trace, and by name into the witness.
+    void recordInputs(const z3::model& m, z3::context& ctx, PropertyResult& r) const {
+        r.inputs = inputsOf(m, ctx, engine_);
+        if (model_.system().inputs.empty()) return;
+        if (!r.witness.is_object()) r.witness = nlohmann::json::object();
+        r.witness["inputs"] = inputsJson(engine_, *r.inputs);
+    }
 
     /// A step obligation solved instance by instance on one incremental solver: `base` holds for
     /// every instance, `perInstance(p)` is guarded by an activation literal, and each instance is
@@ -183,6 +218,7 @@ public:
             if (r == z3::sat) {
                 o.result.verdict = Verdict::Violated;
                 decode(solver.get_model(), p, o.result);
+                recordInputs(solver.get_model(), ctx, o.result);
                 if (o.result.trace) o.result.trace->property = name;
                 break;
             }
@@ -262,16 +298,6 @@ bool stuckAt(const std::vector<CellValue>& c, const rules::Engine& e, const rule
     return true;
 }
 
-std::vector<std::uint32_t> inputsOf(const z3::model& m, z3::context& ctx, const rules::Engine& e) {
-    std::vector<std::uint32_t> in(e.region().size(), 0);
-    for (int i = 0; i < e.region().size(); ++i)
-        for (std::size_t k = 0; k < e.model().system().inputs.size(); ++k) {
-            z3::expr b = ctx.bool_const(("in_" + e.model().system().inputs[k] + "_" + std::to_string(i)).c_str());
-            if (m.eval(b, true).is_true()) in[i] |= 1u << k;
-        }
-    return in;
-}
-
 /// Whether conjunct k of an invariant follows from conjuncts 0..k-1 in the same state: those hold
 /// after every step (proved before it, in order), so then conjunct k does too, without a query
 /// per rule instance. Planner Safety's `connected` follows from the tree conjuncts (1.8-2.3 s on
@@ -323,7 +349,7 @@ Obligation proveInductive(Runner& run, const rules::Property& p) {
                 r.trace = Trace{{{cenc.decode(m, c), -1}, {cenc.decode(m, d), q}}, {}, {},
                                 "a step from a state where it holds to one where it fails: not inductive", {}};
                 r.summary = r.trace->description;
-                r.witness = {{"inputs", inputsOf(m, cctx, e)}, {"rule", model.rules()[e.instances()[q].rule].name}, {"conjunct", k + 1}};
+                r.witness = {{"rule", model.rules()[e.instances()[q].rule].name}, {"conjunct", k + 1}};
             },
             "");
         total.result.seconds += part.result.seconds;
@@ -367,20 +393,6 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
     auto announce = [&](const std::string& name) {
         if (onObligation) onObligation(name);
     };
-    // Counterexamples carry the inputs Z3 chose in the trace's first step (as the problem's inputs).
-    auto twoStates = [&](z3::context& ctx, SmtEncoding& enc, const SmtEncoding::State& a, const SmtEncoding::State& b, const z3::expr* selector,
-                         const std::string& description) {
-        return [&, selector, description](const z3::model& m, PropertyResult& r) {
-            Trace t;
-            t.steps.push_back({enc.decode(m, a), -1});
-            t.steps.push_back({enc.decode(m, b), selector ? run.placedFrom(m, *selector) : -1});
-            t.description = description;
-            r.trace = t;
-            r.witness = {{"inputs", inputsOf(m, ctx, e)}};
-            r.summary = description;
-        };
-    };
-
     for (const rules::Property& p : system.properties) {
         if (!selected(p.name)) continue;
         announce(p.name);
@@ -420,7 +432,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 t.description = "rule '" + rule + "' changes the " + (byMass ? "mass" : "count");
                 r.trace = t;
                 r.summary = t.description;
-                r.witness = {{"rule", rule}, {"inputs", inputsOf(m, ctx, e)}};
+                r.witness = {{"rule", rule}};
             };
             report.obligations.push_back(run.solve(p.name, "conserves", ctx, enc, anyRule, decode, "every rule keeps it"));
             break;
@@ -439,7 +451,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                     const std::string why = kept(q) ? "changes it (an excepted rule must keep it)" : "does not decrease it";
                     r.trace = Trace{{{enc.decode(m, c), -1}, {enc.decode(m, d), q}}, {}, {}, "a step that " + why, {}};
                     r.summary = "rule '" + model.rules()[e.instances()[q].rule].name + "' " + why;
-                    r.witness = {{"inputs", inputsOf(m, ctx, e)}, {"rule", model.rules()[e.instances()[q].rule].name}};
+                    r.witness = {{"rule", model.rules()[e.instances()[q].rule].name}};
                 },
                 "every step decreases it lexicographically" + exceptText(p)));
             break;
@@ -455,7 +467,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                                 std::string(system.constraints.empty() ? "" : " (or each leads to an illegal configuration)");
                 r.trace = t;
                 r.summary = t.description;
-                r.witness = {{"inputs", inputsOf(m, ctx, e)}};
+                r.witness = nlohmann::json::object();
             };
             report.obligations.push_back(run.solve(p.name, "progress", ctx, enc, q, decode, "outside the goal, some rule is enabled wherever the invariants hold"));
             break;
@@ -466,23 +478,30 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 report.obligations.push_back(notEncoded(p.name, "holonomic", "holonomy modulo transfers is checked by holon check (it needs reachability)"));
                 break;
             }
-            auto c = enc.state("c"), d = enc.state("d");
+            // One definition with `holon check` (Holonomy.cpp): an adjacent pair with no rule step
+            // between them breaks holonomy only when the second is reachable from the first. With
+            // no such pair at all (strong holonomy) it holds; otherwise paths from the first of such
+            // a pair to the second are sought by deepening, so the first found is a shortest one,
+            // the counterexample the explorer draws too.
             const int n = region.size();
-            z3::expr adjacent = ctx.bool_val(false);
-            auto same = [&](int i, int j) {
-                z3::expr all = ctx.bool_val(true);
-                for (int v = 0; v < model.alphabet().size(); ++v) all = all && c.is[i][v] == d.is[j][v];
-                return all;
-            };
-            if (!byMove) {
-                // Exactly one cell differs (its occupancy toggles: one occupied state).
-                for (int i = 0; i < n; ++i) {
-                    z3::expr only = !same(i, i);
-                    for (int j = 0; j < n; ++j)
-                        if (j != i) only = only && same(j, j);
-                    adjacent = adjacent || only;
+            const std::string adjacency = byMove ? "module move" : "occupancy toggle";
+            auto adjacent = [&](const SmtEncoding::State& c, const SmtEncoding::State& d) {
+                auto same = [&](int i, int j) {
+                    z3::expr all = ctx.bool_val(true);
+                    for (int v = 0; v < model.alphabet().size(); ++v) all = all && c.is[i][v] == d.is[j][v];
+                    return all;
+                };
+                z3::expr any = ctx.bool_val(false);
+                if (!byMove) {
+                    // Exactly one cell differs (its occupancy toggles: one occupied state).
+                    for (int i = 0; i < n; ++i) {
+                        z3::expr only = !same(i, i);
+                        for (int j = 0; j < n; ++j)
+                            if (j != i) only = only && same(j, j);
+                        any = any || only;
+                    }
+                    return any;
                 }
-            } else {
                 // One module moves to an empty neighbour, keeping its state.
                 for (int i = 0; i < n; ++i)
                     for (int dir = 0; dir < region.lattice().degree(); ++dir) {
@@ -491,15 +510,68 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                         z3::expr move = !c.is[i][0] && c.is[j][0] && d.is[i][0] && same(i, j);
                         for (int k = 0; k < n; ++k)
                             if (k != i && k != j) move = move && same(k, k);
-                        adjacent = adjacent || move;
+                        any = any || move;
                     }
+                return any;
+            };
+            const SmtEncoding::State first = enc.state("c");
+            auto unjoined = [&](const SmtEncoding::State& d) {
+                z3::expr q = adjacent(first, d);
+                for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) q = q && !enc.fires(placed, first, d);
+                return q;
+            };
+            const z3::expr legalFirst = enc.legal(first);
+            const auto partner = enc.state("d");
+            const std::string proved = "configurations one " + adjacency + " apart are one rule step apart (so no such pair is left to be reachable)";
+            Obligation o = run.solve(p.name, "holonomic", ctx, enc, legalFirst && enc.legal(partner) && unjoined(partner),
+                                     [](const z3::model&, PropertyResult&) {}, proved);
+            if (o.result.verdict != Verdict::Violated) {
+                report.obligations.push_back(o);
+                break;
             }
-            z3::expr q = enc.legal(c) && enc.legal(d) && adjacent;
-            for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) q = q && !enc.fires(placed, c, d);
-            report.obligations.push_back(run.solve(p.name, "holonomic", ctx, enc, q,
-                                                   twoStates(ctx, enc, c, d, nullptr, "two legal configurations one " + std::string(byMove ? "module move" : "toggle") +
-                                                                                          " apart with no single rule step between them"),
-                                                   "every adjacent pair of legal configurations is one rule step apart"));
+            // Strong holonomy fails: deepen from paths of two steps.
+            std::vector<SmtEncoding::State> path{first};
+            std::vector<z3::expr> selectors;
+            z3::expr steps = ctx.bool_val(true), lemmas = enc.instantiate().all;
+            auto decode = [&](const z3::model& m, PropertyResult& r) {
+                Trace t;
+                for (std::size_t k = 0; k < path.size(); ++k) t.steps.push_back({enc.decode(m, path[k]), k ? run.placedFrom(m, selectors[k - 1]) : -1});
+                const std::size_t distance = t.steps.size() - 1;
+                t.description = "two configurations one " + adjacency + " apart need " + stepCount(distance);
+                r.trace = t;
+                r.summary = "configurations one " + adjacency + " apart, with no rule step between them, are " + stepCount(distance) + " apart";
+                r.witness = {{"distance", distance}, {"adjacency", byMove ? "move" : "occupancy"}};
+            };
+            double spent = o.result.seconds;
+            const double configurations = std::pow(static_cast<double>(model.alphabet().size()), n);
+            for (int k = 1;; ++k) {
+                path.push_back(enc.state("p" + std::to_string(k)));
+                selectors.push_back(ctx.int_const(("step" + std::to_string(k)).c_str()));
+                steps = steps && enc.step(path[k - 1], path[k], selectors.back());
+                if (k == 1) continue;  // a pair one step apart is joined
+                if (k > configurations - 1) {
+                    // A shortest path visits each configuration once: none of such a pair is reachable.
+                    o = Runner::named(p.name, "holonomic");
+                    o.result.verdict = Verdict::Holds;
+                    o.result.summary = "configurations one " + adjacency + " apart are one rule step apart, or unreachable (no path of up to " +
+                                       stepCount(k - 1) + " joins them, and a shortest path is shorter than the " +
+                                       std::to_string(static_cast<long long>(configurations)) + " configurations)";
+                    break;
+                }
+                if (spent >= options.timeoutSeconds) {
+                    o = Runner::named(p.name, "holonomic");
+                    o.result.summary = "undecided: legal configurations one " + adjacency + " apart with no rule step between them exist, and no path of up to " +
+                                       stepCount(k - 1) + " joins such a pair (timeout)";
+                    break;
+                }
+                lemmas = lemmas && enc.instantiate().all;
+                o = run.solve(p.name, "holonomic", ctx, enc, legalFirst && steps && unjoined(path[k]), decode, proved, 1.0, lemmas);
+                spent += o.result.seconds;
+                o.result.seconds = spent;
+                if (o.result.verdict != Verdict::Holds) break;  // a shortest path, or the solver gave up
+            }
+            o.result.seconds = spent;
+            report.obligations.push_back(o);
             break;
         }
         }
@@ -539,8 +611,9 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         for (const rules::Configuration& c : options.initial) start = start || (enc.configurationIs(path[0], c.cells) && enc.inputsAre(c.inputs));
         z3::expr steps = ctx.bool_val(true), someBad = target.bad(enc, path[0]);
         z3::expr lemmas = enc.instantiate().all;  // kept for the deeper queries
-        const rules::Engine concrete(model, region, options.initial.front().inputs);
         auto decode = [&](const z3::model& m, PropertyResult& r) {
+            // The start the model chose may be any of the given configurations, each with its inputs.
+            const rules::Engine concrete(model, region, inputsOf(m, ctx, e));
             Trace t;
             for (std::size_t k = 0; k < path.size(); ++k) {
                 t.steps.push_back({enc.decode(m, path[k]), k ? run.placedFrom(m, selectors[k - 1]) : -1});
@@ -644,9 +717,11 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
 }
 
 bool confirmCounterexample(const PropertyResult& r, const rules::Model& model, const rules::Region& region, std::string* why) {
-    if (!r.trace || r.trace->steps.empty()) return false;
-    std::vector<std::uint32_t> inputs(region.size(), 0);
-    if (r.witness.is_object() && r.witness.contains("inputs")) inputs = r.witness["inputs"].get<std::vector<std::uint32_t>>();
+    if (!r.trace || r.trace->steps.empty()) {
+        if (why) *why = "the counterexample has no trace";
+        return false;
+    }
+    const std::vector<std::uint32_t> inputs = r.inputs.value_or(std::vector<std::uint32_t>(region.size(), 0));
     const rules::Engine engine(model, region, inputs);
     rules::Interpreter in(model, region);
     rules::Configuration c = in.empty();
@@ -663,12 +738,27 @@ bool confirmCounterexample(const PropertyResult& r, const rules::Model& model, c
         return true;
     }
     if (r.kind == "holonomic") {
+        // Adjacent, no single step between them, and the path from the first to the second replays.
         rules::Configuration d = c;
         d.cells = r.trace->steps.back().cells;
         if (!in.legal(c) || !in.legal(d)) return fail("a state is not legal");
+        std::vector<int> differ;
+        for (int i = 0; i < region.size(); ++i)
+            if (c.cells[i] != d.cells[i]) differ.push_back(i);
+        const bool byMove = r.witness.value("adjacency", "") == "move";
+        auto neighbours = [&](int i, int j) {
+            for (int dir = 0; dir < region.lattice().degree(); ++dir)
+                if (region.neighbour(i, dir) == j) return true;
+            return false;
+        };
+        const bool adjacent =
+            byMove ? differ.size() == 2 && neighbours(differ[0], differ[1]) && (c.cells[differ[0]] == 0) != (c.cells[differ[1]] == 0) &&
+                         c.cells[differ[0]] == d.cells[differ[1]] && c.cells[differ[1]] == d.cells[differ[0]]
+                   : differ.size() == 1 && (c.cells[differ[0]] == 0) != (d.cells[differ[0]] == 0);
+        if (!adjacent) return fail("the two states are not one " + std::string(byMove ? "module move" : "occupancy toggle") + " apart");
         for (const auto& i : in.enabled(c))
             if (in.successor(c, i)->cells == d.cells) return fail("a rule step does connect them");
-        return true;
+        return replay(*r.trace, engine, in, why);
     }
     return replay(*r.trace, engine, in, why);
 }

@@ -40,6 +40,15 @@ nlohmann::json toItf(const Trace& trace, const rules::Engine& engine, const std:
     const rules::Region& region = engine.region();
     const rules::Model& model = engine.model();
     const rules::System& system = model.system();
+    // Inputs are constant along a trace; ITF wants every variable in every state, so each state
+    // carries them: {"target": {"#set": [{"#tup": [x, y]}, ...]}}.
+    nlohmann::json inputs = nlohmann::json::object();
+    for (std::size_t k = 0; k < system.inputs.size(); ++k) {
+        nlohmann::json cells = nlohmann::json::array();
+        for (int i = 0; i < region.size(); ++i)
+            if ((engine.inputs()[i] >> k) & 1u) cells.push_back({{"#tup", position(region, i)}});
+        inputs[system.inputs[k]] = {{"#set", cells}};
+    }
     nlohmann::json states = nlohmann::json::array();
     for (std::size_t k = 0; k < trace.steps.size(); ++k) {
         const auto& step = trace.steps[k];
@@ -57,6 +66,7 @@ nlohmann::json toItf(const Trace& trace, const rules::Engine& engine, const std:
             map.push_back({{{"#tup", position(region, i)}}, rules::stateFields(model, step.cells[i])});
         }
         nlohmann::json state{{"#meta", meta}, {"cells", {{"#map", map}}}};
+        if (!system.inputs.empty()) state["inputs"] = inputs;
         states.push_back(state);
     }
     nlohmann::json itf{{"#meta",
@@ -67,7 +77,7 @@ nlohmann::json toItf(const Trace& trace, const rules::Engine& engine, const std:
                          {"region", region.spec()},
                          {"property", trace.property},
                          {"description", trace.description}}},
-                       {"vars", {"cells"}},
+                       {"vars", system.inputs.empty() ? nlohmann::json{"cells"} : nlohmann::json{"cells", "inputs"}},
                        {"states", states}};
     if (trace.loop) itf["loop"] = *trace.loop;
     return itf;

@@ -32,7 +32,8 @@ Trace traceTo(const Explorer& explorer, StateId id);
 /// A trace along a list of states, choosing for each step an instance that leads to the next.
 Trace traceAlong(const Explorer& explorer, const std::vector<StateId>& states);
 
-/// ITF: {"#meta", "vars": ["cells"], "states": [{"#meta": {"index", "rule", "anchor", "cells"}, "cells": {"#map": ...}}], "loop"}.
+/// ITF: {"#meta", "vars": ["cells"], "states": [{"#meta": {"index", "rule", "anchor", "cells"}, "cells": {"#map": ...}}], "loop"};
+/// a system with inputs also has the variable "inputs", the engine's, by name: {"target": {"#set": [...]}}.
 nlohmann::json toItf(const Trace& trace, const rules::Engine& engine, const std::string& source);
 /// Replays every step through the reference interpreter: true when each step is an enabled instance
 /// whose successor is exactly the next state (and the first state is legal).

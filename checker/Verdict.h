@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace holon::checker {
 
@@ -43,6 +44,9 @@ struct PropertyResult {
     nlohmann::json witness = nullptr;  // machine-readable evidence
     double seconds = 0;
     std::optional<Trace> trace;
+    /// Per cell, the input bits (bit k: input k) the evidence holds under, where the check chose
+    /// them (verify's solver, over every input value or the given ones); unset: the problem's.
+    std::optional<std::vector<std::uint32_t>> inputs;
 };
 
 }  // namespace holon::checker

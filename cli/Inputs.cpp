@@ -1,4 +1,4 @@
-// Shared CLI plumbing: rule loading with -W handling, and --input NAME=FILE masks.
+// Shared CLI plumbing: rule loading with -W handling, and --input NAME=FILE|none|all masks.
 
 #include "cli/Inputs.h"
 
@@ -25,20 +25,25 @@ std::optional<rules::System> loadRules(const std::string& file, const std::vecto
     return rules::loadSystem(file, std::cerr, load);
 }
 
-std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::vector<std::string>& specs) {
+std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::vector<std::string>& specs, std::uint32_t* named) {
     const rules::Region& region = in.region();
     std::vector<std::uint32_t> bits(region.size(), 0);
+    if (named) *named = 0;
     for (const std::string& spec : specs) {
         const auto eq = spec.find('=');
-        if (eq == std::string::npos) throw InputError("--input takes NAME=FILE, as in --input target=target.txt");
+        if (eq == std::string::npos) throw InputError("--input takes NAME=FILE, NAME=none or NAME=all, as in --input target=target.txt");
         const std::string name = spec.substr(0, eq), path = spec.substr(eq + 1);
         const int k = in.model().system().inputIndex(name);
         if (k < 0) throw InputError("--input " + spec + ": system '" + in.model().system().name + "' has no input '" + name + "'");
-        std::vector<bool> mask;
-        try {
-            mask = rules::maskFromAscii(region, rules::readTextFile(path));
-        } catch (const InputError& e) {
-            throw InputError(path + ": " + e.what());
+        if (named) *named |= 1u << k;
+        // An input false (or true) everywhere is a value to state, not what a forgotten mask means.
+        std::vector<bool> mask(region.size(), path == "all");
+        if (path != "none" && path != "all") {
+            try {
+                mask = rules::maskFromAscii(region, rules::readTextFile(path));
+            } catch (const InputError& e) {
+                throw InputError(path + ": " + e.what());
+            }
         }
         for (int i = 0; i < region.size(); ++i)
             if (mask[i]) bits[i] |= 1u << k;

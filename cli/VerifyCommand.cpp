@@ -40,9 +40,17 @@ int run(const VerifyArgs& a) {
     options.smtOut = a.smtOut;
     if (a.depth > 0 && a.from.empty()) throw InputError("--depth needs initial configurations: --from CONFIG");
     if (a.reach && a.from.empty()) throw InputError("--reach needs initial configurations: --from CONFIG");
-    const auto inputs = readInputs(in, a.inputs);
+    std::uint32_t named = 0;
+    const auto inputs = readInputs(in, a.inputs, &named);
     for (const std::string& path : a.from) {
-        rules::Configuration c = rules::readConfigFile(in, path);
+        std::uint32_t namedInFile = 0;
+        rules::Configuration c = rules::readConfigFile(in, path, &namedInFile);
+        // Paths from --from hold for these inputs only: one left out is not false everywhere.
+        for (std::size_t k = 0; k < system->inputs.size(); ++k)
+            if (!((named | namedInFile) >> k & 1u))
+                throw InputError("--from " + path + ": system '" + system->name + "' has input '" + system->inputs[k] +
+                                 "', which neither --input nor the configuration sets; give it as --input " + system->inputs[k] + "=FILE (an ASCII mask), or " +
+                                 system->inputs[k] + "=none / " + system->inputs[k] + "=all");
         for (int i = 0; i < region.size(); ++i) c.inputs[i] |= inputs[i];
         if (!in.legal(c)) throw InputError(path + ": this configuration violates a constraint of '" + system->name + "'");
         options.initial.push_back(c);
@@ -53,18 +61,32 @@ int run(const VerifyArgs& a) {
     });
     if (terminal) std::cerr << "\r" << std::string(60, ' ') << "\r";
 
+    // Every counterexample is confirmed by the reference interpreter under the inputs it uses. One
+    // that is not is a bug in holon: it is shown for the report, and the exit code says so.
     const checker::PropertyResult* shown = nullptr;
+    bool unconfirmed = false, shownConfirmed = false;
+    std::string shownWhy;
     for (auto& o : report.obligations) {
         if (o.result.verdict != checker::Verdict::Violated) continue;
         std::string why;
         const bool ok = checker::confirmCounterexample(o.result, model, region, &why);
         o.result.witness["confirmed"] = ok;
-        if (!ok) std::cerr << "holon verify: internal error: the counterexample for '" << o.result.name << "' is not confirmed: " << why << '\n';
-        if (!shown) shown = &o.result;
+        if (!ok) {
+            unconfirmed = true;
+            std::cerr << "holon verify: internal error: the counterexample for '" << o.result.name << "' is not confirmed: " << why
+                      << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+        }
+        // A path from --from (NAME@bmcK, NAME@reach) is reachable: it is the one to show first.
+        const bool fromStart = o.result.kind == "bmc" || o.result.kind == "reach";
+        if (!shown || (fromStart && shown->kind != "bmc" && shown->kind != "reach")) {
+            shown = &o.result;
+            shownConfirmed = ok;
+            shownWhy = why;
+        }
     }
-    std::vector<std::uint32_t> shownInputs(region.size(), 0);
-    if (shown && shown->witness.contains("inputs")) shownInputs = shown->witness["inputs"].get<std::vector<std::uint32_t>>();
-    else if (!options.initial.empty()) shownInputs = options.initial.front().inputs;
+    const std::vector<std::uint32_t> shownInputs =
+        shown ? shown->inputs.value_or(std::vector<std::uint32_t>(region.size(), 0))
+              : (options.initial.empty() ? std::vector<std::uint32_t>(region.size(), 0) : options.initial.front().inputs);
     const rules::Engine drawing(model, region, shownInputs);
     if (shown && !a.traceOut.empty()) {
         std::ofstream out(a.traceOut);
@@ -76,9 +98,10 @@ int run(const VerifyArgs& a) {
         if (!out) throw InputError("cannot write '" + a.svg + "'");
         out << checker::drawTraceSvg(*shown->trace, drawing, system->name + " on " + region.spec() + ": " + shown->name + " -- " + shown->trace->description);
     }
+    const int code = unconfirmed ? kExitInternal : exitCodeFor(report.overall());
     if (a.json) {
         std::cout << report.toJson().dump(2) << '\n';
-        return exitCodeFor(report.overall());
+        return code;
     }
     std::cout << system->name << " on " << region.spec() << ": every configuration of the region"
               << (a.depth > 0 || a.reach ? " (NAME@bmcK: paths of K steps from --from; NAME@reach: every state reachable from --from)" : "")
@@ -97,18 +120,14 @@ int run(const VerifyArgs& a) {
         if (shown < clauses.size()) std::cout << "  ... " << clauses.size() - shown << " more (--json prints all)\n";
     }
     if (shown) {
-        std::cout << "\ncounterexample for '" << shown->name << "' (confirmed by the reference interpreter)\n";
+        std::cout << "\ncounterexample for '" << shown->name << "' "
+                  << (shownConfirmed ? "(confirmed by the reference interpreter)" : "(NOT confirmed by the reference interpreter: " + shownWhy + ")") << '\n';
         for (const auto& o : report.obligations)
             if (o.result.name == shown->name + "@reach" && o.result.verdict == checker::Verdict::Holds && shownInputs == options.initial.front().inputs)
                 std::cout << "(no run from the given start reaches it: '" << o.result.name << "' is proved)\n";
-        std::cout
-                  << checker::drawTraceAscii(*shown->trace, drawing);
-        if (!shownInputs.empty() && !system->inputs.empty()) {
-            std::cout << "-- inputs set (" << system->inputs[0] << (system->inputs.size() > 1 ? ", ..." : "") << "):\n"
-                      << checker::drawCells(region, [&](int i) { return shownInputs[i] ? '#' : '.'; });
-        }
+        std::cout << checker::drawTraceAscii(*shown->trace, drawing) << checker::drawInputsAscii(drawing);
     }
-    return exitCodeFor(report.overall());
+    return code;
 }
 
 }  // namespace
@@ -122,12 +141,12 @@ Run addVerifyCommand(CLI::App& app) {
     sub->add_option("--depth", a->depth, "also bounded model checking of the invariants to this depth from --from");
     sub->add_flag("--reach", a->reach, "also prove the invariants for every state reachable from --from, at any depth (Spacer)");
     sub->add_option("--from", a->from, "initial configuration for --depth and --reach (JSON or ASCII art); repeatable");
-    sub->add_option("--input", a->inputs, "inputs of the initial configurations: NAME=FILE (ASCII mask)");
+    sub->add_option("--input", a->inputs, "inputs of the initial configurations: NAME=FILE (ASCII mask), NAME=none or NAME=all; each input must be given with --from");
     sub->add_option("--timeout", a->timeout, "seconds per obligation (default 120)");
     sub->add_flag("--json", a->json, "print the report as JSON");
     sub->add_option("--smt-out", a->smtOut, "write every obligation as SMT-LIB2 into this directory");
-    sub->add_option("--trace-out", a->traceOut, "write the first counterexample as an ITF JSON trace");
-    sub->add_option("--svg", a->svg, "draw the first counterexample as SVG");
+    sub->add_option("--trace-out", a->traceOut, "write the counterexample shown (a path from --from first) as an ITF JSON trace");
+    sub->add_option("--svg", a->svg, "draw the counterexample shown (a path from --from first) as SVG");
     sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
     return [a] { return run(*a); };
 }

@@ -98,7 +98,7 @@ nlohmann::json configToJson(const Interpreter& in, const Configuration& c) {
     return j;
 }
 
-Configuration configFromJson(const Interpreter& in, const nlohmann::json& j) {
+Configuration configFromJson(const Interpreter& in, const nlohmann::json& j, std::uint32_t* inputsNamed) {
     const Region& region = in.region();
     const Model& model = in.model();
     const System& system = model.system();
@@ -115,6 +115,7 @@ Configuration configFromJson(const Interpreter& in, const nlohmann::json& j) {
     if (j.contains("region") && j["region"].is_string() && j["region"].get<std::string>() != region.spec())
         throw InputError("the configuration is for region " + j["region"].get<std::string>() + ", not " + region.spec());
     Configuration c = in.empty();
+    if (inputsNamed) *inputsNamed = 0;
     if (!j.contains("cells") || !j["cells"].is_array()) throw InputError("a configuration needs a \"cells\" array");
     for (const auto& cell : j["cells"]) {
         if (!cell.is_object() || !cell.contains("at")) throw InputError("each cell is an object with \"at\" and its fields");
@@ -154,6 +155,7 @@ Configuration configFromJson(const Interpreter& in, const nlohmann::json& j) {
             if (k < 0) throw InputError("system '" + system.name + "' has no input '" + name + "'");
             if (!list.is_array()) throw InputError("input '" + name + "' is a list of cells");
             for (const auto& at : list) c.inputs[cellIndex(at)] |= 1u << k;
+            if (inputsNamed) *inputsNamed |= 1u << k;
         }
     }
     return c;
@@ -217,11 +219,12 @@ std::vector<bool> maskFromAscii(const Region& region, const std::string& text) {
     return mask;
 }
 
-Configuration readConfigFile(const Interpreter& in, const std::string& path) {
+Configuration readConfigFile(const Interpreter& in, const std::string& path, std::uint32_t* inputsNamed) {
     const std::string text = readTextFile(path);
     const auto first = text.find_first_not_of(" \t\r\n");
+    if (inputsNamed) *inputsNamed = 0;
     try {
-        if (first != std::string::npos && text[first] == '{') return configFromJson(in, nlohmann::json::parse(text));
+        if (first != std::string::npos && text[first] == '{') return configFromJson(in, nlohmann::json::parse(text), inputsNamed);
         return configFromAscii(in, text);
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": not valid JSON: " + e.what());

@@ -218,7 +218,9 @@ TEST_CASE("deletion without its guard: Safety is refuted, confirmed, and the exp
     REQUIRE(s.verdict == Verdict::Violated);
     std::string why;
     CHECK(checker::confirmCounterexample(s, *w.model, w.region, &why));
-    const auto inputs = s.witness["inputs"].get<std::vector<std::uint32_t>>();
+    REQUIRE(s.inputs);
+    const auto inputs = *s.inputs;
+    CHECK(s.witness["inputs"].contains("target"));  // by name, as a configuration's JSON writes them
     CHECK(explorerFindsInductivenessBreak(w, w.system.property("safety")->exprs[0], inputs));
     // And the intact planner: no break for the same inputs, nor for two others.
     test::World good = test::World::library("planner_intermediate", "square:3x2");
@@ -258,7 +260,7 @@ TEST_CASE("progress under non-local constraints: a rule enables only into a lega
     CHECK(confirmed);
 }
 
-TEST_CASE("symbolic holonomy agrees with the explorer") {
+TEST_CASE("holonomy means one thing: verify and check give the same verdict, and verify's witness is a path") {
     for (const char* spec : {"square:3x3", "hex:r1"}) {
         for (const char* stem : {"pixel", "intermediate"}) {
             CAPTURE(stem);
@@ -267,12 +269,28 @@ TEST_CASE("symbolic holonomy agrees with the explorer") {
             CHECK(test::checkAll(rules::librarySystem(stem), spec).property("holonomy").verdict == Verdict::Holds);
         }
     }
+    // The pivot: two configurations one move apart that rule steps join, but not one; the witness
+    // is the shortest path from the first to the second, replayed by the reference interpreter.
     test::World pivot = test::World::library("hex_pivot", "hex:r1");
     const auto r = prove(pivot);
     const auto& h = result(r, "holonomy");
     REQUIRE(h.verdict == Verdict::Violated);
-    CHECK(checker::confirmCounterexample(h, *pivot.model, pivot.region));
+    std::string why;
+    CHECK(checker::confirmCounterexample(h, *pivot.model, pivot.region, &why));
+    CAPTURE(why);
+    CHECK(h.trace->steps.size() >= 3);
+    CHECK(h.witness["distance"].get<std::size_t>() + 1 == h.trace->steps.size());
+    int modules = 0;
+    for (auto v : h.trace->steps.front().cells) modules += v != 0;
+    CHECK(modules >= 2);  // not a lone module at two places nothing joins
     CHECK(test::checkAll(rules::librarySystem("hex_pivot"), "hex:r1").property("holonomy").verdict == Verdict::Violated);
+
+    // Strong holonomy fails where nothing is reachable (a lone module cannot move: growth only adds),
+    // and holonomy holds, as the explorer says.
+    const char* lone = "system lone\nlattice square2d\nstates M\nrule grow: M _ => M M\nholonomic by move\n";
+    test::World grow(test::parse(lone), "square:3x1");
+    CHECK(result(prove(grow), "holonomy").verdict == Verdict::Holds);
+    CHECK(test::checkAll(test::parse(lone), "square:3x1").property("holonomy").verdict == Verdict::Holds);
 }
 
 TEST_CASE("bounded model checking finds the same shortest violation as the explorer") {
@@ -287,9 +305,39 @@ TEST_CASE("bounded model checking finds the same shortest violation as the explo
     const auto& bmc = result(r, "safety@bmc4");
     REQUIRE(bmc.verdict == Verdict::Violated);
     CHECK(bmc.trace->steps.size() == 4);
-    checker::PropertyResult withInputs = bmc;
-    withInputs.witness["inputs"] = start.inputs;
-    CHECK(checker::confirmCounterexample(withInputs, *w.model, w.region));
+    CHECK(checker::confirmCounterexample(bmc, *w.model, w.region));
+}
+
+TEST_CASE("a path that needs an input: --depth and --reach traces carry the solver's inputs and are confirmed") {
+    // F U U U with the target under the first two: the only way to a P is to finalize the target
+    // cell first (path_create needs !target), then the unguarded deletion strands the last P.
+    test::World w(broken("planner_no_guard"), "square:4x1");
+    auto start = w.ascii("FUUU");
+    w.mark(start, "target", "##..");
+    for (const bool reach : {false, true}) {
+        CAPTURE(reach);
+        checker::VerifyOptions o;
+        o.depth = reach ? 0 : 5;
+        o.reach = reach;
+        o.initial = {start};
+        o.properties = {"safety"};
+        const auto r = checker::verify(*w.model, w.region, o);
+        const auto& path = result(r, reach ? "safety@reach" : "safety@bmc5");
+        REQUIRE(path.verdict == Verdict::Violated);
+        REQUIRE(path.trace->steps.size() >= 2);
+        const rules::Engine e(*w.model, w.region, start.inputs);
+        REQUIRE(path.trace->steps[1].placed >= 0);
+        CHECK(w.model->rules()[e.instances()[path.trace->steps[1].placed].rule].name == "finalize");
+        REQUIRE(path.inputs);
+        CHECK(*path.inputs == start.inputs);
+        std::string why;
+        CHECK(checker::confirmCounterexample(path, *w.model, w.region, &why));
+        CAPTURE(why);
+        // The ITF trace carries them too, in every state.
+        const auto itf = checker::toItf(*path.trace, rules::Engine(*w.model, w.region, *path.inputs), "planner_no_guard.holon");
+        CHECK(itf["vars"].size() == 2);
+        CHECK(itf["states"].back()["inputs"]["target"]["#set"].size() == 2);
+    }
 }
 
 TEST_CASE("hex holes stay whole for every configuration of hex:r3, and every rule keeps the module count") {
