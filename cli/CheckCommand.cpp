@@ -52,13 +52,7 @@ int run(const CheckArgs& a) {
     options.properties = a.properties;
     if (a.all && !a.from.empty()) throw InputError("give either --all or --from, not both");
     if (!a.all && a.from.empty()) throw InputError("say where to start: --from CONFIG (JSON or ASCII art), or --all for every legal configuration");
-    options.inputs = readInputs(in, a.inputs);
-    for (const std::string& path : a.from) {
-        rules::Configuration c = rules::readConfigFile(in, path);
-        for (int i = 0; i < region.size(); ++i) c.inputs[i] |= options.inputs[i];
-        if (!in.legal(c)) throw InputError(path + ": this configuration violates a constraint of '" + system->name + "'");
-        options.initial.push_back(c);
-    }
+    options.initial = readStarts(in, a.from, a.inputs, &options.inputs);
     const bool terminal = isatty(2) && !a.json;
     if (terminal)
         options.onProgress = [](const checker::ExploreStats& s) {

@@ -7,6 +7,7 @@
 #include "rules/Error.h"
 #include "rules/Library.h"
 #include "rules/Parser.h"
+#include "rules/Printer.h"
 
 #include <algorithm>
 #include <iostream>
@@ -49,6 +50,42 @@ std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::v
             if (mask[i]) bits[i] |= 1u << k;
     }
     return bits;
+}
+
+namespace {
+
+std::string missingInput(const rules::System& system, int k, const std::string& where) {
+    const std::string& name = system.inputs[k];
+    return where + "system '" + system.name + "' has input '" + name + "', which " +
+           (where.empty() ? "no --input sets" : "neither --input nor the configuration sets") + "; give it as --input " + name +
+           "=FILE (an ASCII mask), or " + name + "=none / " + name + "=all";
+}
+
+}  // namespace
+
+std::vector<rules::Configuration> readStarts(const rules::Interpreter& in, const std::vector<std::string>& from,
+                                             const std::vector<std::string>& inputSpecs, std::vector<std::uint32_t>* inputsOut) {
+    const rules::System& system = in.model().system();
+    std::uint32_t named = 0;
+    const std::vector<std::uint32_t> inputs = readInputs(in, inputSpecs, &named);
+    if (inputsOut) *inputsOut = inputs;
+    if (from.empty())
+        for (std::size_t k = 0; k < system.inputs.size(); ++k)
+            if (!(named >> k & 1u)) throw InputError(missingInput(system, static_cast<int>(k), ""));
+    std::vector<rules::Configuration> starts;
+    for (const std::string& path : from) {
+        std::uint32_t namedInFile = 0;
+        rules::Configuration c = rules::readConfigFile(in, path, &namedInFile);
+        for (std::size_t k = 0; k < system.inputs.size(); ++k)
+            if (!((named | namedInFile) >> k & 1u)) throw InputError(missingInput(system, static_cast<int>(k), "--from " + path + ": "));
+        for (int i = 0; i < in.region().size(); ++i) c.inputs[i] |= inputs[i];
+        for (const rules::Constraint& constraint : system.constraints)
+            if (!in.holds(constraint.expr, c))
+                throw InputError(path + ": this configuration violates the constraint '" + rules::printExpr(system, constraint.expr) + "' (" +
+                                 system.sourceName + ":" + std::to_string(constraint.loc.line) + "); every start must be legal");
+        starts.push_back(std::move(c));
+    }
+    return starts;
 }
 
 }  // namespace holon::cli

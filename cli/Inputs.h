@@ -18,4 +18,11 @@ std::optional<rules::System> loadRules(const std::string& file, const std::vecto
 /// gets bit k set for each input k an argument names.
 std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::vector<std::string>& specs, std::uint32_t* named = nullptr);
 
+/// The start configurations of --from, each with the inputs of `inputSpecs` (--input) added, every
+/// declared input set by one or the other (an input left out is not silently false everywhere), and
+/// each legal (else the error names the constraint that fails, with its line). With no --from,
+/// the inputs alone must still be complete (--all): `inputsOut` gets them either way.
+std::vector<rules::Configuration> readStarts(const rules::Interpreter& in, const std::vector<std::string>& from,
+                                             const std::vector<std::string>& inputSpecs, std::vector<std::uint32_t>* inputsOut = nullptr);
+
 }  // namespace holon::cli

@@ -40,21 +40,10 @@ int run(const VerifyArgs& a) {
     options.smtOut = a.smtOut;
     if (a.depth > 0 && a.from.empty()) throw InputError("--depth needs initial configurations: --from CONFIG");
     if (a.reach && a.from.empty()) throw InputError("--reach needs initial configurations: --from CONFIG");
-    std::uint32_t named = 0;
-    const auto inputs = readInputs(in, a.inputs, &named);
-    for (const std::string& path : a.from) {
-        std::uint32_t namedInFile = 0;
-        rules::Configuration c = rules::readConfigFile(in, path, &namedInFile);
-        // Paths from --from hold for these inputs only: one left out is not false everywhere.
-        for (std::size_t k = 0; k < system->inputs.size(); ++k)
-            if (!((named | namedInFile) >> k & 1u))
-                throw InputError("--from " + path + ": system '" + system->name + "' has input '" + system->inputs[k] +
-                                 "', which neither --input nor the configuration sets; give it as --input " + system->inputs[k] + "=FILE (an ASCII mask), or " +
-                                 system->inputs[k] + "=none / " + system->inputs[k] + "=all");
-        for (int i = 0; i < region.size(); ++i) c.inputs[i] |= inputs[i];
-        if (!in.legal(c)) throw InputError(path + ": this configuration violates a constraint of '" + system->name + "'");
-        options.initial.push_back(c);
-    }
+    // Without --from every input value is quantified over, so an --input would have no effect.
+    if (a.from.empty() && !a.inputs.empty())
+        throw InputError("--input sets the inputs of --from configurations; without --from, verify proves for every input value");
+    if (!a.from.empty()) options.initial = readStarts(in, a.from, a.inputs);
     const bool terminal = isatty(2) && !a.json;
     auto report = checker::verify(model, region, options, [&](const std::string& name) {
         if (terminal) std::cerr << "\r  proving " << name << "...                    " << std::flush;
