@@ -1,6 +1,6 @@
 // `holon rules FILE...`: parse rule files, report diagnostics like a compiler, and summarise each
-// system: fields, cell states per lattice, masses, rules and their instances after closing them
-// under the lattice's rotations, constraints and properties.
+// system: fields, cell states per lattice, masses, the symmetry group, the rules and their
+// instances after closing them under that group, constraints and properties.
 
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
@@ -68,6 +68,13 @@ nlohmann::ordered_json summarise(const rules::System& s) {
         states[l->name()] = models.back().alphabet().size();
     }
     j["states"] = states;
+    json order = json::object(), total = json::object();
+    for (const rules::Model& m : models) {
+        order[m.lattice().name()] = m.symmetries().size();
+        total[m.lattice().name()] = m.shapes().size();
+    }
+    j["symmetry"] = {{"group", rules::symmetryName(s.symmetry)}, {"order", order}};
+    j["instances"] = total;
     for (std::size_t r = 0; r < models.front().rules().size(); ++r) {
         const rules::DirectedRule& dr = models.front().rules()[r];
         // The reverse of a self-inverse '<=>' rule (transfer: C D <=> D C) adds no instance.
@@ -117,10 +124,17 @@ void printHuman(const nlohmann::ordered_json& j, std::ostream& out) {
     out << "\n  cell states  ";
     first = true;
     for (const auto& [lattice, n] : j["states"].items()) out << (first ? "" : ", ") << lattice << " " << n.get<int>(), first = false;
-    out << "  (with the vacuum)\n  rules        instances after rotation closure (";
+    out << "  (with the vacuum)\n  symmetry     " << j["symmetry"]["group"].get<std::string>() << " (";
+    first = true;
+    for (const auto& [lattice, n] : j["symmetry"]["order"].items())
+        out << (first ? "" : ", ") << n.get<int>() << " on " << lattice, first = false;
+    out << ")\n  rules        instances under the group (";
     first = true;
     for (const auto& [lattice, n] : j["states"].items()) out << (first ? "" : " / ") << lattice, first = false;
-    out << ")\n";
+    out << "): ";
+    first = true;
+    for (const auto& [lattice, n] : j["instances"].items()) out << (first ? "" : " / ") << n.get<int>(), first = false;
+    out << " in all\n";
     for (const auto& r : j["rules"]) {
         out << "    " << std::left << std::setw(22) << r["name"].get<std::string>() << r["cells"].get<int>() << " cells  ";
         first = true;

@@ -151,6 +151,9 @@ struct Property {
 struct System {
     std::string name;
     std::optional<LatticeKind> lattice;  // none: the system works on every lattice
+    // The rules hold in every orientation this group gives; a design with gravity or a handedness
+    // narrows it (`symmetry rotations`, `symmetry none`).
+    Symmetry symmetry = Symmetry::RotationsReflections;
     std::vector<Field> fields;
     std::vector<std::string> inputs;
     std::vector<SourceLoc> inputLocs;  // where each input was declared
@@ -161,7 +164,7 @@ struct System {
     std::vector<Property> properties;
     std::string sourceName;  // file the system came from, for messages
     friend bool operator==(const System& a, const System& b) {
-        return a.name == b.name && a.lattice == b.lattice && a.fields == b.fields && a.inputs == b.inputs &&
+        return a.name == b.name && a.lattice == b.lattice && a.symmetry == b.symmetry && a.fields == b.fields && a.inputs == b.inputs &&
                a.masses == b.masses && a.rules == b.rules && a.constraints == b.constraints &&
                a.goal == b.goal && a.properties == b.properties;
     }

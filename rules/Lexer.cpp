@@ -35,8 +35,9 @@ bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0
 }  // namespace
 
 const std::vector<std::string>& declarationKeywords() {
-    static const std::vector<std::string> words{"system",     "lattice", "field",     "states",  "input",     "mass",      "rule",
-                                                "constraint", "goal",    "invariant", "ranking", "progress", "holonomic", "conserves"};
+    static const std::vector<std::string> words{"system",     "lattice", "symmetry",  "field",   "states",   "input",     "mass",
+                                                "rule",       "constraint", "goal", "invariant", "ranking", "progress", "holonomic",
+                                                "conserves"};
     return words;
 }
 

@@ -1,9 +1,11 @@
 // A system on a lattice. The alphabet enumerates the cell states (seed 000 §III: D, C, B1..Bn-1; the
 // planner's U/P/F labels with their parent pointers). Rule shapes close each generator under the
-// lattice's rotation group, in the spirit of Abrams and Ghrist's generator catalogues (seed 000
-// §II-C): a template written once along one direction applies in every orientation. Orientations
-// that rewrite the same cells in the same way (a pair along the z axis turned about z; the reverse of
-// a self-inverse transfer) are kept once, found by comparing structural keys.
+// system's symmetry group on the lattice (by default the full point group, rotations and
+// reflections), in the spirit of Abrams and Ghrist's generator catalogues (seed 000 §II-C): a
+// template written once along one direction applies in every orientation, and a one-sided template
+// on both sides. Orientations that rewrite the same cells in the same way (a pair along the z axis
+// turned about z; a line of cells mirrored in its own axis; the reverse of a self-inverse transfer)
+// are kept once, found by comparing structural keys.
 
 #include "rules/Model.h"
 
@@ -103,9 +105,18 @@ std::string Alphabet::name(CellValue v) const {
 }
 
 namespace {
-bool namesCellsByIndex(const Expr& e) {
-    return e.around >= 0 || std::any_of(e.kids.begin(), e.kids.end(), namesCellsByIndex);
+
+/// The guard part of a structural key. Conjuncts are sorted, since their order means nothing: a
+/// reflection that swaps two cells the guard treats alike (hole_delete's shepherds on either side
+/// of the deletion node) then gives the key of the unreflected orientation.
+void conjunctKeys(const System& s, const Expr& e, const RefPrinter& ref, std::vector<std::string>& out) {
+    if (e.kind != Expr::Kind::And) {
+        out.push_back("[" + printExpr(s, e, ref) + "]");
+        return;
+    }
+    for (const Expr& k : e.kids) conjunctKeys(s, k, ref, out);
 }
+
 }  // namespace
 
 Model::Model(const System& system, const Lattice& lattice)
@@ -117,23 +128,27 @@ Model::Model(const System& system, const Lattice& lattice)
         rules_.push_back({r.name, &r, false});
         if (r.bidirectional) rules_.push_back({r.reverseName.empty() ? r.name + ".rev" : r.reverseName, &r, true});
     }
-    std::map<std::string, int> seen;  // structural key -> directed rule that produced it first
-    for (int ri = 0; ri < static_cast<int>(rules_.size()); ++ri) {
+    const std::span<const LinearMap> group = symmetries();
+    struct Orientation {
+        std::vector<Vec> offsets;
+        std::string key;
+    };
+    std::vector<std::vector<Orientation>> orientations(rules_.size());
+    for (std::size_t ri = 0; ri < rules_.size(); ++ri) {
         const DirectedRule& dr = rules_[ri];
         const auto& lhs = dr.lhs();
-        bool anyNew = false;
-        int repeats = -1;
-        for (int rot = 0; rot < static_cast<int>(lattice.rotations().size()); ++rot) {
-            const Rotation& R = lattice.rotations()[rot];
+        for (const LinearMap& map : group) {
             std::vector<Vec> offsets;
             for (std::size_t i = 0; i < lhs.size(); ++i) {
                 Vec base = dr.rule->lhs[0].hasOffset ? dr.rule->lhs[i].offset
                                             : Vec{static_cast<int>(i) * lattice.direction(0).x,
                                                   static_cast<int>(i) * lattice.direction(0).y,
                                                   static_cast<int>(i) * lattice.direction(0).z};
-                offsets.push_back(R.apply(base));
+                offsets.push_back(map.apply(base));
             }
-            // Key: cells sorted by position relative to the lowest one; references become offsets.
+            // Key: cells sorted by position relative to the lowest one; references (@k, parent=@k,
+            // nbr@k) become offsets, so two orientations agree exactly when they read and write the
+            // same cells in the same way, whatever index each cell has.
             Vec low = *std::min_element(offsets.begin(), offsets.end());
             auto refFrom = [&](Vec from) {
                 return RefPrinter([&, from](int k) { return vecText(offsets[k] - from); });
@@ -146,22 +161,41 @@ Model::Model(const System& system, const Lattice& lattice)
             std::string key;
             for (const std::string& c : cells) key += c + ";";
             if (const Expr* g = dr.guard()) {
-                // A guard that names pattern cells by index (nbr@k) needs the offsets in index order
-                // too: two orientations merge only when they agree cell by cell. References (@k,
-                // parent=@k) print as positions, and `count pattern` looks at every cell alike.
-                key += "if" + printExpr(system, *g, refFrom(low));
-                if (namesCellsByIndex(*g))
-                    for (std::size_t i = 0; i < offsets.size(); ++i) key += vecText(offsets[i] - low);
+                std::vector<std::string> conjuncts;
+                conjunctKeys(system, *g, refFrom(low), conjuncts);
+                std::sort(conjuncts.begin(), conjuncts.end());
+                key += "if";
+                for (const std::string& c : conjuncts) key += c;
             }
-            auto [it, inserted] = seen.emplace(key, ri);
-            if (!inserted) {
-                if (it->second != ri) repeats = it->second;
-                continue;
-            }
-            anyNew = true;
-            shapes_.push_back({ri, rot, std::move(offsets)});
+            orientations[ri].push_back({std::move(offsets), std::move(key)});
         }
-        if (!anyNew && repeats >= 0) duplicates_.push_back({ri, repeats});
+    }
+    // The rotations claim their rewrites first, for every rule; a reflection keeps only what no
+    // rotation of any rule gives. So a rule keeps the instances it had under rotations alone, and a
+    // reflection adds none where the rules are already mirror-symmetric as a set (hex_pivot's
+    // pivot_back is pivot mirrored).
+    const std::size_t proper = std::min(group.size(), lattice.rotations().size());
+    std::map<std::string, int> owner;
+    std::vector<std::vector<bool>> kept(rules_.size(), std::vector<bool>(group.size(), false));
+    for (auto [from, to] : {std::pair<std::size_t, std::size_t>{0, proper}, {proper, group.size()}})
+        for (std::size_t ri = 0; ri < rules_.size(); ++ri)
+            for (std::size_t g = from; g < to; ++g)
+                kept[ri][g] = owner.emplace(orientations[ri][g].key, static_cast<int>(ri)).second;
+    for (std::size_t ri = 0; ri < rules_.size(); ++ri)
+        for (std::size_t g = 0; g < group.size(); ++g)
+            if (kept[ri][g]) shapes_.push_back({static_cast<int>(ri), static_cast<int>(g), orientations[ri][g].offsets});
+    // A duplicate: every orientation of the rule is an orientation of some earlier rule.
+    std::map<std::string, int> earlier;
+    for (std::size_t ri = 0; ri < rules_.size(); ++ri) {
+        bool covered = true;
+        int repeats = -1;
+        for (const Orientation& o : orientations[ri]) {
+            auto it = earlier.find(o.key);
+            if (it == earlier.end()) covered = false;
+            else repeats = it->second;
+        }
+        if (covered && repeats >= 0) duplicates_.push_back({static_cast<int>(ri), repeats});
+        for (const Orientation& o : orientations[ri]) earlier.emplace(o.key, static_cast<int>(ri));
     }
 }
 

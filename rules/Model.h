@@ -1,12 +1,13 @@
 #pragma once
 // A system placed on a lattice: its finite cell alphabet, its directed rules and the rule shapes
-// obtained by closing every rule under the lattice's rotations.
+// obtained by closing every rule under the system's symmetry group on that lattice.
 
 #include "rules/Ir.h"
 
 #include <climits>
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -55,8 +56,8 @@ struct DirectedRule {
 
 /// A rule in one orientation: the offsets of its pattern cells from the anchor.
 struct RuleShape {
-    int rule = 0;  // index into Model::rules()
-    int rotation = 0;
+    int rule = 0;      // index into Model::rules()
+    int symmetry = 0;  // index into Lattice::pointGroup(): below rotations().size() a rotation
     std::vector<Vec> offsets;
 };
 
@@ -68,12 +69,17 @@ public:
     const Lattice& lattice() const { return *lattice_; }
     const Alphabet& alphabet() const { return alphabet_; }
     const std::vector<DirectedRule>& rules() const { return rules_; }
+    /// Grouped by rule, in rule order; within a rule, in the order of the lattice's point group.
     const std::vector<RuleShape>& shapes() const { return shapes_; }
+    /// The group the rules are closed under: the system's symmetry on this lattice.
+    std::span<const LinearMap> symmetries() const { return lattice_->symmetries(system_->symmetry); }
     /// Number of shapes of each directed rule after deduplication (0: the rule repeats another).
     int shapeCount(int rule) const;
     /// Directed rule `rule` is among `names` (a `<=>` rule's name covers both directions).
     bool ruleNamed(int rule, const std::vector<std::string>& names) const;
-    /// Directed rules whose every orientation repeats an orientation of an earlier rule, with it.
+    /// Directed rules whose every orientation repeats an orientation of earlier rules, with one of
+    /// them. Such a rule may still own shapes: a rewrite a reflection of an earlier rule would also
+    /// give is kept under the rule whose rotation gives it.
     const std::vector<std::pair<int, int>>& duplicates() const { return duplicates_; }
 
 private:

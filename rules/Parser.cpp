@@ -84,7 +84,7 @@ private:
     System s_;
     std::size_t p_ = 0;
     std::set<std::string> ruleNames_, propertyNames_;
-    bool sawSystem_ = false;
+    bool sawSystem_ = false, sawSymmetry_ = false;
     // Context of the rule being parsed: pattern length for @k references, guard mode.
     int patternCells_ = -1;
     bool inGuard_ = false;
@@ -174,6 +174,7 @@ private:
         const std::string& k = kw.text;
         if (k == "system") return systemDecl(kw);
         if (k == "lattice") return latticeDecl();
+        if (k == "symmetry") return symmetryDecl(kw);
         if (k == "field") {
             const std::string& name = freshName("a field").text;
             expect(":", "after the field name, as in field label: U | P | F");
@@ -194,7 +195,7 @@ private:
         const std::string hint = suggestion(k, declarationKeywords());
         if (!hint.empty()) fail(kw.loc, "unknown declaration '" + k + "'" + hint);
         fail(kw.loc, "unknown declaration '" + k +
-                         "'; expected system, lattice, field, states, input, mass, rule, constraint, goal, invariant, "
+                         "'; expected system, lattice, symmetry, field, states, input, mass, rule, constraint, goal, invariant, "
                          "ranking, progress, holonomic or conserves");
     }
 
@@ -212,6 +213,26 @@ private:
         const Lattice* lattice = Lattice::byName(name.text);
         if (!lattice) fail(name.loc, "unknown lattice '" + name.text + "'; use square2d, cubic3d, hex2d or any");
         s_.lattice = lattice->kind();
+    }
+
+    void symmetryDecl(const Token& kw) {
+        static const char* const kValid = "none, rotations or rotations+reflections";
+        if (sawSymmetry_) fail(kw.loc, "the symmetry is declared twice; keep one 'symmetry' line");
+        const Token& word = identifier(std::string("a symmetry: ") + kValid);
+        if (word.text == "none") s_.symmetry = Symmetry::None;
+        else if (word.text == "rotations" && !at("+")) s_.symmetry = Symmetry::Rotations;
+        else if (word.text == "rotations") {
+            next();
+            const Token& second = peek();
+            if (!second.is("reflections")) fail(second.loc, "expected 'reflections' after 'rotations+', found " + describe(second));
+            next();
+            s_.symmetry = Symmetry::RotationsReflections;
+        } else if (word.text == "reflections") {
+            fail(word.loc, "reflections come with the rotations: write 'symmetry rotations+reflections' (or rotations, or none)");
+        } else {
+            fail(word.loc, "unknown symmetry '" + word.text + "'; use " + kValid);
+        }
+        sawSymmetry_ = true;
     }
 
     void fieldDecl(SourceLoc loc, const std::string& name) {

@@ -1,6 +1,7 @@
 // The canonical printer of the rule IR. Its output is the normal form of a .holon file: parsing it
 // gives back an equal IR (tested for every library file). The same term and expression printers,
-// with references replaced by offsets, give the structural keys that deduplicate rule orientations.
+// with references (`@k`, `parent=@k`, `nbr@k`) replaced by offsets, give the structural keys that
+// deduplicate rule orientations.
 
 #include "rules/Printer.h"
 
@@ -11,6 +12,13 @@ namespace holon::rules {
 namespace {
 
 std::string refText(const RefPrinter& ref, int k) { return ref ? ref(k) : "@" + std::to_string(k); }
+
+/// " nbr" or " nbr@k"; with a RefPrinter the quantified cell too is named by it, so a structural key
+/// says where the neighbours are, not which pattern index they surround.
+std::string nbrText(int around, const RefPrinter& ref) {
+    if (ref) return " nbr" + ref(around);
+    return around ? " nbr@" + std::to_string(around) : " nbr";
+}
 
 std::string valueText(const System& s, const Atom& a, const RefPrinter& ref) {
     const Field& f = s.fields[a.index];
@@ -91,7 +99,7 @@ std::string printExpr(const System& s, const Expr& e, const RefPrinter& ref) {
         return sub(e.kids[0], rightAssoc || !chain) + " " + op + " " + sub(e.kids[1], !rightAssoc || !chain);
     };
     auto quant = [&](const char* word) {
-        if (e.around >= 0) return std::string(word) + " nbr" + (e.around ? "@" + std::to_string(e.around) : "") + " " + printPredicate(s, e.pred, ref);
+        if (e.around >= 0) return std::string(word) + nbrText(e.around, ref) + " " + printPredicate(s, e.pred, ref);
         if (e.around == Expr::kOwnCells) return std::string(word) + " pattern " + printPredicate(s, e.pred, ref);
         const std::string cellGuard = e.kids.empty() ? "" : ": " + printExpr(s, e.kids[0], ref);
         return std::string(word) + "(" + printPredicate(s, e.pred, ref) + cellGuard + ")";
@@ -113,7 +121,7 @@ std::string printExpr(const System& s, const Expr& e, const RefPrinter& ref) {
     case Expr::Kind::Some: return quant("some");
     case Expr::Kind::No: return quant("no");
     case Expr::Kind::Connected: {
-        if (e.around >= 0) return "connected nbr" + (e.around ? "@" + std::to_string(e.around) : std::string()) + " " + printPredicate(s, e.pred, ref);
+        if (e.around >= 0) return "connected" + nbrText(e.around, ref) + " " + printPredicate(s, e.pred, ref);
         const bool everything = e.pred.size() == 1 && e.pred[0].base == CellTerm::Base::Occupied && e.pred[0].atoms.empty();
         return everything ? "connected" : "connected(" + printPredicate(s, e.pred, ref) + ")";
     }
@@ -147,6 +155,7 @@ std::string printSystem(const System& s) {
     std::ostringstream out;
     out << "system " << s.name << '\n';
     if (s.lattice) out << "lattice " << Lattice::get(*s.lattice).name() << '\n';
+    if (s.symmetry != System{}.symmetry) out << "symmetry " << symmetryName(s.symmetry) << '\n';
     for (const Field& f : s.fields) {
         out << "field " << f.name << ": ";
         if (f.kind == FieldKind::Dir) out << "dir";

@@ -71,13 +71,22 @@ HoleRules::HoleRules(const HexArray& array, const std::vector<std::uint8_t>& tar
             if (steps[1] - steps[0] == array.step(d)) return d;
         return -1;
     };
+    // One orientation per slot: a second one (a mirror image, under `symmetry rotations+reflections`)
+    // would silently replace the orientation the slot is for.
+    auto place = [](int& slot, int s, const std::string& file, const std::string& rule) {
+        if (slot >= 0)
+            throw InputError(file + ".holon: two orientations of rule '" + rule +
+                             "' point the same way; it is written for one side, so declare 'symmetry rotations'");
+        slot = s;
+    };
     for (int s = 0; s < holeEngine_->shapeCount(); ++s)
-        if (holeSystem_->ruleName(s) == "hole_move") move_[direction(*holeEngine_, s)] = s;
+        if (holeSystem_->ruleName(s) == "hole_move") place(move_[direction(*holeEngine_, s)], s, "hex_holes", "hole_move");
     for (int s = 0; s < collapseEngine_->shapeCount(); ++s)
         for (const CollapseRule& c : kCollapse)
             for (int hops = 1; hops <= 3; ++hops)
                 if (collapseSystem_->ruleName(s) == c.stem + std::to_string(hops))
-                    collapse_[c.side][hops][(direction(*collapseEngine_, s) - c.side + 6) % 6] = s;
+                    place(collapse_[c.side][hops][(direction(*collapseEngine_, s) - c.side + 6) % 6], s, "hex_collapse",
+                          collapseSystem_->ruleName(s));
     for (int d = 0; d < 6; ++d)
         if (move_[d] < 0) throw InputError("hex_holes.holon: no hole_move toward direction " + std::to_string(d));
     // The compiled engine does not evaluate non-local constraints; the sculptor enforces exactly
@@ -89,8 +98,8 @@ HoleRules::HoleRules(const HexArray& array, const std::vector<std::uint8_t>& tar
     std::fill(std::begin(advance_), std::end(advance_), -1);
     for (int s = 0; s < migrateEngine_->shapeCount(); ++s) {
         const std::string& name = migrateSystem_->ruleName(s);
-        if (name == "migrate") migrate_[direction(*migrateEngine_, s)] = s;
-        if (name == "advance") advance_[direction(*migrateEngine_, s)] = s;
+        if (name == "migrate") place(migrate_[direction(*migrateEngine_, s)], s, "hex_migrate", name);
+        if (name == "advance") place(advance_[direction(*migrateEngine_, s)], s, "hex_migrate", name);
     }
     for (int d = 0; d < 6; ++d)
         if (migrate_[d] < 0 || advance_[d] < 0) throw InputError("hex_migrate.holon: needs rules migrate and advance in every direction");

@@ -2,13 +2,19 @@
 // timestep of real runs, and the planner's tri-regions against their definition.
 
 #include "planner/hex/HexShapes.h"
+#include "planner/hex/HoleRules.h"
 #include "planner/hex/HoleSculptor.h"
 #include "planner/hex/SculptRun.h"
 #include "rules/Error.h"
+#include "rules/Library.h"
+#include "rules/Parser.h"
 
+#include <cstdlib>
 #include <doctest/doctest.h>
-
+#include <filesystem>
+#include <fstream>
 #include <set>
+#include <unistd.h>
 
 using namespace holon::planner::hex;
 
@@ -116,4 +122,27 @@ TEST_CASE("geometries have equal area and bad ones are refused") {
     }
     CHECK_THROWS_AS(sculptShape(array, "hexagon", "--to"), holon::InputError);
     CHECK_THROWS_AS(HexArray(5), holon::InputError);
+}
+
+TEST_CASE("hex_collapse mirrored is refused, not run with one gravity's rules in another's place") {
+    // The library with hex_collapse.holon's `symmetry rotations` taken out: its rules then also
+    // hold mirrored, and collapse_up's mirror image falls toward another gravity's slot.
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("holon_mirrored_library_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::copy(holon::rules::libraryDir(), dir);
+    const std::string collapse = holon::rules::readTextFile((dir / "hex_collapse.holon").string());
+    const std::size_t at = collapse.find("\nsymmetry rotations\n");
+    REQUIRE(at != std::string::npos);
+    std::ofstream(dir / "hex_collapse.holon") << collapse.substr(0, at + 1) << collapse.substr(at + 20);
+    const char* saved = std::getenv("HOLON_LIBRARY");
+    const std::string savedValue = saved ? saved : "";
+    ::setenv("HOLON_LIBRARY", dir.c_str(), 1);
+    const HexArray array(20);
+    const std::vector<std::uint8_t> target(static_cast<std::size_t>(array.size()), 0);
+    CHECK_THROWS_WITH_AS(HoleRules(array, target), doctest::Contains("declare 'symmetry rotations'"), holon::InputError);
+    if (saved) ::setenv("HOLON_LIBRARY", savedValue.c_str(), 1);
+    else ::unsetenv("HOLON_LIBRARY");
+    CHECK_NOTHROW(HoleRules(array, target));
+    fs::remove_all(dir);
 }

@@ -1,5 +1,6 @@
-// Conformance every lattice passes: neighbour symmetry, opposites, a closed rotation group that maps
-// the direction set onto itself, and the cell counts of bounded regions.
+// Conformance every lattice passes: neighbour symmetry, opposites, a closed point group (rotations
+// first, then reflections) that maps the direction set onto itself, and the cell counts of bounded
+// regions.
 
 #include "rules/Error.h"
 #include "rules/Lattice.h"
@@ -19,20 +20,33 @@ TEST_CASE("every lattice passes the conformance checks") {
             CHECK(l->directionOf(l->direction(d)) == d);
             CHECK(l->directionByName(l->directionName(d)) == d);
         }
-        const auto& group = l->rotations();
-        for (const Rotation& a : group) {
-            // Closure: the product of two rotations is a rotation of the group.
-            for (const Rotation& b : group) CHECK(std::find(group.begin(), group.end(), a.then(b)) != group.end());
-            // Each rotation permutes the directions.
+        const auto& rotations = l->rotations();
+        const auto& group = l->pointGroup();
+        // The proper rotations come first, in the order of rotations(), then as many reflections.
+        REQUIRE(group.size() == 2 * rotations.size());
+        for (std::size_t i = 0; i < group.size(); ++i) {
+            CHECK(group[i].determinant() == (i < rotations.size() ? 1 : -1));
+            if (i < rotations.size()) CHECK(group[i] == rotations[i]);
+            CHECK(std::count(group.begin(), group.end(), group[i]) == 1);
+        }
+        for (const LinearMap& a : group) {
+            // Closure: the product of two symmetries is a symmetry of the group.
+            for (const LinearMap& b : group) CHECK(std::find(group.begin(), group.end(), a.then(b)) != group.end());
+            // Each symmetry permutes the directions.
             std::vector<int> image;
             for (Vec d : l->directions()) image.push_back(l->directionOf(a.apply(d)));
             std::sort(image.begin(), image.end());
             for (int d = 0; d < l->degree(); ++d) CHECK(image[d] == d);
         }
-        // The group acts transitively on directions, so a rule written along one direction closes
-        // to all of them.
+        // The first reflection fixes direction 0, so a line of cells along it maps onto itself.
+        CHECK(group[rotations.size()].apply(l->direction(0)) == l->direction(0));
+        CHECK(l->symmetries(Symmetry::None).size() == 1);
+        CHECK(l->symmetries(Symmetry::Rotations).size() == rotations.size());
+        CHECK(l->symmetries(Symmetry::RotationsReflections).size() == group.size());
+        // The rotations act transitively on directions, so a rule written along one direction
+        // closes to all of them.
         std::vector<int> orbit;
-        for (const Rotation& r : group) orbit.push_back(l->directionOf(r.apply(l->direction(0))));
+        for (const LinearMap& r : rotations) orbit.push_back(l->directionOf(r.apply(l->direction(0))));
         std::sort(orbit.begin(), orbit.end());
         orbit.erase(std::unique(orbit.begin(), orbit.end()), orbit.end());
         CHECK(static_cast<int>(orbit.size()) == l->degree());
@@ -40,6 +54,9 @@ TEST_CASE("every lattice passes the conformance checks") {
     CHECK(Lattice::get(LatticeKind::Square2D).rotations().size() == 4);
     CHECK(Lattice::get(LatticeKind::Cubic3D).rotations().size() == 24);
     CHECK(Lattice::get(LatticeKind::Hex2D).rotations().size() == 6);
+    CHECK(Lattice::get(LatticeKind::Square2D).pointGroup().size() == 8);
+    CHECK(Lattice::get(LatticeKind::Cubic3D).pointGroup().size() == 48);
+    CHECK(Lattice::get(LatticeKind::Hex2D).pointGroup().size() == 12);
 }
 
 TEST_CASE("region cell counts and neighbour symmetry") {

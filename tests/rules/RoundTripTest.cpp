@@ -30,6 +30,7 @@ TEST_CASE("every library file round-trips through the printer") {
 TEST_CASE("the printer keeps every construct") {
     const std::string text = R"(system everything
 lattice square2d
+symmetry rotations
 field res: D | C | B1
 field label: U | P | F if D | C
 field parent: dir if P
