@@ -8,6 +8,7 @@
 
 #include "checker/Check.h"
 
+#include "checker/Budget.h"
 #include "checker/Graph.h"
 #include "checker/Holonomy.h"
 #include "rules/Error.h"
@@ -101,12 +102,14 @@ int ruleReach(const rules::Model& model) {
 /// States with no enabled rule, outside the goal and where `assume` holds, split into deadlocks and
 /// edge effects of the bounded region: on the region grown by the rules' reach (outside cells empty,
 /// inputs false) some instance is enabled, so only the region's bound stops the system, not the
-/// design. At most kClassified states are tried on the grown region; the rest count as deadlocks.
+/// design. At most kClassified states are tried on the grown region, within the budget; the rest
+/// stay unclassified (never called deadlocks: an edge effect reported as a flaw is a wrong answer).
 struct Stuck {
     std::vector<StateId> deadlocks, edgeEffects;
+    std::uint64_t unclassified = 0;
 };
 
-Stuck stuckStates(const Explorer& ex, const rules::Engine& e, const rules::Expr* assume) {
+Stuck stuckStates(const Explorer& ex, const rules::Engine& e, const rules::Expr* assume, const Budget& budget) {
     constexpr std::size_t kClassified = 10'000;
     const rules::Model& model = e.model();
     const rules::Region& region = e.region();
@@ -118,14 +121,14 @@ Stuck stuckStates(const Explorer& ex, const rules::Engine& e, const rules::Expr*
         const auto cells = ex.cells(s);
         if (model.system().goal && e.holds(*model.system().goal, cells.data())) continue;
         if (assume && !e.holds(*assume, cells.data())) continue;
-        bool edge = false;
-        if (tried++ < kClassified) {
-            rules::Configuration c = wide.empty();
-            std::copy(cells.begin(), cells.end(), c.cells.begin());
-            std::copy(e.inputs().begin(), e.inputs().end(), c.inputs.begin());
-            edge = !wide.enabled(c).empty();
+        if (tried++ >= kClassified || budget.expired()) {
+            ++out.unclassified;
+            continue;
         }
-        (edge ? out.edgeEffects : out.deadlocks).push_back(s);
+        rules::Configuration c = wide.empty();
+        std::copy(cells.begin(), cells.end(), c.cells.begin());
+        std::copy(e.inputs().begin(), e.inputs().end(), c.inputs.begin());
+        (wide.enabled(c).empty() ? out.deadlocks : out.edgeEffects).push_back(s);
     }
     return out;
 }
@@ -136,9 +139,26 @@ std::string edgeText(const Stuck& stuck) {
     return "; " + std::to_string(stuck.edgeEffects.size()) + " states are stuck only at the region's edge (a rule instance needs cells outside it)";
 }
 
+/// A property decided by stuck states: violated by a deadlock (the nearest has a trace), else
+/// unknown while the search or the classification is incomplete, else holds.
+void judgeStuck(PropertyResult& r, const Explorer& ex, const Stuck& stuck, bool complete, const std::string& which,
+                const std::string& description, const char* countKey, const std::string& holdsText) {
+    r.witness = nullptr;
+    if (!violatedAtNearest(r, ex, stuck.deadlocks, [](StateId) { return true; }, which, description, countKey)) {
+        r.verdict = complete && stuck.unclassified == 0 ? Verdict::Holds : Verdict::Unknown;
+        r.summary = !complete ? "no violation among the " + std::to_string(ex.stats().states) + " states explored before the limit"
+                    : stuck.unclassified ? std::to_string(stuck.unclassified) + " stuck states not classified (deadlock or edge effect) within the limits"
+                                         : holdsText;
+        r.summary += edgeText(stuck);
+    }
+    r.witness["edge_effects"] = stuck.edgeEffects.size();
+    r.witness["unclassified"] = stuck.unclassified;
+}
+
 }  // namespace
 
 CheckReport check(const rules::Model& model, const rules::Region& region, const CheckOptions& options, Exploration* keep) {
+    const Budget budget(options.limits.timeoutSeconds);
     const rules::System& system = model.system();
     const auto known = checkableProperties(system);
     for (const std::string& name : options.properties)
@@ -340,11 +360,9 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
         }
         case rules::Property::Kind::Progress: {
             r.kind = "progress";
-            const Stuck stuck = stuckStates(*ex, e, p.exprs.empty() ? nullptr : &p.exprs[0]);
-            if (!violatedAtNearest(r, *ex, stuck.deadlocks, [](StateId) { return true; }, "outside the goal with no enabled rule",
-                                   "stuck outside the goal: no rule is enabled", "stuck"))
-                unknownOr(r, "some rule is enabled in every state outside the goal" + edgeText(stuck));
-            r.witness["edge_effects"] = stuck.edgeEffects.size();
+            judgeStuck(r, *ex, stuckStates(*ex, e, p.exprs.empty() ? nullptr : &p.exprs[0], budget), complete,
+                       "outside the goal with no enabled rule", "stuck outside the goal: no rule is enabled", "stuck",
+                       "some rule is enabled in every state outside the goal");
             break;
         }
         case rules::Property::Kind::Holonomic:
@@ -352,7 +370,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
                 r.kind = "holonomic";
                 r.summary = "needs the whole graph; the search stopped at a limit";
             } else {
-                r = checkHolonomy(*ex, comps, p);
+                r = checkHolonomy(*ex, comps, p, budget);
             }
             break;
         }
@@ -365,11 +383,9 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
         PropertyResult r;
         r.name = "deadlock";
         r.kind = "deadlock";
-        const Stuck stuck = stuckStates(*ex, e, nullptr);
-        if (!violatedAtNearest(r, *ex, stuck.deadlocks, [](StateId) { return true; }, "with no enabled rule outside the goal",
-                               "a deadlock: no rule is enabled and the goal is not reached", "deadlocks"))
-            unknownOr(r, "every state outside the goal has an enabled rule" + edgeText(stuck));
-        r.witness["edge_effects"] = stuck.edgeEffects.size();
+        judgeStuck(r, *ex, stuckStates(*ex, e, nullptr, budget), complete, "with no enabled rule outside the goal",
+                   "a deadlock: no rule is enabled and the goal is not reached", "deadlocks",
+                   "every state outside the goal has an enabled rule");
         r.seconds = since(t0);
         report.properties.push_back(std::move(r));
     }

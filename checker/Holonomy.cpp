@@ -68,9 +68,22 @@ PropertyResult finish(const Explorer& ex, const GraphView& graph, PropertyResult
     return r;
 }
 
+/// A violation found before the timeout stands, but its count covers only the states checked.
+void markPartial(PropertyResult& r) {
+    r.summary = "at least " + r.summary + " (the timeout stopped the count)";
+    r.witness["partial"] = true;
+}
+
+PropertyResult stoppedByTimeout(PropertyResult r, double seconds) {
+    r.verdict = Verdict::Unknown;
+    r.summary = "stopped by the timeout during the holonomy check, no violation found yet; raise --timeout";
+    r.seconds = seconds;
+    return r;
+}
+
 }  // namespace
 
-PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const rules::Property& property) {
+PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const rules::Property& property, const Budget& budget) {
     const auto start = std::chrono::steady_clock::now();
     PropertyResult r;
     r.name = property.name;
@@ -87,6 +100,8 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
     std::vector<CellValue> cells(region.size());
     auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
 
+    bool timedOut = false;
+    auto outOfTime = [&] { return timedOut || (timedOut = budget.expired()); };
     auto consider = [&](StateId c, StateId other, int modules) {
         if (other == kNoState || other == c || isSuccessor(ex, c, other)) return;
         if (comps.of[c] != comps.of[other]) return;  // unreachable both ways
@@ -97,6 +112,7 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
 
     if (!projected) {
         for (StateId c : ex.ids()) {
+            if (outOfTime()) break;
             ex.unpack(c, cells.data());
             int modules = 0;
             for (CellValue v : cells) modules += v != 0;
@@ -121,9 +137,11 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
             }
         }
         const std::string adjacency = byMove ? "module move" : "occupancy toggle";
+        if (timedOut && violations == 0) return stoppedByTimeout(r, seconds());
         PropertyResult out = finish(ex, graph, r, violations, best, adjacency,
                                     "configurations one " + adjacency + " apart are one rule step apart, or unreachable");
         out.seconds = seconds();
+        if (timedOut) markPartial(out);
         return out;
     }
 
@@ -179,6 +197,7 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
         if (clean[c]) present[{occupancy[c], mass[c]}].emplace(comps.of[c], c);
     std::set<StateId> classesDone;
     for (StateId c : ids) {
+        if (outOfTime()) break;
         if (!clean[c]) continue;
         const StateId cls = find(c);
         if (!classesDone.insert(cls).second) continue;
@@ -194,9 +213,11 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
             best.add(c, same->second, std::popcount(occupancy[c]));
         }
     }
+    if (timedOut && violations == 0) return stoppedByTimeout(r, seconds());
     PropertyResult out = finish(ex, graph, r, violations, best, "occupancy toggle (modulo transfers)",
                                 "every pixel step is one occupancy change plus transfers, or unreachable");
     out.seconds = seconds();
+    if (timedOut) markPartial(out);
     return out;
 }
 

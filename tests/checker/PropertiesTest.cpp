@@ -5,6 +5,7 @@
 
 #include "CheckSupport.h"
 #include "checker/Draw.h"
+#include "checker/Holonomy.h"
 
 using namespace holon;
 using checker::Verdict;
@@ -117,6 +118,17 @@ TEST_CASE("deadlock is relative to a goal, and a state stuck at the region's edg
     auto s = test::checkFrom(stuck, "square:2x1", "A.", "");
     CHECK(s.property("deadlock").verdict == Verdict::Holds);
     CHECK(s.property("deadlock").witness["edge_effects"] == 1);
+}
+
+TEST_CASE("the budget bounds the holonomy check too, not only the exploration") {
+    auto c = test::checkAll(rules::librarySystem("pixel"), "square:3x3");
+    const auto& ex = *c.kept.explorer;
+    const rules::Property& p = *c.world.system.property("holonomy");
+    CHECK(checker::checkHolonomy(ex, checker::components(ex), p, checker::Budget()).verdict == Verdict::Holds);
+    const checker::Budget spent(1e-9);
+    const auto r = checker::checkHolonomy(ex, checker::components(ex), p, spent);
+    CHECK(r.verdict == Verdict::Unknown);
+    CHECK(r.summary.find("stopped by the timeout") != std::string::npos);
 }
 
 TEST_CASE("termination fails exactly when the reachable graph has a cycle, whatever steps it mixes") {
