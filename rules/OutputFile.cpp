@@ -1,0 +1,153 @@
+// The checked writer (OutputFile.h). A file is written to "<path>.tmp-XXXXXX" in the same folder,
+// flushed and closed with every error checked, then renamed over the path: rename within a folder
+// is atomic on POSIX, so a reader (or a job killed half-way) sees the old file or the new one,
+// never a torn one. Paths that are not regular files (devices, pipes) cannot be renamed over and
+// are written directly.
+
+#include "rules/OutputFile.h"
+
+#include "rules/Error.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <sstream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace holon::rules {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string reason() { return std::strerror(errno); }
+
+std::string folderOf(const std::string& path) {
+    const fs::path parent = fs::path(path).parent_path();
+    return parent.empty() ? "." : parent.string();
+}
+
+bool isSpecial(const std::string& path) {
+    struct stat st {};
+    return ::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+}
+
+/// Writes all of `text` to `fd`; false (with errno set) on any error.
+bool writeAll(int fd, const std::string& text) {
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        done += static_cast<std::size_t>(n);
+    }
+    return true;
+}
+
+}  // namespace
+
+OutputFile::OutputFile(std::string option, std::string path) : option_(std::move(option)), path_(std::move(path)) {
+    if (path_.empty()) throw InputError(option_ + ": the path is empty; name a file");
+    struct stat st {};
+    if (::stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+        throw InputError(option_ + " " + path_ + ": is a folder; name a file inside it");
+    if (isSpecial(path_)) {
+        if (::access(path_.c_str(), W_OK) != 0) throw InputError(option_ + " " + path_ + ": cannot write: " + reason());
+        return;
+    }
+    const std::string folder = folderOf(path_);
+    if (::stat(folder.c_str(), &st) != 0) throw InputError(option_ + " " + path_ + ": the folder '" + folder + "' does not exist; create it first");
+    if (!S_ISDIR(st.st_mode)) throw InputError(option_ + " " + path_ + ": '" + folder + "' is not a folder");
+    if (::access(folder.c_str(), W_OK | X_OK) != 0) throw InputError(option_ + " " + path_ + ": cannot write into '" + folder + "': " + reason());
+}
+
+void OutputFile::write(const std::string& text) const {
+    auto fail = [&](const std::string& what) { return InputError(option_ + " " + path_ + ": " + what + ": " + reason()); };
+    if (isSpecial(path_)) {
+        const int fd = ::open(path_.c_str(), O_WRONLY | O_TRUNC);
+        if (fd < 0) throw fail("cannot open");
+        const bool ok = writeAll(fd, text);
+        const int saved = errno;
+        ::close(fd);
+        errno = saved;
+        if (!ok) throw fail("cannot write");
+        return;
+    }
+    std::string temp = path_ + ".tmp-XXXXXX";
+    const int fd = ::mkstemp(temp.data());
+    if (fd < 0) throw fail("cannot create a file beside it");
+    const bool written = writeAll(fd, text) && ::fsync(fd) == 0;
+    const int saved = errno;
+    const bool closed = ::close(fd) == 0;
+    if (!written || !closed) {
+        errno = written ? errno : saved;
+        const InputError e = fail("cannot write");
+        ::unlink(temp.c_str());
+        throw e;
+    }
+    // mkstemp makes the file private; give it the mode an ordinary new file gets.
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::chmod(temp.c_str(), 0666 & ~mask);
+    if (::rename(temp.c_str(), path_.c_str()) != 0) {
+        const InputError e = fail("cannot move the finished file into place");
+        ::unlink(temp.c_str());
+        throw e;
+    }
+}
+
+void OutputFile::write(const std::function<void(std::ostream&)>& fill) const {
+    std::ostringstream text;
+    fill(text);
+    write(text.str());
+}
+
+OutputStream::OutputStream(std::string option, std::string path) : option_(std::move(option)), path_(std::move(path)) {
+    if (isSpecial(path_)) {
+        out_ = std::make_unique<std::ofstream>(path_);
+    } else {
+        temp_ = path_ + ".tmp-XXXXXX";
+        const int fd = ::mkstemp(temp_.data());
+        if (fd < 0) throw InputError(option_ + " " + path_ + ": cannot create a file beside it: " + reason());
+        ::close(fd);
+        out_ = std::make_unique<std::ofstream>(temp_, std::ios::binary | std::ios::trunc);
+    }
+    if (!*out_) throw InputError(option_ + " " + path_ + ": cannot open: " + reason());
+}
+
+OutputStream::~OutputStream() {
+    if (!committed_ && !temp_.empty()) ::unlink(temp_.c_str());
+}
+
+void OutputStream::commit() {
+    out_->flush();
+    const bool ok = static_cast<bool>(*out_);
+    const int saved = errno;
+    out_->close();
+    if (!ok || out_->fail()) {
+        errno = ok ? errno : saved;
+        throw InputError(option_ + " " + path_ + ": cannot write: " + reason());
+    }
+    if (!temp_.empty()) {
+        const mode_t mask = ::umask(0);
+        ::umask(mask);
+        ::chmod(temp_.c_str(), 0666 & ~mask);
+        if (::rename(temp_.c_str(), path_.c_str()) != 0)
+            throw InputError(option_ + " " + path_ + ": cannot move the finished file into place: " + reason());
+    }
+    committed_ = true;
+}
+
+void prepareOutputDir(const std::string& option, const std::string& dir) {
+    if (dir.empty()) throw InputError(option + ": the folder name is empty");
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw InputError(option + " " + dir + ": exists and is not a folder; name a folder");
+    fs::create_directories(dir, ec);
+    if (ec) throw InputError(option + " " + dir + ": cannot create the folder: " + ec.message());
+    if (::access(dir.c_str(), W_OK | X_OK) != 0) throw InputError(option + " " + dir + ": cannot write into the folder: " + reason());
+}
+
+}  // namespace holon::rules

@@ -1,0 +1,54 @@
+#pragma once
+// The one checked writer for everything holon writes to a file: a path is checked before the work
+// starts (so a finished job is never thrown away for a bad path), a file is written to a temporary
+// beside it and renamed into place (never half-written), and every write error is reported with
+// the system's reason. Special files (/dev/stdout, a pipe) are written in place, errors checked.
+
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <string>
+
+namespace holon::rules {
+
+/// A file being written in pieces (a plan's moves as they happen): the text goes to a temporary
+/// file; commit() checks every write and renames it into place. Destroyed without commit() (an
+/// error, a signal that unwinds), the temporary is removed and the old file, if any, stays.
+class OutputStream {
+public:
+    OutputStream(std::string option, std::string path);
+    OutputStream(OutputStream&&) noexcept = default;
+    ~OutputStream();
+    std::ostream& stream() { return *out_; }
+    /// Flushes, checks, closes and renames; throws InputError with the reason.
+    void commit();
+
+private:
+    std::string option_, path_, temp_;
+    std::unique_ptr<std::ofstream> out_;
+    bool committed_ = false;
+};
+
+class OutputFile {
+public:
+    /// Checks now that `path` can be written: its folder exists and takes files, and it is not a
+    /// folder itself. `option` (e.g. "--svg") names it in messages. Throws InputError otherwise.
+    OutputFile(std::string option, std::string path);
+    const std::string& path() const { return path_; }
+    /// Writes the whole file at once; throws InputError with the reason when it cannot.
+    void write(const std::string& text) const;
+    /// Writes through a stream (for large outputs); the same guarantees.
+    void write(const std::function<void(std::ostream&)>& fill) const;
+    /// Starts writing in pieces.
+    OutputStream open() const { return OutputStream(option_, path_); }
+
+private:
+    std::string option_, path_;
+};
+
+/// Makes sure `dir` is a folder holon can write into, creating it (and its parents) if missing;
+/// throws InputError naming `option` and the reason.
+void prepareOutputDir(const std::string& option, const std::string& dir);
+
+}  // namespace holon::rules

@@ -1,0 +1,67 @@
+// The checked writer: bad paths refused before any work, write errors reported, never a torn or
+// half-written file, nothing left behind when a piecewise write is abandoned.
+
+#include "rules/Error.h"
+#include "rules/OutputFile.h"
+
+#include <doctest/doctest.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using holon::InputError;
+using holon::rules::OutputFile;
+
+namespace {
+namespace fs = std::filesystem;
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+std::size_t entries(const fs::path& dir) { return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator())); }
+}  // namespace
+
+TEST_CASE("an output path is checked before the work: a missing folder or a folder as the file") {
+    const fs::path dir = fs::temp_directory_path() / "holon_output_test";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    CHECK_THROWS_WITH_AS(OutputFile("--svg", (dir / "no" / "such.svg").string()), doctest::Contains("does not exist"), InputError);
+    CHECK_THROWS_WITH_AS(OutputFile("--svg", dir.string()), doctest::Contains("is a folder"), InputError);
+    CHECK_THROWS_AS(OutputFile("--svg", ""), InputError);
+    const OutputFile ok("--svg", (dir / "a.svg").string());
+    ok.write("first");
+    ok.write("second");
+    CHECK(slurp(dir / "a.svg") == "second");
+    CHECK(entries(dir) == 1);  // no temporary left beside it
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a full device is an error with the reason, not a silent success") {
+    if (!fs::exists("/dev/full")) return;
+    const OutputFile full("--dot", "/dev/full");
+    CHECK_THROWS_WITH_AS(full.write(std::string(1 << 16, 'x')), doctest::Contains("No space left"), InputError);
+    auto s = full.open();
+    s.stream() << std::string(1 << 16, 'x');
+    CHECK_THROWS_AS(s.commit(), InputError);
+}
+
+TEST_CASE("a piecewise write appears whole on commit and not at all when abandoned") {
+    const fs::path dir = fs::temp_directory_path() / "holon_output_stream_test";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const OutputFile file("--plan-out", (dir / "plan.jsonl").string());
+    {
+        auto s = file.open();
+        s.stream() << "half";
+        CHECK(!fs::exists(dir / "plan.jsonl"));
+    }
+    CHECK(entries(dir) == 0);
+    auto s = file.open();
+    s.stream() << "whole\n";
+    s.commit();
+    CHECK(slurp(dir / "plan.jsonl") == "whole\n");
+    CHECK(entries(dir) == 1);
+    fs::remove_all(dir);
+}
