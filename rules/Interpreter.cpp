@@ -110,6 +110,21 @@ bool Interpreter::atGoal(const Configuration& c) const {
     return model_->system().goal && holds(*model_->system().goal, c);
 }
 
+std::vector<const Expr*> conjuncts(const Expr& e) {
+    if (e.kind != Expr::Kind::And) return {&e};
+    std::vector<const Expr*> out;
+    for (const Expr& k : e.kids)
+        for (const Expr* c : conjuncts(k)) out.push_back(c);
+    return out;
+}
+
+int Interpreter::firstFalseConjunct(const Expr& e, const Configuration& c) const {
+    const auto parts = conjuncts(e);
+    for (std::size_t k = 0; k < parts.size(); ++k)
+        if (!holds(*parts[k], c)) return static_cast<int>(k);
+    return -1;
+}
+
 bool Interpreter::holds(const Expr& e, const Configuration& c) const { return holdsAt(e, c, nullptr); }
 Rational Interpreter::number(const Expr& e, const Configuration& c) const { return numberAt(e, c, nullptr); }
 

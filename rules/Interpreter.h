@@ -27,6 +27,9 @@ struct Instance {
     friend bool operator==(const Instance&, const Instance&) = default;
 };
 
+/// The top-level conjuncts of `e` (`a and (b and c)` gives a, b, c), left to right.
+std::vector<const Expr*> conjuncts(const Expr& e);
+
 class Interpreter {
 public:
     Interpreter(const Model& model, const Region& region);
@@ -48,6 +51,8 @@ public:
     bool legal(const Configuration& c) const;
 
     bool holds(const Expr& e, const Configuration& c) const;
+    /// The index (in conjuncts(e)) of the first conjunct of `e` that is false in `c`; -1 when `e` holds.
+    int firstFalseConjunct(const Expr& e, const Configuration& c) const;
     Rational number(const Expr& e, const Configuration& c) const;
     Rational mass(const Configuration& c) const;
     int occupied(const Configuration& c) const;
