@@ -1,7 +1,11 @@
-// Counterexamples a tool can replay (issue 26): every state of an ITF trace reads back as the
-// configuration it was written from, cells and inputs, for every broken system's counterexample.
+// Counterexamples a person can read and a tool can replay (issue 26): every state of an ITF trace
+// reads back as the configuration it was written from, cells and inputs, for every broken system's
+// counterexample; the pictures draw every field of a cell and every input.
 
 #include "CheckSupport.h"
+#include "checker/Draw.h"
+
+#include <regex>
 
 using namespace holon;
 using checker::Verdict;
@@ -129,4 +133,92 @@ TEST_CASE("a malformed ITF trace or a bad index is refused with the place and th
     bad(R"({"states":[{"cells":[]}]})", 0, "state 0: a state's \"cells\" is {\"#map\"");
     bad(R"({"states":[{"cells":{"#map":[[{"#tup":[0,0]},{"label":"Q"}]]}}]})", 0, "state 0: cell [0,0]: 'Q' is not a state of field 'label'");
     bad(R"({"states":[{"cells":{"#map":[]},"inputs":{"target":[]}}]})", 0, "input 'target' is {\"#set\"");
+}
+
+TEST_CASE("ASCII: a state without a one-character name gets a character the legend explains") {
+    auto c = checkFromJson(broken("planner_general1_no_guard"), "square:4x1", std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json");
+    const auto& safety = c.property("safety");
+    REQUIRE(safety.trace);
+    const std::string text = checker::drawTraceAscii(*safety.trace, *c.kept.engine);
+    // Every state shown has a line "x = NAME" in the legend, each with its own character.
+    std::vector<const std::vector<rules::CellValue>*> all;
+    for (const auto& s : safety.trace->steps) all.push_back(&s.cells);
+    const auto key = checker::asciiKey(*c.kept.engine, all);
+    std::set<char> used;
+    for (const auto& [v, ch] : key.chars) {
+        CHECK(used.insert(ch).second);
+        CHECK(text.find(std::string(1, ch) + " = " + c.world.model->alphabet().name(v)) != std::string::npos);
+    }
+    CHECK(key.chars.size() >= 3);  // D&F, D&U and a D&P with its pointer at least
+    CHECK(text.find("-- input target:") != std::string::npos);
+    // States that have one-character names need no legend, and keep their names.
+    auto g = test::checkAll(broken("general1_leaky"), "square:3x1");
+    const auto& m = g.property("mass_conservation");
+    REQUIRE(m.trace);
+    const std::string plain = checker::drawTraceAscii(*m.trace, *g.kept.engine);
+    CHECK(plain.find("legend") == std::string::npos);
+    CHECK(plain.find('C') != std::string::npos);
+}
+
+TEST_CASE("SVG: every field, every input, arrows with heads, one colour per value, titles that fit") {
+    auto c = checkFromJson(broken("planner_general1_no_guard"), "square:4x1", std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json");
+    const auto& safety = c.property("safety");
+    REQUIRE(safety.trace);
+    const std::string title(300, 'x');
+    const std::string svg = checker::drawTraceSvg(*safety.trace, *c.kept.engine, "planner_general1 " + title + " end");
+    // Both fields of a cell are in its text ("D F", "D P"), the pointer is an arrow with a head.
+    CHECK(svg.find(">D F</text>") != std::string::npos);
+    CHECK(svg.find(">D P</text>") != std::string::npos);
+    CHECK(svg.find("marker-end=\"url(#head0)\"") != std::string::npos);
+    CHECK(svg.find("<marker id=\"head0\"") != std::string::npos);
+    // The legend names each field's values and the input; the input is drawn as its own pattern.
+    for (const char* s : {">res (fill, text):</text>", ">label (text):</text>", ">input target</text>", "url(#hatch0)"}) {
+        CAPTURE(s);
+        CHECK(svg.find(s) != std::string::npos);
+    }
+    // The long title is wrapped: no title line is wider than the picture.
+    const std::regex widthRe("width=\"([0-9.]+)\"");
+    std::smatch m;
+    REQUIRE(std::regex_search(svg, m, widthRe));
+    const double width = std::stod(m[1]);
+    const std::regex titleRe("font-size=\"14\" font-weight=\"bold\">([^<]*)</text>");
+    int titleLines = 0;
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), titleRe); it != std::sregex_iterator(); ++it) {
+        ++titleLines;
+        CHECK(9.0 * static_cast<double>((*it)[1].length()) <= width - 20);
+    }
+    CHECK(titleLines >= 2);
+    // A value's colour depends on its name and its field, not on the picture: F is the same
+    // colour in planner_intermediate and planner_general1, and the values of a field differ.
+    test::World a = test::World::library("planner_intermediate", "square:2x2"), b = test::World::library("planner_general1", "square:2x2");
+    const auto& la = a.system.fields[a.system.fieldIndex("label")];
+    const auto& lb = b.system.fields[b.system.fieldIndex("label")];
+    for (int v = 0; v < 3; ++v) CHECK(checker::valueColour(la, v) == checker::valueColour(lb, v));
+    CHECK(checker::valueColour(la, 0) != checker::valueColour(la, 1));
+    CHECK(checker::valueColour(la, 1) != checker::valueColour(la, 2));
+    CHECK(checker::valueColour(la, 0) != checker::valueColour(la, 2));
+}
+
+TEST_CASE("SVG and ASCII on hex and cubic regions: every cell drawn, pointers along z as symbols") {
+    auto hex = test::checkFrom(broken("hex_delete_shared"), "hex:r5", kTwoHoles, "");
+    const auto& holes = hex.property("holes");
+    REQUIRE(holes.trace);
+    const std::string svg = checker::drawTraceSvg(*holes.trace, *hex.kept.engine, "holes");
+    CHECK(svg.find("<polygon") != std::string::npos);
+    CHECK(svg.find(">M</text>") != std::string::npos);
+    // A lock pointing along z in a cubic region: a circle with a dot (+z) or a cross (-z).
+    test::World w(broken("general_lock2_ranked"), "cubic:1x1x2");
+    checker::Trace t;
+    auto cfg = w.in->empty();
+    cfg.cells[w.region.indexOf({0, 0, 0})] = static_cast<rules::CellValue>(w.value("D&lock=+z"));
+    cfg.cells[w.region.indexOf({0, 0, 1})] = static_cast<rules::CellValue>(w.value("B1&lock=-z"));
+    t.steps.push_back({cfg.cells, -1});
+    rules::Engine engine(*w.model, w.region, cfg.inputs);
+    const std::string cubic = checker::drawTraceSvg(t, engine, "lock along z");
+    CHECK(cubic.find("r=\"1.2\"") != std::string::npos);  // the dot of +z
+    CHECK(cubic.find(">z=1</text>") != std::string::npos);
+    const std::string ascii = checker::drawTraceAscii(t, engine);
+    CHECK(ascii.find("z=0") != std::string::npos);
+    CHECK(ascii.find("= D&lock=+z") != std::string::npos);
+    CHECK(ascii.find("= B1&lock=-z") != std::string::npos);
 }
