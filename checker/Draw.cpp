@@ -19,7 +19,9 @@ namespace {
 
 using rules::FieldKind;
 
-const rules::System& systemOf(const rules::Engine& e) { return e.model().system(); }
+const rules::System& systemOf(const rules::Engine& e) {
+    return e.model().system();
+}
 
 /// Index of the field that sets the fill colour (the first enum field), or -1.
 int fillField(const rules::System& s) {
@@ -30,7 +32,8 @@ int fillField(const rules::System& s) {
 
 std::string position(const rules::Region& r, int cell) {
     const rules::Vec v = r.cell(cell);
-    return "(" + std::to_string(v.x) + "," + std::to_string(v.y) + (r.lattice().dimension() == 3 ? "," + std::to_string(v.z) : "") + ")";
+    return "(" + std::to_string(v.x) + "," + std::to_string(v.y) +
+           (r.lattice().dimension() == 3 ? "," + std::to_string(v.z) : "") + ")";
 }
 
 std::vector<int> changedCells(const Trace& t, std::size_t k) {
@@ -52,7 +55,7 @@ char arrowChar(rules::Vec d) {
     if (d.z != 0) return 0;
     if (d.x == 1 && d.y == 0) return '>';
     if (d.x == -1 && d.y == 0) return '<';
-    if (d.x == 0 && d.y == 1) return 'v';  // +y points down the page
+    if (d.x == 0 && d.y == 1) return 'v'; // +y points down the page
     if (d.x == 0 && d.y == -1) return '^';
     return 0;
 }
@@ -79,16 +82,21 @@ std::vector<std::string> wrap(const std::string& text, std::size_t width) {
 std::string xml(const std::string& text) {
     std::string out;
     for (char c : text) {
-        if (c == '&') out += "&amp;";
-        else if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '"') out += "&quot;";
-        else out += c;
+        if (c == '&')
+            out += "&amp;";
+        else if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else if (c == '"')
+            out += "&quot;";
+        else
+            out += c;
     }
     return out;
 }
 
-}  // namespace
+} // namespace
 
 // ---------------------------------------------------------------------------------------------
 // ASCII
@@ -152,12 +160,14 @@ std::string drawCells(const rules::Region& r, const std::function<char(int)>& ch
     const bool slices = r.lattice().dimension() == 3;
     // A slice is as wide as its cells or its heading "z=K", whichever is wider.
     std::size_t sliceWidth = static_cast<std::size_t>(ext.x);
-    for (int z = 0; slices && z < ext.z; ++z) sliceWidth = std::max(sliceWidth, ("z=" + std::to_string(lo.z + z)).size());
+    for (int z = 0; slices && z < ext.z; ++z)
+        sliceWidth = std::max(sliceWidth, ("z=" + std::to_string(lo.z + z)).size());
     std::ostringstream out;
     if (slices) {
         for (int z = 0; z < ext.z; ++z) {
             const std::string head = "z=" + std::to_string(lo.z + z);
-            out << (z ? "   " : "") << head << (z + 1 < ext.z ? std::string(sliceWidth - head.size(), ' ') : "");
+            out << (z ? "   " : "") << head
+                << (z + 1 < ext.z ? std::string(sliceWidth - head.size(), ' ') : "");
         }
         out << '\n';
     }
@@ -202,9 +212,11 @@ std::string drawTraceAscii(const Trace& t, const rules::Engine& e) {
     std::ostringstream out;
     out << key.legend;
     for (std::size_t k = 0; k < t.steps.size(); ++k) {
-        out << "-- " << k << ": " << stepTitle(t, e, k) << '\n' << drawCells(e.region(), [&](int i) { return key(t.steps[k].cells[i]); });
+        out << "-- " << k << ": " << stepTitle(t, e, k) << '\n'
+            << drawCells(e.region(), [&](int i) { return key(t.steps[k].cells[i]); });
         for (int i : changedCells(t, k))
-            out << "   " << position(e.region(), i) << ' ' << a.name(t.steps[k - 1].cells[i]) << " -> " << a.name(t.steps[k].cells[i]) << '\n';
+            out << "   " << position(e.region(), i) << ' ' << a.name(t.steps[k - 1].cells[i]) << " -> "
+                << a.name(t.steps[k].cells[i]) << '\n';
     }
     if (t.loop) out << "-- the last state loops back to state " << *t.loop << '\n';
     if (!t.marked.empty()) {
@@ -222,12 +234,14 @@ std::string drawTraceAscii(const Trace& t, const rules::Engine& e) {
 namespace {
 
 // Fill colours for state values; no red or orange, which mark changed and context cells.
-const char* const kPalette[] = {"#4e79a7", "#59a14f", "#edc948", "#b07aa1", "#76b7b2", "#9c755f", "#bab0ac", "#ff9da7", "#2f4b7c", "#8cd17d"};
+const char* const kPalette[] = {"#4e79a7", "#59a14f", "#edc948", "#b07aa1", "#76b7b2",
+                                "#9c755f", "#bab0ac", "#ff9da7", "#2f4b7c", "#8cd17d"};
 constexpr int kPaletteSize = sizeof(kPalette) / sizeof(kPalette[0]);
 // One colour and dash per pointer field, one colour per input.
 const char* const kPointerColour[] = {"#111111", "#6a1b9a", "#00695c", "#5d4037"};
 const char* const kPointerDash[] = {"", "5,2", "2,2", "6,2,2,2"};
-const char* const kInputColour[] = {"#1b5e20", "#0d47a1", "#880e4f", "#e65100", "#006064", "#4a148c", "#827717", "#263238"};
+const char* const kInputColour[] = {"#1b5e20", "#0d47a1", "#880e4f", "#e65100",
+                                    "#006064", "#4a148c", "#827717", "#263238"};
 
 std::uint32_t fnv(const std::string& s) {
     std::uint32_t h = 2166136261u;
@@ -236,7 +250,9 @@ std::uint32_t fnv(const std::string& s) {
 }
 
 bool light(const std::string& colour) {
-    const int r = std::stoi(colour.substr(1, 2), nullptr, 16), g = std::stoi(colour.substr(3, 2), nullptr, 16), b = std::stoi(colour.substr(5, 2), nullptr, 16);
+    const int r = std::stoi(colour.substr(1, 2), nullptr, 16),
+              g = std::stoi(colour.substr(3, 2), nullptr, 16),
+              b = std::stoi(colour.substr(5, 2), nullptr, 16);
     return 0.299 * r + 0.587 * g + 0.114 * b > 150;
 }
 
@@ -246,9 +262,14 @@ std::string cellText(const rules::System& s, const std::vector<int>& fields) {
     for (std::size_t f = 0; f < fields.size(); ++f) {
         if (fields[f] == rules::kAbsent) continue;
         switch (s.fields[f].kind) {
-            case FieldKind::Enum: text += (text.empty() ? "" : " ") + s.fields[f].values[fields[f]]; break;
-            case FieldKind::Int: text += (text.empty() ? "" : " ") + std::to_string(fields[f]); break;
-            case FieldKind::Dir: break;  // drawn as an arrow
+        case FieldKind::Enum:
+            text += (text.empty() ? "" : " ") + s.fields[f].values[fields[f]];
+            break;
+        case FieldKind::Int:
+            text += (text.empty() ? "" : " ") + std::to_string(fields[f]);
+            break;
+        case FieldKind::Dir:
+            break; // drawn as an arrow
         }
     }
     return text;
@@ -264,11 +285,14 @@ struct Flow {
         x += w + 14;
     }
     void text(const std::string& s, const std::string& attrs = "") {
-        item(6.2 * static_cast<double>(s.size()), [&](double px, double py) { out << "<text x=\"" << px << "\" y=\"" << py + 11 << "\"" << attrs << ">" << xml(s) << "</text>\n"; });
+        item(6.2 * static_cast<double>(s.size()), [&](double px, double py) {
+            out << "<text x=\"" << px << "\" y=\"" << py + 11 << "\"" << attrs << ">" << xml(s)
+                << "</text>\n";
+        });
     }
 };
 
-}  // namespace
+} // namespace
 
 std::string valueColour(const rules::Field& field, int value) {
     const int n = static_cast<int>(field.values.size());
@@ -313,14 +337,16 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
     const rules::Vec lo = r.lower(), ext = r.extent();
     // Cell centre within a frame: hex cells at their axial positions, 3D regions as z slices.
     auto rawCentre = [&](rules::Vec v) {
-        if (hex) return std::pair<double, double>{s * std::sqrt(3.0) * 0.5 * (v.x + v.y / 2.0), s * 0.75 * v.y};
+        if (hex)
+            return std::pair<double, double>{s * std::sqrt(3.0) * 0.5 * (v.x + v.y / 2.0), s * 0.75 * v.y};
         const double slice = (v.z - lo.z) * (ext.x + 1) * s;
         return std::pair<double, double>{slice + (v.x - lo.x) * s, (v.y - lo.y) * s};
     };
     double minX = 1e9, minY = 1e9, maxX = -1e9, maxY = -1e9;
     for (const rules::Vec& v : r.cells()) {
         auto [x, y] = rawCentre(v);
-        minX = std::min(minX, x), maxX = std::max(maxX, x), minY = std::min(minY, y), maxY = std::max(maxY, y);
+        minX = std::min(minX, x), maxX = std::max(maxX, x), minY = std::min(minY, y),
+        maxY = std::max(maxY, y);
     }
     auto centre = [&](rules::Vec v) {
         auto [x, y] = rawCentre(v);
@@ -352,7 +378,8 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
         for (std::size_t c = 0; c < poly.size(); ++c) {
             const auto& p = poly[c];
             const auto& q = poly[(c + 1) % poly.size()];
-            const double dx = (p.first + q.first) / 2 - (cx + nx) / 2, dy = (p.second + q.second) / 2 - (cy + ny) / 2;
+            const double dx = (p.first + q.first) / 2 - (cx + nx) / 2,
+                         dy = (p.second + q.second) / 2 - (cy + ny) / 2;
             if (dx * dx + dy * dy < bestDist) bestDist = dx * dx + dy * dy, best = static_cast<int>(c);
         }
         return best;
@@ -370,7 +397,8 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
     std::size_t frameTitleLines = 1;
     for (int k = 0; k < steps; ++k) {
         const std::string loop = t.loop && k + 1 == steps ? ", then back to " + std::to_string(*t.loop) : "";
-        frameTitles.push_back(wrap(std::to_string(k) + ": " + stepTitle(t, e, k) + loop, static_cast<std::size_t>((frameW - 12) / 6.2)));
+        frameTitles.push_back(wrap(std::to_string(k) + ": " + stepTitle(t, e, k) + loop,
+                                   static_cast<std::size_t>((frameW - 12) / 6.2)));
         frameTitleLines = std::max(frameTitleLines, frameTitles.back().size());
     }
     const double titleH = 14 + 18.0 * static_cast<double>(titleLines.size());
@@ -380,30 +408,38 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
     for (int k = 0; k < steps; ++k) {
         const double ox = 10 + (k % perRow) * frameW, oy = titleH + 12 + (k / perRow) * frameH;
         body << "<g transform=\"translate(" << ox << "," << oy << ")\">\n";
-        for (std::size_t l = 0; l < frameTitles[k].size(); ++l) body << "<text x=\"0\" y=\"" << 13 * l << "\">" << xml(frameTitles[k][l]) << "</text>\n";
-        body << "<g transform=\"translate(0," << 13.0 * static_cast<double>(frameTitleLines - 1) + 8 << ")\">\n";
+        for (std::size_t l = 0; l < frameTitles[k].size(); ++l)
+            body << "<text x=\"0\" y=\"" << 13 * l << "\">" << xml(frameTitles[k][l]) << "</text>\n";
+        body << "<g transform=\"translate(0," << 13.0 * static_cast<double>(frameTitleLines - 1) + 8
+             << ")\">\n";
         const auto changed = changedCells(t, k);
         std::vector<int> context;
         if (t.steps[k].placed >= 0) {
             const auto& p = e.instances()[t.steps[k].placed];
             for (int c = 0; c < p.size; ++c)
-                if (std::find(changed.begin(), changed.end(), p.cells[c]) == changed.end()) context.push_back(p.cells[c]);
+                if (std::find(changed.begin(), changed.end(), p.cells[c]) == changed.end())
+                    context.push_back(p.cells[c]);
         }
         auto polygon = [&](const std::vector<std::pair<double, double>>& poly) {
             std::ostringstream pts;
             for (const auto& [x, y] : poly) pts << x << "," << y << " ";
             return "<polygon points=\"" + pts.str() + "\"";
         };
-        // Cells: fill by the first enum field, the text of every field, the outline for changed and context cells.
+        // Cells: fill by the first enum field, the text of every field, the outline for changed and context
+        // cells.
         for (int i = 0; i < r.size(); ++i) {
             const CellValue v = t.steps[k].cells[i];
             const bool isChanged = std::find(changed.begin(), changed.end(), i) != changed.end();
             const bool isContext = std::find(context.begin(), context.end(), i) != context.end();
             std::string colour = "#ffffff";
-            if (v) colour = fill >= 0 && alphabet.fields(v)[fill] != rules::kAbsent ? valueColour(system.fields[fill], alphabet.fields(v)[fill]) : "#8d8d8d";
-            const std::string stroke = isChanged ? "stroke=\"#d62728\" stroke-width=\"3\""
-                                       : isContext ? "stroke=\"#ff7f0e\" stroke-width=\"2.5\" stroke-dasharray=\"4,2\""
-                                                   : "stroke=\"#999\" stroke-width=\"0.8\"";
+            if (v)
+                colour = fill >= 0 && alphabet.fields(v)[fill] != rules::kAbsent
+                             ? valueColour(system.fields[fill], alphabet.fields(v)[fill])
+                             : "#8d8d8d";
+            const std::string stroke =
+                isChanged   ? "stroke=\"#d62728\" stroke-width=\"3\""
+                : isContext ? "stroke=\"#ff7f0e\" stroke-width=\"2.5\" stroke-dasharray=\"4,2\""
+                            : "stroke=\"#999\" stroke-width=\"0.8\"";
             body << polygon(corners(i, hex ? 0.5 : 1)) << " fill=\"" << colour << "\" " << stroke << "/>\n";
         }
         // Inputs: each input's cells outlined (inset, one colour each), its empty cells hatched.
@@ -411,7 +447,9 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
             const double inset = 3.5 + 2.5 * static_cast<double>(n % 6);
             for (int i = 0; i < r.size(); ++i) {
                 if (!((e.inputs()[i] >> n) & 1u)) continue;
-                if (!t.steps[k].cells[i]) body << polygon(corners(i, hex ? 0.5 : 1)) << " fill=\"url(#hatch" << n << ")\" stroke=\"none\"/>\n";
+                if (!t.steps[k].cells[i])
+                    body << polygon(corners(i, hex ? 0.5 : 1)) << " fill=\"url(#hatch" << n
+                         << ")\" stroke=\"none\"/>\n";
                 const auto poly = corners(i, inset);
                 for (int d = 0; d < lattice.degree(); ++d) {
                     if (lattice.direction(d).z != 0) continue;
@@ -421,16 +459,19 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
                     const auto& p = poly[c];
                     const auto& q = poly[(c + 1) % poly.size()];
                     // A white casing under the line keeps it visible on a dark fill.
-                    for (const auto& [pen, penWidth] : {std::pair<const char*, double>{"#ffffff", 3.6}, {kInputColour[n % 8], 2.0}})
-                        body << "<line x1=\"" << p.first << "\" y1=\"" << p.second << "\" x2=\"" << q.first << "\" y2=\"" << q.second << "\" stroke=\"" << pen
-                             << "\" stroke-width=\"" << penWidth << "\" stroke-linecap=\"round\"/>\n";
+                    for (const auto& [pen, penWidth] :
+                         {std::pair<const char*, double>{"#ffffff", 3.6}, {kInputColour[n % 8], 2.0}})
+                        body << "<line x1=\"" << p.first << "\" y1=\"" << p.second << "\" x2=\"" << q.first
+                             << "\" y2=\"" << q.second << "\" stroke=\"" << pen << "\" stroke-width=\""
+                             << penWidth << "\" stroke-linecap=\"round\"/>\n";
                 }
             }
         }
         if (k + 1 == steps)
             for (int i : t.marked) {
                 auto [cx, cy] = centre(r.cell(i));
-                body << "<path d=\"M" << cx - 8 << "," << cy - 8 << " L" << cx + 8 << "," << cy + 8 << " M" << cx + 8 << "," << cy - 8 << " L" << cx - 8 << "," << cy + 8
+                body << "<path d=\"M" << cx - 8 << "," << cy - 8 << " L" << cx + 8 << "," << cy + 8 << " M"
+                     << cx + 8 << "," << cy - 8 << " L" << cx - 8 << "," << cy + 8
                      << "\" stroke=\"#d62728\" stroke-width=\"3\" stroke-opacity=\"0.75\"/>\n";
             }
         // Pointers above the outlines.
@@ -447,21 +488,29 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
                 if (dv.z != 0) {
                     // Out of the slice: a dot in a circle toward +z, a cross toward -z (seen from -z).
                     const double px = cx + s * 0.3, py = cy - s * 0.3 + 7 * static_cast<double>(j), rad = 3.5;
-                    body << "<circle cx=\"" << px << "\" cy=\"" << py << "\" r=\"" << rad << "\" fill=\"white\" stroke=\"" << pen << "\" stroke-width=\"1.2\"/>\n";
-                    if (dv.z > 0) body << "<circle cx=\"" << px << "\" cy=\"" << py << "\" r=\"1.2\" fill=\"" << pen << "\"/>\n";
+                    body << "<circle cx=\"" << px << "\" cy=\"" << py << "\" r=\"" << rad
+                         << "\" fill=\"white\" stroke=\"" << pen << "\" stroke-width=\"1.2\"/>\n";
+                    if (dv.z > 0)
+                        body << "<circle cx=\"" << px << "\" cy=\"" << py << "\" r=\"1.2\" fill=\"" << pen
+                             << "\"/>\n";
                     else
-                        body << "<path d=\"M" << px - 2.2 << "," << py - 2.2 << " L" << px + 2.2 << "," << py + 2.2 << " M" << px + 2.2 << "," << py - 2.2 << " L" << px - 2.2
-                             << "," << py + 2.2 << "\" stroke=\"" << pen << "\" stroke-width=\"1.2\"/>\n";
+                        body << "<path d=\"M" << px - 2.2 << "," << py - 2.2 << " L" << px + 2.2 << ","
+                             << py + 2.2 << " M" << px + 2.2 << "," << py - 2.2 << " L" << px - 2.2 << ","
+                             << py + 2.2 << "\" stroke=\"" << pen << "\" stroke-width=\"1.2\"/>\n";
                     continue;
                 }
                 auto [tx, ty] = centre(r.cell(i) + dv);
                 const double dx = tx - cx, dy = ty - cy, len = std::hypot(dx, dy);
                 // Fields side by side: each arrow is shifted to the left of its direction by its field's
                 // slot, so two cells pointing at each other (a lock) show two arrows, not one line.
-                const double shift = (static_cast<double>(j) - (static_cast<double>(dirFields.size()) - 1) / 2) * 5 - 2.5;
+                const double shift =
+                    (static_cast<double>(j) - (static_cast<double>(dirFields.size()) - 1) / 2) * 5 - 2.5;
                 const double nx = -dy / len * shift, ny = dx / len * shift;
-                body << "<line x1=\"" << cx + nx << "\" y1=\"" << cy + ny << "\" x2=\"" << cx + dx * 0.6 + nx << "\" y2=\"" << cy + dy * 0.6 + ny
-                     << "\" stroke=\"" << pen << "\" stroke-width=\"1.8\"" << (*kPointerDash[j % 4] ? std::string(" stroke-dasharray=\"") + kPointerDash[j % 4] + "\"" : "")
+                body << "<line x1=\"" << cx + nx << "\" y1=\"" << cy + ny << "\" x2=\"" << cx + dx * 0.6 + nx
+                     << "\" y2=\"" << cy + dy * 0.6 + ny << "\" stroke=\"" << pen << "\" stroke-width=\"1.8\""
+                     << (*kPointerDash[j % 4]
+                             ? std::string(" stroke-dasharray=\"") + kPointerDash[j % 4] + "\""
+                             : "")
                      << " marker-end=\"url(#head" << j % 4 << ")\"/>\n";
             }
         }
@@ -471,14 +520,20 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
             if (!v) continue;
             auto [cx, cy] = centre(r.cell(i));
             const auto& fields = alphabet.fields(v);
-            const std::string colour = fill >= 0 && fields[fill] != rules::kAbsent ? valueColour(system.fields[fill], fields[fill]) : "#8d8d8d";
+            const std::string colour = fill >= 0 && fields[fill] != rules::kAbsent
+                                           ? valueColour(system.fields[fill], fields[fill])
+                                           : "#8d8d8d";
             const std::string text = cellText(system, fields);
             if (!text.empty())
-                body << "<text x=\"" << cx << "\" y=\"" << cy + 3.5 << "\" text-anchor=\"middle\" font-size=\"10\" fill=\"" << (light(colour) ? "#111" : "#fff")
-                     << "\" stroke=\"" << colour << "\" stroke-width=\"2.5\" paint-order=\"stroke\">" << xml(text) << "</text>\n";
+                body << "<text x=\"" << cx << "\" y=\"" << cy + 3.5
+                     << "\" text-anchor=\"middle\" font-size=\"10\" fill=\""
+                     << (light(colour) ? "#111" : "#fff") << "\" stroke=\"" << colour
+                     << "\" stroke-width=\"2.5\" paint-order=\"stroke\">" << xml(text) << "</text>\n";
         }
         if (slices)
-            for (int z = 0; z < ext.z; ++z) body << "<text x=\"" << z * (ext.x + 1) * s << "\" y=\"" << ext.y * s + 13 << "\">z=" << lo.z + z << "</text>\n";
+            for (int z = 0; z < ext.z; ++z)
+                body << "<text x=\"" << z * (ext.x + 1) * s << "\" y=\"" << ext.y * s + 13
+                     << "\">z=" << lo.z + z << "</text>\n";
         body << "</g></g>\n";
     }
 
@@ -488,16 +543,19 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
     Flow flow{legend, 10, width - 20, 10, legendY};
     auto swatch = [&](const std::string& attrs, const std::string& label) {
         flow.item(18 + 6.2 * static_cast<double>(label.size()), [&](double x, double y) {
-            legend << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"14\" height=\"14\" " << attrs << "/><text x=\"" << x + 18 << "\" y=\"" << y + 11 << "\">" << xml(label)
-                   << "</text>\n";
+            legend << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"14\" height=\"14\" " << attrs
+                   << "/><text x=\"" << x + 18 << "\" y=\"" << y + 11 << "\">" << xml(label) << "</text>\n";
         });
     };
     swatch("fill=\"white\" stroke=\"#d62728\" stroke-width=\"3\"", "changed");
-    swatch("fill=\"white\" stroke=\"#ff7f0e\" stroke-width=\"2.5\" stroke-dasharray=\"4,2\"", "context / blocking");
+    swatch("fill=\"white\" stroke=\"#ff7f0e\" stroke-width=\"2.5\" stroke-dasharray=\"4,2\"",
+           "context / blocking");
     if (!t.marked.empty())
         flow.item(80, [&](double x, double y) {
-            legend << "<path d=\"M" << x + 1 << "," << y + 1 << " L" << x + 13 << "," << y + 13 << " M" << x + 13 << "," << y + 1 << " L" << x + 1 << "," << y + 13
-                   << "\" stroke=\"#d62728\" stroke-width=\"3\"/><text x=\"" << x + 18 << "\" y=\"" << y + 11 << "\">marked</text>\n";
+            legend << "<path d=\"M" << x + 1 << "," << y + 1 << " L" << x + 13 << "," << y + 13 << " M"
+                   << x + 13 << "," << y + 1 << " L" << x + 1 << "," << y + 13
+                   << "\" stroke=\"#d62728\" stroke-width=\"3\"/><text x=\"" << x + 18 << "\" y=\"" << y + 11
+                   << "\">marked</text>\n";
         });
     flow.x = flow.x0, flow.y += 20;
     for (std::size_t f = 0; f < system.fields.size(); ++f) {
@@ -507,37 +565,44 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
         if (field.kind != FieldKind::Dir || field.whenField >= 0) std::erase(values, rules::kAbsent);
         if (values.empty()) continue;
         switch (field.kind) {
-            case FieldKind::Enum: {
-                flow.text(field.name + (static_cast<int>(f) == fill ? " (fill, text):" : " (text):"), " font-weight=\"bold\"");
-                for (int x : values) {
-                    if (static_cast<int>(f) == fill) {
-                        const std::string c = valueColour(field, x);
-                        swatch("fill=\"" + c + "\"", field.values[x]);
-                    } else {
-                        flow.text(field.values[x]);
-                    }
+        case FieldKind::Enum: {
+            flow.text(field.name + (static_cast<int>(f) == fill ? " (fill, text):" : " (text):"),
+                      " font-weight=\"bold\"");
+            for (int x : values) {
+                if (static_cast<int>(f) == fill) {
+                    const std::string c = valueColour(field, x);
+                    swatch("fill=\"" + c + "\"", field.values[x]);
+                } else {
+                    flow.text(field.values[x]);
                 }
-                break;
             }
-            case FieldKind::Int: {
-                std::string list;
-                for (int x : values) list += (list.empty() ? "" : ", ") + std::to_string(x);
-                flow.text(field.name + " (text):", " font-weight=\"bold\"");
-                flow.text(list);
-                break;
-            }
-            case FieldKind::Dir: {
-                const std::size_t j = std::find(dirFields.begin(), dirFields.end(), static_cast<int>(f)) - dirFields.begin();
-                flow.item(36, [&](double x, double y) {
-                    legend << "<line x1=\"" << x << "\" y1=\"" << y + 7 << "\" x2=\"" << x + 30 << "\" y2=\"" << y + 7 << "\" stroke=\"" << kPointerColour[j % 4]
-                           << "\" stroke-width=\"1.8\"" << (*kPointerDash[j % 4] ? std::string(" stroke-dasharray=\"") + kPointerDash[j % 4] + "\"" : "")
-                           << " marker-end=\"url(#head" << j % 4 << ")\"/>\n";
-                });
-                std::string list;
-                for (int x : values) list += (list.empty() ? "" : ", ") + (x == rules::kAbsent ? std::string("none") : lattice.directionName(x));
-                flow.text(field.name + " (arrow" + (slices ? "; +z dot, -z cross" : "") + "): " + list);
-                break;
-            }
+            break;
+        }
+        case FieldKind::Int: {
+            std::string list;
+            for (int x : values) list += (list.empty() ? "" : ", ") + std::to_string(x);
+            flow.text(field.name + " (text):", " font-weight=\"bold\"");
+            flow.text(list);
+            break;
+        }
+        case FieldKind::Dir: {
+            const std::size_t j =
+                std::find(dirFields.begin(), dirFields.end(), static_cast<int>(f)) - dirFields.begin();
+            flow.item(36, [&](double x, double y) {
+                legend << "<line x1=\"" << x << "\" y1=\"" << y + 7 << "\" x2=\"" << x + 30 << "\" y2=\""
+                       << y + 7 << "\" stroke=\"" << kPointerColour[j % 4] << "\" stroke-width=\"1.8\""
+                       << (*kPointerDash[j % 4]
+                               ? std::string(" stroke-dasharray=\"") + kPointerDash[j % 4] + "\""
+                               : "")
+                       << " marker-end=\"url(#head" << j % 4 << ")\"/>\n";
+            });
+            std::string list;
+            for (int x : values)
+                list += (list.empty() ? "" : ", ") +
+                        (x == rules::kAbsent ? std::string("none") : lattice.directionName(x));
+            flow.text(field.name + " (arrow" + (slices ? "; +z dot, -z cross" : "") + "): " + list);
+            break;
+        }
         }
         flow.x = flow.x0, flow.y += 20;
     }
@@ -546,8 +611,9 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
         for (std::uint32_t bits : e.inputs()) any = any || ((bits >> n) & 1u);
         const std::string label = "input " + inputs[n] + (any ? "" : " (holds in no cell)");
         flow.item(18 + 6.2 * static_cast<double>(label.size()), [&](double x, double y) {
-            legend << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"14\" height=\"14\" fill=\"url(#hatch" << n << ")\" stroke=\"" << kInputColour[n % 8]
-                   << "\" stroke-width=\"2\"/><text x=\"" << x + 18 << "\" y=\"" << y + 11 << "\">" << xml(label) << "</text>\n";
+            legend << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"14\" height=\"14\" fill=\"url(#hatch"
+                   << n << ")\" stroke=\"" << kInputColour[n % 8] << "\" stroke-width=\"2\"/><text x=\""
+                   << x + 18 << "\" y=\"" << y + 11 << "\">" << xml(label) << "</text>\n";
         });
     }
     const double height = flow.y + (inputs.empty() ? 0 : 20) + 10;
@@ -556,16 +622,21 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
     out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
         << "\" font-family=\"sans-serif\" font-size=\"11\">\n<defs>\n";
     for (int j = 0; j < 4; ++j)
-        out << "<marker id=\"head" << j << "\" viewBox=\"0 0 8 8\" refX=\"7\" refY=\"4\" markerWidth=\"7\" markerHeight=\"7\" markerUnits=\"userSpaceOnUse\" orient=\"auto\">"
+        out << "<marker id=\"head" << j
+            << "\" viewBox=\"0 0 8 8\" refX=\"7\" refY=\"4\" markerWidth=\"7\" markerHeight=\"7\" "
+               "markerUnits=\"userSpaceOnUse\" orient=\"auto\">"
             << "<path d=\"M0,0 L8,4 L0,8 z\" fill=\"" << kPointerColour[j] << "\"/></marker>\n";
     for (std::size_t n = 0; n < inputs.size(); ++n)
-        out << "<pattern id=\"hatch" << n << "\" patternUnits=\"userSpaceOnUse\" width=\"6\" height=\"6\" patternTransform=\"rotate(" << (n % 2 ? -45 : 45)
-            << ")\"><line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"6\" stroke=\"" << kInputColour[n % 8] << "\" stroke-width=\"1.5\" stroke-opacity=\"0.45\"/></pattern>\n";
+        out << "<pattern id=\"hatch" << n
+            << "\" patternUnits=\"userSpaceOnUse\" width=\"6\" height=\"6\" patternTransform=\"rotate("
+            << (n % 2 ? -45 : 45) << ")\"><line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"6\" stroke=\""
+            << kInputColour[n % 8] << "\" stroke-width=\"1.5\" stroke-opacity=\"0.45\"/></pattern>\n";
     out << "</defs>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     for (std::size_t l = 0; l < titleLines.size(); ++l)
-        out << "<text x=\"10\" y=\"" << 22 + 18 * l << "\" font-size=\"14\" font-weight=\"bold\">" << xml(titleLines[l]) << "</text>\n";
+        out << "<text x=\"10\" y=\"" << 22 + 18 * l << "\" font-size=\"14\" font-weight=\"bold\">"
+            << xml(titleLines[l]) << "</text>\n";
     out << body.str() << legend.str() << "</svg>\n";
     return out.str();
 }
 
-}  // namespace holon::checker
+} // namespace holon::checker

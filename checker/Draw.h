@@ -11,14 +11,15 @@ namespace holon::checker {
 
 /// One character for each state a set of configurations shows: a state's one-character name where it
 /// has one; otherwise a square-lattice arrow for its pointer or a free letter, distinct from every
-/// other state's (not a value's initial, which would read as that value). `legend` maps the characters that are not a
-/// state's own name to the full names ("a = C&F"), empty when every state shown has one.
+/// other state's (not a value's initial, which would read as that value). `legend` maps the characters that
+/// are not a state's own name to the full names ("a = C&F"), empty when every state shown has one.
 struct AsciiKey {
     std::map<CellValue, char> chars;
     std::string legend;
     char operator()(CellValue v) const { return v ? chars.at(v) : '.'; }
 };
-AsciiKey asciiKey(const rules::Engine& engine, const std::vector<const std::vector<CellValue>*>& configurations);
+AsciiKey asciiKey(const rules::Engine& engine,
+                  const std::vector<const std::vector<CellValue>*>& configurations);
 /// One configuration, one character per cell, with the legend when it needs one.
 std::string drawAscii(const rules::Engine& engine, const std::vector<CellValue>& cells);
 /// The region's layout with one character per cell from `charOf(cell)` (3D: z slices side by side,
@@ -41,4 +42,4 @@ std::string valueColour(const rules::Field& field, int value);
 /// value shown and every input. 3D regions drawn as z slices.
 std::string drawTraceSvg(const Trace& trace, const rules::Engine& engine, const std::string& title);
 
-}  // namespace holon::checker
+} // namespace holon::checker

@@ -13,7 +13,8 @@ using checker::Verdict;
 namespace {
 
 rules::System broken(const std::string& stem) {
-    return test::parse(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/checker/broken/" + stem + ".holon"));
+    return test::parse(
+        rules::readTextFile(std::string(HOLON_TEST_DIR) + "/checker/broken/" + stem + ".holon"));
 }
 
 test::Checked checkFromJson(rules::System system, const std::string& spec, const std::string& path) {
@@ -41,7 +42,7 @@ int roundTrip(const test::Checked& c) {
             const rules::Configuration read = rules::configFromItf(*c.world.in, itf, k, &named);
             CHECK(read.cells == p.trace->steps[k].cells);
             CHECK(read.inputs == c.kept.engine->inputs());
-            CHECK(named == all);  // every input is in the trace, even one that holds nowhere
+            CHECK(named == all); // every input is in the trace, even one that holds nowhere
         }
         CHECK(rules::configFromItf(*c.world.in, itf, std::nullopt).cells == p.trace->steps.back().cells);
     }
@@ -50,14 +51,16 @@ int roundTrip(const test::Checked& c) {
 
 const char* kTwoHoles =
     "     M M M M M M\n    M M M M M M M\n   M M M M M M M M\n  M M M M M H H M M\n M M H H M H C H M M\n"
-    "M M H C H M H H M M M\n M M H H M M M M M M\n  M M M M M M M M M\n   M M M M M M M M\n    M M M M M M M\n     M M M M M M\n";
+    "M M H C H M H H M M M\n M M H H M M M M M M\n  M M M M M M M M M\n   M M M M M M M M\n    M M M M M M "
+    "M\n     M M M M M M\n";
 
-}  // namespace
+} // namespace
 
 TEST_CASE("ITF round trip: a system with several fields and a pointer, state by state") {
     // planner_general1 without the deletion guard: res and label on every cell, parent on P cells,
     // and the target input; the counterexample deletes a P whose child points at it.
-    auto c = checkFromJson(broken("planner_general1_no_guard"), "square:4x1", std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json");
+    auto c = checkFromJson(broken("planner_general1_no_guard"), "square:4x1",
+                           std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json");
     const auto& safety = c.property("safety");
     REQUIRE(safety.verdict == Verdict::Violated);
     REQUIRE(safety.trace->steps.size() >= 3);
@@ -96,13 +99,17 @@ TEST_CASE("ITF round trip: an unconditional pointer that points nowhere is writt
 TEST_CASE("ITF round trip: every broken system's counterexample reads back, cells and inputs") {
     const std::string examples = std::string(HOLON_TEST_DIR) + "/../examples/";
     int traces = 0;
-    traces += roundTrip(test::checkFrom(broken("planner_no_guard"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###"));
-    traces += roundTrip(checkFromJson(broken("planner_general1_no_guard"), "square:4x1", std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json"));
+    traces += roundTrip(
+        test::checkFrom(broken("planner_no_guard"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###"));
+    traces += roundTrip(checkFromJson(broken("planner_general1_no_guard"), "square:4x1",
+                                      std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json"));
     traces += roundTrip(test::checkAll(broken("general1_leaky"), "square:3x1"));
     traces += roundTrip(test::checkAll(broken("transfer_livelock"), "square:3x1"));
     traces += roundTrip(test::checkFrom(broken("hex_delete_shared"), "hex:r5", kTwoHoles, ""));
-    traces += roundTrip(checkFromJson(broken("roombots_no_exclusion"), "square:4x4", examples + "roombots/reserve_crossing.json"));
-    traces += roundTrip(checkFromJson(broken("roombots_blocking_wait"), "square:4x4", examples + "roombots/reserve_crossing.json"));
+    traces += roundTrip(checkFromJson(broken("roombots_no_exclusion"), "square:4x4",
+                                      examples + "roombots/reserve_crossing.json"));
+    traces += roundTrip(checkFromJson(broken("roombots_blocking_wait"), "square:4x4",
+                                      examples + "roombots/reserve_crossing.json"));
     // The lock system on a cubic region: 3D positions and pointers along z.
     test::Checked lock{test::World(broken("general_lock2_ranked"), "cubic:2x1x2"), {}, {}};
     checker::CheckOptions o;
@@ -115,7 +122,8 @@ TEST_CASE("ITF round trip: every broken system's counterexample reads back, cell
 TEST_CASE("a malformed ITF trace or a bad index is refused with the place and the fix") {
     test::World w = test::World::library("planner_intermediate", "square:2x1");
     auto bad = [&](const std::string& text, std::optional<int> index, const std::string& message) {
-        CHECK_THROWS_WITH_AS(rules::configFromItf(*w.in, nlohmann::json::parse(text), index), doctest::Contains(message.c_str()), InputError);
+        CHECK_THROWS_WITH_AS(rules::configFromItf(*w.in, nlohmann::json::parse(text), index),
+                             doctest::Contains(message.c_str()), InputError);
     };
     const std::string good = R"({"#meta":{"region":"square:2x1"},"vars":["cells","inputs"],"states":[
         {"cells":{"#map":[[{"#tup":[0,0]},{"label":"F"}]]},"inputs":{"target":{"#set":[{"#tup":[0,0]}]}}},
@@ -127,16 +135,20 @@ TEST_CASE("a malformed ITF trace or a bad index is refused with the place and th
     CHECK(first.inputs[0] == 1u);
     CHECK(named == 1u);
     bad(good, 2, "the trace has 2 states, numbered 0 to 1");
-    bad(R"({"#meta":{"region":"square:3x3"},"states":[{"cells":{"#map":[]}}]})", 0, "run with --region square:3x3");
+    bad(R"({"#meta":{"region":"square:3x3"},"states":[{"cells":{"#map":[]}}]})", 0,
+        "run with --region square:3x3");
     bad(R"({"states":[]})", std::nullopt, "the trace has no states");
-    bad(R"({"states":[{"cells":{"#map":[[[0,0],{"label":"F"}]]}}]})", 0, "state 0: a cell position in a trace is {\"#tup\"");
+    bad(R"({"states":[{"cells":{"#map":[[[0,0],{"label":"F"}]]}}]})", 0,
+        "state 0: a cell position in a trace is {\"#tup\"");
     bad(R"({"states":[{"cells":[]}]})", 0, "state 0: a state's \"cells\" is {\"#map\"");
-    bad(R"({"states":[{"cells":{"#map":[[{"#tup":[0,0]},{"label":"Q"}]]}}]})", 0, "state 0: cell [0,0]: 'Q' is not a state of field 'label'");
+    bad(R"({"states":[{"cells":{"#map":[[{"#tup":[0,0]},{"label":"Q"}]]}}]})", 0,
+        "state 0: cell [0,0]: 'Q' is not a state of field 'label'");
     bad(R"({"states":[{"cells":{"#map":[]},"inputs":{"target":[]}}]})", 0, "input 'target' is {\"#set\"");
 }
 
 TEST_CASE("ASCII: a state without a one-character name gets a character the legend explains") {
-    auto c = checkFromJson(broken("planner_general1_no_guard"), "square:4x1", std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json");
+    auto c = checkFromJson(broken("planner_general1_no_guard"), "square:4x1",
+                           std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json");
     const auto& safety = c.property("safety");
     REQUIRE(safety.trace);
     const std::string text = checker::drawTraceAscii(*safety.trace, *c.kept.engine);
@@ -149,7 +161,7 @@ TEST_CASE("ASCII: a state without a one-character name gets a character the lege
         CHECK(used.insert(ch).second);
         CHECK(text.find(std::string(1, ch) + " = " + c.world.model->alphabet().name(v)) != std::string::npos);
     }
-    CHECK(key.chars.size() >= 3);  // D&F, D&U and a D&P with its pointer at least
+    CHECK(key.chars.size() >= 3); // D&F, D&U and a D&P with its pointer at least
     CHECK(text.find("-- input target:") != std::string::npos);
     // States that have one-character names need no legend, and keep their names.
     auto g = test::checkAll(broken("general1_leaky"), "square:3x1");
@@ -161,18 +173,21 @@ TEST_CASE("ASCII: a state without a one-character name gets a character the lege
 }
 
 TEST_CASE("SVG: every field, every input, arrows with heads, one colour per value, titles that fit") {
-    auto c = checkFromJson(broken("planner_general1_no_guard"), "square:4x1", std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json");
+    auto c = checkFromJson(broken("planner_general1_no_guard"), "square:4x1",
+                           std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json");
     const auto& safety = c.property("safety");
     REQUIRE(safety.trace);
     const std::string title(300, 'x');
-    const std::string svg = checker::drawTraceSvg(*safety.trace, *c.kept.engine, "planner_general1 " + title + " end");
+    const std::string svg =
+        checker::drawTraceSvg(*safety.trace, *c.kept.engine, "planner_general1 " + title + " end");
     // Both fields of a cell are in its text ("D F", "D P"), the pointer is an arrow with a head.
     CHECK(svg.find(">D F</text>") != std::string::npos);
     CHECK(svg.find(">D P</text>") != std::string::npos);
     CHECK(svg.find("marker-end=\"url(#head0)\"") != std::string::npos);
     CHECK(svg.find("<marker id=\"head0\"") != std::string::npos);
     // The legend names each field's values and the input; the input is drawn as its own pattern.
-    for (const char* s : {">res (fill, text):</text>", ">label (text):</text>", ">input target</text>", "url(#hatch0)"}) {
+    for (const char* s :
+         {">res (fill, text):</text>", ">label (text):</text>", ">input target</text>", "url(#hatch0)"}) {
         CAPTURE(s);
         CHECK(svg.find(s) != std::string::npos);
     }
@@ -183,14 +198,16 @@ TEST_CASE("SVG: every field, every input, arrows with heads, one colour per valu
     const double width = std::stod(m[1]);
     const std::regex titleRe("font-size=\"14\" font-weight=\"bold\">([^<]*)</text>");
     int titleLines = 0;
-    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), titleRe); it != std::sregex_iterator(); ++it) {
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), titleRe); it != std::sregex_iterator();
+         ++it) {
         ++titleLines;
         CHECK(9.0 * static_cast<double>((*it)[1].length()) <= width - 20);
     }
     CHECK(titleLines >= 2);
     // A value's colour depends on its name and its field, not on the picture: F is the same
     // colour in planner_intermediate and planner_general1, and the values of a field differ.
-    test::World a = test::World::library("planner_intermediate", "square:2x2"), b = test::World::library("planner_general1", "square:2x2");
+    test::World a = test::World::library("planner_intermediate", "square:2x2"),
+                b = test::World::library("planner_general1", "square:2x2");
     const auto& la = a.system.fields[a.system.fieldIndex("label")];
     const auto& lb = b.system.fields[b.system.fieldIndex("label")];
     for (int v = 0; v < 3; ++v) CHECK(checker::valueColour(la, v) == checker::valueColour(lb, v));
@@ -215,7 +232,7 @@ TEST_CASE("SVG and ASCII on hex and cubic regions: every cell drawn, pointers al
     t.steps.push_back({cfg.cells, -1});
     rules::Engine engine(*w.model, w.region, cfg.inputs);
     const std::string cubic = checker::drawTraceSvg(t, engine, "lock along z");
-    CHECK(cubic.find("r=\"1.2\"") != std::string::npos);  // the dot of +z
+    CHECK(cubic.find("r=\"1.2\"") != std::string::npos); // the dot of +z
     CHECK(cubic.find(">z=1</text>") != std::string::npos);
     const std::string ascii = checker::drawTraceAscii(t, engine);
     CHECK(ascii.find("z=0") != std::string::npos);
