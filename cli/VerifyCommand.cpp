@@ -114,7 +114,7 @@ int run(const VerifyArgs& a) {
         for (const auto& o : report.obligations)
             if (o.result.name == shown->name + "@reach" && o.result.verdict == checker::Verdict::Holds && shownInputs == options.initial.front().inputs)
                 std::cout << "(no run from the given start reaches it: '" << o.result.name << "' is proved)\n";
-        std::cout << checker::drawTraceAscii(*shown->trace, drawing) << checker::drawInputsAscii(drawing);
+        std::cout << checker::drawTraceAscii(*shown->trace, drawing);  // with one mask per input
     }
     return code;
 }

@@ -2,7 +2,8 @@
 // name (directions by the lattice's direction names), and the cells of each input; it is canonical:
 // one configuration has one text. ASCII art draws square regions row by row and hex regions as
 // offset rows (row r indented by |r| spaces, cells separated by a space) so the picture looks like
-// the lattice.
+// the lattice. An ITF trace (checker/Trace.cpp writes them) is read back one state at a time, so a
+// counterexample can be explored again from any of its states.
 
 #include "rules/ConfigIo.h"
 
@@ -10,6 +11,7 @@
 #include "rules/Parser.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <sstream>
 
 namespace holon::rules {
@@ -61,8 +63,13 @@ nlohmann::json stateFields(const Model& model, CellValue v) {
     if (v == 0) return record;
     const auto& fields = model.alphabet().fields(v);
     for (std::size_t f = 0; f < fields.size(); ++f) {
-        if (fields[f] == kAbsent) continue;
         const Field& field = model.system().fields[f];
+        // An unconditional pointer that points nowhere is written "none", so a reader sees every
+        // field the state has; a conditional field that is off is left out.
+        if (fields[f] == kAbsent) {
+            if (field.kind == FieldKind::Dir && field.whenField < 0) record[field.name] = "none";
+            continue;
+        }
         if (field.kind == FieldKind::Enum) record[field.name] = field.values[fields[f]];
         else if (field.kind == FieldKind::Dir) record[field.name] = model.lattice().directionName(fields[f]);
         else record[field.name] = fields[f];
@@ -219,17 +226,105 @@ std::vector<bool> maskFromAscii(const Region& region, const std::string& text) {
     return mask;
 }
 
-Configuration readConfigFile(const Interpreter& in, const std::string& path, std::uint32_t* inputsNamed) {
+namespace {
+
+/// An ITF integer: a JSON number, or {"#bigint": "123"} as ITF writes large ones.
+nlohmann::json itfScalar(const nlohmann::json& v) {
+    if (v.is_object() && v.contains("#bigint") && v["#bigint"].is_string()) {
+        try {
+            return std::stoll(v["#bigint"].get<std::string>());
+        } catch (const std::exception&) {
+            throw InputError("\"#bigint\" holds the digits of an integer, found " + v.dump());
+        }
+    }
+    return v;
+}
+
+/// An ITF position {"#tup": [x, y]} as the [x, y] of a configuration.
+nlohmann::json itfPoint(const nlohmann::json& v) {
+    if (!v.is_object() || !v.contains("#tup") || !v["#tup"].is_array()) throw InputError("a cell position in a trace is {\"#tup\": [x, y]}, found " + v.dump());
+    nlohmann::json at = nlohmann::json::array();
+    for (const auto& x : v["#tup"]) at.push_back(itfScalar(x));
+    return at;
+}
+
+}  // namespace
+
+bool isItfTrace(const nlohmann::json& j) { return j.is_object() && j.contains("states") && !j.contains("cells"); }
+
+Configuration configFromItf(const Interpreter& in, const nlohmann::json& itf, std::optional<int> index, std::uint32_t* inputsNamed) {
+    if (!isItfTrace(itf) || !itf["states"].is_array()) throw InputError("an ITF trace is a JSON object with a \"states\" array");
+    const auto& states = itf["states"];
+    const int count = static_cast<int>(states.size());
+    if (count == 0) throw InputError("the trace has no states");
+    const int k = index.value_or(count - 1);
+    if (k < 0 || k >= count)
+        throw InputError("the trace has " + std::to_string(count) + (count == 1 ? " state" : " states") + ", numbered 0 to " + std::to_string(count - 1) +
+                         "; pick one as FILE#N, or give FILE alone for the last");
+    if (itf.contains("#meta") && itf["#meta"].is_object() && itf["#meta"].contains("region") && itf["#meta"]["region"].is_string() &&
+        itf["#meta"]["region"].get<std::string>() != in.region().spec())
+        throw InputError("the trace is for region " + itf["#meta"]["region"].get<std::string>() + ", not " + in.region().spec() + "; run with --region " +
+                         itf["#meta"]["region"].get<std::string>());
+    // The state becomes a configuration's JSON, so one reader checks cells, fields and inputs.
+    const auto& state = states[k];
+    const std::string where = "state " + std::to_string(k) + ": ";
+    try {
+        if (!state.is_object() || !state.contains("cells") || !state["cells"].is_object() || !state["cells"].contains("#map") || !state["cells"]["#map"].is_array())
+            throw InputError("a state's \"cells\" is {\"#map\": [[{\"#tup\": [x, y]}, {FIELD: VALUE, ...}], ...]}");
+        nlohmann::json config{{"cells", nlohmann::json::array()}};
+        for (const auto& entry : state["cells"]["#map"]) {
+            if (!entry.is_array() || entry.size() != 2 || !entry[1].is_object())
+                throw InputError("each entry of \"cells\" is a pair [{\"#tup\": [x, y]}, {FIELD: VALUE, ...}], found " + entry.dump());
+            nlohmann::json cell = nlohmann::json::object();
+            for (const auto& [field, value] : entry[1].items()) cell[field] = itfScalar(value);
+            cell["at"] = itfPoint(entry[0]);
+            config["cells"].push_back(cell);
+        }
+        if (state.contains("inputs")) {
+            if (!state["inputs"].is_object()) throw InputError("a state's \"inputs\" maps each input's name to {\"#set\": [{\"#tup\": [x, y]}, ...]}");
+            nlohmann::json inputs = nlohmann::json::object();
+            for (const auto& [name, set] : state["inputs"].items()) {
+                if (!set.is_object() || !set.contains("#set") || !set["#set"].is_array())
+                    throw InputError("input '" + name + "' is {\"#set\": [{\"#tup\": [x, y]}, ...]}");
+                inputs[name] = nlohmann::json::array();
+                for (const auto& at : set["#set"]) inputs[name].push_back(itfPoint(at));
+            }
+            config["inputs"] = inputs;
+        }
+        return configFromJson(in, config, inputsNamed);
+    } catch (const InputError& e) {
+        throw InputError(where + e.what());
+    }
+}
+
+Configuration readConfigFile(const Interpreter& in, const std::string& spec, std::uint32_t* inputsNamed) {
+    // FILE#N picks state N of an ITF trace; a file whose own name holds '#' is read as it is.
+    std::string path = spec;
+    std::optional<int> index;
+    std::error_code missing;
+    if (const auto hash = spec.rfind('#'); hash != std::string::npos && !std::filesystem::exists(spec, missing)) {
+        path = spec.substr(0, hash);
+        const std::string n = spec.substr(hash + 1);
+        if (n.empty() || n.size() > 9 || n.find_first_not_of("0123456789") != std::string::npos)
+            throw InputError(spec + ": after '#' comes the index of a state of an ITF trace, as in " + path + "#0 for the first state");
+        index = std::stoi(n);
+    }
     const std::string text = readTextFile(path);
     const auto first = text.find_first_not_of(" \t\r\n");
     if (inputsNamed) *inputsNamed = 0;
     try {
-        if (first != std::string::npos && text[first] == '{') return configFromJson(in, nlohmann::json::parse(text), inputsNamed);
+        if (first != std::string::npos && text[first] == '{') {
+            const nlohmann::json j = nlohmann::json::parse(text);
+            if (isItfTrace(j)) return configFromItf(in, j, index, inputsNamed);
+            if (index) throw InputError("'#" + std::to_string(*index) + "' picks a state of an ITF trace, and this is a configuration; give " + path + " without it");
+            return configFromJson(in, j, inputsNamed);
+        }
+        if (index) throw InputError("'#" + std::to_string(*index) + "' picks a state of an ITF trace, and this is ASCII art; give " + path + " without it");
         return configFromAscii(in, text);
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": not valid JSON: " + e.what());
     } catch (const InputError& e) {
-        throw InputError(path + ": " + e.what());
+        throw InputError(spec + ": " + e.what());
     }
 }
 

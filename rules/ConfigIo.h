@@ -5,6 +5,7 @@
 #include "rules/Interpreter.h"
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 namespace holon::rules {
@@ -24,8 +25,16 @@ Configuration configFromAscii(const Interpreter& in, const std::string& text);
 /// A per-cell mask in ASCII art: every character other than '.' and blanks marks a cell.
 std::vector<bool> maskFromAscii(const Region& region, const std::string& text);
 
-/// Reads a configuration from a file, JSON if it starts with '{', ASCII art otherwise (which
-/// names no inputs: `inputsNamed` as for configFromJson).
+/// True for an ITF trace (holon's --trace-out: an object with "states"), false for a configuration.
+bool isItfTrace(const nlohmann::json& j);
+/// State `index` of an ITF trace (the last when none is given) with the inputs it carries: each
+/// state's "cells" is {"#map": [[{"#tup": [x, y]}, {FIELD: VALUE, ...}], ...]} and its "inputs"
+/// {NAME: {"#set": [{"#tup": [x, y]}, ...]}}. Throws InputError naming the state and the fix.
+Configuration configFromItf(const Interpreter& in, const nlohmann::json& itf, std::optional<int> index, std::uint32_t* inputsNamed = nullptr);
+
+/// Reads a configuration from a file: an ITF trace (`FILE#N` picks state N, the last by default),
+/// JSON if it starts with '{', ASCII art otherwise (which names no inputs: `inputsNamed` as for
+/// configFromJson).
 Configuration readConfigFile(const Interpreter& in, const std::string& path, std::uint32_t* inputsNamed = nullptr);
 
 }  // namespace holon::rules
