@@ -97,7 +97,6 @@ TEST_CASE("ITF round trip: an unconditional pointer that points nowhere is writt
 }
 
 TEST_CASE("ITF round trip: every broken system's counterexample reads back, cells and inputs") {
-    const std::string examples = std::string(HOLON_TEST_DIR) + "/../examples/";
     int traces = 0;
     traces += roundTrip(
         test::checkFrom(broken("planner_no_guard"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###"));
@@ -107,9 +106,9 @@ TEST_CASE("ITF round trip: every broken system's counterexample reads back, cell
     traces += roundTrip(test::checkAll(broken("transfer_livelock"), "square:3x1"));
     traces += roundTrip(test::checkFrom(broken("hex_delete_shared"), "hex:r5", kTwoHoles, ""));
     traces += roundTrip(checkFromJson(broken("roombots_no_exclusion"), "square:4x4",
-                                      examples + "roombots/reserve_crossing.json"));
+                                      std::string(HOLON_TEST_DIR) + "/cli/reserve_crossing_3walks.json"));
     traces += roundTrip(checkFromJson(broken("roombots_blocking_wait"), "square:4x4",
-                                      examples + "roombots/reserve_crossing.json"));
+                                      std::string(HOLON_TEST_DIR) + "/cli/reserve_crossing_3walks.json"));
     // The lock system on a cubic region: 3D positions and pointers along z.
     test::Checked lock{test::World(broken("general_lock2_ranked"), "cubic:2x1x2"), {}, {}};
     checker::CheckOptions o;
