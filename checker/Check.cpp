@@ -87,7 +87,7 @@ bool violatedAtNearest(PropertyResult& r, const Explorer& ex, const std::vector<
     r.trace->property = r.name;
     r.summary = std::to_string(count) + (count == 1 ? " state " : " states ") + which;
     r.trace->description = description;
-    r.witness = {{countKey, count}, {"state", first}, {"distance", r.trace->steps.size() - 1}};
+    r.witness = {{countKey, count}, {"distance", r.trace->steps.size() - 1}};
     return true;
 }
 

@@ -63,7 +63,7 @@ PropertyResult finish(const Explorer& ex, const GraphView& graph, PropertyResult
     r.trace = traceAlong(ex, path);
     r.trace->property = r.name;
     r.trace->description = "two configurations one " + adjacency + " apart need " + std::to_string(path.size() - 1) + " rule steps";
-    r.witness = {{"pairs", violations}, {"distance", path.size() - 1}, {"from", chosen.first}, {"to", chosen.second}, {"modules", modules}};
+    r.witness = {{"pairs", violations}, {"distance", path.size() - 1}, {"modules", modules}};
     r.summary = std::to_string(violations) + " adjacent pairs need more than one step; e.g. distance " + std::to_string(path.size() - 1);
     return r;
 }

@@ -10,8 +10,8 @@
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
+#include "rules/OutputFile.h"
 
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <unistd.h>
@@ -30,18 +30,17 @@ struct CheckArgs {
     int threads = 2;
 };
 
-void writeFile(const std::string& path, const std::string& text) {
-    std::ofstream out(path);
-    if (!out) throw InputError("cannot write '" + path + "'");
-    out << text;
-}
-
 int run(const CheckArgs& a) {
     auto system = loadRules(a.file, a.noWarnings);
     if (!system) return 2;
     const rules::Region region = rules::Region::parse(a.region, 1u << 22);
     rules::Model model(*system, region.lattice());
     rules::Interpreter in(model, region);
+    // Output paths are checked before the work, so a finished check is never lost to a bad path.
+    std::optional<rules::OutputFile> traceOut, svgOut, dotOut;
+    if (!a.traceOut.empty()) traceOut.emplace("--trace-out", a.traceOut);
+    if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
+    if (!a.dot.empty()) dotOut.emplace("--dot", a.dot);
 
     checker::CheckOptions options;
     options.limits.maxStates = a.maxStates;
@@ -64,36 +63,49 @@ int run(const CheckArgs& a) {
     if (terminal) std::cerr << "\r" << std::string(90, ' ') << "\r";
     const rules::Engine& engine = *kept.engine;
 
-    // Every trace is replayed through the reference interpreter before anyone sees it.
+    // Every trace is replayed through the reference interpreter before anyone sees it; one that
+    // does not replay is a bug in holon, shown for the report and said by the exit code.
+    bool unreplayed = false;
+    std::vector<const checker::PropertyResult*> violated;
     for (checker::PropertyResult& p : report.properties) {
         if (!p.trace) continue;
         std::string why;
         const bool ok = checker::replay(*p.trace, engine, in, &why);
-        if (p.witness.is_object() || p.witness.is_null()) p.witness["replayed"] = ok;
-        if (!ok) std::cerr << "holon check: internal error: the trace for '" << p.name << "' does not replay: " << why << '\n';
+        if (!p.witness.is_object()) p.witness = nlohmann::json::object();
+        p.witness["replayed"] = ok;
+        p.witness["trace"] = traceJson(*p.trace, engine, in);
+        if (!ok) {
+            unreplayed = true;
+            std::cerr << "holon check: internal error: the trace for '" << p.name << "' does not replay: " << why
+                      << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+        }
+        if (p.verdict == checker::Verdict::Violated) violated.push_back(&p);
     }
-    const checker::PropertyResult* shown = nullptr;
-    for (const auto& p : report.properties)
-        if (p.trace && p.verdict == checker::Verdict::Violated) {
-            shown = &p;
-            break;
+    const auto exitCode = [&] { return unreplayed ? kExitInternal : exitCodeFor(report.overall()); };
+    // Every violated property gets its own trace file (named after it when there are several).
+    std::vector<std::string> written;
+    for (const checker::PropertyResult* p : violated) {
+        const bool several = violated.size() > 1;
+        if (traceOut) {
+            const rules::OutputFile file("--trace-out", pathFor(traceOut->path(), p->name, several));
+            file.write(checker::toItf(*p->trace, engine, a.file).dump(2) + "\n");
+            written.push_back(file.path());
         }
-    if (!a.traceOut.empty() && shown) writeFile(a.traceOut, checker::toItf(*shown->trace, engine, a.file).dump(2) + "\n");
-    if (!a.svg.empty() && shown)
-        writeFile(a.svg, checker::drawTraceSvg(*shown->trace, engine, system->name + " on " + region.spec() + ": " + shown->name + " " +
-                                                                          checker::verdictName(shown->verdict) + " -- " + shown->trace->description));
-    if (!a.dot.empty()) {
+        if (svgOut) {
+            const rules::OutputFile file("--svg", pathFor(svgOut->path(), p->name, several));
+            file.write(checker::drawTraceSvg(*p->trace, engine, system->name + " on " + region.spec() + ": " + p->name + " " +
+                                                                    checker::verdictName(p->verdict) + " -- " + p->trace->description));
+            written.push_back(file.path());
+        }
+    }
+    if (dotOut) {
         if (report.stats.states > 5000) std::cerr << "holon check: --dot skipped: " << report.stats.states << " states is too many to draw (at most 5000)\n";
-        else {
-            std::ofstream out(a.dot);
-            if (!out) throw InputError("cannot write '" + a.dot + "'");
-            checker::writeDot(*kept.explorer, in, out);
-        }
+        else dotOut->write([&](std::ostream& out) { checker::writeDot(*kept.explorer, in, out); });
     }
 
     if (a.json) {
         std::cout << report.toJson().dump(2) << '\n';
-        return exitCodeFor(report.overall());
+        return exitCode();
     }
     const auto& s = report.stats;
     std::cout << system->name << " on " << region.spec() << (a.all ? ", every legal configuration" : ", reachable from " + std::to_string(a.from.size()) + " configuration(s)") << '\n';
@@ -106,12 +118,16 @@ int run(const CheckArgs& a) {
     for (const auto& p : report.properties)
         std::cout << "  " << std::setw(20) << p.name << std::setw(10) << checker::verdictName(p.verdict) << std::setw(10)
                   << (std::to_string(static_cast<int>(p.seconds * 1000)) + " ms ") << p.summary << '\n';
-    if (shown) {
-        std::cout << "\ncounterexample for '" << shown->name << "'" << (shown->trace->description.empty() ? "" : ": " + shown->trace->description)
-                  << " (replayed through the reference interpreter)\n"
-                  << checker::drawTraceAscii(*shown->trace, engine);
+    for (const checker::PropertyResult* p : violated)
+        std::cout << "\ncounterexample for '" << p->name << "'" << (p->trace->description.empty() ? "" : ": " + p->trace->description)
+                  << (p->witness["replayed"] == true ? " (replayed through the reference interpreter)" : " (NOT confirmed by the reference interpreter)") << '\n'
+                  << checker::drawTraceAscii(*p->trace, engine);
+    if (violated.size() > 1 && !written.empty()) {
+        std::cout << "\ntraces written:";
+        for (const std::string& w : written) std::cout << ' ' << w;
+        std::cout << '\n';
     }
-    return exitCodeFor(report.overall());
+    return exitCode();
 }
 
 }  // namespace

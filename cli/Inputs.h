@@ -1,6 +1,7 @@
 #pragma once
 // Helpers every subcommand shares: loading a rule file with diagnostics, reading input masks.
 
+#include "checker/Trace.h"
 #include "rules/Interpreter.h"
 
 #include <cstdint>
@@ -17,6 +18,12 @@ std::optional<rules::System> loadRules(const std::string& file, const std::vecto
 /// nowhere, `all`: everywhere, so a file by either name is written ./none). `named`, if given,
 /// gets bit k set for each input k an argument names.
 std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::vector<std::string>& specs, std::uint32_t* named = nullptr);
+
+/// Where the trace of one of several violated properties goes: "out/t.itf.json" becomes
+/// "out/t.safety.itf.json"; with one violated property, the path as given.
+std::string pathFor(const std::string& path, const std::string& property, bool several);
+/// A trace as configurations, for --json: each state with the rule that led to it.
+nlohmann::json traceJson(const checker::Trace& trace, const rules::Engine& engine, const rules::Interpreter& in);
 
 /// The start configurations of --from, each with the inputs of `inputSpecs` (--input) added, every
 /// declared input set by one or the other (an input left out is not silently false everywhere), and

@@ -8,8 +8,8 @@
 #include "cli/Inputs.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
+#include "rules/OutputFile.h"
 
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <unistd.h>
@@ -32,6 +32,10 @@ int run(const VerifyArgs& a) {
     const rules::Region region = rules::Region::parse(a.region, 4096);
     rules::Model model(*system, region.lattice());
     rules::Interpreter in(model, region);
+    // Output paths are checked before the proofs, so finished work is never lost to a bad path.
+    std::optional<rules::OutputFile> traceOut, svgOut;
+    if (!a.traceOut.empty()) traceOut.emplace("--trace-out", a.traceOut);
+    if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
     checker::VerifyOptions options;
     options.timeoutSeconds = a.timeout;
     options.depth = a.depth;
@@ -52,9 +56,13 @@ int run(const VerifyArgs& a) {
 
     // Every counterexample is confirmed by the reference interpreter under the inputs it uses. One
     // that is not is a bug in holon: it is shown for the report, and the exit code says so.
-    const checker::PropertyResult* shown = nullptr;
-    bool unconfirmed = false, shownConfirmed = false;
-    std::string shownWhy;
+    struct Shown {
+        checker::PropertyResult* result;
+        bool confirmed;
+        std::string why;
+    };
+    std::vector<Shown> shown;
+    bool unconfirmed = false;
     for (auto& o : report.obligations) {
         if (o.result.verdict != checker::Verdict::Violated) continue;
         std::string why;
@@ -65,27 +73,28 @@ int run(const VerifyArgs& a) {
             std::cerr << "holon verify: internal error: the counterexample for '" << o.result.name << "' is not confirmed: " << why
                       << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
         }
-        // A path from --from (NAME@bmcK, NAME@reach) is reachable: it is the one to show first.
-        const bool fromStart = o.result.kind == "bmc" || o.result.kind == "reach";
-        if (!shown || (fromStart && shown->kind != "bmc" && shown->kind != "reach")) {
-            shown = &o.result;
-            shownConfirmed = ok;
-            shownWhy = why;
+        shown.push_back({&o.result, ok, why});
+    }
+    // A path from --from (NAME@bmcK, NAME@reach) is reachable: those come first.
+    std::stable_partition(shown.begin(), shown.end(), [](const Shown& s) { return s.result->kind == "bmc" || s.result->kind == "reach"; });
+    const std::vector<std::uint32_t> noInputs(region.size(), 0);
+    auto drawingFor = [&](const checker::PropertyResult& r) { return rules::Engine(model, region, r.inputs.value_or(noInputs)); };
+    std::vector<std::string> written;
+    for (const Shown& s : shown) {
+        if (!s.result->trace) continue;
+        const rules::Engine drawing = drawingFor(*s.result);
+        s.result->witness["trace"] = traceJson(*s.result->trace, drawing, in);
+        const bool several = shown.size() > 1;
+        if (traceOut) {
+            const rules::OutputFile file("--trace-out", pathFor(traceOut->path(), s.result->name, several));
+            file.write(checker::toItf(*s.result->trace, drawing, a.file).dump(2) + "\n");
+            written.push_back(file.path());
         }
-    }
-    const std::vector<std::uint32_t> shownInputs =
-        shown ? shown->inputs.value_or(std::vector<std::uint32_t>(region.size(), 0))
-              : (options.initial.empty() ? std::vector<std::uint32_t>(region.size(), 0) : options.initial.front().inputs);
-    const rules::Engine drawing(model, region, shownInputs);
-    if (shown && !a.traceOut.empty()) {
-        std::ofstream out(a.traceOut);
-        if (!out) throw InputError("cannot write '" + a.traceOut + "'");
-        out << checker::toItf(*shown->trace, drawing, a.file).dump(2) << '\n';
-    }
-    if (shown && !a.svg.empty()) {
-        std::ofstream out(a.svg);
-        if (!out) throw InputError("cannot write '" + a.svg + "'");
-        out << checker::drawTraceSvg(*shown->trace, drawing, system->name + " on " + region.spec() + ": " + shown->name + " -- " + shown->trace->description);
+        if (svgOut) {
+            const rules::OutputFile file("--svg", pathFor(svgOut->path(), s.result->name, several));
+            file.write(checker::drawTraceSvg(*s.result->trace, drawing, system->name + " on " + region.spec() + ": " + s.result->name + " -- " + s.result->trace->description));
+            written.push_back(file.path());
+        }
     }
     const int code = unconfirmed ? kExitInternal : exitCodeFor(report.overall());
     if (a.json) {
@@ -108,13 +117,20 @@ int run(const VerifyArgs& a) {
         for (std::size_t k = 0; k < shown; ++k) std::cout << "  " << clauses[k].get<std::string>() << '\n';
         if (shown < clauses.size()) std::cout << "  ... " << clauses.size() - shown << " more (--json prints all)\n";
     }
-    if (shown) {
-        std::cout << "\ncounterexample for '" << shown->name << "' "
-                  << (shownConfirmed ? "(confirmed by the reference interpreter)" : "(NOT confirmed by the reference interpreter: " + shownWhy + ")") << '\n';
+    for (const Shown& s : shown) {
+        if (!s.result->trace) continue;
+        std::cout << "\ncounterexample for '" << s.result->name << "' "
+                  << (s.confirmed ? "(confirmed by the reference interpreter)" : "(NOT confirmed by the reference interpreter: " + s.why + ")") << '\n';
         for (const auto& o : report.obligations)
-            if (o.result.name == shown->name + "@reach" && o.result.verdict == checker::Verdict::Holds && shownInputs == options.initial.front().inputs)
+            if (o.result.name == s.result->name + "@reach" && o.result.verdict == checker::Verdict::Holds && !options.initial.empty() &&
+                s.result->inputs.value_or(noInputs) == options.initial.front().inputs)
                 std::cout << "(no run from the given start reaches it: '" << o.result.name << "' is proved)\n";
-        std::cout << checker::drawTraceAscii(*shown->trace, drawing);  // with one mask per input
+        std::cout << checker::drawTraceAscii(*s.result->trace, drawingFor(*s.result));  // with one mask per input
+    }
+    if (shown.size() > 1 && !written.empty()) {
+        std::cout << "\ntraces written:";
+        for (const std::string& w : written) std::cout << ' ' << w;
+        std::cout << '\n';
     }
     return code;
 }
@@ -134,8 +150,8 @@ Run addVerifyCommand(CLI::App& app) {
     sub->add_option("--timeout", a->timeout, "seconds per obligation (default 120)");
     sub->add_flag("--json", a->json, "print the report as JSON");
     sub->add_option("--smt-out", a->smtOut, "write every obligation as SMT-LIB2 into this directory");
-    sub->add_option("--trace-out", a->traceOut, "write the counterexample shown (a path from --from first) as an ITF JSON trace");
-    sub->add_option("--svg", a->svg, "draw the counterexample shown (a path from --from first) as SVG");
+    sub->add_option("--trace-out", a->traceOut, "write each counterexample as an ITF JSON trace (several: FILE with the obligation's name inserted)");
+    sub->add_option("--svg", a->svg, "draw each counterexample as SVG (several: FILE with the obligation's name inserted)");
     sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
     return [a] { return run(*a); };
 }
