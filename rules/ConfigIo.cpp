@@ -309,7 +309,15 @@ Configuration readConfigFile(const Interpreter& in, const std::string& spec, std
             throw InputError(spec + ": after '#' comes the index of a state of an ITF trace, as in " + path + "#0 for the first state");
         index = std::stoi(n);
     }
-    const std::string text = readTextFile(path);
+    try {
+        return configFromText(in, readTextFile(path), index, inputsNamed, path);
+    } catch (const InputError& e) {
+        throw InputError(spec + ": " + e.what());
+    }
+}
+
+Configuration configFromText(const Interpreter& in, const std::string& text, std::optional<int> index, std::uint32_t* inputsNamed,
+                             const std::string& path) {
     const auto first = text.find_first_not_of(" \t\r\n");
     if (inputsNamed) *inputsNamed = 0;
     try {
@@ -322,9 +330,7 @@ Configuration readConfigFile(const Interpreter& in, const std::string& spec, std
         if (index) throw InputError("'#" + std::to_string(*index) + "' picks a state of an ITF trace, and this is ASCII art; give " + path + " without it");
         return configFromAscii(in, text);
     } catch (const nlohmann::json::exception& e) {
-        throw InputError(path + ": not valid JSON: " + e.what());
-    } catch (const InputError& e) {
-        throw InputError(spec + ": " + e.what());
+        throw InputError("not valid JSON: " + std::string(e.what()));
     }
 }
 

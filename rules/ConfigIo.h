@@ -36,5 +36,8 @@ Configuration configFromItf(const Interpreter& in, const nlohmann::json& itf, st
 /// JSON if it starts with '{', ASCII art otherwise (which names no inputs: `inputsNamed` as for
 /// configFromJson).
 Configuration readConfigFile(const Interpreter& in, const std::string& path, std::uint32_t* inputsNamed = nullptr);
+/// The same for text already read (`path` only names it in messages).
+Configuration configFromText(const Interpreter& in, const std::string& text, std::optional<int> index = std::nullopt,
+                             std::uint32_t* inputsNamed = nullptr, const std::string& path = "the configuration");
 
 }  // namespace holon::rules

@@ -35,9 +35,9 @@ echo
 "$holon" check rules/library/hex_holes.holon --region hex:r4 --from $in/neck.txt \
     --property one_mass --svg "$out/pinch_off.svg" --trace-out "$out/pinch_off.itf.json" | sed -n '1,6p'
 echo
-"$holon" check rules/library/hex_collapse.holon --region hex:r3 --from $in/blob.txt | sed -n '1,8p'
+"$holon" check rules/library/hex_collapse.holon --region hex:r3 --from $in/blob.txt --input target=none | sed -n '1,8p'
 echo
-"$holon" check rules/library/hex_collapse.holon --region hex:r4 --from $in/hole_and_blob.txt | sed -n '1,8p'
+"$holon" check rules/library/hex_collapse.holon --region hex:r4 --from $in/hole_and_blob.txt --input target=none | sed -n '1,8p'
 echo
 "$holon" check rules/library/hex_growth.holon --region hex:r4 --from $in/growth_blob.txt --input target=$in/target_r4.txt \
     --property holes --property mass_conservation
