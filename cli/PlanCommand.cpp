@@ -134,6 +134,18 @@ private:
     struct sigaction oldInt_ {}, oldTerm_ {};
 };
 
+/// A system fixed to a lattice plan does not run on: plan picks the lattice from the shapes
+/// (square2d for 2D, cubic3d for 3D), so the fix is the rule file or the shapes, not a region.
+void requirePlanLattice(const rules::System& system, const rules::Lattice& lattice) {
+    if (!system.lattice || *system.lattice == lattice.kind()) return;
+    const rules::Lattice& fixed = rules::Lattice::get(*system.lattice);
+    const bool otherDimension = fixed.kind() != rules::LatticeKind::Hex2D;  // square2d or cubic3d: the shapes' dimension decides
+    throw InputError("--rules: system '" + system.name + "' is written for the " + fixed.name() + " lattice, but plan runs on " + lattice.name() +
+                     " for these " + std::to_string(lattice.dimension()) + "D shapes (square2d for 2D shapes, cubic3d for 3D ones); give --rules a planner system for " +
+                     lattice.name() + " (planner_intermediate, planner_general1, ...)" +
+                     (otherDimension ? ", or --from and --to as " + std::to_string(fixed.dimension()) + "D shapes" : std::string()));
+}
+
 int run(const PlanArgs& a) {
     // Every output path is checked before any work: a finished plan is never lost to a typo.
     if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
@@ -147,6 +159,7 @@ int run(const PlanArgs& a) {
     if (!system) return 2;
     planner::Shape from = planner::parseShape(a.from, a.scale), to = planner::parseShape(a.to, a.scale);
     const rules::Lattice& lattice = rules::Lattice::get(from.dimension == 3 ? rules::LatticeKind::Cubic3D : rules::LatticeKind::Square2D);
+    requirePlanLattice(*system, lattice);
     rules::Model model(*system, lattice);
     planner::Problem problem = planner::makeProblem(model, std::move(from), std::move(to), parseCell(a.seedCell), a.seed);
     std::unique_ptr<planner::Allocator> allocator = planner::makeAllocator(a.allocator, problem, a.seed);
