@@ -18,11 +18,11 @@
 #include "checker/SmtEncoding.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
+#include "rules/OutputFile.h"
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <optional>
 
@@ -50,6 +50,9 @@ nlohmann::json VerifyReport::toJson() const {
 }
 
 namespace {
+
+/// How --smt-out is named in messages: the caller's option, or a description without one.
+std::string smtOutOption(const VerifyOptions& o) { return o.smtOutOption.empty() ? "the SMT-LIB2 folder" : o.smtOutOption; }
 
 std::string fileSafe(std::string s) {
     for (char& c : s)
@@ -232,21 +235,17 @@ public:
         return o;
     }
 
-    /// Where obligation `name` is written under --smt-out (the directory is created).
-    std::string smtPath(const std::string& name) const {
+    /// Where obligation `name` is written under --smt-out (the folder is prepared by verify()).
+    rules::OutputFile smtPath(const std::string& name) const {
         const std::filesystem::path dir(options_.smtOut);
-        std::filesystem::create_directories(dir);
-        return (dir / (fileSafe(model_.system().name) + "." + fileSafe(region_.spec()) + "." + fileSafe(name) + ".smt2")).string();
+        return rules::OutputFile(smtOutOption(options_), (dir / (fileSafe(model_.system().name) + "." + fileSafe(region_.spec()) + "." + fileSafe(name) + ".smt2")).string());
     }
 
     void write(const std::string& name, z3::solver& solver, Obligation& o) {
-        const std::string file = smtPath(name);
-        std::ofstream out(file);
-        if (!out) throw InputError("cannot write '" + file + "'");
-        out << "; holon proof obligation: system " << model_.system().name << ", region " << region_.spec() << ", property " << name
-            << "\n; expected: unsat (the property holds for every configuration of the region)\n(set-logic ALL)\n"
-            << solver.to_smt2();
-        o.smtFile = file;
+        const rules::OutputFile file = smtPath(name);
+        file.write("; holon proof obligation: system " + model_.system().name + ", region " + region_.spec() + ", property " + name +
+                   "\n; expected: unsat (the property holds for every configuration of the region)\n(set-logic ALL)\n" + solver.to_smt2());
+        o.smtFile = file.path();
     }
 
     int placedFrom(const z3::model& m, const z3::expr& selector) const { return m.eval(selector, true).get_numeral_int(); }
@@ -377,6 +376,8 @@ Obligation proveInductive(Runner& run, const rules::Property& p) {
 VerifyReport verify(const rules::Model& model, const rules::Region& region, const VerifyOptions& options,
                     const std::function<void(const std::string&)>& onObligation) {
     const rules::System& system = model.system();
+    // The folder first: a proof that takes minutes is not thrown away for a path.
+    if (!options.smtOut.empty()) rules::prepareOutputDir(smtOutOption(options), options.smtOut);
     VerifyReport report;
     report.system = system.name;
     report.region = region.spec();
@@ -680,9 +681,9 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         for (const Target& t : targets) {
             const std::string name = t.property->name + "@reach";
             announce(name);
-            const std::string file = options.smtOut.empty() ? std::string() : run.smtPath(name);
+            const std::optional<rules::OutputFile> file = options.smtOut.empty() ? std::nullopt : std::optional(run.smtPath(name));
             const bool isKnown = std::find(known.begin(), known.end(), t.property) != known.end();
-            const ReachProof proof = isKnown ? ReachProof{} : proveUnreachable(e, t.bad, options.initial, options.timeoutSeconds, file, known.empty() ? BadStates() : BadStates(knownAt));
+            const ReachProof proof = isKnown ? ReachProof{} : proveUnreachable(e, t.bad, options.initial, options.timeoutSeconds, file ? &*file : nullptr, known.empty() ? BadStates() : BadStates(knownAt));
             Obligation o = Runner::named(name, "reach");
             for (const std::string& f : proof.certificateFiles) o.smtFile += (o.smtFile.empty() ? "" : " ") + f;
             o.result.verdict = proof.verdict;

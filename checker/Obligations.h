@@ -20,6 +20,7 @@ struct VerifyOptions {
     std::vector<rules::Configuration> initial;
     std::vector<std::string> properties;        // empty: all
     std::string smtOut;                         // directory for SMT-LIB2 files, or empty
+    std::string smtOutOption;                   // how the caller names smtOut in messages (its option); empty: "the SMT-LIB2 folder"
 };
 
 struct Obligation {
@@ -43,6 +44,8 @@ bool confirmCounterexample(const PropertyResult& r, const rules::Model& model, c
 
 /// Builds and discharges every obligation of the system's properties on the region. Counterexample
 /// traces are decoded from the model and replayed through the reference interpreter by the caller.
+/// The smtOut folder is created (or checked) first, before any work; it and every file written
+/// into it throw InputError with the reason when they cannot be written.
 VerifyReport verify(const rules::Model& model, const rules::Region& region, const VerifyOptions& options,
                     const std::function<void(const std::string&)>& onObligation = {});
 

@@ -19,8 +19,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cerrno>
 #include <cstdio>
-#include <fstream>
+#include <cstring>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <unordered_set>
 
@@ -157,7 +159,7 @@ std::vector<z3::expr> irredundant(const z3::expr& found, const z3::expr& onState
 
 /// The Horn clauses, built and solved in this process.
 ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadStates& bad, const BadStates& known,
-                     const std::vector<rules::Configuration>& initial, double timeoutSeconds, const std::string& smtFile) {
+                     const std::vector<rules::Configuration>& initial, double timeoutSeconds, const std::string& smtOption, const std::string& smtFile) {
     const auto start = std::chrono::steady_clock::now();
     const rules::Region& region = engine.region();
     const rules::Model& model = engine.model();
@@ -220,15 +222,12 @@ ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadSta
     solver.add(clause(badBody && at(q), ctx.bool_val(false)));
 
     ReachProof proof;
-    auto header = [&](std::ofstream& out, const std::string& expected) {
-        out << "; holon reachability proof: system " << model.system().name << ", region " << region.spec() << "\n; expected: " << expected << "\n";
+    auto header = [&](const std::string& expected) {
+        return "; holon reachability proof: system " + model.system().name + ", region " + region.spec() + "\n; expected: " + expected + "\n";
     };
-    if (!smtFile.empty()) {
-        std::ofstream out(smtFile);
-        if (!out) throw InputError("cannot write '" + smtFile + "'");
-        header(out, "sat (the model's `reach` is an inductive invariant excluding the bad states)");
-        out << "(set-logic HORN)\n" << solver.to_smt2();
-    }
+    if (!smtFile.empty())
+        rules::OutputFile(smtOption, smtFile)
+            .write(header("sat (the model's `reach` is an inductive invariant excluding the bad states)") + "(set-logic HORN)\n" + solver.to_smt2());
 
     const z3::check_result r = solver.check();
     if (r == z3::unsat) proof.verdict = Verdict::Violated;
@@ -249,10 +248,7 @@ ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadSta
             check.add(query);
             if (!smtFile.empty()) {
                 const std::string file = smtFile.substr(0, smtFile.size() - 5) + "." + part + ".smt2";
-                std::ofstream out(file);
-                if (!out) throw InputError("cannot write '" + file + "'");
-                header(out, std::string("unsat (certificate check '") + part + "' of Spacer's invariant)");
-                out << "(set-logic ALL)\n" << check.to_smt2();
+                rules::OutputFile(smtOption, file).write(header(std::string("unsat (certificate check '") + part + "' of Spacer's invariant)") + "(set-logic ALL)\n" + check.to_smt2());
                 proof.certificateFiles.push_back(file);
             }
             if (check.check() != z3::unsat) {
@@ -302,7 +298,8 @@ std::string variantFile(const std::string& smtFile, std::size_t k) {
 // gained reaches(U, nbr, P|F): general2 Progress on 3x2, 1.5 s with safety, 112 s without;
 // general3, a timeout with, 31 s without); the first definite answer wins.
 ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, const std::vector<rules::Configuration>& initial,
-                            double timeoutSeconds, const std::string& smtFile, const BadStates& known) {
+                            double timeoutSeconds, const rules::OutputFile* smt, const BadStates& known) {
+    const std::string smtFile = smt ? smt->path() : std::string(), smtOption = smt ? smt->option() : std::string();
     const BadStates nothing = [](SmtEncoding&, const SmtEncoding::State& st) { return st.is[0][0].ctx().bool_val(true); };
     std::vector<BadStates> variants{known ? known : nothing};
     if (known) variants.push_back(nothing);
@@ -310,7 +307,7 @@ ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, c
     for (std::size_t k = 0; k < variants.size(); ++k)
         jobs.push_back([&, k](bool forked) {
             auto solve = [&](z3::context& ctx) {
-                ReachProof p = solveHorn(ctx, engine, bad, variants[k], initial, timeoutSeconds, variantFile(smtFile, k));
+                ReachProof p = solveHorn(ctx, engine, bad, variants[k], initial, timeoutSeconds, smtOption, variantFile(smtFile, k));
                 p.usedKnown = known && k == 0;
                 return toJson(p);
             };
@@ -323,15 +320,24 @@ ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, c
     });
     ReachProof best = answer.job >= 0 ? fromJson(answer.answer) : ReachProof{};
     const int winner = best.verdict != Verdict::Unknown ? answer.job : -1;
-    // The winner's files take the plain names; the others' are removed.
+    // The winner's files take the plain names; the others' are removed, with the temporaries of a
+    // loser stopped in the middle of a write (OutputFile writes beside the file, then renames).
     if (!smtFile.empty()) {
         const std::string plain = smtFile.substr(0, smtFile.size() - 5);
         for (std::size_t k = 0; k < variants.size(); ++k) {
             const std::string variant = variantFile(smtFile, k), stem = variant.substr(0, variant.size() - 5);
             for (const char* part : {"", ".init", ".step", ".safe"}) {
                 const std::string file = stem + part + ".smt2";
-                if (winner == static_cast<int>(k)) std::rename(file.c_str(), (plain + part + ".smt2").c_str());
-                else std::remove(file.c_str());
+                if (winner != static_cast<int>(k)) std::remove(file.c_str());
+                else if (std::rename(file.c_str(), (plain + part + ".smt2").c_str()) != 0 && errno != ENOENT)
+                    throw InputError(smtOption + " " + plain + part + ".smt2: cannot move the finished file into place: " + std::strerror(errno));
+            }
+            const std::filesystem::path folder = std::filesystem::path(stem).parent_path();
+            const std::string prefix = std::filesystem::path(stem).filename().string() + ".";
+            std::error_code ec;
+            for (const auto& entry : std::filesystem::directory_iterator(folder.empty() ? "." : folder, ec)) {
+                const std::string name = entry.path().filename().string();
+                if (name.rfind(prefix, 0) == 0 && name.find(".smt2.tmp-") != std::string::npos) std::filesystem::remove(entry.path(), ec);
             }
             if (winner == static_cast<int>(k))
                 for (std::string& f : best.certificateFiles) f = plain + f.substr(stem.size());

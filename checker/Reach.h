@@ -5,6 +5,7 @@
 #include "checker/SmtEncoding.h"
 #include "checker/Verdict.h"
 #include "rules/Interpreter.h"
+#include "rules/OutputFile.h"
 
 #include <functional>
 #include <string>
@@ -33,9 +34,9 @@ using BadStates = std::function<z3::expr(SmtEncoding&, const SmtEncoding::State&
 /// state (invariants proved already); a second solver then takes steps only from states satisfying
 /// it, which can spare Spacer rediscovering it (or not: the first answer wins). `engine` must cover
 /// every input combination (Engine(..., true)). A proof is only reported after the invariant Spacer
-/// found has been checked as a certificate. `smtFile` (ending ".smt2"), if not empty, names the Horn
-/// clauses' file; the certificate checks go next to it.
+/// found has been checked as a certificate. `smtFile` (a path ending ".smt2"), if given, names the
+/// Horn clauses' file; the certificate checks go next to it, under the same option in messages.
 ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, const std::vector<rules::Configuration>& initial,
-                            double timeoutSeconds, const std::string& smtFile = {}, const BadStates& known = {});
+                            double timeoutSeconds, const rules::OutputFile* smtFile = nullptr, const BadStates& known = {});
 
 }  // namespace holon::checker

@@ -1,17 +1,20 @@
 // `holon hex --from SHAPE --to SHAPE --size N`: seed 003's hole-motion sculpting on an N x N hex
 // array, repeated --reps times with different seeds (in parallel on the machine's cores), reported
-// as the paper's Table I row: modules, maximum compliance (mean, std), islands.
+// as the paper's Table I row: modules, maximum compliance (mean, std), islands. The --out folder
+// is checked before the runs; a file that cannot be written is reported after the table.
 
 #include "cli/Commands.h"
 #include "cli/Parallel.h"
+#include "cli/WriteErrors.h"
 #include "planner/hex/SculptRun.h"
 #include "rules/Error.h"
+#include "rules/OutputFile.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -72,20 +75,23 @@ std::string seriesSvg(const std::vector<planner::hex::SculptResult>& runs, int s
     return svg.str();
 }
 
-void writeOutputs(const HexArgs& a, const std::vector<planner::hex::SculptResult>& runs) {
-    namespace fs = std::filesystem;
-    fs::create_directories(a.out);
-    std::ofstream(fs::path(a.out) / "series.svg") << seriesSvg(runs, a.setup.steps);
-    std::ofstream csv(fs::path(a.out) / "series.csv");
-    csv << "step";
-    for (std::size_t r = 0; r < runs.size(); ++r) csv << ",completeness" << r << ",stability" << r << ",compliance" << r << ",holes" << r;
-    csv << '\n';
-    for (int t = 0; t < a.setup.steps; ++t) {
-        csv << t + 1;
-        for (const auto& run : runs)
-            csv << ',' << run.series[t].completeness << ',' << run.series[t].stability << ',' << run.series[t].compliance << ',' << run.series[t].holes;
+/// series.svg and series.csv; a file that cannot be written is added to `errors`.
+void writeOutputs(const HexArgs& a, const std::vector<planner::hex::SculptResult>& runs, WriteErrors& errors) {
+    const auto attempt = [&](const std::string& name, const std::function<void(std::ostream&)>& fill) {
+        errors.attempt([&] { rules::OutputFile("--out", (std::filesystem::path(a.out) / name).string()).write(fill); });
+    };
+    attempt("series.svg", [&](std::ostream& svg) { svg << seriesSvg(runs, a.setup.steps); });
+    attempt("series.csv", [&](std::ostream& csv) {
+        csv << "step";
+        for (std::size_t r = 0; r < runs.size(); ++r) csv << ",completeness" << r << ",stability" << r << ",compliance" << r << ",holes" << r;
         csv << '\n';
-    }
+        for (int t = 0; t < a.setup.steps; ++t) {
+            csv << t + 1;
+            for (const auto& run : runs)
+                csv << ',' << run.series[t].completeness << ',' << run.series[t].stability << ',' << run.series[t].compliance << ',' << run.series[t].holes;
+            csv << '\n';
+        }
+    });
 }
 
 /// The improvements over seed 003 a run uses, by flag name.
@@ -102,15 +108,18 @@ std::vector<std::string> improvements(const planner::hex::SculptOptions& o) {
 int run(HexArgs a) {
     if (a.reps < 1 || a.reps > 1000) throw InputError("--reps " + std::to_string(a.reps) + ": choose 1 to 1000");
     if (a.setup.steps < 1) throw InputError("--steps must be positive");
+    if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
     std::vector<planner::hex::SculptResult> runs(a.reps);
+    WriteErrors errors;  // written only by run 0 (the frames), read after every run has ended
     runParallel(a.reps, a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int r) {
         planner::hex::SculptSetup setup = a.setup;
         setup.options.seed = a.seed + r;
         const int last = setup.steps;
         runs[r] = planner::hex::runSculpt(setup, [&](const planner::hex::HoleSculptor& s) {
             if (!a.out.empty() && r == 0 && (s.time() == 1 || s.time() == last / 10 || s.time() == last)) {
-                std::filesystem::create_directories(a.out);
-                std::ofstream(std::filesystem::path(a.out) / ("frame_" + std::to_string(s.time()) + ".svg")) << planner::hex::sculptSvg(s);
+                errors.attempt([&] {
+                    rules::OutputFile("--out", (std::filesystem::path(a.out) / ("frame_" + std::to_string(s.time()) + ".svg")).string()).write(planner::hex::sculptSvg(s));
+                });
             }
         });
     });
@@ -121,7 +130,7 @@ int run(HexArgs a) {
     const Stat islands = stat(runs, [](const auto& r) { return static_cast<double>(r.islands); });
     const Stat seconds = stat(runs, [](const auto& r) { return r.seconds; });
     const Stat modules = stat(runs, [](const auto& r) { return static_cast<double>(r.modules); });
-    if (!a.out.empty()) writeOutputs(a, runs);
+    if (!a.out.empty()) writeOutputs(a, runs, errors);
     if (a.json) {
         auto js = [](Stat s) { return nlohmann::json{{"mean", s.mean}, {"std", s.std}}; };
         nlohmann::json j{{"from", a.setup.from}, {"to", a.setup.to}, {"size", a.setup.size}, {"reps", a.reps},
@@ -146,6 +155,7 @@ int run(HexArgs a) {
                   << "  first run's last timestep: " << runs[0].residue.outside << " modules outside the target, " << runs[0].residue.emptyInside
                   << " target points empty (" << runs[0].residue.walledIn << " walled in), " << runs[0].residue.holeCellsOutside << " hole cells outside\n";
     }
+    errors.raise();  // after the table: the runs' results are printed even when their files are not written
     return 0;
 }
 
@@ -176,7 +186,7 @@ Run addHexCommand(CLI::App& app) {
     sub->add_flag("--migrate", a->setup.options.migrate, "modules outside the target move along the surface toward empty target points");
     sub->add_flag("--balance", a->setup.options.balance, "hold the live holes at (target area - modules) / 7: creation stops there, deletion below it only as growth asks, surplus holes deleted at the surface");
     sub->add_option("--threads", a->threads, "parallel runs (default: the machine's cores)");
-    sub->add_option("--out", a->out, "directory for series.csv, series.svg (metrics over time) and SVG frames of the first run");
+    sub->add_option("--out", a->out, "directory for series.csv, series.svg (metrics over time) and SVG frames of the first run (created if missing; its parent must exist)");
     sub->add_flag("--json", a->json, "print a JSON summary");
     sub->add_flag("--quiet", a->quiet, "no progress bar");
     return [a] { return run(*a); };

@@ -1,21 +1,28 @@
 // `holon plan --rules FILE --from SHAPE --to SHAPE`: run seed 000's U/P/F planner, compiled from
 // a verified rule file, on a start and a target shape, with a resource allocator for general_n.
+// Every output path is checked before the run; SIGINT or SIGTERM stops the run at the next round,
+// writes what it has as complete files (the summary marked interrupted) and exits 128 + signal.
 
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
+#include "cli/WriteErrors.h"
 #include "planner/Execution.h"
 #include "planner/Monitor.h"
 #include "planner/Report.h"
 #include "planner/hex/DiskMetamodules.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
+#include "rules/OutputFile.h"
 
 #include <nlohmann/json.hpp>
 
+#include <csignal>
 #include <filesystem>
-#include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
+#include <optional>
+#include <signal.h>
 #include <unistd.h>
 
 namespace holon::cli {
@@ -54,23 +61,32 @@ std::optional<planner::Vec> parseCell(const std::string& text) {
 constexpr std::size_t kMaxDiskMetamodules = 500;  // every move is written out, about 2,300 per template (80 bytes each), and replayed
 
 /// --hex-disks: the plan's disk moves (JSON Lines), start and end pictures, and an independent
-/// replay of every move. Returns false when a template had no disk motion or the replay failed.
-bool writeDisks(const std::string& dir, const planner::hex::DiskMetamodules& disks, const planner::Execution& execution, bool failed) {
-    std::filesystem::create_directories(dir);
-    // Millions of lines for a few dozen metamodules: written directly (rule names are identifiers).
-    std::ofstream moves(dir + "/disk_moves.jsonl");
-    std::string line;
-    for (const planner::hex::DiskMove& m : disks.moves()) {
-        const auto pair = [&](planner::Vec v) { line += '[' + std::to_string(v.x) + ',' + std::to_string(v.y) + ']'; };
-        line = "{\"instance\":" + std::to_string(m.instance) + ",\"rule\":\"" + m.rule + "\",\"from\":";
-        pair(m.from), line += ",\"to\":", pair(m.to), line += ",\"pivot\":", pair(m.pivot), line += "}\n";
-        moves << line;
-    }
-    std::ofstream(dir + "/disks.svg") << planner::hex::disksSvg({{"start", disks.startDisks()}, {"end", disks.disks()}});
-    std::ofstream(dir + "/creation.svg") << planner::hex::sequenceSvg(disks.design(), 0, 6);
+/// replay of every move. Returns false when a template had no disk motion or the replay failed; a
+/// file that cannot be written is added to `errors`. An interrupted plan's moves are written, not
+/// judged: the last templates are unfinished.
+bool writeDisks(const std::string& dir, const planner::hex::DiskMetamodules& disks, const planner::Execution& execution, bool failed,
+                bool interrupted, WriteErrors& errors) {
+    errors.attempt([&] {
+        // Millions of lines for a few dozen metamodules: streamed (rule names are identifiers).
+        rules::OutputStream moves = rules::OutputFile("--hex-disks", dir + "/disk_moves.jsonl").open();
+        std::string line;
+        for (const planner::hex::DiskMove& m : disks.moves()) {
+            const auto pair = [&](planner::Vec v) { line += '[' + std::to_string(v.x) + ',' + std::to_string(v.y) + ']'; };
+            line = "{\"instance\":" + std::to_string(m.instance) + ",\"rule\":\"" + m.rule + "\",\"from\":";
+            pair(m.from), line += ",\"to\":", pair(m.to), line += ",\"pivot\":", pair(m.pivot), line += "}\n";
+            moves.stream() << line;
+        }
+        moves.commit();
+    });
+    errors.attempt([&] { rules::OutputFile("--hex-disks", dir + "/disks.svg").write(planner::hex::disksSvg({{"start", disks.startDisks()}, {"end", disks.disks()}})); });
+    errors.attempt([&] { rules::OutputFile("--hex-disks", dir + "/creation.svg").write(planner::hex::sequenceSvg(disks.design(), 0, 6)); });
     std::cout << "  hex disks: " << disks.side() << "x" << disks.side() << " disks per metamodule slot, " << disks.disksPerUnit()
               << " per unit of mass (the ring); creation " << disks.design().base(0).size() << " pivot moves; " << disks.moves().size() << " pivot moves in all, in "
               << dir << "/disk_moves.jsonl, disks.svg and creation.svg\n";
+    if (interrupted) {
+        std::cout << "  hex disks: the plan was interrupted; the moves so far are written, not replayed\n";
+        return true;
+    }
     if (failed) {
         std::cout << "  hex disks FAILED: " << disks.failure() << '\n';
         return false;
@@ -85,11 +101,65 @@ bool writeDisks(const std::string& dir, const planner::hex::DiskMetamodules& dis
     return fault.empty();
 }
 
+/// The signal that interrupted the plan (0: none). Only the handler writes it; the run reads it
+/// between rounds (RunOptions::interrupt).
+volatile std::sig_atomic_t interruptSignal = 0;
+
+extern "C" void onInterrupt(int signal) { interruptSignal = signal; }
+
+/// Catches SIGINT and SIGTERM while a plan runs and writes its files. The handler is one-shot: a
+/// second signal ends holon at once (every file written so far is still whole: files are renamed
+/// into place complete, and the temporaries of unfinished ones are all that is left).
+class InterruptGuard {
+public:
+    InterruptGuard() {
+        struct sigaction action {};
+        action.sa_handler = onInterrupt;
+        sigemptyset(&action.sa_mask);
+        action.sa_flags = SA_RESETHAND;
+        sigaction(SIGINT, &action, &oldInt_);
+        sigaction(SIGTERM, &action, &oldTerm_);
+        // A signal the caller ignores (a shell's background job, nohup) stays ignored.
+        if (oldInt_.sa_handler == SIG_IGN) sigaction(SIGINT, &oldInt_, nullptr);
+        if (oldTerm_.sa_handler == SIG_IGN) sigaction(SIGTERM, &oldTerm_, nullptr);
+    }
+    ~InterruptGuard() {
+        sigaction(SIGINT, &oldInt_, nullptr);
+        sigaction(SIGTERM, &oldTerm_, nullptr);
+    }
+    InterruptGuard(const InterruptGuard&) = delete;
+    InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+private:
+    struct sigaction oldInt_ {}, oldTerm_ {};
+};
+
+/// A system fixed to a lattice plan does not run on: plan picks the lattice from the shapes
+/// (square2d for 2D, cubic3d for 3D), so the fix is the rule file or the shapes, not a region.
+void requirePlanLattice(const rules::System& system, const rules::Lattice& lattice) {
+    if (!system.lattice || *system.lattice == lattice.kind()) return;
+    const rules::Lattice& fixed = rules::Lattice::get(*system.lattice);
+    const bool otherDimension = fixed.kind() != rules::LatticeKind::Hex2D;  // square2d or cubic3d: the shapes' dimension decides
+    throw InputError("--rules: system '" + system.name + "' is written for the " + fixed.name() + " lattice, but plan runs on " + lattice.name() +
+                     " for these " + std::to_string(lattice.dimension()) + "D shapes (square2d for 2D shapes, cubic3d for 3D ones); give --rules a planner system for " +
+                     lattice.name() + " (planner_intermediate, planner_general1, ...)" +
+                     (otherDimension ? ", or --from and --to as " + std::to_string(fixed.dimension()) + "D shapes" : std::string()));
+}
+
 int run(const PlanArgs& a) {
+    // Every output path is checked before any work: a finished plan is never lost to a typo.
+    if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
+    if (!a.planOut.empty()) rules::OutputFile("--plan-out", a.planOut);
+    if (!a.hexDisks.empty()) rules::prepareOutputDir("--hex-disks", a.hexDisks);
+    std::optional<rules::OutputFile> traceFile;
+    if (!a.traceOut.empty()) traceFile.emplace("--trace-out", a.traceOut);
+    else if (!a.out.empty()) traceFile.emplace("--out", a.out + "/violation.itf.json");
+
     auto system = loadRules(rulePath(a.rules), a.noWarnings);
     if (!system) return 2;
     planner::Shape from = planner::parseShape(a.from, a.scale), to = planner::parseShape(a.to, a.scale);
     const rules::Lattice& lattice = rules::Lattice::get(from.dimension == 3 ? rules::LatticeKind::Cubic3D : rules::LatticeKind::Square2D);
+    requirePlanLattice(*system, lattice);
     rules::Model model(*system, lattice);
     planner::Problem problem = planner::makeProblem(model, std::move(from), std::move(to), parseCell(a.seedCell), a.seed);
     std::unique_ptr<planner::Allocator> allocator = planner::makeAllocator(a.allocator, problem, a.seed);
@@ -100,17 +170,20 @@ int run(const PlanArgs& a) {
     else if (a.scheduler == "adversarial") options.scheduler = planner::Scheduler::Adversarial;
     else throw InputError("--scheduler '" + a.scheduler + "': choose sync, async or adversarial");
     options.seed = a.seed, options.maxSteps = a.maxSteps, options.maxRounds = a.maxRounds, options.timeoutSeconds = a.timeout;
+    options.interrupt = &interruptSignal;
 
-    planner::Execution execution(problem, *allocator, options);
-    planner::Report report(problem, execution, {a.out, a.planOut, !a.quiet && isatty(STDERR_FILENO) != 0});
-    std::unique_ptr<planner::Monitor> monitor = a.check ? std::make_unique<planner::Monitor>(problem, execution) : nullptr;
     std::unique_ptr<planner::hex::DiskMetamodules> disks;
-    bool disksFailed = false;
     if (!a.hexDisks.empty()) {
         if (problem.start.cells.size() + problem.target.cells.size() > kMaxDiskMetamodules)
             throw InputError("--hex-disks: at most " + std::to_string(kMaxDiskMetamodules) + " metamodules in start and target together (every disk move, about 2,300 a template, is written out and replayed); use a smaller --scale");
         disks = std::make_unique<planner::hex::DiskMetamodules>(problem);
     }
+    // From here on a signal stops the run at a round boundary and the files are still written.
+    const InterruptGuard guard;
+    planner::Execution execution(problem, *allocator, options);
+    planner::Report report(problem, execution, {a.out, a.planOut, "--out", "--plan-out", !a.quiet && isatty(STDERR_FILENO) != 0});
+    std::unique_ptr<planner::Monitor> monitor = a.check ? std::make_unique<planner::Monitor>(problem, execution) : nullptr;
+    bool disksFailed = false;
     planner::RunObserver observer;
     observer.fired = [&](std::int64_t anchor, int shape, const planner::BoxEngine::Value* old) {
         report.fired(anchor, shape, old);
@@ -122,8 +195,11 @@ int run(const PlanArgs& a) {
         return !monitor || monitor->roundEnd(stats);
     };
     const planner::RunStats stats = execution.run(observer);
+    const bool interrupted = stats.stopped == "interrupted";
     const std::int64_t lowerBound = planner::transferLowerBound(problem);
     report.finish(stats, lowerBound);
+    WriteErrors errors;
+    for (const std::string& e : report.writeErrors()) errors.add(e);
 
     if (a.json) {
         nlohmann::json j = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions},
@@ -140,20 +216,26 @@ int run(const PlanArgs& a) {
                   << "  creations " << stats.creations << ", deletions " << stats.deletions << ", transfers " << stats.transfers;
         if (lowerBound >= 0) std::cout << " (lower bound " << lowerBound << ")";
         std::cout << ", relabels " << stats.relabels << "\n  " << stats.rounds << " rounds, " << stats.steps << " steps, " << stats.evaluations
-                  << " rule evaluations, " << std::fixed << std::setprecision(3) << stats.seconds << " s\n"
-                  << "  " << (stats.complete ? "complete: the target is reached" : "NOT complete: stopped by " + stats.stopped) << '\n';
+                  << " rule evaluations, " << std::fixed << std::setprecision(3) << stats.seconds << " s\n  ";
+        if (stats.complete) std::cout << "complete: the target is reached\n";
+        else if (interrupted) std::cout << "NOT complete: interrupted by " << (interruptSignal == SIGTERM ? "SIGTERM" : "SIGINT") << " after round " << stats.rounds << "\n";
+        else std::cout << "NOT complete: stopped by " << stats.stopped << '\n';
         if (monitor) std::cout << "  monitor: " << monitor->summary() << '\n';
-        if (!a.out.empty()) std::cout << "  wrote " << a.out << "/ (summary.json, completion.csv, snapshots)\n";
+        if (!a.out.empty() && errors.empty())
+            std::cout << "  wrote " << a.out << "/ (summary.json" << (interrupted ? ", marked interrupted" : "") << ", completion.csv, snapshots)\n";
     }
-    if (disks && !writeDisks(a.hexDisks, *disks, execution, disksFailed)) return 1;
-    if (monitor && monitor->violated()) {
-        const std::string trace = !a.traceOut.empty() ? a.traceOut : !a.out.empty() ? a.out + "/violation.itf.json" : "";
-        if (!trace.empty()) {
-            monitor->writeTrace(trace);
-            std::cout << "  the violating step is in " << trace << '\n';
-        }
-        return 1;
+    const bool disksOk = !disks || writeDisks(a.hexDisks, *disks, execution, disksFailed, interrupted, errors);
+    const bool violated = monitor && monitor->violated();
+    if (violated && traceFile) {
+        errors.attempt([&] {
+            monitor->writeTrace(*traceFile);
+            std::cout << "  the violating step is in " << traceFile->path() << '\n';
+        });
     }
+    // A file that could not be written outranks the verdict: the summary above is all there is.
+    errors.raise();
+    if (interrupted) return 128 + interruptSignal;
+    if (!disksOk || violated) return 1;
     return stats.complete ? 0 : 1;
 }
 
@@ -175,7 +257,7 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--seed-cell", a->seedCell, "the seed metamodule x,y[,z] (default: the overlap cell nearest its centre)");
     sub->add_flag("--check", a->check, "monitor connectivity, mass and the system's constraints after every step or round");
     sub->add_flag("--json", a->json, "print the summary as JSON");
-    sub->add_option("--out", a->out, "write summary.json, completion.csv and SVG snapshots into this folder");
+    sub->add_option("--out", a->out, "write summary.json, completion.csv and SVG snapshots into this folder (created if missing; its parent must exist)");
     sub->add_option("--hex-disks", a->hexDisks, "2D general_n plans: realise every template as pivot moves of hex-lattice disks (seed 000 Fig. 4a); write disk_moves.jsonl and disks.svg into this folder");
     sub->add_option("--plan-out", a->planOut, "write the plan as JSON Lines (one fired instance per line)");
     sub->add_option("--max-steps", a->maxSteps, "stop after this many steps");

@@ -1,17 +1,20 @@
 // `holon roombots --structure cube|chair|FILE`: seed 001's furniture assembly from Roombots
 // metamodules walking on a structured floor, for every chosen metamodule configuration and strategy,
 // reported as the paper's Tables I and II (collisions per run, deadlocks starred) and Fig. 5 (moves
-// per metamodule). `--make-clouds FILE` regenerates the collision-cloud look-up table.
+// per metamodule). `--make-clouds FILE` regenerates the collision-cloud look-up table. Output
+// paths are checked before the runs; a file that cannot be written is reported after the tables.
 
 #include "cli/Commands.h"
 #include "cli/Parallel.h"
+#include "cli/WriteErrors.h"
 #include "planner/roombots/Draw.h"
 #include "rules/Error.h"
+#include "rules/OutputFile.h"
 
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
-#include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -42,15 +45,21 @@ std::string name(const Job& j) {
     return std::string(rb::couplingName(j.coupling)) + "_" + rb::strategyName(j.strategy) + "_" + std::to_string(j.run);
 }
 
-void writeRun(const std::filesystem::path& dir, const Job& j, const rb::Setting& setting) {
-    std::ofstream csv(dir / ("trace_" + name(j) + ".csv"));
-    csv << "module,begin,end,from_x,from_y,to_x,to_y,force_x,force_y,seat\n";
-    for (const rb::Action& a : j.result.actions)
-        csv << a.module << ',' << a.begin << ',' << a.end << ',' << a.from.x << ',' << a.from.y << ',' << a.to.x << ',' << a.to.y << ','
-            << a.forceX << ',' << a.forceY << ',' << a.seat << '\n';
-    std::ofstream(dir / ("feet_" + name(j) + ".svg")) << rb::footTraceSvg(setting, j.result);
-    std::ofstream(dir / ("assembly_" + name(j) + ".svg")) << rb::assemblySvg(setting, j.result);
-    if (!j.result.coordination.empty()) std::ofstream(dir / ("coordination_" + name(j) + ".json")) << j.result.coordination;
+/// One run's trace (CSV), foot traces and assembly (SVG), and its coordination rule; a file that
+/// cannot be written is added to `errors`.
+void writeRun(const std::filesystem::path& dir, const Job& j, const rb::Setting& setting, WriteErrors& errors) {
+    const auto write = [&](const std::string& file, const std::function<void(std::ostream&)>& fill) {
+        errors.attempt([&] { rules::OutputFile("--out", (dir / file).string()).write(fill); });
+    };
+    write("trace_" + name(j) + ".csv", [&](std::ostream& csv) {
+        csv << "module,begin,end,from_x,from_y,to_x,to_y,force_x,force_y,seat\n";
+        for (const rb::Action& a : j.result.actions)
+            csv << a.module << ',' << a.begin << ',' << a.end << ',' << a.from.x << ',' << a.from.y << ',' << a.to.x << ',' << a.to.y << ','
+                << a.forceX << ',' << a.forceY << ',' << a.seat << '\n';
+    });
+    write("feet_" + name(j) + ".svg", [&](std::ostream& out) { out << rb::footTraceSvg(setting, j.result); });
+    write("assembly_" + name(j) + ".svg", [&](std::ostream& out) { out << rb::assemblySvg(setting, j.result); });
+    if (!j.result.coordination.empty()) write("coordination_" + name(j) + ".json", [&](std::ostream& out) { out << j.result.coordination; });
 }
 
 /// Collisions of the runs that did not deadlock, and of all runs.
@@ -115,14 +124,15 @@ void printTables(std::ostream& out, const std::vector<rb::Coupling>& couplings, 
 
 int run(const RoombotsArgs& a) {
     if (!a.makeClouds.empty()) {
+        const rules::OutputFile file("--make-clouds", a.makeClouds);  // checked before the table is computed
         const rb::CloudTable table = rb::CloudTable::compute();
-        std::ofstream file(a.makeClouds);
-        if (!(file << table.json())) throw InputError(a.makeClouds + ": cannot write the collision-cloud table");
+        file.write([&](std::ostream& out) { out << table.json(); });
         std::cout << "wrote " << table.size() << " transitions to " << a.makeClouds << '\n';
         return 0;
     }
     if (a.runs < 0 || a.runs > 1000) throw InputError("--runs " + std::to_string(a.runs) + ": choose 1 to 1000");
     if (a.stall < 1 || a.stall > 10000) throw InputError("--stall " + std::to_string(a.stall) + ": choose 1 to 10000 steps");
+    if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
     std::vector<rb::Coupling> couplings;
     for (const std::string& m : a.metamodules) couplings.push_back(rb::parseCoupling(m));
     std::vector<rb::Strategy> strategies;
@@ -161,10 +171,9 @@ int run(const RoombotsArgs& a) {
     runParallel(static_cast<int>(jobs.size()), a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int k) {
         jobs[k].result = rb::assemble(table, jobs[k].coupling, jobs[k].strategy, runSettings.at({jobs[k].coupling, jobs[k].run}), options);
     });
-    if (!a.out.empty()) {
-        std::filesystem::create_directories(a.out);
-        for (const Job& j : jobs) writeRun(a.out, j, runSettings.at({j.coupling, j.run}));
-    }
+    WriteErrors errors;
+    if (!a.out.empty())
+        for (const Job& j : jobs) writeRun(a.out, j, runSettings.at({j.coupling, j.run}), errors);
 
     int completed = 0, dl = 0, clean = 0, all = 0;
     double moves = 0;
@@ -184,6 +193,7 @@ int run(const RoombotsArgs& a) {
         std::cout << nlohmann::json{{"structure", a.structure}, {"runs", runs}, {"completed", completed}, {"collisions", clean},
                                     {"collisions_all_runs", all}, {"deadlocks", dl}, {"mean_moves", moves}}.dump()
                   << '\n';
+        errors.raise();
         return 0;
     }
     std::cout << a.structure << ": " << settings.front().recipe.seeds.size() << " metamodules, " << settings.size() << (settings.size() == 1 ? " run" : " runs") << " per cell (";
@@ -207,6 +217,7 @@ int run(const RoombotsArgs& a) {
     std::cout << "\n" << completed << " of " << jobs.size() << " runs completed, " << dl << " deadlocked; " << clean
               << " collisions in runs that did not deadlock (" << all << " in all); " << std::setprecision(1) << moves
               << " moves per metamodule\n";
+    errors.raise();  // after the tables: the runs' results are printed even when their files are not written
     return 0;
 }
 
@@ -225,7 +236,7 @@ Run addRoombotsCommand(CLI::App& app) {
     sub->add_option("--clouds", a->clouds, "collision-cloud table (default: the one shipped with holon)");
     sub->add_option("--make-clouds", a->makeClouds, "compute the collision-cloud table from the kinematics, write it to FILE and stop");
     sub->add_option("--threads", a->threads, "parallel runs (default: the machine's cores)");
-    sub->add_option("--out", a->out, "directory for per-run traces (CSV), foot-trace pictures and assembly snapshots (SVG)");
+    sub->add_option("--out", a->out, "directory for per-run traces (CSV), foot-trace pictures and assembly snapshots (SVG) (created if missing; its parent must exist)");
     sub->add_flag("--json", a->json, "print a JSON summary");
     sub->add_flag("--quiet", a->quiet, "no progress bar");
     return [a] { return run(*a); };

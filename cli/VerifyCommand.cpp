@@ -42,6 +42,7 @@ int run(const VerifyArgs& a) {
     options.reach = a.reach;
     options.properties = a.properties;
     options.smtOut = a.smtOut;
+    options.smtOutOption = "--smt-out";
     if (a.depth > 0 && a.from.empty()) throw InputError("--depth needs initial configurations: --from CONFIG");
     if (a.reach && a.from.empty()) throw InputError("--reach needs initial configurations: --from CONFIG");
     // Without --from every input value is quantified over, so an --input would have no effect.

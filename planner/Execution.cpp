@@ -215,6 +215,10 @@ RunStats Execution::run(const RunObserver& observer) {
             stats_.stopped = "goal";
             break;
         }
+        if (options_.interrupt && *options_.interrupt) {
+            stats_.stopped = "interrupted";
+            break;
+        }
         if (options_.maxRounds && stats_.rounds >= options_.maxRounds) {
             stats_.stopped = "max-rounds";
             break;

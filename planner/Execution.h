@@ -9,6 +9,7 @@
 #include "planner/Random.h"
 
 #include <chrono>
+#include <csignal>
 #include <utility>
 #include <functional>
 #include <string>
@@ -27,6 +28,9 @@ struct RunOptions {
     /// (an allocator shuffling resources forever); 0: 1000 + 20 D^2 for a board of extents
     /// summing to D, far above the diffusion time of the random allocator across the board.
     std::int64_t maxIdleRounds = 0;
+    /// Set (nonzero) asynchronously, by a signal handler: the run stops as "interrupted" at the
+    /// next round (sync) or step (async) boundary, where every output is consistent. Null: never.
+    const volatile std::sig_atomic_t* interrupt = nullptr;
 };
 
 struct RunStats {
@@ -36,7 +40,7 @@ struct RunStats {
     std::int64_t evaluations = 0;  // rule instances tested against the decision tables
     double seconds = 0;
     bool complete = false;  // the system's goal was reached
-    std::string stopped;    // why the run ended: "goal", "stuck", "no-progress", "max-steps", "max-rounds", "timeout", "monitor"
+    std::string stopped;    // why the run ended: "goal", "stuck", "no-progress", "max-steps", "max-rounds", "timeout", "monitor", "interrupted"
 };
 
 /// Hooks for output while a plan runs; every hook is optional.

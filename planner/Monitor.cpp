@@ -6,9 +6,6 @@
 #include "planner/Monitor.h"
 
 #include "rules/ConfigIo.h"
-#include "rules/Error.h"
-
-#include <fstream>
 
 namespace holon::planner {
 
@@ -73,7 +70,7 @@ std::string Monitor::summary() const {
     return "connectivity" + std::string(conservesMass_ ? ", mass" : "") + " held at all " + std::to_string(checks_) + " checks";
 }
 
-void Monitor::writeTrace(const std::string& path) const {
+void Monitor::writeTrace(const rules::OutputFile& file) const {
     const rules::Model& model = *problem_->model;
     const Board& board = *problem_->board;
     const rules::Lattice& lattice = board.lattice();
@@ -101,9 +98,7 @@ void Monitor::writeTrace(const std::string& path) const {
                                   {"description", violation_}}},
                        {"vars", {"cells"}},
                        {"states", {state(earlier, {{"index", 0}}), state(execution_->cells(), {{"index", 1}, {"fired", fired}})}}};
-    std::ofstream out(path);
-    if (!out) throw InputError("cannot write '" + path + "'");
-    out << itf.dump(1) << '\n';
+    file.write(itf.dump(1) + '\n');
 }
 
 }  // namespace holon::planner

@@ -5,6 +5,7 @@
 // alphabet; the first violation stops the run and is written as an ITF trace.
 
 #include "planner/Execution.h"
+#include "rules/OutputFile.h"
 
 #include <string>
 
@@ -18,8 +19,9 @@ public:
     bool roundEnd(const RunStats& stats);
     bool violated() const { return !violation_.empty(); }
     std::string summary() const;
-    /// The last step or round before the violation and the configuration it led to, as ITF.
-    void writeTrace(const std::string& path) const;
+    /// The last step or round before the violation and the configuration it led to, as ITF;
+    /// throws InputError (with the reason) when the file cannot be written.
+    void writeTrace(const rules::OutputFile& file) const;
 
 private:
     bool connected() const;

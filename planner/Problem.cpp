@@ -122,9 +122,11 @@ Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::o
             const Rational k = deficit * Rational(extra.den(), extra.num());
             p.creators = (k.num() + k.den() - 1) / k.den();
         }
+        // The most mass the start can carry: every one of its s metamodules a creator, worth 1 + extra.
         if (p.creators > s)
-            throw InputError("not enough mass: start '" + start.name + "' holds at most " + std::to_string(s) + " metamodules' worth with every resource a creator, target '" +
-                             target.name + "' needs " + std::to_string(t) + "; enlarge the start or shrink the target");
+            throw InputError("not enough mass: start '" + start.name + "' holds at most " + (Rational(s) + Rational(s) * extra).str() +
+                             " metamodules' worth with every resource a creator, target '" + target.name + "' needs " + std::to_string(t) +
+                             "; enlarge the start or shrink the target");
         const Rational mass = Rational(s) + Rational(p.creators) * extra;
         if (Rational(t) + Rational(t) * extra < mass)
             throw InputError("too much mass: start '" + start.name + "' has mass " + std::to_string(s) + " but target '" + target.name + "' can hold at most " +

@@ -10,7 +10,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -18,26 +17,18 @@ namespace holon::planner {
 
 namespace {
 
-std::unique_ptr<std::ofstream> openFile(const std::string& path) {
-    auto out = std::make_unique<std::ofstream>(path);
-    if (!*out) throw InputError("cannot write '" + path + "'");
-    return out;
-}
-
 double fraction(std::int64_t done, std::int64_t total) { return total == 0 ? 1.0 : double(done) / double(total); }
 
 }  // namespace
 
 Report::Report(const Problem& problem, const Execution& execution, ReportOptions options)
     : problem_(&problem), execution_(&execution), options_(std::move(options)) {
-    if (!options_.planOut.empty()) plan_ = openFile(options_.planOut);
+    if (!options_.planOut.empty()) plan_.emplace(rules::OutputFile(options_.planOutOption, options_.planOut).open());
     if (!options_.outDir.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(options_.outDir, ec);
-        if (ec) throw InputError("cannot create folder '" + options_.outDir + "': " + ec.message());
-        csv_ = openFile(options_.outDir + "/completion.csv");
-        *csv_ << "round,steps,creations,deletions,transfers,creation_completion,deletion_completion\n";
-        snapshot("start");
+        rules::prepareOutputDir(options_.outOption, options_.outDir);
+        csv_.emplace(rules::OutputFile(options_.outOption, options_.outDir + "/completion.csv").open());
+        csv_->stream() << "round,steps,creations,deletions,transfers,creation_completion,deletion_completion\n";
+        rules::OutputFile(options_.outOption, options_.outDir + "/snapshot-start.svg").write(drawBoard(*problem_, execution_->cells(), "start"));
     }
 }
 
@@ -52,14 +43,14 @@ void Report::fired(std::int64_t anchor, int shape, const BoxEngine::Value*) {
         cells.push_back(rules::pointJson(model.lattice(), problem_->board->point(anchor + s)));
         states.push_back(rules::stateFields(model, execution_->cells()[anchor + s]));
     }
-    *plan_ << nlohmann::json{{"round", lastRound_ + 1}, {"rule", model.rules()[engine.ruleOf(shape)].name}, {"cells", cells}, {"after", states}}.dump() << '\n';
+    plan_->stream() << nlohmann::json{{"round", lastRound_ + 1}, {"rule", model.rules()[engine.ruleOf(shape)].name}, {"cells", cells}, {"after", states}}.dump() << '\n';
 }
 
 void Report::roundEnd(const RunStats& stats) {
     lastRound_ = stats.rounds;
     const double created = fraction(stats.creations, problem_->toCreate), deleted = fraction(stats.deletions, problem_->toDelete);
     if (csv_ && (stats.steps != lastStep_)) {
-        *csv_ << stats.rounds << ',' << stats.steps << ',' << stats.creations << ',' << stats.deletions << ',' << stats.transfers << ',' << created << ','
+        csv_->stream() << stats.rounds << ',' << stats.steps << ',' << stats.creations << ',' << stats.deletions << ',' << stats.transfers << ',' << created << ','
               << deleted << '\n';
         lastStep_ = stats.steps;
     }
@@ -75,16 +66,27 @@ void Report::roundEnd(const RunStats& stats) {
 
 void Report::finish(const RunStats& stats, std::int64_t transferLowerBound) {
     if (options_.progressBar) std::cerr << "\r" << std::string(70, ' ') << "\r" << std::flush;
+    if (plan_) attempt([&] { plan_->commit(); });
     if (options_.outDir.empty()) return;
     snapshot("end");
+    attempt([&] { csv_->commit(); });
     nlohmann::json summary = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions},
                               {"transfers", stats.transfers}, {"transfer_lower_bound", transferLowerBound >= 0 ? nlohmann::json(transferLowerBound) : nlohmann::json()},
-                              {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}};
-    *openFile(options_.outDir + "/summary.json") << summary.dump(2) << '\n';
+                              {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete},
+                              {"stopped", stats.stopped}, {"interrupted", stats.stopped == "interrupted"}};
+    attempt([&] { rules::OutputFile(options_.outOption, options_.outDir + "/summary.json").write(summary.dump(2) + '\n'); });
 }
 
 void Report::snapshot(const std::string& label) {
-    *openFile(options_.outDir + "/snapshot-" + label + ".svg") << drawBoard(*problem_, execution_->cells(), label);
+    attempt([&] { rules::OutputFile(options_.outOption, options_.outDir + "/snapshot-" + label + ".svg").write(drawBoard(*problem_, execution_->cells(), label)); });
+}
+
+void Report::attempt(const std::function<void()>& write) {
+    try {
+        write();
+    } catch (const InputError& e) {
+        errors_.push_back(e.what());
+    }
 }
 
 std::string drawBoard(const Problem& problem, const std::vector<BoxEngine::Value>& cells, const std::string& title) {

@@ -1,36 +1,51 @@
 #pragma once
 // What a plan run leaves behind: the plan as JSON Lines, a CSV time series of creation and
 // deletion completion (seed 000 Fig. 8), SVG snapshots (2D; z-slices for 3D), summary.json, and a
-// progress bar on a terminal.
+// progress bar on a terminal. Every file goes through the checked writer (rules/OutputFile.h):
+// the plan and the CSV grow in temporaries renamed into place at finish(), so a run that fails or
+// is interrupted never leaves a half-written file.
 
 #include "planner/Execution.h"
+#include "rules/OutputFile.h"
 
-#include <fstream>
-#include <memory>
+#include <functional>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace holon::planner {
 
 struct ReportOptions {
     std::string outDir;   // summary.json, completion.csv, snapshot-*.svg; empty: none
     std::string planOut;  // JSON Lines; empty: none
+    /// How the caller names outDir and planOut in messages (its command-line options).
+    std::string outOption, planOutOption;
     bool progressBar = false;
 };
 
 class Report {
 public:
+    /// Creates the output folder and starts the files; a path that cannot be written throws
+    /// InputError here, before the run.
     Report(const Problem& problem, const Execution& execution, ReportOptions options);
     ~Report();
     void fired(std::int64_t anchor, int shape, const BoxEngine::Value* old);
     void roundEnd(const RunStats& stats);
+    /// Writes the last snapshot and summary.json (with why the run stopped: "interrupted" for a
+    /// signal) and commits the plan and the CSV as complete files.
     void finish(const RunStats& stats, std::int64_t transferLowerBound);
+    /// Writes that failed once the run had started (a full disk), each with its reason. They do
+    /// not stop the run: the caller prints its summary first, then reports them.
+    const std::vector<std::string>& writeErrors() const { return errors_; }
 
 private:
     void snapshot(const std::string& label);
+    void attempt(const std::function<void()>& write);
     const Problem* problem_;
     const Execution* execution_;
     ReportOptions options_;
-    std::unique_ptr<std::ofstream> plan_, csv_;
+    std::optional<rules::OutputStream> plan_, csv_;
+    std::vector<std::string> errors_;
     std::int64_t lastRound_ = -1, lastStep_ = 0;
     int nextQuarter_ = 1;
     double lastBar_ = -1;

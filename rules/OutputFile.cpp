@@ -143,10 +143,19 @@ void OutputStream::commit() {
 
 void prepareOutputDir(const std::string& option, const std::string& dir) {
     if (dir.empty()) throw InputError(option + ": the folder name is empty");
-    std::error_code ec;
-    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw InputError(option + " " + dir + ": exists and is not a folder; name a folder");
-    fs::create_directories(dir, ec);
-    if (ec) throw InputError(option + " " + dir + ": cannot create the folder: " + ec.message());
+    struct stat st {};
+    if (::stat(dir.c_str(), &st) == 0) {
+        if (!S_ISDIR(st.st_mode)) throw InputError(option + " " + dir + ": exists and is not a folder; name a folder");
+    } else {
+        // Only the folder itself is created: a mistyped parent is refused rather than silently
+        // starting a new tree of folders somewhere else.
+        const fs::path normal = fs::path(dir).lexically_normal();
+        const fs::path up = (normal.has_filename() ? normal : normal.parent_path()).parent_path();
+        const std::string folder = up.empty() ? "." : up.string();
+        if (::stat(folder.c_str(), &st) != 0) throw InputError(option + " " + dir + ": the folder '" + folder + "' does not exist; create it first");
+        if (!S_ISDIR(st.st_mode)) throw InputError(option + " " + dir + ": '" + folder + "' is not a folder");
+        if (::mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST) throw InputError(option + " " + dir + ": cannot create the folder: " + reason());
+    }
     if (::access(dir.c_str(), W_OK | X_OK) != 0) throw InputError(option + " " + dir + ": cannot write into the folder: " + reason());
 }
 

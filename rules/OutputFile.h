@@ -36,6 +36,7 @@ public:
     /// folder itself. `option` (e.g. "--svg") names it in messages. Throws InputError otherwise.
     OutputFile(std::string option, std::string path);
     const std::string& path() const { return path_; }
+    const std::string& option() const { return option_; }
     /// Writes the whole file at once; throws InputError with the reason when it cannot.
     void write(const std::string& text) const;
     /// Writes through a stream (for large outputs); the same guarantees.
@@ -47,7 +48,8 @@ private:
     std::string option_, path_;
 };
 
-/// Makes sure `dir` is a folder holon can write into, creating it (and its parents) if missing;
+/// Makes sure `dir` is a folder holon can write into, creating it if missing (its parent must exist:
+/// a mistyped parent is refused, not created);
 /// throws InputError naming `option` and the reason.
 void prepareOutputDir(const std::string& option, const std::string& dir);
 

@@ -38,7 +38,8 @@ TEST_CASE("bad problems are refused with a message naming the fix") {
     std::ofstream(dir / "far.json") << "[[10,10],[11,10]]";
     CHECK_THROWS_WITH_AS(make(sys, "box:3x3", (dir / "far.json").string()), doctest::Contains("do not overlap"), InputError);
     CHECK_THROWS_WITH_AS(make(sys, "box:3x3x3", "box:3x3x3"), doctest::Contains("3D but the lattice square2d is 2D"), InputError);
-    CHECK_THROWS_WITH_AS(make(g1, "box:2x2", "box:9x1"), doctest::Contains("not enough mass"), InputError);
+    // The capacity quoted is the start's mass with every metamodule a creator (2 x 4), not its cell count.
+    CHECK_THROWS_WITH_AS(make(g1, "box:2x2", "box:9x1"), doctest::Contains("not enough mass: start 'box:2x2' holds at most 8 metamodules' worth"), InputError);
     CHECK_THROWS_WITH_AS(make(g1, "box:10x10", "box:3x3"), doctest::Contains("too much mass"), InputError);
     CHECK_THROWS_WITH_AS(planner::makeProblem(*sys.model, planner::parseShape("box:3x3"), planner::parseShape("box:3x3"), planner::Vec{7, 7, 0}, 1),
                          doctest::Contains("not in both start and target"), InputError);

@@ -65,3 +65,22 @@ TEST_CASE("a piecewise write appears whole on commit and not at all when abandon
     CHECK(entries(dir) == 1);
     fs::remove_all(dir);
 }
+
+TEST_CASE("an output folder is created, but not its missing parent, and a file is not a folder") {
+    using holon::rules::prepareOutputDir;
+    const fs::path dir = fs::temp_directory_path() / "holon_output_dir_test";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    prepareOutputDir("--out", (dir / "new").string());
+    CHECK(fs::is_directory(dir / "new"));
+    prepareOutputDir("--out", (dir / "new").string());  // an existing folder is fine
+    prepareOutputDir("--out", (dir / "slash" / "").string());
+    CHECK(fs::is_directory(dir / "slash"));
+    CHECK_THROWS_WITH_AS(prepareOutputDir("--out", (dir / "typo" / "new").string()), doctest::Contains("--out"), InputError);
+    CHECK(!fs::exists(dir / "typo"));
+    std::ofstream(dir / "file") << "x";
+    CHECK_THROWS_WITH_AS(prepareOutputDir("--out", (dir / "file").string()), doctest::Contains("is not a folder"), InputError);
+    CHECK_THROWS_WITH_AS(prepareOutputDir("--out", (dir / "file" / "sub").string()), doctest::Contains("is not a folder"), InputError);
+    CHECK_THROWS_AS(prepareOutputDir("--out", ""), InputError);
+    fs::remove_all(dir);
+}
