@@ -51,4 +51,16 @@ inline Checked checkFrom(rules::System system, const std::string& spec, const st
     return c;
 }
 
+/// general-lock_2 with a ranking (tests/checker/broken/general_lock2_ranked.holon) from two
+/// creators and a D on square:3x2: transfers between locked pairs can cycle there.
+inline Checked checkLockedTransfers(rules::System system) {
+    Checked c{World(std::move(system), "square:3x2"), {}, {}};
+    checker::CheckOptions o;
+    auto start = c.world.in->empty();
+    c.world.set(start, 0, 0, "C"), c.world.set(start, 1, 0, "C"), c.world.set(start, 0, 1, "D");
+    o.initial.push_back(start);
+    c.report = checker::check(*c.world.model, c.world.region, o, &c.kept);
+    return c;
+}
+
 }  // namespace holon::test

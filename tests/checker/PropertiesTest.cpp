@@ -195,12 +195,7 @@ TEST_CASE("an unknown property is bad input") {
 }
 
 TEST_CASE("general-lock_2: transfers can cycle with a creation half done, and a fair scheduler escapes") {
-    test::Checked c{test::World(broken("general_lock2_ranked"), "square:3x2"), {}, {}};
-    checker::CheckOptions o;
-    auto start = c.world.in->empty();
-    c.world.set(start, 0, 0, "C"), c.world.set(start, 1, 0, "C"), c.world.set(start, 0, 1, "D");
-    o.initial.push_back(start);
-    c.report = checker::check(*c.world.model, c.world.region, o, &c.kept);
+    const test::Checked c = test::checkLockedTransfers(broken("general_lock2_ranked"));
     const auto& r = c.property("partial");
     REQUIRE(r.verdict == Verdict::Violated);
     CHECK(r.witness["livelock"] == true);

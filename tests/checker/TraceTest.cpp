@@ -82,12 +82,7 @@ TEST_CASE("ITF round trip: a system with several fields and a pointer, state by 
 }
 
 TEST_CASE("ITF round trip: an unconditional pointer that points nowhere is written as none") {
-    test::Checked c{test::World(broken("general_lock2_ranked"), "square:3x2"), {}, {}};
-    checker::CheckOptions o;
-    auto start = c.world.in->empty();
-    c.world.set(start, 0, 0, "C"), c.world.set(start, 1, 0, "C"), c.world.set(start, 0, 1, "D");
-    o.initial.push_back(start);
-    c.report = checker::check(*c.world.model, c.world.region, o, &c.kept);
+    const test::Checked c = test::checkLockedTransfers(broken("general_lock2_ranked"));
     const auto& r = c.property("partial");
     REQUIRE(r.trace);
     const auto itf = checker::toItf(*r.trace, *c.kept.engine, "test");

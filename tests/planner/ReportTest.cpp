@@ -9,6 +9,8 @@
 
 #include <csignal>
 #include <filesystem>
+#include "rules/Parser.h"
+
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -17,12 +19,6 @@ namespace holon::test {
 
 namespace {
 namespace fs = std::filesystem;
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 bool anyTemporary(const fs::path& dir) {
     for (const auto& e : fs::directory_iterator(dir))
         if (e.path().filename().string().find(".tmp-") != std::string::npos) return true;
@@ -90,15 +86,15 @@ TEST_CASE("an interrupted plan's files are whole and the summary says so; an aba
     const planner::RunStats stats = ex.run(observer);
     report.finish(stats, -1);
     CHECK(report.writeErrors().empty());
-    const nlohmann::json summary = nlohmann::json::parse(slurp(dir / "out" / "summary.json"));
+    const nlohmann::json summary = nlohmann::json::parse(rules::readTextFile((dir / "out" / "summary.json").string()));
     CHECK(summary["interrupted"] == true);
     CHECK(summary["stopped"] == "interrupted");
     CHECK(summary["rounds"] == 4);
-    const std::string csv = slurp(dir / "out" / "completion.csv");
+    const std::string csv = rules::readTextFile((dir / "out" / "completion.csv").string());
     REQUIRE_FALSE(csv.empty());
     CHECK(csv.back() == '\n');
     CHECK(std::count(csv.begin(), csv.end(), '\n') == 5);  // the header and one line per round that fired
-    const std::string plan = slurp(dir / "plan.jsonl");
+    const std::string plan = rules::readTextFile((dir / "plan.jsonl").string());
     REQUIRE_FALSE(plan.empty());
     CHECK(plan.back() == '\n');
     CHECK(plan.find("\"round\":4") != std::string::npos);

@@ -3,6 +3,7 @@
 
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
+#include "rules/Parser.h"
 
 #include <doctest/doctest.h>
 #include <filesystem>
@@ -14,12 +15,6 @@ using holon::rules::OutputFile;
 
 namespace {
 namespace fs = std::filesystem;
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 std::size_t entries(const fs::path& dir) { return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator())); }
 }  // namespace
 
@@ -33,7 +28,7 @@ TEST_CASE("an output path is checked before the work: a missing folder or a fold
     const OutputFile ok("--svg", (dir / "a.svg").string());
     ok.write("first");
     ok.write("second");
-    CHECK(slurp(dir / "a.svg") == "second");
+    CHECK(holon::rules::readTextFile((dir / "a.svg").string()) == "second");
     CHECK(entries(dir) == 1);  // no temporary left beside it
     fs::remove_all(dir);
 }
@@ -61,7 +56,7 @@ TEST_CASE("a piecewise write appears whole on commit and not at all when abandon
     auto s = file.open();
     s.stream() << "whole\n";
     s.commit();
-    CHECK(slurp(dir / "plan.jsonl") == "whole\n");
+    CHECK(holon::rules::readTextFile((dir / "plan.jsonl").string()) == "whole\n");
     CHECK(entries(dir) == 1);
     fs::remove_all(dir);
 }
