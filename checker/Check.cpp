@@ -257,17 +257,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
             r.trace->marked = e.failureCells(p.exprs[0], last.data());
             r.witness = {{"distance", r.trace->steps.size() - 1}};
             r.summary = "violated after " + stepCount(r.trace->steps.size() - 1);
-            // Name the conjunct that fails, so a long invariant says which of its parts broke.
-            const auto parts = rules::conjuncts(p.exprs[0]);
-            const int failing = rules::Interpreter(model, region).firstFalseConjunct(p.exprs[0], {last, e.inputs()});
-            std::string which;
-            if (failing >= 0) {
-                const std::string text = rules::printExpr(system, *parts[failing]);
-                r.witness["conjunct"] = {{"index", failing + 1}, {"of", parts.size()}, {"text", text}};
-                which = parts.size() > 1 ? ": conjunct " + std::to_string(failing + 1) + " of " + std::to_string(parts.size()) + ", '" + text + "', is false"
-                                         : ": '" + text + "' is false";
-                r.summary += which;
-            }
+            const std::string which = nameFailingConjunct(r, p, rules::Interpreter(model, region), {last, e.inputs()});
             r.trace->description = "invariant '" + p.name + "' fails after " + stepCount(r.trace->steps.size() - 1) + which +
                                    (r.trace->marked.empty() ? "" : "; crossed cells show where");
             break;

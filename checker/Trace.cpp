@@ -5,6 +5,9 @@
 
 #include "checker/Trace.h"
 
+#include "checker/Verdict.h"
+#include "rules/Printer.h"
+
 #include "rules/ConfigIo.h"
 
 #include <algorithm>
@@ -102,6 +105,19 @@ bool replay(const Trace& trace, const rules::Engine& engine, const rules::Interp
         c = *next;
     }
     return true;
+}
+
+std::string nameFailingConjunct(PropertyResult& r, const rules::Property& invariant, const rules::Interpreter& in, const rules::Configuration& last) {
+    const auto parts = rules::conjuncts(invariant.exprs[0]);
+    const int failing = in.firstFalseConjunct(invariant.exprs[0], last);
+    if (failing < 0) return "";
+    const std::string text = rules::printExpr(in.model().system(), *parts[failing]);
+    if (!r.witness.is_object()) r.witness = nlohmann::json::object();
+    r.witness["conjunct"] = {{"index", failing + 1}, {"of", parts.size()}, {"text", text}};
+    const std::string which = parts.size() > 1 ? ": conjunct " + std::to_string(failing + 1) + " of " + std::to_string(parts.size()) + ", '" + text + "', is false"
+                                               : ": '" + text + "' is false";
+    r.summary += which;
+    return which;
 }
 
 }  // namespace holon::checker

@@ -49,4 +49,8 @@ struct PropertyResult {
     std::optional<std::vector<std::uint32_t>> inputs;
 };
 
+/// For an invariant false in `last`: names the first conjunct that is false (in r.witness["conjunct"]
+/// and at the end of r.summary) and returns the phrase added (": conjunct 4 of 5, '...', is false").
+std::string nameFailingConjunct(PropertyResult& r, const rules::Property& invariant, const rules::Interpreter& in, const rules::Configuration& last);
+
 }  // namespace holon::checker

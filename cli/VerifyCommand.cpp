@@ -74,6 +74,11 @@ int run(const VerifyArgs& a) {
             std::cerr << "holon verify: internal error: the counterexample for '" << o.result.name << "' is not confirmed: " << why
                       << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
         }
+        // An invariant's counterexample names the conjunct that is false in its last state.
+        const rules::Property* property = system->property(o.result.name.substr(0, o.result.name.find('@')));
+        if (ok && o.result.trace && property && property->kind == rules::Property::Kind::Invariant)
+            checker::nameFailingConjunct(o.result, *property, in,
+                                         {o.result.trace->steps.back().cells, o.result.inputs.value_or(std::vector<std::uint32_t>(region.size(), 0))});
         shown.push_back({&o.result, ok, why});
     }
     // A path from --from (NAME@bmcK, NAME@reach) is reachable: those come first.
