@@ -5,6 +5,7 @@
 #include "checker/Verdict.h"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <functional>
 
 namespace holon::cli {
@@ -22,6 +23,23 @@ inline int exitCodeFor(checker::Verdict v) {
     case checker::Verdict::Unknown: return kExitUndecided;
     }
     return kExitInternal;
+}
+
+/// --timeout values: a finite number of seconds from 0.001 to 10^7 (CLI::Range lets NaN through).
+inline CLI::Validator secondsValidator() {
+    return CLI::Validator(
+        [](std::string& text) {
+            double v = 0;
+            try {
+                std::size_t used = 0;
+                v = std::stod(text, &used);
+                if (used != text.size()) return std::string("'" + text + "' is not a number of seconds");
+            } catch (const std::exception&) {
+                return std::string("'" + text + "' is not a number of seconds");
+            }
+            return std::isfinite(v) && v >= 1e-3 && v <= 1e7 ? std::string() : std::string("give seconds from 0.001 to 10000000, not " + text);
+        },
+        "SECONDS");
 }
 
 using Run = std::function<int()>;

@@ -149,11 +149,11 @@ Run addVerifyCommand(CLI::App& app) {
     sub->add_option("file", a->file, "rule file (.holon)")->required();
     sub->add_option("--region", a->region, "bounded region: square:WxH, cubic:WxHxD or hex:rR")->required();
     sub->add_option("--property", a->properties, "prove only this property (repeatable)");
-    sub->add_option("--depth", a->depth, "also bounded model checking of the invariants to this depth from --from");
+    sub->add_option("--depth", a->depth, "also bounded model checking of the invariants to this depth from --from")->check(CLI::Range(0, 10000));
     sub->add_flag("--reach", a->reach, "also prove the invariants for every state reachable from --from, at any depth (Spacer)");
     sub->add_option("--from", a->from, "initial configuration for --depth and --reach (JSON or ASCII art); repeatable");
     sub->add_option("--input", a->inputs, "inputs of the initial configurations: NAME=FILE (ASCII mask), NAME=none or NAME=all; each input must be given with --from");
-    sub->add_option("--timeout", a->timeout, "seconds per obligation (default 120)");
+    sub->add_option("--timeout", a->timeout, "seconds per obligation (default 120)")->check(secondsValidator());
     sub->add_flag("--json", a->json, "print the report as JSON");
     sub->add_option("--smt-out", a->smtOut, "write every obligation as SMT-LIB2 into this directory");
     sub->add_option("--trace-out", a->traceOut, "write each counterexample as an ITF JSON trace (several: FILE with the obligation's name inserted)");
