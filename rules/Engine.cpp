@@ -461,6 +461,7 @@ void Engine::Evaluator::updateMembers(int cell, CellValue value) {
     const std::uint64_t bit = std::uint64_t{1} << cell;
     const int combo = engine_->combo_[cell];
     const std::size_t predicates = members_.size();
+    if (predicates == 0) return;  // a system without constraints or properties: nothing to track (and no row to index)
     if (value < 64) {  // the common case, branch-free: one word of accepted states per predicate
         const std::uint64_t* accepted = &engine_->predicateStates_[combo * predicates];
         for (std::size_t k = 0; k < predicates; ++k) members_[k] = (members_[k] & ~bit) | (((accepted[k] >> value) & 1u) << cell);
