@@ -195,6 +195,7 @@ int run(const PlanArgs& a) {
         return !monitor || monitor->roundEnd(stats);
     };
     const planner::RunStats stats = execution.run(observer);
+    if (monitor) monitor->finish(stats);
     const bool interrupted = stats.stopped == "interrupted";
     const std::int64_t lowerBound = planner::transferLowerBound(problem);
     report.finish(stats, lowerBound);
@@ -255,7 +256,7 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--scheduler", a->scheduler, "sync (rounds, default), async (one instance at a time) or adversarial");
     sub->add_option("--seed", a->seed, "random seed (default 1)");
     sub->add_option("--seed-cell", a->seedCell, "the seed metamodule x,y[,z] (default: the overlap cell nearest its centre)");
-    sub->add_flag("--check", a->check, "monitor connectivity, mass and the system's constraints after every step or round");
+    sub->add_flag("--check", a->check, "monitor after every step or round that the ensemble stays connected, conserves mass (where the system says so) and holds only states of its alphabet");
     sub->add_flag("--json", a->json, "print the summary as JSON");
     sub->add_option("--out", a->out, "write summary.json, completion.csv and SVG snapshots into this folder (created if missing; its parent must exist)");
     sub->add_option("--hex-disks", a->hexDisks, "2D general_n plans: realise every template as pivot moves of hex-lattice disks (seed 000 Fig. 4a); write disk_moves.jsonl and disks.svg into this folder");
