@@ -10,6 +10,7 @@
 #include "planner/Monitor.h"
 #include "planner/Report.h"
 #include "planner/hex/DiskMetamodules.h"
+#include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
 #include "rules/OutputFile.h"
@@ -28,6 +29,20 @@
 namespace holon::cli {
 
 namespace {
+
+/// Where a run that stopped short is stuck: how many cells the goal does not accept yet, and the
+/// first few with their states.
+void printShortOfGoal(const planner::Problem& problem, const planner::Execution& execution) {
+    const auto [cells, count] = planner::cellsShortOfGoal(execution, 5);
+    if (count == 0) return;
+    std::cout << "  " << count << (count == 1 ? " cell is" : " cells are") << " short of the goal:";
+    for (std::int64_t i : cells) {
+        const rules::Vec p = problem.board->point(i);
+        std::cout << " (" << p.x << "," << p.y << (problem.board->lattice().dimension() == 3 ? "," + std::to_string(p.z) : "") << ") "
+                  << rules::stateFields(*problem.model, execution.cells()[i]).dump() << ';';
+    }
+    std::cout << (count > 5 ? " ...\n" : "\n");
+}
 
 struct PlanArgs {
     std::string rules = "planner_intermediate", from, to, allocator = "random", scheduler = "sync", out, planOut, seedCell, traceOut, hexDisks;
@@ -221,9 +236,11 @@ int run(const PlanArgs& a) {
         if (stats.complete) std::cout << "complete: the target is reached\n";
         else if (interrupted) std::cout << "NOT complete: interrupted by " << (interruptSignal == SIGTERM ? "SIGTERM" : "SIGINT") << " after round " << stats.rounds << "\n";
         else std::cout << "NOT complete: stopped by " << stats.stopped << '\n';
+        if (!stats.complete) printShortOfGoal(problem, execution);
         if (monitor) std::cout << "  monitor: " << monitor->summary() << '\n';
         if (!a.out.empty() && errors.empty())
-            std::cout << "  wrote " << a.out << "/ (summary.json" << (interrupted ? ", marked interrupted" : "") << ", completion.csv, snapshots)\n";
+            std::cout << "  wrote " << a.out << "/ (summary.json" << (interrupted ? ", marked interrupted" : "") << ", completion.csv, snapshots"
+                      << (stats.complete ? "" : ", end.json: the end configuration, for holon check --from") << ")\n";
     }
     const bool disksOk = !disks || writeDisks(a.hexDisks, *disks, execution, disksFailed, interrupted, errors);
     const bool violated = monitor && monitor->violated();

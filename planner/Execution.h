@@ -63,6 +63,8 @@ public:
         const auto [word, bit] = bitOf(anchor, shape);
         return (bits_[word] & bit) != 0;
     }
+    /// Whether a cell in state v satisfies the system's goal predicate (padding always does).
+    bool atGoal(std::int64_t cell, BoxEngine::Value v) const;
 
 private:
     /// Where the enabled bit of an instance lives in bits_ (its listed bit is in the next word):
@@ -79,9 +81,6 @@ private:
     bool asyncStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
     bool adversarialStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
     bool syncRound(const RunObserver& observer, std::vector<std::int64_t>& changed);
-    /// Whether a cell in state v satisfies the system's goal predicate (padding always does).
-    bool atGoal(std::int64_t cell, BoxEngine::Value v) const;
-
     const Problem* problem_;
     Allocator* allocator_;
     RunOptions options_;

@@ -23,7 +23,15 @@ double fraction(std::int64_t done, std::int64_t total) { return total == 0 ? 1.0
 
 Report::Report(const Problem& problem, const Execution& execution, ReportOptions options)
     : problem_(&problem), execution_(&execution), options_(std::move(options)) {
-    if (!options_.planOut.empty()) plan_.emplace(rules::OutputFile(options_.planOutOption, options_.planOut).open());
+    if (!options_.planOut.empty()) {
+        plan_.emplace(rules::OutputFile(options_.planOutOption, options_.planOut).open());
+        // The first line makes the plan self-contained: what it starts from, target included.
+        const rules::System& system = problem.model->system();
+        plan_->stream() << nlohmann::json{{"plan", "holon"}, {"system", system.name}, {"source", system.sourceName},
+                                          {"start", configurationJson(problem, execution.cells())}}
+                               .dump()
+                        << '\n';
+    }
     if (!options_.outDir.empty()) {
         rules::prepareOutputDir(options_.outOption, options_.outDir);
         csv_.emplace(rules::OutputFile(options_.outOption, options_.outDir + "/completion.csv").open());
@@ -70,10 +78,19 @@ void Report::finish(const RunStats& stats, std::int64_t transferLowerBound) {
     if (options_.outDir.empty()) return;
     snapshot("end");
     attempt([&] { csv_->commit(); });
+    if (!stats.complete) attempt([&] { rules::OutputFile(options_.outOption, options_.outDir + "/end.json").write(configurationJson(*problem_, execution_->cells()).dump() + '\n'); });
+    const auto [short_, shortCount] = cellsShortOfGoal(*execution_, 20);
+    nlohmann::json unfinished = nlohmann::json::array();
+    for (std::int64_t i : short_) {
+        nlohmann::json cell = rules::stateFields(*problem_->model, execution_->cells()[i]);
+        cell["at"] = rules::pointJson(problem_->model->lattice(), problem_->board->point(i));
+        unfinished.push_back(cell);
+    }
     nlohmann::json summary = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions},
                               {"transfers", stats.transfers}, {"transfer_lower_bound", transferLowerBound >= 0 ? nlohmann::json(transferLowerBound) : nlohmann::json()},
                               {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete},
-                              {"stopped", stats.stopped}, {"interrupted", stats.stopped == "interrupted"}};
+                              {"stopped", stats.stopped}, {"interrupted", stats.stopped == "interrupted"},
+                              {"cells_short_of_goal", shortCount}, {"short_of_goal", unfinished}};
     attempt([&] { rules::OutputFile(options_.outOption, options_.outDir + "/summary.json").write(summary.dump(2) + '\n'); });
 }
 
@@ -87,6 +104,38 @@ void Report::attempt(const std::function<void()>& write) {
     } catch (const InputError& e) {
         errors_.push_back(e.what());
     }
+}
+
+nlohmann::json configurationJson(const Problem& problem, const std::vector<BoxEngine::Value>& cells) {
+    const Board& board = *problem.board;
+    const rules::Lattice& lattice = board.lattice();
+    const Vec lower = board.lower(), extent = board.extent();
+    const Vec shift{std::max(0, -lower.x), std::max(0, -lower.y), std::max(0, -lower.z)};
+    const Vec size = lower + extent + shift;
+    const rules::Region region = rules::Region::box(lattice, {size.x, size.y, lattice.dimension() == 3 ? size.z : 1});
+    const rules::Interpreter in(*problem.model, region);
+    rules::Configuration c = in.empty();
+    board.forEachInside([&](std::int64_t i, Vec p) {
+        const int at = region.indexOf(p + shift);
+        c.cells[at] = cells[i];
+        const std::uint8_t combo = problem.engine->combo(i);
+        if (combo != BoxEngine::kOutside) c.inputs[at] = problem.tables->comboInputs(combo);
+    });
+    nlohmann::json j = rules::configToJson(in, c);
+    if (shift != Vec{}) j["offset"] = rules::pointJson(lattice, shift);
+    return j;
+}
+
+std::pair<std::vector<std::int64_t>, std::int64_t> cellsShortOfGoal(const Execution& execution, std::size_t limit) {
+    std::vector<std::int64_t> some;
+    std::int64_t count = 0;
+    const auto& cells = execution.cells();
+    for (std::size_t i = 0; i < cells.size(); ++i)
+        if (!execution.atGoal(static_cast<std::int64_t>(i), cells[i])) {
+            ++count;
+            if (some.size() < limit) some.push_back(static_cast<std::int64_t>(i));
+        }
+    return {some, count};
 }
 
 std::string drawBoard(const Problem& problem, const std::vector<BoxEngine::Value>& cells, const std::string& title) {

@@ -8,6 +8,8 @@
 #include "planner/Execution.h"
 #include "rules/OutputFile.h"
 
+#include <nlohmann/json.hpp>
+
 #include <functional>
 #include <optional>
 #include <string>
@@ -50,6 +52,16 @@ private:
     int nextQuarter_ = 1;
     double lastBar_ = -1;
 };
+
+/// A configuration on the planner's board, with the target input, as holon's canonical JSON
+/// (rules::configToJson) on the box region square:WxH or cubic:WxHxD that holds the board, so
+/// `holon check --from` reads it. Boards reaching below 0 are shifted into the region and the
+/// shift is recorded as "offset".
+nlohmann::json configurationJson(const Problem& problem, const std::vector<BoxEngine::Value>& cells);
+
+/// Board cells whose state the goal does not accept yet (at most `limit`, in board order) and how
+/// many there are in all: where a run that stopped short is stuck.
+std::pair<std::vector<std::int64_t>, std::int64_t> cellsShortOfGoal(const Execution& execution, std::size_t limit);
 
 /// An SVG picture of a configuration: 2D boards directly, 3D boards as a row of z-slices.
 std::string drawBoard(const Problem& problem, const std::vector<BoxEngine::Value>& cells, const std::string& title);

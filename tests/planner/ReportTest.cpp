@@ -5,6 +5,7 @@
 #include "PlannerSupport.h"
 
 #include "planner/Report.h"
+#include "rules/ConfigIo.h"
 #include "rules/Error.h"
 
 #include <csignal>
@@ -121,6 +122,58 @@ TEST_CASE("plan outputs that cannot be written: refused before the run, or repor
     report.finish(stats, -1);
     REQUIRE(report.writeErrors().size() == 1);
     CHECK(report.writeErrors()[0].find("--plan-out /dev/full: cannot write: No space left") != std::string::npos);
+}
+
+}  // namespace holon::test
+
+namespace holon::test {
+
+TEST_CASE("a plan that stops short can be diagnosed: its start in the plan, its end and stuck cells on disk") {
+    const fs::path dir = fs::temp_directory_path() / "holon_report_diagnose_test";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    PlannerSystem sys("planner_general1", 2);
+    const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape("box:6x3"), planner::parseShape("box:3x6"), std::nullopt, 1);
+    auto allocator = planner::makeAllocator("random", p, 1);
+    planner::RunOptions options;
+    options.maxSteps = 30;
+    planner::Execution ex(p, *allocator, options);
+    const std::vector<planner::BoxEngine::Value> start = ex.cells();
+    {
+        planner::Report report(p, ex, {(dir / "out").string(), (dir / "plan.jsonl").string(), "--out", "--plan-out", false});
+        planner::RunObserver observer;
+        observer.fired = [&](std::int64_t a, int s, const planner::BoxEngine::Value* old) { report.fired(a, s, old); };
+        observer.roundEnd = [&](const planner::RunStats& st) { return report.roundEnd(st), true; };
+        const planner::RunStats stats = ex.run(observer);
+        REQUIRE_FALSE(stats.complete);
+        report.finish(stats, -1);
+    }
+    // Both configurations read back through the reference interpreter's reader, target included.
+    const rules::Region region = rules::Region::parse("square:6x6");
+    const rules::Interpreter in(*sys.model, region);
+    auto boardOf = [&](const rules::Configuration& c) {
+        std::vector<planner::BoxEngine::Value> cells(ex.cells().size(), 0);
+        int targets = 0;
+        for (int i = 0; i < region.size(); ++i) {
+            cells[p.board->index(region.cell(i))] = c.cells[i];
+            targets += c.inputs[i] != 0;
+        }
+        CHECK(targets == 18);
+        return cells;
+    };
+    std::istringstream plan(rules::readTextFile((dir / "plan.jsonl").string()));
+    std::string header;
+    std::getline(plan, header);
+    const nlohmann::json h = nlohmann::json::parse(header);
+    CHECK(h["system"] == "planner_general1");
+    CHECK(boardOf(rules::configFromJson(in, h["start"])) == start);
+    CHECK(boardOf(rules::readConfigFile(in, (dir / "out" / "end.json").string())) == ex.cells());
+    const nlohmann::json summary = nlohmann::json::parse(rules::readTextFile((dir / "out" / "summary.json").string()));
+    const auto [some, count] = planner::cellsShortOfGoal(ex, 100);
+    CHECK(count > 0);
+    CHECK(summary["cells_short_of_goal"] == count);
+    CHECK(summary["short_of_goal"].size() == std::min<std::size_t>(20, some.size()));
+    fs::remove_all(dir);
 }
 
 }  // namespace holon::test
