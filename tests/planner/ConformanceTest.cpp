@@ -45,7 +45,7 @@ void plan(const std::string& stem, int dimension, const char* from, const char* 
 
 void sculpt(bool improvements, const std::function<void()>& checkpoint) {
     planner::hex::SculptSetup setup;
-    setup.size = 48, setup.steps = 400;
+    setup.size = 60, setup.steps = 600;
     setup.options.decay = 5;
     planner::hex::SculptOptions& o = setup.options;
     o.dropOverhangs = o.flexibleGrowth = o.roll = o.deleteOverflow = o.growInside = o.keepConnected = o.migrate = o.balance = improvements;
@@ -55,8 +55,9 @@ void sculpt(bool improvements, const std::function<void()>& checkpoint) {
 const std::vector<Backend> kBackends = {
     {"U/P/F planner, square", {"planner_general2"}, 1, 1, [](auto& c) { plan("planner_general2", 2, "box:4x4", "T:4", c); }},
     {"U/P/F planner, cubic", {"planner_intermediate"}, 1, 1, [](auto& c) { plan("planner_intermediate", 3, "box:3x3x2", "box:2x3x3", c); }},
-    {"hex sculpting, seed 003", {"hex_holes", "hex_collapse", "hex_growth"}, 400, 100, [](auto& c) { sculpt(false, c); }, "a write no rule instance explains"},
-    {"hex sculpting, holon's improvements", {"hex_holes", "hex_collapse", "hex_growth", "hex_migrate"}, 400, 100, [](auto& c) { sculpt(true, c); }, "a write no rule instance explains"},
+    {"hex sculpting, seed 003", {"hex_holes", "hex_delete", "hex_collapse", "hex_growth"}, 400, 100, [](auto& c) { sculpt(false, c); }},
+    {"hex sculpting, holon's improvements", {"hex_holes", "hex_delete", "hex_collapse", "hex_growth", "hex_growth_flexible", "hex_migrate"}, 400, 100,
+     [](auto& c) { sculpt(true, c); }},
     {"hex disks", {"planner_general2", "hex_pivot"}, 50, 50,
      [](auto& c) {
          std::unique_ptr<planner::hex::DiskMetamodules> disks;
