@@ -6,6 +6,8 @@
 
 #include "planner/BoxEngine.h"
 
+#include "planner/Recorder.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <set>
@@ -146,6 +148,7 @@ bool BoxEngine::guardHolds(const Value* cells, std::int64_t anchor, int shape) c
 }
 
 void BoxEngine::apply(Value* cells, std::int64_t anchor, int shape, Value* old) const {
+    if (Recorder::active()) Recorder::report({.engine = this, .cells = cells, .anchor = anchor, .shape = shape, .interpreter = nullptr, .configuration = nullptr, .instance = {}});
     const Program& p = programs_[shape];
     const std::int64_t* step = steps_.data() + p.at;
     const int* copyFrom = copyFrom_.data() + p.at;

@@ -21,7 +21,7 @@ inline int hexDistance(Vec a, Vec b) {
 
 class HexArray {
 public:
-    static constexpr int kPad = 5;  // the widest pattern (a hole move) reaches 3 cells from a hole centre
+    static constexpr int kPad = 5;  // the farthest pattern read (a flexible creation's third-ring cell and its neighbours) is 4 cells away
     explicit HexArray(int n);
 
     int n() const { return n_; }

@@ -1,7 +1,8 @@
-// hex_holes.holon, hex_growth.holon, hex_collapse.holon and hex_migrate.holon placed on the hex
-// array's board by the planner's compiled engine (seed 003 §IV-D: a hole moves by shifting its three
-// leading shepherds to the trailing edge; §IV-E: a growth node makes a hole; §IV-F: column collapse;
-// holon's surface migration). The systems
+// hex_holes.holon, hex_delete.holon, hex_growth.holon, hex_growth_flexible.holon, hex_collapse.holon
+// and hex_migrate.holon placed on the hex array's board by the planner's compiled engine (seed 003
+// §IV-D: a hole moves by shifting its three leading shepherds to the trailing edge; §IV-E: a
+// deletion node fills a hole from seven shepherds, a growth node makes a hole; §IV-F: column
+// collapse; holon's flexible growth and surface migration). The systems
 // name the same cell states in the same order, so their engines share one cell array. An
 // orientation is found by geometry: pattern cell 1 of a hole move is the new centre next to the
 // old one at the anchor; pattern cell 1 of a collapse is the first cell of the column the module
@@ -12,6 +13,8 @@
 #include "rules/Error.h"
 #include "rules/Library.h"
 #include "rules/Printer.h"
+
+#include <algorithm>
 
 namespace holon::planner::hex {
 
@@ -52,10 +55,12 @@ HoleRules::HoleRules(const HexArray& array, const std::vector<std::uint8_t>& tar
       collapseSystem_(std::make_unique<Compiled>("hex_collapse", array, target)),
       growthSystem_(std::make_unique<Compiled>("hex_growth", array, target)),
       migrateSystem_(std::make_unique<Compiled>("hex_migrate", array, target)),
+      deleteSystem_(std::make_unique<Compiled>("hex_delete", array, target)),
+      flexibleSystem_(std::make_unique<Compiled>("hex_growth_flexible", array, target)),
       holeEngine_(holeSystem_->engine.get()), collapseEngine_(collapseSystem_->engine.get()), growthEngine_(growthSystem_->engine.get()),
-      migrateEngine_(migrateSystem_->engine.get()) {
+      migrateEngine_(migrateSystem_->engine.get()), deleteEngine_(deleteSystem_->engine.get()), flexibleEngine_(flexibleSystem_->engine.get()) {
     const rules::Alphabet& alphabet = holeSystem_->model->alphabet();
-    for (const Compiled* c : {collapseSystem_.get(), growthSystem_.get(), migrateSystem_.get()}) {
+    for (const Compiled* c : {collapseSystem_.get(), growthSystem_.get(), migrateSystem_.get(), deleteSystem_.get(), flexibleSystem_.get()}) {
         const rules::Alphabet& other = c->model->alphabet();
         for (int v = 0; v < alphabet.size() || v < other.size(); ++v)
             if (v >= alphabet.size() || v >= other.size() || alphabet.name(static_cast<rules::CellValue>(v)) != other.name(static_cast<rules::CellValue>(v)))
@@ -106,6 +111,40 @@ HoleRules::HoleRules(const HexArray& array, const std::vector<std::uint8_t>& tar
     for (int s = 0; s < growthEngine_->shapeCount(); ++s)
         if (growthSystem_->ruleName(s) == "hole_create") create_ = s;
     if (create_ < 0) throw InputError("hex_growth.holon: no rule hole_create");
+    // A deletion's shape is found by the shepherds it empties, a flexible creation's by its
+    // third-ring cell (pattern cell 19), read off the rules' right sides.
+    for (int s = 0; s < deleteEngine_->shapeCount(); ++s) {
+        const rules::DirectedRule& rule = deleteSystem_->model->rules()[deleteEngine_->ruleOf(s)];
+        const auto steps = deleteEngine_->cellSteps(s);
+        std::vector<std::int64_t> emptied;
+        for (std::size_t k = 0; k < steps.size(); ++k)
+            if (rule.rhs()[k].base == rules::CellTerm::Base::Empty) emptied.push_back(steps[k] - steps[0]);
+        std::sort(emptied.begin(), emptied.end());
+        deletion_.emplace(emptied, s);  // a mirror-symmetric set gives two shapes doing the same
+    }
+    for (int s = 0; s < flexibleEngine_->shapeCount(); ++s) {
+        const std::string& name = flexibleSystem_->ruleName(s);
+        const auto steps = flexibleEngine_->cellSteps(s);
+        if (steps.size() != 20) throw InputError("hex_growth_flexible.holon: rule '" + name + "' must have 20 pattern cells, the third-ring cell last");
+        auto& slot = name.rfind("spill", 0) == 0 ? spill_ : borrow_;
+        slot.emplace(steps[19] - steps[0], s);
+    }
+}
+
+int HoleRules::deletion(std::vector<std::int64_t> emptied) const {
+    std::sort(emptied.begin(), emptied.end());
+    const auto it = deletion_.find(emptied);
+    return it == deletion_.end() ? -1 : it->second;
+}
+
+int HoleRules::spill(std::int64_t step) const {
+    const auto it = spill_.find(step);
+    return it == spill_.end() ? -1 : it->second;
+}
+
+int HoleRules::borrow(std::int64_t step) const {
+    const auto it = borrow_.find(step);
+    return it == borrow_.end() ? -1 : it->second;
 }
 
 }  // namespace holon::planner::hex

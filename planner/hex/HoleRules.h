@@ -1,16 +1,19 @@
 #pragma once
 // The lattice rewrites of hole motion, compiled for one hex array: rules/library/hex_holes.holon
-// (hole move, deletion), hex_growth.holon (hole creation), hex_collapse.holon (column collapse) and
-// hex_migrate.holon (surface migration) placed on the array's board by the planner's compiled
-// engine. The sculptor's ensemble is the engines' shared cell array, and a hole moves, is created
-// or a column collapses by applying the rule's instance (seed 003 §IV-D, §IV-E, §IV-F): the same
-// rules `holon check` and `holon verify` examine.
+// (hole move), hex_delete.holon (hole deletion), hex_growth.holon (hole creation),
+// hex_growth_flexible.holon (creation spilling or borrowing a module), hex_collapse.holon (column
+// collapse) and hex_migrate.holon (surface migration) placed on the array's board by the planner's
+// compiled engine. The sculptor's ensemble is the engines' shared cell array, and every change to it
+// applies one of these rules' instances (seed 003 §IV-D, §IV-E, §IV-F): the same rules `holon
+// check` and `holon verify` examine (tests/planner/ConformanceTest.cpp replays runs to hold it so).
 
 #include "planner/BoxEngine.h"
 #include "planner/hex/HexArray.h"
 #include "rules/Model.h"
 
+#include <map>
 #include <memory>
+#include <vector>
 
 namespace holon::planner::hex {
 
@@ -26,10 +29,19 @@ public:
     const BoxEngine& holeEngine() const { return *holeEngine_; }
     const BoxEngine& collapseEngine() const { return *collapseEngine_; }
     const BoxEngine& growthEngine() const { return *growthEngine_; }
+    const BoxEngine& deleteEngine() const { return *deleteEngine_; }
+    const BoxEngine& flexibleEngine() const { return *flexibleEngine_; }
     /// hex_migrate's rules; their constraint `connected` is the caller's to enforce (MassTree).
     const BoxEngine& migrateEngine() const { return *migrateEngine_; }
     /// The hole_create shape, anchored at the growth node.
     int create() const { return create_; }
+    /// The hex_delete shape, anchored at the hole's centre, whose shepherds leaving are exactly the
+    /// cells `emptied` steps away from it; -1 if none is.
+    int deletion(std::vector<std::int64_t> emptied) const;
+    /// The hex_growth_flexible shape, anchored at the growth node, that moves the disk's extra
+    /// module onto (spill) or takes the missing one from (borrow) the cell `step` away; -1 if none.
+    int spill(std::int64_t step) const;
+    int borrow(std::int64_t step) const;
     /// The cell states: a module, a hole's rim cell, a hole's centre (empty is 0).
     Value module() const { return module_; }
     Value rim() const { return rim_; }
@@ -47,9 +59,12 @@ public:
 
 private:
     struct Compiled;
-    std::unique_ptr<Compiled> holeSystem_, collapseSystem_, growthSystem_, migrateSystem_;
-    const BoxEngine *holeEngine_ = nullptr, *collapseEngine_ = nullptr, *growthEngine_ = nullptr, *migrateEngine_ = nullptr;
+    std::unique_ptr<Compiled> holeSystem_, collapseSystem_, growthSystem_, migrateSystem_, deleteSystem_, flexibleSystem_;
+    const BoxEngine *holeEngine_ = nullptr, *collapseEngine_ = nullptr, *growthEngine_ = nullptr, *migrateEngine_ = nullptr,
+                    *deleteEngine_ = nullptr, *flexibleEngine_ = nullptr;
     int create_ = -1;
+    std::map<std::vector<std::int64_t>, int> deletion_;  // sorted steps of the shepherds that leave -> shape
+    std::map<std::int64_t, int> spill_, borrow_;          // step of the third-ring cell -> shape
     Value module_ = 0, rim_ = 0, centre_ = 0;
     int move_[6] = {};
     int collapse_[6][4][6] = {};

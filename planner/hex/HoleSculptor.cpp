@@ -67,7 +67,7 @@ HoleSculptor::HoleSculptor(const HexArray& array, const std::vector<std::uint8_t
         if (!target[i]) ++classCorrect_[class_[i]];  // everything starts empty
     }
     for (std::int64_t i : array.points())
-        if (source[i]) set(i, rules_->module());
+        if (source[i]) place(i, rules_->module());
     placeInitialHoles();
     std::int64_t area = 0;
     for (std::int64_t i : array.points()) area += target[i] != 0;
@@ -97,7 +97,7 @@ HoleSculptor::HoleSculptor(const HexArray& array, const std::vector<std::uint8_t
     }
 }
 
-void HoleSculptor::set(std::int64_t i, Value v) {
+void HoleSculptor::place(std::int64_t i, Value v) {
     const Value old = cells_[i];
     cells_[i] = v;
     changed(i, old);
@@ -138,8 +138,8 @@ void HoleSculptor::placeInitialHoles() {
         for (std::int64_t o : disk2_) clear &= array_->inside(c + o) && module(c + o);
         if (!clear) continue;
         const int id = static_cast<int>(holesById_.size());
-        for (std::int64_t o : ring1_) set(c + o, rules_->rim());
-        set(c, rules_->centre());
+        for (std::int64_t o : ring1_) place(c + o, rules_->rim());
+        place(c, rules_->centre());
         holeAt_[c] = id;
         holesById_.push_back({c, static_cast<int>(random_.below(6)), static_cast<int>(random_.below(options_.startWindow)), true});
         ++liveHoles_;
@@ -244,26 +244,27 @@ void HoleSculptor::tryCreate(std::int64_t k) {
         ++growthDemand_;
         return;
     }
-    // A spilled module leaves the disk for the spill point, a borrowed one enters an empty disk point:
-    // the disk then holds the 12 modules the rule rearranges (which ones is immaterial).
+    // The rule rewrites the whole disk, so which disk module spills, or which empty disk point the
+    // borrowed module enters, is immaterial to the cells; MassTree hears of it as one module's move
+    // and then the disk's filling.
+    const BoxEngine& engine = spill >= 0 || borrow >= 0 ? rules_->flexibleEngine() : rules_->growthEngine();
+    const int shape = spill >= 0 ? rules_->spill(spill - k) : borrow >= 0 ? rules_->borrow(borrow - k) : rules_->create();
+    std::int64_t from = borrow, to = spill;
     if (spill >= 0 || borrow >= 0) {
-        std::int64_t from = borrow, to = spill;
         for (std::int64_t o : disk2_) {
             const std::int64_t i = k + o;
             if (from < 0 && i != k && module(i)) from = i;
             if (to < 0 && !cells_[i]) to = i;
         }
         if (tree_ && !tree_->change({from}, {to})) return;
-        set(from, 0), set(to, rules_->module());
     }
-    const BoxEngine& growth = rules_->growthEngine();
-    if (!growth.matches(cells_.data(), k, rules_->create())) throw std::logic_error("hole_create does not match a growth node with 12 modules");
+    if (shape < 0 || !engine.matches(cells_.data(), k, shape)) throw std::logic_error("no hole creation rule matches a growth node with 12 modules");
     std::int64_t newlyFilled[19];
     int fills = 0;
     for (std::int64_t o : disk2_)
-        if (!cells_[k + o]) newlyFilled[fills++] = k + o;
+        if (const std::int64_t i = k + o; (!cells_[i] && i != to) || i == from) newlyFilled[fills++] = i;
     if (tree_ && !tree_->change(nullptr, 0, newlyFilled, fills)) throw std::logic_error("a hole's creation cut the mass apart");
-    apply(growth, k, rules_->create());
+    apply(engine, k, shape);
     holeAt_[k] = static_cast<std::int32_t>(holesById_.size());
     holesById_.push_back({k, static_cast<int>(random_.below(6)), time_ + 1, true});
     ++liveHoles_, ++counts_.created;
@@ -306,18 +307,27 @@ void HoleSculptor::tryDelete(std::int64_t k, int gravity) {
     if (static_cast<double>(random_.next() >> 11) * 0x1p-53 >= p) return;
     const std::vector<std::int64_t> emptied = nearestTheSurface(id, towardSurface(c, k, up));
     if (emptied.empty()) return;
+    const int shape = deletion(id, emptied);
     if (tree_ && !tree_->change(emptied, {})) {
         ++counts_.refusedSplits;
         return;
     }
-    remove(id, emptied);
+    remove(id, shape);
     if (licensed) --deletionLicences_;
 }
 
-void HoleSculptor::remove(int id, const std::vector<std::int64_t>& emptied) {
+int HoleSculptor::deletion(int id, const std::vector<std::int64_t>& emptied) const {
     const std::int64_t c = holesById_[id].centre;
-    for (std::int64_t o : disk1_) set(c + o, rules_->module());
-    for (std::int64_t i : emptied) set(i, 0);
+    std::vector<std::int64_t> steps;
+    for (std::int64_t i : emptied) steps.push_back(i - c);
+    const int shape = rules_->deletion(steps);
+    if (shape < 0 || !rules_->deleteEngine().matches(cells_.data(), c, shape)) throw std::logic_error("no hex_delete rule matches a deletion");
+    return shape;
+}
+
+void HoleSculptor::remove(int id, int shape) {
+    const std::int64_t c = holesById_[id].centre;
+    apply(rules_->deleteEngine(), c, shape);
     holeAt_[c] = -1;
     holesById_[id].alive = false;
     --liveHoles_, ++counts_.deleted;
@@ -347,8 +357,10 @@ void HoleSculptor::deleteSurplus() {
             if (!(*target_)[c + ring2_[j]] && !shepherdsAnother(c + ring2_[j], id) && onSurface(c + ring2_[j])) toward = towardSurface(c, c + ring2_[j], 0);
         if (toward < 0) continue;
         const std::vector<std::int64_t> emptied = nearestTheSurface(id, toward);
-        if (emptied.empty() || !tree_->change(emptied, {})) continue;
-        remove(id, emptied);
+        if (emptied.empty()) continue;
+        const int shape = deletion(id, emptied);
+        if (!tree_->change(emptied, {})) continue;
+        remove(id, shape);
         ++counts_.surplusDeleted;
     }
 }

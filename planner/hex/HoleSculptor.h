@@ -78,7 +78,9 @@ private:
         bool alive = false;
     };
     using Value = HoleRules::Value;
-    void set(std::int64_t i, Value v);
+    /// Writes a cell of the start configuration (the source and its initial holes); every later
+    /// change applies a rule instance (apply).
+    void place(std::int64_t i, Value v);
     /// Bookkeeping (module count, metrics) after cell i changed from `old`.
     void changed(std::int64_t i, Value old);
     /// Applies a rule instance of `engine` to the ensemble, with the bookkeeping of every changed cell.
@@ -96,7 +98,9 @@ private:
     void smooth(std::int64_t k, int gravity);
     void migrate();  // SurfaceMigration.cpp
     void deleteSurplus();
-    void remove(int id, const std::vector<std::int64_t>& emptied);
+    /// The hex_delete shape that empties exactly `emptied` around hole `id` (it must match).
+    int deletion(int id, const std::vector<std::int64_t>& emptied) const;
+    void remove(int id, int shape);
     int towardSurface(std::int64_t centre, std::int64_t node, int up) const;
     std::vector<std::int64_t> nearestTheSurface(int id, int toward) const;
     bool shepherdsAnother(std::int64_t i, int id) const;

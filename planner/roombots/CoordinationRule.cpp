@@ -7,6 +7,7 @@
 
 #include "planner/roombots/CoordinationRule.h"
 
+#include "planner/Recorder.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
@@ -68,6 +69,7 @@ bool CoordinationRule::fire(const std::string& name, int seed) {
         if (model.rules()[model.shapes()[s].rule].name != rule) continue;
         const rules::Instance instance{s, system_->region.cell(indexOf(feet_[seed])) - model.shapes()[s].offsets[0]};
         if (auto next = system_->interpreter.successor(now_, instance)) {
+            Recorder::report({.engine = nullptr, .cells = nullptr, .anchor = 0, .shape = 0, .interpreter = &system_->interpreter, .configuration = &now_, .instance = instance});
             now_ = std::move(*next);
             return true;
         }

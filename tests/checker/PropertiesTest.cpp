@@ -7,6 +7,8 @@
 #include "checker/Draw.h"
 #include "checker/Holonomy.h"
 
+#include <regex>
+
 using namespace holon;
 using checker::Verdict;
 
@@ -251,6 +253,21 @@ TEST_CASE("hex holes: deletion as the paper words it breaks a neighbouring hole,
     neck.replayAll();
     CHECK(pinch.trace->marked.size() == 3);  // the three modules of the knob, crossed in the picture
     CHECK(checker::drawTraceSvg(*pinch.trace, *neck.kept.engine, "pinch-off").find("<polygon") != std::string::npos);
+}
+
+TEST_CASE("hex delete: every choice of seven shepherds keeps the holes whole, and without the shared-shepherd guard it does not") {
+    const std::string start = rules::readTextFile(std::string(HOLON_TEST_DIR) + "/../examples/hex/checker/surface_holes.txt");
+    auto c = test::checkFrom(rules::librarySystem("hex_delete"), "hex:r5", start, "");
+    CHECK(c.report.stats.states > 1000);  // both holes deleted, in many ways each
+    CHECK(c.property("holes").verdict == Verdict::Holds);
+    CHECK(c.property("mass_conservation").verdict == Verdict::Holds);
+    // Without "count nbr@k H == n" a shepherd shared with the other hole may leave.
+    const std::string text = rules::readTextFile(rules::libraryDir() + "/hex_delete.holon");
+    const std::string loose = std::regex_replace(text, std::regex(" and\n    count nbr@\\d+ H == \\d( and count nbr@\\d+ H == \\d)*"), "");
+    REQUIRE(loose != text);
+    auto broken = test::checkFrom(test::parse(loose), "hex:r5", start, "");
+    REQUIRE(broken.property("holes").verdict == Verdict::Violated);
+    broken.replayAll();
 }
 
 TEST_CASE("hex growth (seed 003 §IV-E): one counting rule makes whole holes and keeps the module count, and without its guards it does not") {

@@ -9,6 +9,7 @@
 #include "rules/Library.h"
 #include "rules/Parser.h"
 
+#include <bit>
 #include <cstdlib>
 #include <doctest/doctest.h>
 #include <filesystem>
@@ -145,4 +146,29 @@ TEST_CASE("hex_collapse mirrored is refused, not run with one gravity's rules in
     else ::unsetenv("HOLON_LIBRARY");
     CHECK_NOTHROW(HoleRules(array, target));
     fs::remove_all(dir);
+}
+
+TEST_CASE("hex_delete has a rule for every choice of seven shepherds, hex_growth_flexible one for every third-ring cell") {
+    const HexArray array(20);
+    const std::vector<std::uint8_t> target(static_cast<std::size_t>(array.size()), 1);
+    const HoleRules rules(array, target);
+    std::vector<std::int64_t> ring;
+    for (holon::planner::Vec v : hexRing(2)) ring.push_back(array.offset(v));
+    REQUIRE(ring.size() == 12);
+    int sets = 0, covered = 0;
+    for (unsigned mask = 0; mask < (1u << 12); ++mask) {
+        if (std::popcount(mask) != 7) continue;
+        std::vector<std::int64_t> emptied;
+        for (int j = 0; j < 12; ++j)
+            if (mask >> j & 1u) emptied.push_back(ring[j]);
+        ++sets, covered += rules.deletion(emptied) >= 0;
+    }
+    CHECK(sets == 792);
+    CHECK(covered == 792);
+    CHECK(rules.deletion({ring[0], ring[1]}) == -1);
+    for (holon::planner::Vec v : hexRing(3)) {
+        CHECK(rules.spill(array.offset(v)) >= 0);
+        CHECK(rules.borrow(array.offset(v)) >= 0);
+    }
+    CHECK(rules.spill(array.offset({2, 0, 0})) == -1);
 }
