@@ -44,6 +44,10 @@ inline CLI::Validator secondsValidator() {
 
 using Run = std::function<int()>;
 
+/// Parses the arguments, runs the subcommand they name and returns its exit code; every exception
+/// becomes the exit code the contract gives it (2 bad input, 3 out of memory, 4 internal error).
+int runHolon(int argc, char** argv);
+
 Run addRulesCommand(CLI::App& app);
 Run addCheckCommand(CLI::App& app);
 Run addVerifyCommand(CLI::App& app);
