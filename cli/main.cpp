@@ -110,6 +110,9 @@ int runHolon(int argc, char** argv) {
     } catch (const holon::InputError& e) {
         std::cerr << "holon: error: " << e.what() << '\n';
         return holon::cli::kExitBadInput;
+    } catch (const holon::LimitError& e) {
+        std::cerr << "holon: limit: " << e.what() << '\n';
+        return holon::cli::kExitUndecided;
     } catch (const std::bad_alloc&) {
         std::cerr << "holon: error: out of memory before the job could finish; raise the machine's memory or lower --memory / --max-states\n";
         return holon::cli::kExitUndecided;
