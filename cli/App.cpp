@@ -44,6 +44,9 @@ int runHolon(int argc, char** argv) {
     } catch (const holon::InputError& e) {
         std::cerr << "holon: error: " << e.what() << '\n';
         return kExitBadInput;
+    } catch (const LimitError& e) {
+        std::cerr << "holon: limit: " << e.what() << '\n';
+        return kExitUndecided;
     } catch (const std::bad_alloc&) {
         std::cerr << "holon: error: out of memory before the job could finish; raise the machine's memory or lower --memory / --max-states\n";
         return kExitUndecided;

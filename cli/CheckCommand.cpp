@@ -26,7 +26,7 @@ struct CheckArgs {
     bool all = false, json = false;
     std::uint64_t maxStates = 50'000'000;
     double timeout = 0;
-    std::uint64_t memoryMiB = 16384;
+    std::uint64_t memoryMiB = kDefaultMemoryMiB;
     int threads = 2;
 };
 
@@ -143,8 +143,8 @@ Run addCheckCommand(CLI::App& app) {
     sub->add_option("--property", a->properties, "check only this property (repeatable); 'deadlock' and 'goal_reachable' are built in");
     sub->add_option("--max-states", a->maxStates, "stop after this many states (default 50000000)")->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
     sub->add_option("--timeout", a->timeout, "stop after this many seconds (default: no limit)")->check(secondsValidator());
-    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB (default 16384)")->check(CLI::Range(std::uint64_t{16}, std::uint64_t{1} << 24));
-    sub->add_option("--threads", a->threads, "worker threads (default 2)")->check(CLI::Range(1, 64));
+    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB (default 16384)")->check(memoryValidator());
+    sub->add_option("--threads", a->threads, "worker threads (default 2)")->check(threadsValidator());
     sub->add_flag("--json", a->json, "print the report as JSON");
     sub->add_option("--trace-out", a->traceOut, "write the counterexample as an ITF JSON trace");
     sub->add_option("--svg", a->svg, "draw the counterexample as SVG");

@@ -3,10 +3,17 @@
 // returns the process exit code, the same contract for every subcommand (ExitCode below).
 
 #include "checker/Verdict.h"
+#include "rules/Error.h"
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <functional>
+#include <iomanip>
+#include <new>
+#include <sstream>
+#include <string>
 
 namespace holon::cli {
 
@@ -25,21 +32,54 @@ inline int exitCodeFor(checker::Verdict v) {
     return kExitInternal;
 }
 
-/// --timeout values: a finite number of seconds from 0.001 to 10^7 (CLI::Range lets NaN through).
-inline CLI::Validator secondsValidator() {
+/// A finite number from `lo` to `hi` (CLI::Range lets NaN and inf through); `unit` names what it
+/// counts in the message, as in "give seconds from 0.001 to 10000000, not nan".
+inline CLI::Validator finiteValidator(double lo, double hi, const std::string& unit) {
     return CLI::Validator(
-        [](std::string& text) {
+        [=](std::string& text) {
+            const auto show = [](double x) {
+                char buffer[32];
+                std::snprintf(buffer, sizeof buffer, "%.10g", x);
+                return std::string(buffer);
+            };
+            const auto range = [&] { return "give " + unit + " from " + show(lo) + " to " + show(hi) + ", not " + text; };
             double v = 0;
             try {
                 std::size_t used = 0;
                 v = std::stod(text, &used);
-                if (used != text.size()) return std::string("'" + text + "' is not a number of seconds");
+                if (used != text.size()) return range();
             } catch (const std::exception&) {
-                return std::string("'" + text + "' is not a number of seconds");
+                return range();
             }
-            return std::isfinite(v) && v >= 1e-3 && v <= 1e7 ? std::string() : std::string("give seconds from 0.001 to 10000000, not " + text);
+            return std::isfinite(v) && v >= lo && v <= hi ? std::string() : range();
         },
-        "SECONDS");
+        "NUMBER");
+}
+
+/// --timeout values: a finite number of seconds from 0.001 to 10^7. No limit is the default (the
+/// option left out); 0 is refused, as it is for every limit of every subcommand.
+inline CLI::Validator secondsValidator() { return finiteValidator(1e-3, 1e7, "seconds"); }
+
+/// A count that bounds work (--max-steps, --max-rounds): 1 to 2^62. No limit is the default (the
+/// option left out); 0 is refused, not read as "no limit", as for every limit.
+inline CLI::Validator countValidator() { return CLI::Range(std::int64_t{1}, std::int64_t{1} << 62); }
+
+/// --threads: 1 to 64 (more than the machine has only costs memory; 1000 aborted on thread creation).
+inline CLI::Validator threadsValidator() { return CLI::Range(1, 64); }
+
+/// --memory in MiB, for every subcommand that allocates by its input: 16 MiB to 16 TiB.
+constexpr std::uint64_t kDefaultMemoryMiB = 16384;
+inline CLI::Validator memoryValidator() { return CLI::Range(std::uint64_t{16}, std::uint64_t{1} << 24); }
+
+/// Runs a job under --memory: std::bad_alloc during it (the estimate fell short, or the machine
+/// gives less than --memory) is a limit, exit 3, naming --memory, not a crash or a generic error.
+inline int withinMemory(std::uint64_t memoryMiB, const std::function<int()>& job) {
+    try {
+        return job();
+    } catch (const std::bad_alloc&) {
+        throw LimitError("out of memory during the run, within --memory " + std::to_string(memoryMiB) +
+                         " MiB: this machine gives less; lower --memory to what it has (then such jobs are refused before they start) or give a smaller job");
+    }
 }
 
 using Run = std::function<int()>;

@@ -3,11 +3,13 @@
 // as the paper's Table I row: modules, maximum compliance (mean, std), islands. The --out folder
 // is checked before the runs; a file that cannot be written is reported after the table.
 
+#include "checker/Budget.h"
 #include "cli/Commands.h"
 #include "cli/Parallel.h"
 #include "cli/WriteErrors.h"
 #include "planner/hex/SculptRun.h"
 #include "rules/Error.h"
+#include "rules/Limits.h"
 #include "rules/OutputFile.h"
 
 #include <nlohmann/json.hpp>
@@ -18,6 +20,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <thread>
 #include <unistd.h>
 
 namespace holon::cli {
@@ -26,7 +29,9 @@ namespace {
 
 struct HexArgs {
     planner::hex::SculptSetup setup;
-    int reps = 1, threads = 0;
+    int reps = 1, threads = 0;  // threads 0: the option left out, the machine's cores
+    double timeout = 0;         // 0: the option left out, no limit
+    std::uint64_t memoryMiB = kDefaultMemoryMiB;
     std::uint64_t seed = 1;
     std::string out;
     bool json = false, quiet = false;
@@ -47,6 +52,7 @@ Stat stat(const std::vector<planner::hex::SculptResult>& runs, double (*field)(c
 
 /// The mean over repetitions of each metric against time, as seed 003 Figs. 9, 11 and 12.
 std::string seriesSvg(const std::vector<planner::hex::SculptResult>& runs, int steps) {
+    if (steps == 0) return "<svg xmlns='http://www.w3.org/2000/svg' width='1' height='1'/>\n";
     const double w = 640, h = 320, left = 40, bottom = 20;
     std::ostringstream svg;
     svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << w + left + 10 << "' height='" << h + bottom + 10 << "' font-size='11'>\n"
@@ -76,16 +82,16 @@ std::string seriesSvg(const std::vector<planner::hex::SculptResult>& runs, int s
 }
 
 /// series.svg and series.csv; a file that cannot be written is added to `errors`.
-void writeOutputs(const HexArgs& a, const std::vector<planner::hex::SculptResult>& runs, WriteErrors& errors) {
+void writeOutputs(const HexArgs& a, const std::vector<planner::hex::SculptResult>& runs, int steps, WriteErrors& errors) {
     const auto attempt = [&](const std::string& name, const std::function<void(std::ostream&)>& fill) {
         errors.attempt([&] { rules::OutputFile("--out", (std::filesystem::path(a.out) / name).string()).write(fill); });
     };
-    attempt("series.svg", [&](std::ostream& svg) { svg << seriesSvg(runs, a.setup.steps); });
+    attempt("series.svg", [&](std::ostream& svg) { svg << seriesSvg(runs, steps); });
     attempt("series.csv", [&](std::ostream& csv) {
         csv << "step";
         for (std::size_t r = 0; r < runs.size(); ++r) csv << ",completeness" << r << ",stability" << r << ",compliance" << r << ",holes" << r;
         csv << '\n';
-        for (int t = 0; t < a.setup.steps; ++t) {
+        for (int t = 0; t < steps; ++t) {
             csv << t + 1;
             for (const auto& run : runs)
                 csv << ',' << run.series[t].completeness << ',' << run.series[t].stability << ',' << run.series[t].compliance << ',' << run.series[t].holes;
@@ -106,10 +112,17 @@ std::vector<std::string> improvements(const planner::hex::SculptOptions& o) {
 }
 
 int run(HexArgs a) {
-    if (a.reps < 1 || a.reps > 1000) throw InputError("--reps " + std::to_string(a.reps) + ": choose 1 to 1000");
-    if (a.setup.steps < 1) throw InputError("--steps must be positive");
+    const checker::Budget budget(a.timeout);  // one deadline for every run and every timestep
     if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
+    // Memory before any array is made: the runs that go at once, and every run's series.
+    const std::uint64_t perRun = planner::hex::sculptBytes(a.setup), series = static_cast<std::uint64_t>(a.setup.steps) * sizeof(planner::hex::SculptSample);
+    const int parallel = std::min(a.reps, a.threads > 0 ? a.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
+    rules::requireMemory(rules::checkedProduct({perRun, std::uint64_t(parallel)}) + rules::checkedProduct({series, std::uint64_t(a.reps)}), a.memoryMiB << 20,
+                         std::to_string(a.reps) + (a.reps == 1 ? " run of " : " runs of ") + std::to_string(a.setup.steps) + " timesteps on " + std::to_string(a.setup.size) + "x" +
+                             std::to_string(a.setup.size) + " (" + std::to_string(parallel) + " at once)");
     std::vector<planner::hex::SculptResult> runs(a.reps);
+    std::vector<char> ran(a.reps, 0);
+    const std::function<bool()> expired = [&] { return budget.expired(); };
     WriteErrors errors;  // written only by run 0 (the frames), read after every run has ended
     runParallel(a.reps, a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int r) {
         planner::hex::SculptSetup setup = a.setup;
@@ -121,8 +134,19 @@ int run(HexArgs a) {
                     rules::OutputFile("--out", (std::filesystem::path(a.out) / ("frame_" + std::to_string(s.time()) + ".svg")).string()).write(planner::hex::sculptSvg(s));
                 });
             }
-        });
-    });
+        }, budget.limited() ? expired : std::function<bool()>());
+        ran[r] = runs[r].steps > 0;
+    }, budget.limited() ? expired : std::function<bool()>());
+    // Stopped by --timeout: the runs that made at least one timestep, compared over the timesteps
+    // all of them made; the files written are whole, and say so by their length.
+    std::vector<planner::hex::SculptResult> kept;
+    for (int r = 0; r < a.reps; ++r)
+        if (ran[r]) kept.push_back(std::move(runs[r]));
+    if (kept.empty()) throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached before the first timestep; nothing was written; raise --timeout");
+    runs = std::move(kept);
+    int steps = a.setup.steps;
+    for (const auto& r : runs) steps = std::min(steps, r.steps);
+    const bool stopped = steps < a.setup.steps || static_cast<int>(runs.size()) < a.reps;
 
     const Stat compliance = stat(runs, [](const auto& r) { return r.maxCompliance; });
     const Stat completeness = stat(runs, [](const auto& r) { return r.maxCompleteness; });
@@ -130,18 +154,18 @@ int run(HexArgs a) {
     const Stat islands = stat(runs, [](const auto& r) { return static_cast<double>(r.islands); });
     const Stat seconds = stat(runs, [](const auto& r) { return r.seconds; });
     const Stat modules = stat(runs, [](const auto& r) { return static_cast<double>(r.modules); });
-    if (!a.out.empty()) writeOutputs(a, runs, errors);
+    if (!a.out.empty()) writeOutputs(a, runs, steps, errors);
     if (a.json) {
         auto js = [](Stat s) { return nlohmann::json{{"mean", s.mean}, {"std", s.std}}; };
-        nlohmann::json j{{"from", a.setup.from}, {"to", a.setup.to}, {"size", a.setup.size}, {"reps", a.reps},
-                         {"modules", js(modules)}, {"steps", a.setup.steps}, {"tri_regions", runs[0].triRegions},
+        nlohmann::json j{{"from", a.setup.from}, {"to", a.setup.to}, {"size", a.setup.size}, {"reps", runs.size()},
+                         {"modules", js(modules)}, {"steps", steps}, {"stopped", stopped ? "timeout" : "done"}, {"tri_regions", runs[0].triRegions},
                          {"completeness", js(completeness)}, {"stability", js(stability)}, {"compliance", js(compliance)},
                          {"islands", js(islands)}, {"seconds", js(seconds)},
                          {"improvements", improvements(a.setup.options)}};
         std::cout << j.dump() << '\n';
     } else {
         std::cout << std::fixed << std::setprecision(2) << a.setup.from << " -> " << a.setup.to << " on " << a.setup.size << "x" << a.setup.size
-                  << ", " << a.reps << " reps of " << a.setup.steps << " timesteps, " << runs[0].triRegions << " tri-regions"
+                  << ", " << runs.size() << " reps of " << steps << " timesteps" << (stopped ? " (stopped by --timeout)" : "") << ", " << runs[0].triRegions << " tri-regions"
                   << (improvements(a.setup.options).empty() ? "" : ", holon's improvements:");
         for (const std::string& i : improvements(a.setup.options)) std::cout << " --" << i;
         std::cout << '\n'
@@ -156,7 +180,7 @@ int run(HexArgs a) {
                   << " target points empty (" << runs[0].residue.walledIn << " walled in), " << runs[0].residue.holeCellsOutside << " hole cells outside\n";
     }
     errors.raise();  // after the table: the runs' results are printed even when their files are not written
-    return 0;
+    return stopped ? kExitUndecided : kExitOk;
 }
 
 }  // namespace
@@ -167,12 +191,12 @@ Run addHexCommand(CLI::App& app) {
     sub->add_option("--from", a->setup.from, "source geometry: square, T, rectangle, circle, or a picture file")->required();
     sub->add_option("--to", a->setup.to, "target geometry: square, T, rectangle, circle, or a picture file")->required();
     sub->add_option("--size", a->setup.size, "lattice points per side of the array")->required();
-    sub->add_option("--reps", a->reps, "repetitions with seeds seed, seed+1, ...");
-    sub->add_option("--steps", a->setup.steps, "timesteps per run");
+    sub->add_option("--reps", a->reps, "repetitions with seeds seed, seed+1, ... (1 to 1000)")->check(CLI::Range(1, 1000));
+    sub->add_option("--steps", a->setup.steps, "timesteps per run (1 to 10^9)")->check(CLI::Range(1, 1000000000));
     sub->add_option("--seed", a->seed, "random seed of the first repetition");
-    sub->add_option("--tri", a->setup.triFraction, "tri-region edge as a fraction of the array side");
-    sub->add_option("--decay", a->setup.options.decay, "c_decay of the temperature test");
-    sub->add_option("--hole-density", a->setup.options.holeDensity, "initial holes per source lattice point");
+    sub->add_option("--tri", a->setup.triFraction, "tri-region edge as a fraction of the array side (0.001 to 1)")->check(finiteValidator(1e-3, 1, "a fraction"));
+    sub->add_option("--decay", a->setup.options.decay, "c_decay of the temperature test, timesteps per diameter (0.001 to 10^9)")->check(finiteValidator(1e-3, 1e9, "timesteps per diameter"));
+    sub->add_option("--hole-density", a->setup.options.holeDensity, "initial holes per source lattice point (0 to 1)")->check(finiteValidator(0, 1, "holes per point"));
     sub->add_flag_callback("--improved", [a] {
         auto& o = a->setup.options;
         o.dropOverhangs = o.flexibleGrowth = o.roll = o.deleteOverflow = o.growInside = o.keepConnected = o.migrate = o.balance = true;
@@ -185,11 +209,13 @@ Run addHexCommand(CLI::App& app) {
     sub->add_flag("--keep-connected", a->setup.options.keepConnected, "refuse every deletion and collapse that would cut the mass apart");
     sub->add_flag("--migrate", a->setup.options.migrate, "modules outside the target move along the surface toward empty target points");
     sub->add_flag("--balance", a->setup.options.balance, "hold the live holes at (target area - modules) / 7: creation stops there, deletion below it only as growth asks, surplus holes deleted at the surface");
-    sub->add_option("--threads", a->threads, "parallel runs (default: the machine's cores)");
+    sub->add_option("--threads", a->threads, "parallel runs, 1 to 64 (default: the machine's cores)")->check(threadsValidator());
+    sub->add_option("--timeout", a->timeout, "stop every run after this many seconds in all, with the timesteps made so far (exit 3; default: no limit)")->check(secondsValidator());
+    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB, checked before the arrays are made (default 16384)")->check(memoryValidator());
     sub->add_option("--out", a->out, "directory for series.csv, series.svg (metrics over time) and SVG frames of the first run (created if missing; its parent must exist)");
     sub->add_flag("--json", a->json, "print a JSON summary");
     sub->add_flag("--quiet", a->quiet, "no progress bar");
-    return [a] { return run(*a); };
+    return [a] { return withinMemory(a->memoryMiB, [&] { return run(*a); }); };
 }
 
 }  // namespace holon::cli

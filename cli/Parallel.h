@@ -1,11 +1,12 @@
 #pragma once
 // Independent jobs spread over the machine's cores (or `threads`), with an optional progress line on
-// a terminal. The first exception a job throws stops the others and is rethrown as an InputError.
-
-#include "rules/Error.h"
+// a terminal. The first exception a job throws stops the others and is rethrown as it was (an
+// InputError stays exit 2, a std::bad_alloc or LimitError a limit), once every worker has joined.
+// `stop`, when given, is asked before each job: once it says so, no job starts (a --timeout).
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
 #include <functional>
 #include <iostream>
 #include <mutex>
@@ -15,17 +16,19 @@
 
 namespace holon::cli {
 
-inline void runParallel(int jobs, int threads, bool progress, const std::string& unit, const std::function<void(int)>& job) {
+inline void runParallel(int jobs, int threads, bool progress, const std::string& unit, const std::function<void(int)>& job,
+                        const std::function<bool()>& stop = {}) {
     std::atomic<int> next{0}, done{0};
     std::mutex io;
-    std::string firstError;
+    std::exception_ptr firstError;
     auto worker = [&] {
         for (int j; (j = next++) < jobs;) {
+            if (stop && stop()) return;
             try {
                 job(j);
-            } catch (const std::exception& e) {
+            } catch (...) {
                 std::lock_guard lock(io);
-                if (firstError.empty()) firstError = e.what();
+                if (!firstError) firstError = std::current_exception();
                 next = jobs;
                 return;
             }
@@ -37,10 +40,16 @@ inline void runParallel(int jobs, int threads, bool progress, const std::string&
     };
     const int n = std::max(1, std::min(jobs, threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency())));
     std::vector<std::thread> pool;
-    for (int t = 0; t < n; ++t) pool.emplace_back(worker);
+    try {
+        for (int t = 0; t < n; ++t) pool.emplace_back(worker);
+    } catch (...) {  // a thread the system would not start: the ones running finish, then the error
+        next = jobs;
+        for (auto& t : pool) t.join();
+        throw;
+    }
     for (auto& t : pool) t.join();
     if (progress) std::cerr << '\n';
-    if (!firstError.empty()) throw InputError(firstError);
+    if (firstError) std::rethrow_exception(firstError);
 }
 
 }  // namespace holon::cli

@@ -3,6 +3,7 @@
 // Every output path is checked before the run; SIGINT or SIGTERM stops the run at the next round,
 // writes what it has as complete files (the summary marked interrupted) and exits 128 + signal.
 
+#include "checker/Budget.h"
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
 #include "cli/WriteErrors.h"
@@ -12,11 +13,13 @@
 #include "planner/hex/DiskMetamodules.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
+#include "rules/Limits.h"
 #include "rules/Library.h"
 #include "rules/OutputFile.h"
 
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <csignal>
 #include <filesystem>
 #include <functional>
@@ -50,7 +53,8 @@ struct PlanArgs {
     int scale = 1;
     std::uint64_t seed = 1;
     std::int64_t maxSteps = 0, maxRounds = 0;
-    double timeout = 0;
+    double timeout = 0;  // 0: the option left out, no limit
+    std::uint64_t memoryMiB = kDefaultMemoryMiB;
     bool check = false, json = false, quiet = false;
 };
 
@@ -61,16 +65,22 @@ std::string rulePath(const std::string& name) {
     throw InputError("--rules '" + name + "': no such file, and no bundled system of that name (try planner_intermediate or planner_general1)");
 }
 
-std::optional<planner::Vec> parseCell(const std::string& text) {
+/// --seed-cell x,y (2D shapes) or x,y,z (3D): as many coordinates as the shapes have dimensions.
+std::optional<planner::Vec> parseCell(const std::string& text, int dimension) {
     if (text.empty()) return std::nullopt;
-    planner::Vec v;
-    char c1 = 0, c2 = 0;
+    const std::string want = dimension == 3 ? "x,y,z" : "x,y";
+    std::vector<int> v;
     std::istringstream in(text);
-    if (!(in >> v.x >> c1 >> v.y) || c1 != ',') throw InputError("--seed-cell '" + text + "': expected x,y or x,y,z");
-    if (in >> c2) {
-        if (c2 != ',' || !(in >> v.z)) throw InputError("--seed-cell '" + text + "': expected x,y or x,y,z");
+    for (std::string part; std::getline(in, part, ',');) {
+        int value = 0;
+        const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+        if (part.empty() || ec != std::errc{} || end != part.data() + part.size())
+            throw InputError("--seed-cell '" + text + "': '" + part + "' is not an integer; give " + want);
+        v.push_back(value);
     }
-    return v;
+    if (static_cast<int>(v.size()) != dimension || text.back() == ',')
+        throw InputError("--seed-cell '" + text + "': " + std::to_string(v.size()) + " coordinates, but the shapes are " + std::to_string(dimension) + "D; give " + want);
+    return planner::Vec{v[0], v[1], dimension == 3 ? v[2] : 0};
 }
 
 constexpr std::size_t kMaxDiskMetamodules = 500;  // every move is written out, about 2,300 per template (80 bytes each), and replayed
@@ -161,7 +171,18 @@ void requirePlanLattice(const rules::System& system, const rules::Lattice& latti
                      (otherDimension ? ", or --from and --to as " + std::to_string(fixed.dimension()) + "D shapes" : std::string()));
 }
 
+/// Why a run ended, as an exit code: a limit the user set is undecided (3), not a failed plan (1).
+int exitCodeFor(const planner::RunStats& stats) {
+    if (stats.complete) return kExitOk;
+    return stats.stopped == "timeout" || stats.stopped == "max-steps" || stats.stopped == "max-rounds" ? kExitUndecided : kExitViolated;
+}
+
 int run(const PlanArgs& a) {
+    // One --timeout for every phase: setup (shapes, board) and the run share this deadline.
+    const checker::Budget budget(a.timeout);
+    const auto during = [&](const std::string& phase) {
+        if (budget.expired()) throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached while " + phase + ", before the plan ran; nothing was written; raise --timeout");
+    };
     // Every output path is checked before any work: a finished plan is never lost to a typo.
     if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
     if (!a.planOut.empty()) rules::OutputFile("--plan-out", a.planOut);
@@ -172,19 +193,24 @@ int run(const PlanArgs& a) {
 
     auto system = loadRules(rulePath(a.rules), a.noWarnings);
     if (!system) return 2;
-    planner::Shape from = planner::parseShape(a.from, a.scale), to = planner::parseShape(a.to, a.scale);
+    const std::uint64_t memory = a.memoryMiB << 20;
+    planner::Shape from = planner::parseShape(a.from, a.scale, memory);
+    planner::Shape to = planner::parseShape(a.to, a.scale, memory - std::min(memory, from.cells.size() * sizeof(planner::Vec)));
+    during("making the shapes");
     const rules::Lattice& lattice = rules::Lattice::get(from.dimension == 3 ? rules::LatticeKind::Cubic3D : rules::LatticeKind::Square2D);
     requirePlanLattice(*system, lattice);
     rules::Model model(*system, lattice);
-    planner::Problem problem = planner::makeProblem(model, std::move(from), std::move(to), parseCell(a.seedCell), a.seed);
+    const std::optional<planner::Vec> seedCell = parseCell(a.seedCell, from.dimension);
+    planner::Problem problem = planner::makeProblem(model, std::move(from), std::move(to), seedCell, a.seed, memory);
     std::unique_ptr<planner::Allocator> allocator = planner::makeAllocator(a.allocator, problem, a.seed);
+    during("laying out the board");
 
     planner::RunOptions options;
     if (a.scheduler == "sync") options.scheduler = planner::Scheduler::Sync;
     else if (a.scheduler == "async") options.scheduler = planner::Scheduler::Async;
     else if (a.scheduler == "adversarial") options.scheduler = planner::Scheduler::Adversarial;
     else throw InputError("--scheduler '" + a.scheduler + "': choose sync, async or adversarial");
-    options.seed = a.seed, options.maxSteps = a.maxSteps, options.maxRounds = a.maxRounds, options.timeoutSeconds = a.timeout;
+    options.seed = a.seed, options.maxSteps = a.maxSteps, options.maxRounds = a.maxRounds;
     options.interrupt = &interruptSignal;
 
     std::unique_ptr<planner::hex::DiskMetamodules> disks;
@@ -195,6 +221,8 @@ int run(const PlanArgs& a) {
     }
     // From here on a signal stops the run at a round boundary and the files are still written.
     const InterruptGuard guard;
+    during("preparing the run");
+    if (budget.limited()) options.timeoutSeconds = std::max(budget.remaining(), 1e-6);
     planner::Execution execution(problem, *allocator, options);
     planner::Report report(problem, execution, {a.out, a.planOut, "--out", "--plan-out", !a.quiet && isatty(STDERR_FILENO) != 0});
     std::unique_ptr<planner::Monitor> monitor = a.check ? std::make_unique<planner::Monitor>(problem, execution) : nullptr;
@@ -212,7 +240,8 @@ int run(const PlanArgs& a) {
     const planner::RunStats stats = execution.run(observer);
     if (monitor) monitor->finish(stats);
     const bool interrupted = stats.stopped == "interrupted";
-    const std::int64_t lowerBound = planner::transferLowerBound(problem);
+    // The transfer bound is a min-cost flow over the board: skipped once --timeout has passed.
+    const std::int64_t lowerBound = budget.expired() ? -1 : planner::transferLowerBound(problem);
     report.finish(stats, lowerBound);
     WriteErrors errors;
     for (const std::string& e : report.writeErrors()) errors.add(e);
@@ -253,8 +282,8 @@ int run(const PlanArgs& a) {
     // A file that could not be written outranks the verdict: the summary above is all there is.
     errors.raise();
     if (interrupted) return 128 + interruptSignal;
-    if (!disksOk || violated) return 1;
-    return stats.complete ? 0 : 1;
+    if (!disksOk || violated) return kExitViolated;
+    return exitCodeFor(stats);
 }
 
 }  // namespace
@@ -268,7 +297,7 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--rules", a->rules, "planner rule file, or a bundled name (default planner_intermediate)");
     sub->add_option("--from", a->from, "start shape")->required();
     sub->add_option("--to", a->to, "target shape")->required();
-    sub->add_option("--scale", a->scale, "every cell becomes a KxK (3D: KxKxK) block");
+    sub->add_option("--scale", a->scale, "every cell becomes a KxK (3D: KxKxK) block (1 to 2^29: beyond it no cell fits the coordinate range)")->check(CLI::Range(1, planner::kMaxCoordinate));
     sub->add_option("--allocator", a->allocator, "resource allocator for general_n: random, gradient or optimal (default random)");
     sub->add_option("--scheduler", a->scheduler, "sync (rounds, default), async (one instance at a time) or adversarial");
     sub->add_option("--seed", a->seed, "random seed (default 1)");
@@ -278,13 +307,14 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--out", a->out, "write summary.json, completion.csv and SVG snapshots into this folder (created if missing; its parent must exist)");
     sub->add_option("--hex-disks", a->hexDisks, "2D general_n plans: realise every template as pivot moves of hex-lattice disks (seed 000 Fig. 4a); write disk_moves.jsonl and disks.svg into this folder");
     sub->add_option("--plan-out", a->planOut, "write the plan as JSON Lines (one fired instance per line)");
-    sub->add_option("--max-steps", a->maxSteps, "stop after this many steps");
-    sub->add_option("--max-rounds", a->maxRounds, "stop after this many rounds");
-    sub->add_option("--timeout", a->timeout, "stop after this many seconds");
+    sub->add_option("--max-steps", a->maxSteps, "stop after this many steps (exit 3; default: no limit)")->check(countValidator());
+    sub->add_option("--max-rounds", a->maxRounds, "stop after this many rounds (exit 3; default: no limit)")->check(countValidator());
+    sub->add_option("--timeout", a->timeout, "stop after this many seconds, setup included (exit 3; default: no limit)")->check(secondsValidator());
+    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB, checked before the shapes and the board are made (default 16384)")->check(memoryValidator());
     sub->add_option("--trace-out", a->traceOut, "with --check: write the violating round as an ITF JSON trace (default DIR/violation.itf.json with --out)");
     sub->add_flag("--quiet", a->quiet, "no progress bar");
     sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
-    return [a] { return run(*a); };
+    return [a] { return withinMemory(a->memoryMiB, [&] { return run(*a); }); };
 }
 
 }  // namespace holon::cli

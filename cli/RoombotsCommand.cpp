@@ -4,21 +4,25 @@
 // per metamodule). `--make-clouds FILE` regenerates the collision-cloud look-up table. Output
 // paths are checked before the runs; a file that cannot be written is reported after the tables.
 
+#include "checker/Budget.h"
 #include "cli/Commands.h"
 #include "cli/Parallel.h"
 #include "cli/WriteErrors.h"
 #include "planner/roombots/Draw.h"
 #include "rules/Error.h"
+#include "rules/Limits.h"
 #include "rules/OutputFile.h"
 
 #include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <filesystem>
 #include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <thread>
 #include <unistd.h>
 
 namespace holon::cli {
@@ -29,7 +33,9 @@ namespace rb = planner::roombots;
 struct RoombotsArgs {
     std::string structure = "cube", recipe = "given", clouds, makeClouds, out;
     std::vector<std::string> metamodules{"PAR", "PER", "SRS", "SRZ"}, strategies{"greedy", "slope", "step"};
-    int runs = 0, threads = 0, stall = 12;
+    int runs = 0, threads = 0, stall = 12;  // runs, threads 0: the option left out (the paper's runs, the machine's cores)
+    double timeout = 0;                     // 0: the option left out, no limit
+    std::uint64_t memoryMiB = kDefaultMemoryMiB;
     std::uint64_t seed = 1;
     bool json = false, quiet = false;
 };
@@ -39,6 +45,7 @@ struct Job {
     rb::Strategy strategy;
     int run;
     rb::AssemblyResult result;
+    bool ran = false;  // false: --timeout came first
 };
 
 std::string name(const Job& j) {
@@ -130,9 +137,16 @@ int run(const RoombotsArgs& a) {
         std::cout << "wrote " << table.size() << " transitions to " << a.makeClouds << '\n';
         return 0;
     }
-    if (a.runs < 0 || a.runs > 1000) throw InputError("--runs " + std::to_string(a.runs) + ": choose 1 to 1000");
-    if (a.stall < 1 || a.stall > 10000) throw InputError("--stall " + std::to_string(a.stall) + ": choose 1 to 10000 steps");
+    const checker::Budget budget(a.timeout);  // one deadline for the recipes and every run
+    const std::function<bool()> expired = budget.limited() ? std::function<bool()>([&] { return budget.expired(); }) : std::function<bool()>();
     if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
+    // A name that is neither built in nor a file: the message lists the names.
+    const auto known = [](const char* option, const std::string& name, const std::string& first, const std::string& second) {
+        if (name != first && name != second && !std::filesystem::is_regular_file(name))
+            throw InputError(std::string(option) + " '" + name + "': not " + first + " or " + second + ", and no such file; give " + first + ", " + second + " or a recipe file");
+    };
+    known("--structure", a.structure, "cube", "chair");
+    known("--recipe", a.recipe, "given", "auto");
     std::vector<rb::Coupling> couplings;
     for (const std::string& m : a.metamodules) couplings.push_back(rb::parseCoupling(m));
     std::vector<rb::Strategy> strategies;
@@ -150,10 +164,14 @@ int run(const RoombotsArgs& a) {
     if (a.recipe == "auto") {
         std::vector<std::pair<rb::Coupling, int>> keys;
         for (const auto& [key, setting] : runSettings) keys.push_back(key);
+        std::atomic<int> derived{0};
         runParallel(static_cast<int>(keys.size()), a.threads, false, "recipes", [&](int k) {
             rb::Setting& s = runSettings[keys[k]];
             s.recipe = rb::automaticRecipe(table, keys[k].first, s);
-        });
+            ++derived;
+        }, expired);
+        if (derived < static_cast<int>(keys.size()))
+            throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached while deriving the recipes, before any run; nothing was written; raise --timeout");
     }
 
     for (rb::Coupling c : couplings)  // a shape the configuration cannot take is the structure's fault, not the strategy's
@@ -166,11 +184,23 @@ int run(const RoombotsArgs& a) {
     for (rb::Coupling c : couplings)
         for (rb::Strategy s : strategies)
             for (int r = 0; r < static_cast<int>(settings.size()); ++r) jobs.push_back({c, s, r, {}});
+    // Memory before the runs: each run's world (the floor around seeds and starts, its clouds),
+    // about 1 MiB counted as 16 per thread, and its kept result (trace, snapshots: about 9 KiB
+    // measured on the cube, counted as 64).
+    const int parallel = std::min(static_cast<int>(jobs.size()), a.threads > 0 ? a.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
+    rules::requireMemory((std::uint64_t{16} << 20) * std::uint64_t(parallel) + (std::uint64_t{64} << 10) * jobs.size(), a.memoryMiB << 20,
+                         std::to_string(jobs.size()) + " runs (" + std::to_string(parallel) + " at once)");
     rb::AssemblyOptions options;
     options.stallSteps = a.stall;
     runParallel(static_cast<int>(jobs.size()), a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int k) {
         jobs[k].result = rb::assemble(table, jobs[k].coupling, jobs[k].strategy, runSettings.at({jobs[k].coupling, jobs[k].run}), options);
-    });
+        jobs[k].ran = true;
+    }, expired);
+    // Stopped by --timeout: the tables and files hold the runs made, each whole.
+    const std::size_t planned = jobs.size();
+    jobs.erase(std::remove_if(jobs.begin(), jobs.end(), [](const Job& j) { return !j.ran; }), jobs.end());
+    const bool stopped = jobs.size() < planned;
+    const std::string stoppedText = "stopped by --timeout: " + std::to_string(jobs.size()) + " of " + std::to_string(planned) + " runs made";
     WriteErrors errors;
     if (!a.out.empty())
         for (const Job& j : jobs) writeRun(a.out, j, runSettings.at({j.coupling, j.run}), errors);
@@ -191,10 +221,10 @@ int run(const RoombotsArgs& a) {
                             {"collisions", j.result.collisions}, {"moves", j.result.moves}, {"mean_moves", j.result.meanMoves},
                             {"seconds", j.result.seconds}, {"deadlock_reason", j.result.reason}});
         std::cout << nlohmann::json{{"structure", a.structure}, {"runs", runs}, {"completed", completed}, {"collisions", clean},
-                                    {"collisions_all_runs", all}, {"deadlocks", dl}, {"mean_moves", moves}}.dump()
+                                    {"collisions_all_runs", all}, {"deadlocks", dl}, {"mean_moves", moves}, {"stopped", stopped ? "timeout" : "done"}}.dump()
                   << '\n';
         errors.raise();
-        return 0;
+        return stopped ? kExitUndecided : kExitOk;
     }
     std::cout << a.structure << ": " << settings.front().recipe.seeds.size() << " metamodules, " << settings.size() << (settings.size() == 1 ? " run" : " runs") << " per cell (";
     for (int r = 0; r < static_cast<int>(settings.size()); ++r) std::cout << (r ? ", " : "") << runSettings.at({couplings.front(), r}).recipe.name;
@@ -217,8 +247,9 @@ int run(const RoombotsArgs& a) {
     std::cout << "\n" << completed << " of " << jobs.size() << " runs completed, " << dl << " deadlocked; " << clean
               << " collisions in runs that did not deadlock (" << all << " in all); " << std::setprecision(1) << moves
               << " moves per metamodule\n";
+    if (stopped) std::cout << stoppedText << '\n';
     errors.raise();  // after the tables: the runs' results are printed even when their files are not written
-    return 0;
+    return stopped ? kExitUndecided : kExitOk;
 }
 
 }  // namespace
@@ -230,16 +261,18 @@ Run addRoombotsCommand(CLI::App& app) {
     sub->add_option("--metamodule", a->metamodules, "metamodule configurations: PAR PER SRS SRZ (default all)")->delimiter(',');
     sub->add_option("--strategy", a->strategies, "greedy slope step (the paper's, default) and/or reserve (holon's)")->delimiter(',');
     sub->add_option("--recipe", a->recipe, "given (the structure's seeding order, default), auto (derived from the kinematics) or a recipe file");
-    sub->add_option("--runs", a->runs, "runs per configuration and strategy (default: the paper's 3 for cube, 4 for chair)");
+    sub->add_option("--runs", a->runs, "runs per configuration and strategy, 1 to 1000 (default: the paper's 3 for cube, 4 for chair)")->check(CLI::Range(1, 1000));
     sub->add_option("--seed", a->seed, "random seed of the shifted starts");
-    sub->add_option("--stall", a->stall, "K: a deadlock is K steps in which no metamodule comes closer to an active seed");
+    sub->add_option("--stall", a->stall, "K: a deadlock is K steps in which no metamodule comes closer to an active seed (1 to 10000)")->check(CLI::Range(1, 10000));
     sub->add_option("--clouds", a->clouds, "collision-cloud table (default: the one shipped with holon)");
     sub->add_option("--make-clouds", a->makeClouds, "compute the collision-cloud table from the kinematics, write it to FILE and stop");
-    sub->add_option("--threads", a->threads, "parallel runs (default: the machine's cores)");
+    sub->add_option("--threads", a->threads, "parallel runs, 1 to 64 (default: the machine's cores)")->check(threadsValidator());
+    sub->add_option("--timeout", a->timeout, "stop starting runs after this many seconds in all; the tables hold the runs made (exit 3; default: no limit)")->check(secondsValidator());
+    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB, checked before the runs (default 16384)")->check(memoryValidator());
     sub->add_option("--out", a->out, "directory for per-run traces (CSV), foot-trace pictures and assembly snapshots (SVG) (created if missing; its parent must exist)");
     sub->add_flag("--json", a->json, "print a JSON summary");
     sub->add_flag("--quiet", a->quiet, "no progress bar");
-    return [a] { return run(*a); };
+    return [a] { return withinMemory(a->memoryMiB, [&] { return run(*a); }); };
 }
 
 }  // namespace holon::cli

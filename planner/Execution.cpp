@@ -232,7 +232,9 @@ RunStats Execution::run(const RunObserver& observer) {
             stats_.stopped = "max-steps";
             break;
         }
-        if (options_.timeoutSeconds > 0 && (iteration & 255) == 0 && elapsed() > options_.timeoutSeconds) {
+        // A sync round is long enough to read the clock each time; async steps are short.
+        const bool clock = options_.scheduler == Scheduler::Sync || (iteration & 255) == 0;
+        if (options_.timeoutSeconds > 0 && clock && elapsed() > options_.timeoutSeconds) {
             stats_.stopped = "timeout";
             break;
         }

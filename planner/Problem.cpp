@@ -8,6 +8,7 @@
 #include "planner/Problem.h"
 
 #include "rules/Error.h"
+#include "rules/Limits.h"
 
 #include <algorithm>
 #include <numeric>
@@ -82,7 +83,7 @@ PlannerSchema PlannerSchema::of(const rules::System& system) {
     return s;
 }
 
-Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::optional<Vec> seed, std::uint64_t randomSeed) {
+Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::optional<Vec> seed, std::uint64_t randomSeed, std::uint64_t memoryBytes) {
     Problem p;
     p.model = &model;
     p.schema = PlannerSchema::of(model.system());
@@ -91,6 +92,18 @@ Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::o
         if (s->dimension != lattice.dimension())
             throw InputError("shape '" + s->name + "' is " + std::to_string(s->dimension) + "D but the lattice " + lattice.name() + " is " +
                              std::to_string(lattice.dimension()) + "D; give both shapes in the same dimension");
+    // The board's memory, checked before anything board-sized is made (the connectivity check too).
+    p.tables = std::make_unique<rules::RuleTables>(model, std::vector<std::uint32_t>{1u << p.schema.target});
+    Vec lo = start.cells[0], hi = start.cells[0];
+    for (const Shape* sh : {&start, &target})
+        for (Vec v : sh->cells) lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)}, hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
+    {
+        const std::uint64_t pad = 2 * static_cast<std::uint64_t>(BoxEngine::reach(*p.tables));
+        const auto side = [&](int l, int h) { return static_cast<std::uint64_t>(std::int64_t{h} - l + 1) + pad; };
+        const std::uint64_t cells = rules::checkedProduct({side(lo.x, hi.x), side(lo.y, hi.y), lattice.dimension() == 3 ? side(lo.z, hi.z) : 1});
+        rules::requireMemory(rules::checkedProduct({cells, planBytesPerCell(p.tables->shapeCount(), lattice.degree(), p.schema.resource >= 0)}), memoryBytes,
+                             "the plan's board (" + rules::countText(cells) + " cells: the box around start and target)");
+    }
     requireConnected(target, "target");
     requireConnected(start, "start");
     std::vector<Vec> both;
@@ -134,14 +147,10 @@ Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::o
     }
 
     // The board: the bounding box of start and target, padded so every rule reaches only board cells.
-    p.tables = std::make_unique<rules::RuleTables>(model, std::vector<std::uint32_t>{1u << schema.target});
     const auto& goal = model.system().goal;
     if (!goal || goal->kind != rules::Expr::Kind::All)
         throw InputError("system '" + model.system().name + "' needs a goal of the form all(P), as in 'goal all(F&target | _&!target)'; the planner stops when every cell satisfies P");
     p.goal = p.tables->compilePredicate(goal->pred, nullptr, {});
-    Vec lo = start.cells[0], hi = start.cells[0];
-    for (const Shape* sh : {&start, &target})
-        for (Vec v : sh->cells) lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)}, hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
     p.board = std::make_unique<Board>(lattice, lo, hi - lo + Vec{1, 1, 1}, BoxEngine::reach(*p.tables));
     const Board& board = *p.board;
     std::vector<std::uint8_t> combo(static_cast<std::size_t>(board.size()), BoxEngine::kOutside);

@@ -39,10 +39,25 @@ struct Problem {
     std::int64_t toCreate = 0, toDelete = 0;
 };
 
+/// Memory a plan keeps per cell of its board (the box around start and target, padded), for
+/// --memory: the problem's layout (target combo, start cell, connectivity marks), the run's state
+/// (planner/Execution.h: the cell, its enabled and listed bits, marks, stamp), one list entry per
+/// enabled instance at most, the allocator's and monitor's few bytes and, for a system with
+/// resources, the transport problem of the transfer bound (planner/Transport.h: a node and
+/// degree + 2 arcs per cell, with the network simplex's arrays). An upper bound: 1.3 to 4 times
+/// the peak measured on boards of 10^6 cells (README, "Exit codes and limits").
+constexpr std::uint64_t planBytesPerCell(int shapes, int degree, bool resources) {
+    const std::uint64_t words = (static_cast<std::uint64_t>(shapes) + 63) / 64;
+    const std::uint64_t run = 6 + 1 + 16 * words + 8 + 4 + 8 * static_cast<std::uint64_t>(shapes) + 16;
+    return run + (resources ? 100 * (static_cast<std::uint64_t>(degree) + 2) : 0);
+}
+
 /// Validates and lays out a problem; throws InputError (exit 2) for a target that is not
 /// connected, a start that is not connected, no overlap, a mass the target cannot hold, a shape of
 /// the wrong dimension for the lattice, a seed outside start and target, or a system whose goal is
-/// not of the form all(P) (the planner stops when every cell satisfies P).
-Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::optional<Vec> seed, std::uint64_t randomSeed);
+/// not of the form all(P) (the planner stops when every cell satisfies P); throws LimitError (exit
+/// 3) before the board is made when it needs more than `memoryBytes` (planBytesPerCell).
+Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::optional<Vec> seed, std::uint64_t randomSeed,
+                    std::uint64_t memoryBytes = UINT64_MAX);
 
 }  // namespace holon::planner

@@ -5,12 +5,17 @@
 #include "planner/Shape.h"
 
 #include "rules/Error.h"
+#include "rules/Limits.h"
+#include "rules/Parser.h"
+#include "rules/Picture.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <charconv>
+#include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 namespace holon::planner {
@@ -40,17 +45,44 @@ std::vector<int> numbers(std::string_view argument, std::string_view text, char 
     return out;
 }
 
-void checkSize(std::string_view argument, std::size_t cells, std::size_t maxCells) {
+/// What a shape's cell takes while it is made: the cell and its copy in the sorted or scaled shape.
+constexpr std::uint64_t kBytesPerCell = 2 * sizeof(Vec);
+
+/// Checked before a shape's cells are made: the count (computed with rules::checkedProduct, so a
+/// product past 2^64 fails too) against the planner's limit, their memory against --memory.
+void checkSize(std::string_view argument, std::uint64_t cells, std::size_t maxCells, std::uint64_t memoryBytes) {
     if (cells > maxCells)
-        bad(argument, std::to_string(cells) + " cells is more than the limit of " + std::to_string(maxCells) + "; choose a smaller shape or --scale");
+        bad(argument, rules::countText(cells) + " cells is more than the limit of " + std::to_string(maxCells) + "; choose a smaller shape or --scale");
+    rules::requireMemory(rules::checkedProduct({cells, kBytesPerCell}), memoryBytes, "shape '" + std::string(argument) + "' (" + std::to_string(cells) + " cells)");
 }
 
-Shape box(std::string_view argument, std::string_view dims, std::size_t maxCells) {
+/// A coordinate read from a file, refused beyond +-kMaxCoordinate (an int would wrap it silently).
+int coordinate(std::string_view argument, std::int64_t v, const std::string& where) {
+    if (v < -kMaxCoordinate || v > kMaxCoordinate)
+        bad(argument, where + ": coordinate " + std::to_string(v) + " is beyond +-" + std::to_string(kMaxCoordinate) + "; move the shape nearer the origin");
+    return static_cast<int>(v);
+}
+
+/// A file's cells each once: a cell listed twice is a mistake in the file, named by `where(k)` of
+/// both entries, not merged in silence.
+void requireDistinct(std::string_view argument, const std::vector<Vec>& cells, const std::function<std::string(std::size_t)>& where) {
+    std::vector<std::pair<Vec, std::size_t>> sorted(cells.size());
+    for (std::size_t k = 0; k < cells.size(); ++k) sorted[k] = {cells[k], k};
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t k = 1; k < sorted.size(); ++k)
+        if (sorted[k].first == sorted[k - 1].first) {
+            const Vec c = sorted[k].first;
+            bad(argument, where(sorted[k].second) + ": cell (" + std::to_string(c.x) + "," + std::to_string(c.y) + "," + std::to_string(c.z) +
+                              ") is listed twice (also " + where(sorted[k - 1].second) + "); list each cell once");
+        }
+}
+
+Shape box(std::string_view argument, std::string_view dims, std::size_t maxCells, std::uint64_t memoryBytes) {
     const std::vector<int> n = numbers(argument, dims, 'x', 2, 3);
     Shape s;
     s.dimension = static_cast<int>(n.size());
     const int depth = s.dimension == 3 ? n[2] : 1;
-    checkSize(argument, std::size_t(n[0]) * n[1] * depth, maxCells);
+    checkSize(argument, rules::checkedProduct({std::uint64_t(n[0]), std::uint64_t(n[1]), std::uint64_t(depth)}), maxCells, memoryBytes);
     s.cells.reserve(std::size_t(n[0]) * n[1] * depth);
     for (int x = 0; x < n[0]; ++x)
         for (int y = 0; y < n[1]; ++y)
@@ -59,10 +91,10 @@ Shape box(std::string_view argument, std::string_view dims, std::size_t maxCells
 }
 
 /// A T of width N: a bar N wide and ceil(N/3) thick on top of a centred stem ceil(N/3) wide and N tall.
-Shape tee(std::string_view argument, std::string_view size, std::size_t maxCells) {
+Shape tee(std::string_view argument, std::string_view size, std::size_t maxCells, std::uint64_t memoryBytes) {
     const int n = numbers(argument, size, ',', 1, 1)[0];
     const int t = (n + 2) / 3;
-    checkSize(argument, std::size_t(n) * t * 2, maxCells);
+    checkSize(argument, std::uint64_t(n) * t * 2, maxCells, memoryBytes);
     Shape s;
     const int stem = (n - t) / 2;
     for (int x = 0; x < n; ++x)
@@ -72,8 +104,8 @@ Shape tee(std::string_view argument, std::string_view size, std::size_t maxCells
 }
 
 /// Cells whose centre lies at distance r with r1 <= r <= r2 from the centre (R2, R2).
-Shape annulus(std::string_view argument, int r1, int r2, std::size_t maxCells) {
-    checkSize(argument, std::size_t(2 * r2 + 1) * (2 * r2 + 1), maxCells);
+Shape annulus(std::string_view argument, int r1, int r2, std::size_t maxCells, std::uint64_t memoryBytes) {
+    checkSize(argument, (2 * std::uint64_t(r2) + 1) * (2 * std::uint64_t(r2) + 1), maxCells, memoryBytes);
     Shape s;
     for (int x = 0; x <= 2 * r2; ++x)
         for (int y = 0; y <= 2 * r2; ++y) {
@@ -84,10 +116,10 @@ Shape annulus(std::string_view argument, int r1, int r2, std::size_t maxCells) {
 }
 
 /// A chair of size N: an NxN seat at height N on four 1x1 legs, a backrest N high on the back edge.
-Shape chair(std::string_view argument, std::string_view size, std::size_t maxCells) {
+Shape chair(std::string_view argument, std::string_view size, std::size_t maxCells, std::uint64_t memoryBytes) {
     const int n = numbers(argument, size, ',', 1, 1)[0];
     if (n < 2) bad(argument, "a chair needs N >= 2");
-    checkSize(argument, std::size_t(n) * n * 3, maxCells);
+    checkSize(argument, std::uint64_t(n) * n * 3, maxCells, memoryBytes);
     Shape s;
     s.dimension = 3;
     for (int x = 0; x < n; ++x)
@@ -101,10 +133,10 @@ Shape chair(std::string_view argument, std::string_view size, std::size_t maxCel
     return s;
 }
 
-Shape fromJson(std::string_view argument, std::istream& in) {
+Shape fromJson(std::string_view argument, const std::string& text) {
     nlohmann::json j;
     try {
-        j = nlohmann::json::parse(in);
+        j = nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
         bad(argument, std::string("not valid JSON: ") + e.what());
     }
@@ -112,47 +144,59 @@ Shape fromJson(std::string_view argument, std::istream& in) {
     if (!list.is_array()) bad(argument, "expected a JSON array of cells, or an object with a \"cells\" array");
     Shape s;
     s.dimension = 0;
+    const auto where = [](std::size_t i) { return "cell " + std::to_string(i); };
     for (std::size_t i = 0; i < list.size(); ++i) {
         const nlohmann::json& c = list[i];
         if (!c.is_array() || c.size() < 2 || c.size() > 3 || !std::all_of(c.begin(), c.end(), [](auto& v) { return v.is_number_integer(); }))
-            bad(argument, "cell " + std::to_string(i) + " is not [x, y] or [x, y, z] with integer coordinates");
+            bad(argument, where(i) + " is not [x, y] or [x, y, z] with integer coordinates");
         const int dim = static_cast<int>(c.size());
-        if (s.dimension && dim != s.dimension) bad(argument, "cell " + std::to_string(i) + " has " + std::to_string(dim) + " coordinates, earlier cells " + std::to_string(s.dimension));
+        if (s.dimension && dim != s.dimension) bad(argument, where(i) + " has " + std::to_string(dim) + " coordinates, earlier cells " + std::to_string(s.dimension));
         s.dimension = dim;
-        s.cells.push_back({c[0].get<int>(), c[1].get<int>(), dim == 3 ? c[2].get<int>() : 0});
+        const auto at = [&](std::size_t k) {  // an unsigned beyond int64 is beyond the range too
+            return coordinate(argument, c[k].is_number_unsigned() && c[k].get<std::uint64_t>() > std::uint64_t(INT64_MAX) ? INT64_MAX : c[k].get<std::int64_t>(), where(i));
+        };
+        s.cells.push_back({at(0), at(1), dim == 3 ? at(2) : 0});
     }
     if (!s.dimension) s.dimension = 2;
+    requireDistinct(argument, s.cells, where);
     return s;
 }
 
 /// Lines "x y z"; '#' starts a comment.
-Shape fromVoxels(std::string_view argument, std::istream& in) {
+Shape fromVoxels(std::string_view argument, const std::string& text) {
     Shape s;
     s.dimension = 3;
+    std::istringstream in(text);
     std::string line;
+    std::vector<int> lineOf;
     for (int number = 1; std::getline(in, line); ++number) {
         if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
         std::istringstream fields(line);
-        Vec v;
+        std::int64_t x = 0, y = 0, z = 0;
         std::string extra;
-        if (!(fields >> v.x)) continue;
-        if (!(fields >> v.y >> v.z) || (fields >> extra))
-            bad(argument, "line " + std::to_string(number) + ": expected three integers 'x y z'");
-        s.cells.push_back(v);
+        if (!(fields >> extra)) continue;
+        fields.clear(), fields.seekg(0);
+        const std::string where = "line " + std::to_string(number);
+        if (!(fields >> x >> y >> z) || (fields >> extra)) bad(argument, where + ": expected three integers 'x y z'");
+        s.cells.push_back({coordinate(argument, x, where), coordinate(argument, y, where), coordinate(argument, z, where)});
+        lineOf.push_back(number);
     }
+    requireDistinct(argument, s.cells, [&](std::size_t k) { return "line " + std::to_string(lineOf[k]); });
     return s;
 }
 
-/// ASCII art: '#', 'X', 'x', 'O', 'o', '@', '*' or '1' is a cell, '.', ' ', '_' or '0' is empty;
-/// the first line is the top row.
-Shape fromAscii(std::string_view argument, std::istream& in) {
+/// ASCII art (rules/Picture.h: rows equally wide): '#', 'X', 'x', 'O', 'o', '@', '*' or '1' is a
+/// cell, '.', ' ', '_' or '0' is empty; the first line is the top row.
+Shape fromAscii(std::string_view argument, const std::string& text) {
     std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        lines.push_back(line);
+    try {
+        lines = rules::pictureRows(text, true);
+    } catch (const InputError& e) {
+        bad(argument, e.what());
     }
-    while (!lines.empty() && lines.back().find_first_not_of(' ') == std::string::npos) lines.pop_back();
     Shape s;
+    if (lines.size() > std::size_t(kMaxCoordinate) || (!lines.empty() && lines[0].size() > std::size_t(kMaxCoordinate)))
+        bad(argument, "the picture is larger than " + std::to_string(kMaxCoordinate) + " cells across");
     const int rows = static_cast<int>(lines.size());
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < static_cast<int>(lines[r].size()); ++c) {
@@ -167,16 +211,16 @@ Shape fromAscii(std::string_view argument, std::istream& in) {
 
 Shape fromFile(std::string_view argument) {
     const std::string path(argument);
-    std::ifstream in(path);
-    if (!in) {
+    if (!std::ifstream(path)) {
         std::string known;
         for (const auto& [name, what] : shapeGenerators()) known += (known.empty() ? "" : ", ") + name;
         bad(argument, "neither a shape generator (" + known + ") nor a readable file");
     }
+    const std::string text = rules::readTextFile(path);
     auto endsWith = [&](std::string_view suffix) { return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0; };
-    if (endsWith(".json")) return fromJson(argument, in);
-    if (endsWith(".xyz") || endsWith(".vox")) return fromVoxels(argument, in);
-    return fromAscii(argument, in);
+    if (endsWith(".json")) return fromJson(argument, text);
+    if (endsWith(".xyz") || endsWith(".vox")) return fromVoxels(argument, text);
+    return fromAscii(argument, text);
 }
 
 }  // namespace
@@ -193,11 +237,17 @@ const std::vector<std::pair<std::string, std::string>>& shapeGenerators() {
     return list;
 }
 
-Shape scaled(const Shape& shape, int k, std::size_t maxCells) {
+Shape scaled(const Shape& shape, int k, std::size_t maxCells, std::uint64_t memoryBytes) {
     if (k < 1) bad(shape.name, "--scale must be at least 1");
     if (k == 1) return shape;
-    const std::size_t block = shape.dimension == 3 ? std::size_t(k) * k * k : std::size_t(k) * k;
-    checkSize(shape.name, shape.cells.size() * block, maxCells);
+    const std::uint64_t block = rules::checkedProduct({std::uint64_t(k), std::uint64_t(k), shape.dimension == 3 ? std::uint64_t(k) : 1});
+    checkSize(shape.name, rules::checkedProduct({shape.cells.size(), block}), maxCells, memoryBytes);
+    // Every scaled coordinate (c * k + k - 1) stays within kMaxCoordinate, so no int wraps.
+    for (Vec c : shape.cells)
+        for (int v : {c.x, c.y, c.z})
+            if (std::int64_t(std::abs(v) + 1) * k > kMaxCoordinate)
+                bad(shape.name, "--scale " + std::to_string(k) + " puts cell (" + std::to_string(c.x) + "," + std::to_string(c.y) + "," + std::to_string(c.z) +
+                                    ") beyond +-" + std::to_string(kMaxCoordinate) + "; choose a smaller --scale or move the shape nearer the origin");
     Shape out;
     out.dimension = shape.dimension, out.name = shape.name;
     out.cells.reserve(shape.cells.size() * block);
@@ -210,26 +260,25 @@ Shape scaled(const Shape& shape, int k, std::size_t maxCells) {
     return out;
 }
 
-Shape parseShape(std::string_view argument, int scale, std::size_t maxCells) {
+Shape parseShape(std::string_view argument, int scale, std::uint64_t memoryBytes, std::size_t maxCells) {
     const std::size_t colon = argument.find(':');
     const std::string_view kind = colon == std::string_view::npos ? std::string_view() : argument.substr(0, colon);
     const std::string_view rest = colon == std::string_view::npos ? std::string_view() : argument.substr(colon + 1);
     Shape s;
-    if (kind == "box") s = box(argument, rest, maxCells);
-    else if (kind == "T") s = tee(argument, rest, maxCells);
-    else if (kind == "disc") s = annulus(argument, 0, numbers(argument, rest, ',', 1, 1)[0], maxCells);
+    if (kind == "box") s = box(argument, rest, maxCells, memoryBytes);
+    else if (kind == "T") s = tee(argument, rest, maxCells, memoryBytes);
+    else if (kind == "disc") s = annulus(argument, 0, numbers(argument, rest, ',', 1, 1)[0], maxCells, memoryBytes);
     else if (kind == "ring") {
         const std::vector<int> r = numbers(argument, rest, ',', 2, 2);
         if (r[0] >= r[1]) bad(argument, "the inner radius must be smaller than the outer one");
-        s = annulus(argument, r[0], r[1], maxCells);
-    } else if (kind == "chair") s = chair(argument, rest, maxCells);
+        s = annulus(argument, r[0], r[1], maxCells, memoryBytes);
+    } else if (kind == "chair") s = chair(argument, rest, maxCells, memoryBytes);
     else s = fromFile(argument);
     s.name = std::string(argument);
-    std::sort(s.cells.begin(), s.cells.end());
-    s.cells.erase(std::unique(s.cells.begin(), s.cells.end()), s.cells.end());
+    std::sort(s.cells.begin(), s.cells.end());  // distinct: generators make each cell once, files are checked
     if (s.cells.empty()) bad(argument, "the shape has no cells");
-    checkSize(argument, s.cells.size(), maxCells);
-    return scaled(s, scale, maxCells);
+    checkSize(argument, s.cells.size(), maxCells, memoryBytes);
+    return scaled(s, scale, maxCells, memoryBytes);
 }
 
 std::vector<std::vector<Vec>> components(const std::vector<Vec>& cells, int dimension) {

@@ -9,6 +9,7 @@
 
 #include "rules/Error.h"
 #include "rules/Parser.h"
+#include "rules/Picture.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -21,17 +22,6 @@ namespace {
 nlohmann::json position(const Region& region, Vec v) { return pointJson(region.lattice(), v); }
 
 std::string posText(const nlohmann::json& at) { return at.dump(); }
-
-std::vector<std::string> lines(const std::string& text) {
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        out.push_back(line);
-    }
-    while (!out.empty() && out.back().find_first_not_of(" \t") == std::string::npos) out.pop_back();
-    return out;
-}
 
 /// The cells of each ASCII row, in order: square rows are x = 0..W-1; hex rows are the cells of
 /// row r from west to east.
@@ -113,6 +103,10 @@ Configuration configFromJson(const Interpreter& in, const nlohmann::json& j, std
     auto cellIndex = [&](const nlohmann::json& at) {
         if (!at.is_array() || static_cast<int>(at.size()) != dim || !std::all_of(at.begin(), at.end(), [](auto& x) { return x.is_number_integer(); }))
             throw InputError("a cell position must be " + std::string(dim == 3 ? "[x, y, z]" : "[x, y]") + ", found " + posText(at));
+        // A coordinate beyond an int lies outside every region (get<int> would wrap it inside).
+        for (const auto& x : at)
+            if ((x.is_number_unsigned() && x.get<std::uint64_t>() > std::uint64_t(INT32_MAX)) || x.get<std::int64_t>() < INT32_MIN || x.get<std::int64_t>() > INT32_MAX)
+                throw InputError("cell " + posText(at) + " lies outside region " + region.spec());
         Vec v{at[0].get<int>(), at[1].get<int>(), dim == 3 ? at[2].get<int>() : 0};
         const int i = region.indexOf(v);
         if (i < 0) throw InputError("cell " + posText(at) + " lies outside region " + region.spec());
@@ -193,7 +187,7 @@ Configuration configFromAscii(const Interpreter& in, const std::string& text) {
     const Alphabet& alphabet = in.model().alphabet();
     Configuration c = in.empty();
     const auto rows = asciiRows(region);
-    const auto textLines = lines(text);
+    const auto textLines = pictureRows(text, region.lattice().kind() != LatticeKind::Hex2D);
     if (textLines.size() > rows.size())
         throw InputError("the picture has " + std::to_string(textLines.size()) + " rows; region " + region.spec() + " has " + std::to_string(rows.size()));
     for (std::size_t r = 0; r < textLines.size(); ++r) {
@@ -216,7 +210,7 @@ Configuration configFromAscii(const Interpreter& in, const std::string& text) {
 std::vector<bool> maskFromAscii(const Region& region, const std::string& text) {
     std::vector<bool> mask(region.size(), false);
     const auto rows = asciiRows(region);
-    const auto textLines = lines(text);
+    const auto textLines = pictureRows(text, region.lattice().kind() != LatticeKind::Hex2D);
     if (textLines.size() > rows.size()) throw InputError("the mask has more rows than region " + region.spec());
     for (std::size_t r = 0; r < textLines.size(); ++r) {
         const auto tokens = rowTokens(region, textLines[r]);

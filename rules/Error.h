@@ -1,7 +1,8 @@
 #pragma once
-// The two exception types holon throws: InputError for bad input or misuse (the CLI's exit code 2,
-// with a message that names the place and the fix), InternalError for a bug in holon itself (exit
-// code 4, with a request for a report; never shown as bad input).
+// The exception types holon throws: InputError for bad input or misuse (the CLI's exit code 2,
+// with a message that names the place and the fix), LimitError for a job over a limit the user can
+// raise (exit code 3), InternalError for a bug in holon itself (exit code 4, with a request for a
+// report; never shown as bad input).
 
 #include <stdexcept>
 #include <string>
@@ -11,6 +12,13 @@ namespace holon {
 class InputError : public std::runtime_error {
 public:
     explicit InputError(const std::string& message) : std::runtime_error(message) {}
+};
+
+/// A job refused or stopped by a limit the user set or can raise (--memory, --timeout): exit code 3,
+/// with a message that names the limit.
+class LimitError : public std::runtime_error {
+public:
+    explicit LimitError(const std::string& message) : std::runtime_error(message) {}
 };
 
 class InternalError : public std::logic_error {

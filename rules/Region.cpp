@@ -4,6 +4,7 @@
 
 #include "rules/Region.h"
 
+#include "rules/Limits.h"
 #include "rules/Error.h"
 
 #include <algorithm>
@@ -106,28 +107,28 @@ Region Region::parse(std::string_view spec, std::size_t maxCells) {
     const auto colon = spec.find(':');
     const std::string_view kind = spec.substr(0, colon);
     const std::string_view rest = colon == std::string_view::npos ? std::string_view{} : spec.substr(colon + 1);
-    auto checkSize = [&](std::size_t cells) {
+    auto checkSize = [&](std::uint64_t cells) {
         if (cells > maxCells)
-            throw InputError("region '" + std::string(spec) + "' has " + std::to_string(cells) +
+            throw InputError("region '" + std::string(spec) + "' has " + countText(cells) +
                              " cells, more than the limit of " + std::to_string(maxCells) + "; choose a smaller region");
     };
     if (colon == std::string_view::npos || rest.empty())
         throw InputError("bad region '" + std::string(spec) + "': write square:WxH, cubic:WxHxD or hex:rR");
     if (kind == "square") {
         auto d = parseDims(rest, spec, 2);
-        checkSize(static_cast<std::size_t>(d[0]) * d[1]);
+        checkSize(checkedProduct({std::uint64_t(d[0]), std::uint64_t(d[1])}));
         return box(Lattice::get(LatticeKind::Square2D), {d[0], d[1], 1});
     }
     if (kind == "cubic") {
         auto d = parseDims(rest, spec, 3);
-        checkSize(static_cast<std::size_t>(d[0]) * d[1] * d[2]);
+        checkSize(checkedProduct({std::uint64_t(d[0]), std::uint64_t(d[1]), std::uint64_t(d[2])}));
         return box(Lattice::get(LatticeKind::Cubic3D), {d[0], d[1], d[2]});
     }
     if (kind == "hex") {
         if (rest.front() != 'r')
             throw InputError("bad region '" + std::string(spec) + "': a hexagon is written hex:rR, as in hex:r2");
         auto d = parseDims(rest.substr(1), spec, 1);
-        checkSize(3u * static_cast<std::size_t>(d[0]) * (d[0] + 1) + 1);
+        checkSize(3u * static_cast<std::uint64_t>(d[0]) * (static_cast<std::uint64_t>(d[0]) + 1) + 1);  // below 2^64 for any int R
         return hexagon(d[0]);
     }
     throw InputError("unknown lattice '" + std::string(kind) + "' in region '" + std::string(spec) +

@@ -19,6 +19,8 @@ Board makeBoard(int n) {
 
 }  // namespace
 
+std::int64_t HexArray::boardSize(int n) { return makeBoard(n).size(); }
+
 HexArray::HexArray(int n) : n_(n), board_(makeBoard(n)), inside_(board_.size(), 0) {
     for (int r = 0; r < n; ++r) {
         const int q0 = -(r / 2);

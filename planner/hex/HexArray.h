@@ -23,6 +23,8 @@ class HexArray {
 public:
     static constexpr int kPad = 5;  // the farthest pattern read (a flexible creation's third-ring cell and its neighbours) is 4 cells away
     explicit HexArray(int n);
+    /// The board cells an array of side n takes, without making it (for a memory estimate).
+    static std::int64_t boardSize(int n);
 
     int n() const { return n_; }
     const Board& board() const { return board_; }

@@ -7,6 +7,8 @@
 #include "planner/hex/HexShapes.h"
 
 #include "rules/Error.h"
+#include "rules/Parser.h"
+#include "rules/Picture.h"
 
 #include <cmath>
 #include <fstream>
@@ -36,23 +38,22 @@ Inside namedShape(const std::string& name, double a) {
 }
 
 std::vector<std::uint8_t> readPicture(const HexArray& array, const std::string& path, const std::string& role) {
-    std::ifstream in(path);
-    if (!in) throw InputError(role + " '" + path + "': not square, T, rectangle or circle, and no such file");
+    if (!std::ifstream(path)) throw InputError(role + " '" + path + "': not square, T, rectangle or circle, and no such file");
     std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);)
-        if (!line.empty()) lines.push_back(line);
-    const int n = array.n();
-    if (static_cast<int>(lines.size()) != n)
-        throw InputError(role + " '" + path + "': " + std::to_string(lines.size()) + " rows, but --size is " + std::to_string(n) + "; draw N rows of N characters");
-    std::vector<std::uint8_t> shape(array.size(), 0);
-    for (int r = 0; r < n; ++r) {
-        if (static_cast<int>(lines[r].size()) < n)
-            throw InputError(path + ":" + std::to_string(r + 1) + ": " + std::to_string(lines[r].size()) + " characters, expected " + std::to_string(n));
-        for (int i = 0; i < n; ++i) shape[array.pictureIndex(r, i)] = lines[r][i] == '#';
+    try {
+        lines = rules::pictureRows(rules::readTextFile(path), true);
+    } catch (const InputError& e) {
+        throw InputError(role + " '" + path + "': " + e.what());
     }
+    const int n = array.n();
+    if (static_cast<int>(lines.size()) != n || static_cast<int>(lines[0].size()) != n)
+        throw InputError(role + " '" + path + "': " + std::to_string(lines.size()) + " rows of " + std::to_string(lines.empty() ? 0 : lines[0].size()) +
+                         " characters, but --size is " + std::to_string(n) + "; draw N rows of N characters");
+    std::vector<std::uint8_t> shape(array.size(), 0);
+    for (int r = 0; r < n; ++r)
+        for (int i = 0; i < n; ++i) shape[array.pictureIndex(r, i)] = lines[r][i] == '#';
     return shape;
 }
-
 
 }  // namespace
 

@@ -12,7 +12,11 @@
 
 namespace holon::planner::hex {
 
-SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame) {
+std::uint64_t sculptBytes(const SculptSetup& setup) {
+    return static_cast<std::uint64_t>(HexArray::boardSize(setup.size)) * 96;
+}
+
+SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame, const std::function<bool()>& stop) {
     const auto begin = std::chrono::steady_clock::now();
     const HexArray array(setup.size);
     const auto source = sculptShape(array, setup.from, "--from"), target = sculptShape(array, setup.to, "--to");
@@ -24,7 +28,8 @@ SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const 
     result.holeBudget = sculptor.holeBudget();
     result.triRegions = static_cast<int>(plan.regions.size());
     result.series.reserve(setup.steps);
-    for (int t = 0; t < setup.steps; ++t) {
+    int t = 0;
+    for (; t < setup.steps && !(stop && stop()); ++t) {
         sculptor.step();
         const SculptSample s{static_cast<float>(sculptor.completeness()), static_cast<float>(sculptor.stability()),
                              static_cast<float>(sculptor.compliance()), static_cast<std::int32_t>(sculptor.holes())};
@@ -34,7 +39,7 @@ SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const 
         result.maxCompliance = std::max<double>(result.maxCompliance, s.compliance);
         if (frame) frame(sculptor);
     }
-    result.steps = setup.steps;
+    result.steps = t;
     result.finalCompliance = sculptor.compliance();
     result.endHoles = sculptor.holes();
     result.islands = sculptor.islands();

@@ -31,8 +31,15 @@ struct SculptSetup {
     SculptOptions options;
 };
 
-/// Runs one experiment. `frame(sculptor)` is called after every timestep (may be empty).
-SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame = {});
+/// Memory one experiment's sculptor keeps while it runs, for --memory: the array's board cells,
+/// each with the sculptor's per-cell state (shapes, holes, tri-regions, search marks: 50 to 65
+/// bytes measured at N = 800, counted as 96). Its series takes a SculptSample per timestep more.
+std::uint64_t sculptBytes(const SculptSetup& setup);
+
+/// Runs one experiment. `frame(sculptor)` is called after every timestep (may be empty); `stop`
+/// (may be empty) is asked before each: once it says so the run ends there, result.steps telling
+/// how many timesteps it ran.
+SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame = {}, const std::function<bool()>& stop = {});
 
 /// An SVG picture of the ensemble: modules, hole cells, and the target's outline points left empty.
 std::string sculptSvg(const HoleSculptor& sculptor);
