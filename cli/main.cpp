@@ -5,6 +5,7 @@
 
 #include "cli/Commands.h"
 #include "rules/Error.h"
+#include "rules/Escape.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -108,13 +109,13 @@ int runHolon(int argc, char** argv) {
         for (auto& [sub, run] : runs)
             if (sub->parsed()) return run();
     } catch (const holon::InputError& e) {
-        std::cerr << "holon: error: " << e.what() << '\n';
+        std::cerr << "holon: error: " << holon::rules::escapeText(e.what(), true) << '\n';
         return holon::cli::kExitBadInput;
     } catch (const std::bad_alloc&) {
         std::cerr << "holon: error: out of memory before the job could finish; raise the machine's memory or lower --memory / --max-states\n";
         return holon::cli::kExitUndecided;
     } catch (const std::exception& e) {
-        std::cerr << "holon: internal error: " << e.what() << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+        std::cerr << "holon: internal error: " << holon::rules::escapeText(e.what(), true) << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
         return holon::cli::kExitInternal;
     }
     return holon::cli::kExitInternal;
