@@ -5,12 +5,13 @@
 #include "planner/Shape.h"
 
 #include "rules/Error.h"
+#include "rules/Parser.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <charconv>
-#include <fstream>
+#include <filesystem>
 #include <sstream>
 
 namespace holon::planner {
@@ -167,12 +168,13 @@ Shape fromAscii(std::string_view argument, std::istream& in) {
 
 Shape fromFile(std::string_view argument) {
     const std::string path(argument);
-    std::ifstream in(path);
-    if (!in) {
+    std::error_code missing;
+    if (!std::filesystem::exists(path, missing)) {
         std::string known;
         for (const auto& [name, what] : shapeGenerators()) known += (known.empty() ? "" : ", ") + name;
         bad(argument, "neither a shape generator (" + known + ") nor a readable file");
     }
+    std::istringstream in(rules::readTextFile(path));  // bounded: /dev/zero stops with a message
     auto endsWith = [&](std::string_view suffix) { return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0; };
     if (endsWith(".json")) return fromJson(argument, in);
     if (endsWith(".xyz") || endsWith(".vox")) return fromVoxels(argument, in);

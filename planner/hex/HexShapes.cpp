@@ -7,10 +7,12 @@
 #include "planner/hex/HexShapes.h"
 
 #include "rules/Error.h"
+#include "rules/Parser.h"
 
 #include <cmath>
-#include <fstream>
+#include <filesystem>
 #include <functional>
+#include <sstream>
 
 namespace holon::planner::hex {
 
@@ -36,8 +38,9 @@ Inside namedShape(const std::string& name, double a) {
 }
 
 std::vector<std::uint8_t> readPicture(const HexArray& array, const std::string& path, const std::string& role) {
-    std::ifstream in(path);
-    if (!in) throw InputError(role + " '" + path + "': not square, T, rectangle or circle, and no such file");
+    std::error_code missing;
+    if (!std::filesystem::exists(path, missing)) throw InputError(role + " '" + path + "': not square, T, rectangle or circle, and no such file");
+    std::istringstream in(rules::readTextFile(path));  // bounded: /dev/zero stops with a message
     std::vector<std::string> lines;
     for (std::string line; std::getline(in, line);)
         if (!line.empty()) lines.push_back(line);
