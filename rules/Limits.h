@@ -2,7 +2,8 @@
 // The front end's limits, in one place. Each keeps a hostile or mistaken input (a script gone
 // wrong, a fuzzer, /dev/zero) from crashing holon or exhausting the machine, and each is reported
 // with the place and the limit, never silently applied. They are far above what a design needs:
-// the bundled library nests expressions 5 deep, reads rules of at most 19 cells and 16 fields.
+// the bundled library's longest expression has 5 operators, its rules at most 19 cells, its
+// systems at most 4 fields.
 
 #include <cstddef>
 
