@@ -4,6 +4,7 @@
 
 #include "cli/Commands.h"
 #include "rules/Error.h"
+#include "rules/Escape.h"
 
 #include <iostream>
 #include <map>
@@ -42,16 +43,16 @@ int runHolon(int argc, char** argv) {
         for (auto& [sub, run] : runs)
             if (sub->parsed()) return run();
     } catch (const holon::InputError& e) {
-        std::cerr << "holon: error: " << e.what() << '\n';
+        std::cerr << "holon: error: " << rules::escapeText(e.what(), true) << '\n';
         return kExitBadInput;
     } catch (const LimitError& e) {
-        std::cerr << "holon: limit: " << e.what() << '\n';
+        std::cerr << "holon: limit: " << rules::escapeText(e.what(), true) << '\n';
         return kExitUndecided;
     } catch (const std::bad_alloc&) {
         std::cerr << "holon: error: out of memory before the job could finish; raise the machine's memory or lower --memory / --max-states\n";
         return kExitUndecided;
     } catch (const std::exception& e) {
-        std::cerr << "holon: internal error: " << e.what() << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+        std::cerr << "holon: internal error: " << rules::escapeText(e.what(), true) << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
         return kExitInternal;
     }
     return kExitInternal;

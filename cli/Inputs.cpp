@@ -14,7 +14,7 @@
 
 namespace holon::cli {
 
-std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings) {
+rules::LoadOptions loadOptions(const std::vector<std::string>& noWarnings) {
     rules::LoadOptions load;
     for (const std::string& w : noWarnings) {
         const std::string name = w.rfind("no-", 0) == 0 ? w.substr(3) : w;
@@ -23,7 +23,11 @@ std::optional<rules::System> loadRules(const std::string& file, const std::vecto
             throw InputError("unknown warning '" + w + "'; try -W no-unused-value");
         load.silencedWarnings.push_back(name);
     }
-    return rules::loadSystem(file, std::cerr, load);
+    return load;
+}
+
+std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings) {
+    return rules::loadSystem(file, std::cerr, loadOptions(noWarnings));
 }
 
 std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::vector<std::string>& specs, std::uint32_t* named) {
@@ -41,7 +45,11 @@ std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::v
         std::vector<bool> mask(region.size(), path == "all");
         if (path != "none" && path != "all") {
             try {
-                mask = rules::maskFromAscii(region, rules::readTextFile(path));
+                const std::string text = rules::readTextFile(path);
+                // An empty file is a mistake (a failed redirection), not a way to say "nowhere".
+                if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+                    throw InputError("the file is empty; an input that holds nowhere is given as " + name + "=none");
+                mask = rules::maskFromAscii(region, text);
             } catch (const InputError& e) {
                 throw InputError(path + ": " + e.what());
             }

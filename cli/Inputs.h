@@ -3,6 +3,7 @@
 
 #include "checker/Trace.h"
 #include "rules/Interpreter.h"
+#include "rules/Library.h"
 
 #include <cstdint>
 #include <optional>
@@ -11,8 +12,9 @@
 
 namespace holon::cli {
 
-/// Parses a rule file, printing diagnostics to stderr; nothing when it has errors. `noWarnings`
-/// are -W arguments ("no-unused-value"); an unknown name throws InputError.
+/// The load options of -W arguments ("no-unused-value"); an unknown name throws InputError.
+rules::LoadOptions loadOptions(const std::vector<std::string>& noWarnings);
+/// Parses a rule file, printing diagnostics to stderr; nothing when it has errors.
 std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings);
 /// Per-cell input bits from NAME=FILE arguments (FILE: an ASCII mask; `none`: the input holds
 /// nowhere, `all`: everywhere, so a file by either name is written ./none). `named`, if given,

@@ -5,6 +5,8 @@
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
 #include "rules/Diagnostics.h"
+#include "rules/Error.h"
+#include "rules/Escape.h"
 #include "rules/Library.h"
 #include "rules/Model.h"
 #include "rules/Printer.h"
@@ -159,10 +161,18 @@ Run addRulesCommand(CLI::App& app) {
                                             "unmassed-value, duplicate-rule, no-rules)");
     sub->add_flag("--json", opts->json, "print the summaries as JSON");
     return [opts]() {
+        const rules::LoadOptions load = loadOptions(opts->noWarnings);
         nlohmann::ordered_json all = nlohmann::ordered_json::array();
         int failed = 0;
         for (const std::string& file : opts->files) {
-            auto system = loadRules(file, opts->noWarnings);
+            // A file that cannot be read is reported like one with errors: the others still get
+            // their summaries, and the exit code says something failed.
+            std::optional<rules::System> system;
+            try {
+                system = rules::loadSystem(file, std::cerr, load);
+            } catch (const InputError& e) {
+                std::cerr << "holon: error: " << rules::escapeText(e.what(), true) << '\n';
+            }
             if (!system) {
                 ++failed;
                 continue;

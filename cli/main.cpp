@@ -5,6 +5,7 @@
 
 #include "cli/Commands.h"
 #include "rules/Error.h"
+#include "rules/Escape.h"
 
 #include <cerrno>
 #include <cstdio>

@@ -3,11 +3,14 @@
 // one configuration has one text. ASCII art draws square regions row by row and hex regions as
 // offset rows (row r indented by |r| spaces, cells separated by a space) so the picture looks like
 // the lattice. An ITF trace (checker/Trace.cpp writes them) is read back one state at a time, so a
-// counterexample can be explored again from any of its states.
+// counterexample can be explored again from any of its states. Messages quote at most a short
+// excerpt of a JSON value, and JSON nested deeper than any configuration is refused before it is
+// parsed (serialising it for a message, or reading it, would recurse once per level).
 
 #include "rules/ConfigIo.h"
 
 #include "rules/Error.h"
+#include "rules/Escape.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
 
@@ -21,7 +24,33 @@ namespace {
 
 nlohmann::json position(const Region& region, Vec v) { return pointJson(region.lattice(), v); }
 
-std::string posText(const nlohmann::json& at) { return at.dump(); }
+/// A JSON value, or a name read from one, as a message quotes it.
+std::string quote(const nlohmann::json& v) { return excerpt(v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)); }
+std::string quote(const std::string& name) { return excerpt(name); }
+
+/// Refuses JSON nested deeper than kMaxJsonDepth, with the line and column where it gets too deep.
+void checkJsonDepth(const std::string& text) {
+    int depth = 0, line = 1;
+    std::size_t lineStart = 0;
+    bool inString = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (c == '\\') ++i;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth)
+                throw InputError("line " + std::to_string(line) + ", column " + std::to_string(i - lineStart + 1) + ": JSON nested deeper than " +
+                                 std::to_string(kMaxJsonDepth) + " levels; a configuration or a trace is at most 6 deep");
+        } else if (c == ']' || c == '}') {
+            --depth;
+        } else if (c == '\n') {
+            ++line, lineStart = i + 1;
+        }
+    }
+}
 
 /// The cells of each ASCII row, in order: square rows are x = 0..W-1; hex rows are the cells of
 /// row r from west to east.
@@ -102,59 +131,59 @@ Configuration configFromJson(const Interpreter& in, const nlohmann::json& j, std
     const int dim = region.lattice().dimension();
     auto cellIndex = [&](const nlohmann::json& at) {
         if (!at.is_array() || static_cast<int>(at.size()) != dim || !std::all_of(at.begin(), at.end(), [](auto& x) { return x.is_number_integer(); }))
-            throw InputError("a cell position must be " + std::string(dim == 3 ? "[x, y, z]" : "[x, y]") + ", found " + posText(at));
+            throw InputError("a cell position must be " + std::string(dim == 3 ? "[x, y, z]" : "[x, y]") + ", found " + quote(at));
         // A coordinate beyond an int lies outside every region (get<int> would wrap it inside).
         for (const auto& x : at)
             if ((x.is_number_unsigned() && x.get<std::uint64_t>() > std::uint64_t(INT32_MAX)) || x.get<std::int64_t>() < INT32_MIN || x.get<std::int64_t>() > INT32_MAX)
-                throw InputError("cell " + posText(at) + " lies outside region " + region.spec());
+                throw InputError("cell " + quote(at) + " lies outside region " + region.spec());
         Vec v{at[0].get<int>(), at[1].get<int>(), dim == 3 ? at[2].get<int>() : 0};
         const int i = region.indexOf(v);
-        if (i < 0) throw InputError("cell " + posText(at) + " lies outside region " + region.spec());
+        if (i < 0) throw InputError("cell " + quote(at) + " lies outside region " + region.spec());
         return i;
     };
     if (!j.is_object()) throw InputError("a configuration is a JSON object with \"cells\"");
     if (j.contains("region") && j["region"].is_string() && j["region"].get<std::string>() != region.spec())
-        throw InputError("the configuration is for region " + j["region"].get<std::string>() + ", not " + region.spec());
+        throw InputError("the configuration is for region " + quote(j["region"].get<std::string>()) + ", not " + region.spec());
     Configuration c = in.empty();
     if (inputsNamed) *inputsNamed = 0;
     if (!j.contains("cells") || !j["cells"].is_array()) throw InputError("a configuration needs a \"cells\" array");
     for (const auto& cell : j["cells"]) {
         if (!cell.is_object() || !cell.contains("at")) throw InputError("each cell is an object with \"at\" and its fields");
         const int i = cellIndex(cell["at"]);
-        if (c.cells[i]) throw InputError("cell " + posText(cell["at"]) + " is listed twice");
+        if (c.cells[i]) throw InputError("cell " + quote(cell["at"]) + " is listed twice");
         std::vector<int> fields(system.fields.size(), kAbsent);
         for (const auto& [key, value] : cell.items()) {
             if (key == "at") continue;
             const int f = system.fieldIndex(key);
-            if (f < 0) throw InputError("cell " + posText(cell["at"]) + ": system '" + system.name + "' has no field '" + key + "'");
+            if (f < 0) throw InputError("cell " + quote(cell["at"]) + ": system '" + system.name + "' has no field '" + quote(key) + "'");
             const Field& field = system.fields[f];
             if (field.kind == FieldKind::Int) {
-                if (!value.is_number_integer()) throw InputError("cell " + posText(cell["at"]) + ": field '" + key + "' holds an integer");
+                if (!value.is_number_integer()) throw InputError("cell " + quote(cell["at"]) + ": field '" + quote(key) + "' holds an integer");
                 fields[f] = value.get<int>();
                 continue;
             }
-            if (!value.is_string()) throw InputError("cell " + posText(cell["at"]) + ": field '" + key + "' holds a name");
+            if (!value.is_string()) throw InputError("cell " + quote(cell["at"]) + ": field '" + quote(key) + "' holds a name");
             const std::string name = value.get<std::string>();
             if (field.kind == FieldKind::Dir) {
                 auto d = region.lattice().directionByName(name);
-                if (!d && name != "none") throw InputError("cell " + posText(cell["at"]) + ": '" + name + "' is not a direction of " + region.lattice().name());
+                if (!d && name != "none") throw InputError("cell " + quote(cell["at"]) + ": '" + quote(name) + "' is not a direction of " + region.lattice().name());
                 fields[f] = d ? *d : kAbsent;
             } else {
                 auto it = std::find(field.values.begin(), field.values.end(), name);
-                if (it == field.values.end()) throw InputError("cell " + posText(cell["at"]) + ": '" + name + "' is not a state of field '" + key + "'");
+                if (it == field.values.end()) throw InputError("cell " + quote(cell["at"]) + ": '" + quote(name) + "' is not a state of field '" + quote(key) + "'");
                 fields[f] = static_cast<int>(it - field.values.begin());
             }
         }
         const int value = model.alphabet().find(fields);
-        if (value <= 0) throw InputError("cell " + posText(cell["at"]) + ": these fields do not make a state of '" + system.name + "' (a field is missing, or set where its 'if' does not hold)");
+        if (value <= 0) throw InputError("cell " + quote(cell["at"]) + ": these fields do not make a state of '" + system.name + "' (a field is missing, or set where its 'if' does not hold)");
         c.cells[i] = static_cast<CellValue>(value);
     }
     if (j.contains("inputs")) {
         if (!j["inputs"].is_object()) throw InputError("\"inputs\" maps input names to lists of cells");
         for (const auto& [name, list] : j["inputs"].items()) {
             const int k = system.inputIndex(name);
-            if (k < 0) throw InputError("system '" + system.name + "' has no input '" + name + "'");
-            if (!list.is_array()) throw InputError("input '" + name + "' is a list of cells");
+            if (k < 0) throw InputError("system '" + system.name + "' has no input '" + quote(name) + "'");
+            if (!list.is_array()) throw InputError("input '" + quote(name) + "' is a list of cells");
             for (const auto& at : list) c.inputs[cellIndex(at)] |= 1u << k;
             if (inputsNamed) *inputsNamed |= 1u << k;
         }
@@ -228,7 +257,7 @@ nlohmann::json itfScalar(const nlohmann::json& v) {
         try {
             return std::stoll(v["#bigint"].get<std::string>());
         } catch (const std::exception&) {
-            throw InputError("\"#bigint\" holds the digits of an integer, found " + v.dump());
+            throw InputError("\"#bigint\" holds the digits of an integer, found " + quote(v));
         }
     }
     return v;
@@ -236,7 +265,7 @@ nlohmann::json itfScalar(const nlohmann::json& v) {
 
 /// An ITF position {"#tup": [x, y]} as the [x, y] of a configuration.
 nlohmann::json itfPoint(const nlohmann::json& v) {
-    if (!v.is_object() || !v.contains("#tup") || !v["#tup"].is_array()) throw InputError("a cell position in a trace is {\"#tup\": [x, y]}, found " + v.dump());
+    if (!v.is_object() || !v.contains("#tup") || !v["#tup"].is_array()) throw InputError("a cell position in a trace is {\"#tup\": [x, y]}, found " + quote(v));
     nlohmann::json at = nlohmann::json::array();
     for (const auto& x : v["#tup"]) at.push_back(itfScalar(x));
     return at;
@@ -268,7 +297,7 @@ Configuration configFromItf(const Interpreter& in, const nlohmann::json& itf, st
         nlohmann::json config{{"cells", nlohmann::json::array()}};
         for (const auto& entry : state["cells"]["#map"]) {
             if (!entry.is_array() || entry.size() != 2 || !entry[1].is_object())
-                throw InputError("each entry of \"cells\" is a pair [{\"#tup\": [x, y]}, {FIELD: VALUE, ...}], found " + entry.dump());
+                throw InputError("each entry of \"cells\" is a pair [{\"#tup\": [x, y]}, {FIELD: VALUE, ...}], found " + quote(entry));
             nlohmann::json cell = nlohmann::json::object();
             for (const auto& [field, value] : entry[1].items()) cell[field] = itfScalar(value);
             cell["at"] = itfPoint(entry[0]);
@@ -279,7 +308,7 @@ Configuration configFromItf(const Interpreter& in, const nlohmann::json& itf, st
             nlohmann::json inputs = nlohmann::json::object();
             for (const auto& [name, set] : state["inputs"].items()) {
                 if (!set.is_object() || !set.contains("#set") || !set["#set"].is_array())
-                    throw InputError("input '" + name + "' is {\"#set\": [{\"#tup\": [x, y]}, ...]}");
+                    throw InputError("input '" + quote(name) + "' is {\"#set\": [{\"#tup\": [x, y]}, ...]}");
                 inputs[name] = nlohmann::json::array();
                 for (const auto& at : set["#set"]) inputs[name].push_back(itfPoint(at));
             }
@@ -314,8 +343,12 @@ Configuration configFromText(const Interpreter& in, const std::string& text, std
                              const std::string& path) {
     const auto first = text.find_first_not_of(" \t\r\n");
     if (inputsNamed) *inputsNamed = 0;
+    // An empty file is a mistake (a failed redirection, the wrong file), not an empty configuration.
+    if (first == std::string::npos)
+        throw InputError("the file is empty; a configuration is JSON or ASCII art, with '.' for each empty cell");
     try {
-        if (first != std::string::npos && text[first] == '{') {
+        if (text[first] == '{') {
+            checkJsonDepth(text);
             const nlohmann::json j = nlohmann::json::parse(text);
             if (isItfTrace(j)) return configFromItf(in, j, index, inputsNamed);
             if (index) throw InputError("'#" + std::to_string(*index) + "' picks a state of an ITF trace, and this is a configuration; give " + path + " without it");
@@ -324,7 +357,7 @@ Configuration configFromText(const Interpreter& in, const std::string& text, std
         if (index) throw InputError("'#" + std::to_string(*index) + "' picks a state of an ITF trace, and this is ASCII art; give " + path + " without it");
         return configFromAscii(in, text);
     } catch (const nlohmann::json::exception& e) {
-        throw InputError("not valid JSON: " + std::string(e.what()));
+        throw InputError("not valid JSON: " + excerpt(e.what(), 300));
     }
 }
 

@@ -1,8 +1,10 @@
 #pragma once
-// Compiler-style diagnostics: collected per phase, sorted, printed as file:line:col with the source
-// line and a caret. Warnings have names and can be switched off.
+// Compiler-style diagnostics: collected per phase, sorted, printed as file:line:col with an excerpt
+// of the source line and a caret. Warnings have names and can be switched off. Like a compiler's
+// -ferror-limit, a file stops after kMaxErrors errors: a file of garbage gives a page, not a flood.
 
 #include "rules/Ir.h"
+#include "rules/Limits.h"
 
 #include <set>
 #include <string>
@@ -22,6 +24,7 @@ class Diagnostics {
 public:
     Diagnostics(std::string fileName, std::string source);
 
+    /// Past the error limit the error is dropped and stopped() becomes true.
     void error(SourceLoc loc, std::string message);
     void warning(SourceLoc loc, std::string name, std::string message);
     void silence(const std::string& warningName) { silenced_.insert(warningName); }
@@ -30,16 +33,18 @@ public:
 
     bool hasErrors() const { return errors_ > 0; }
     int errorCount() const { return errors_; }
+    /// More errors than the limit came: the phases stop reading the file.
+    bool stopped() const { return stopped_; }
     const std::vector<Diagnostic>& all() const { return diagnostics_; }
-    /// Sorted by position, each with its source line and a caret.
+    /// Sorted by position, each with its source line (an excerpt around the column, escaped) and a caret.
     std::string render() const;
 
 private:
-    std::string fileName_;
-    std::vector<std::string> lines_;
+    std::string fileName_, source_;
     std::vector<Diagnostic> diagnostics_;
     std::set<std::string> silenced_;
     int errors_ = 0;
+    bool stopped_ = false;
 };
 
 }  // namespace holon::rules

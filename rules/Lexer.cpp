@@ -1,7 +1,10 @@
 // The .holon tokenizer: identifiers, integers, punctuation, significant newlines and `//` comments.
-// Unknown characters are reported and skipped so that the parser still sees the rest of the line.
+// Unknown characters are reported (escaped) and skipped so that the parser still sees the rest of
+// the line; past the error limit the lexer stops.
 
 #include "rules/Lexer.h"
+
+#include "rules/Escape.h"
 
 #include <array>
 #include <cctype>
@@ -46,7 +49,7 @@ std::vector<Token> tokenize(std::string_view src, Diagnostics& diagnostics) {
     int line = 1, col = 1, depth = 0;
     std::size_t i = 0;
     auto push = [&](Token::Kind kind, std::string text, SourceLoc loc) { tokens.push_back({kind, std::move(text), loc}); };
-    while (i < src.size()) {
+    while (i < src.size() && !diagnostics.stopped()) {
         const char c = src[i];
         const SourceLoc loc{line, col};
         if (c == '\n') {
@@ -69,7 +72,10 @@ std::vector<Token> tokenize(std::string_view src, Diagnostics& diagnostics) {
         if (identStart(c)) {
             std::size_t j = i;
             while (j < src.size() && identChar(src[j])) ++j;
-            push(Token::Kind::Ident, std::string(src.substr(i, j - i)), loc);
+            if (j - i > kMaxIdentifier)
+                diagnostics.error(loc, "a name of " + std::to_string(j - i) + " characters; names have at most " +
+                                           std::to_string(kMaxIdentifier));
+            push(Token::Kind::Ident, std::string(src.substr(i, std::min<std::size_t>(j - i, kMaxIdentifier))), loc);
             col += static_cast<int>(j - i), i = j;
             continue;
         }
@@ -99,14 +105,21 @@ std::vector<Token> tokenize(std::string_view src, Diagnostics& diagnostics) {
         if (matched) continue;
         const unsigned char u = static_cast<unsigned char>(c);
         diagnostics.error(loc, u >= 0x80 ? std::string("non-ASCII character; .holon files are plain ASCII")
-                                         : "unexpected character '" + std::string(1, c) + "'");
+                                         : "unexpected character '" + escapeText(std::string_view(&c, 1)) + "'");
         // Skip a whole UTF-8 sequence so one character gives one diagnostic.
         std::size_t j = i + 1;
         while (u >= 0x80 && j < src.size() && (static_cast<unsigned char>(src[j]) & 0xC0) == 0x80) ++j;
         i = j, ++col;
     }
-    if (!tokens.empty() && tokens.back().kind != Token::Kind::Newline) push(Token::Kind::Newline, "", {line, col});
-    push(Token::Kind::End, "", {line, col});
+    // The end of the file is placed just after the last token, as compilers do: on a line that
+    // exists, not on the empty line after the final line break.
+    SourceLoc end{1, 1};
+    if (!tokens.empty()) {
+        const Token& last = tokens.back();
+        end = last.kind == Token::Kind::Newline ? last.loc : SourceLoc{last.loc.line, last.loc.col + static_cast<int>(last.text.size())};
+    }
+    if (!tokens.empty() && tokens.back().kind != Token::Kind::Newline) push(Token::Kind::Newline, "", end);
+    push(Token::Kind::End, "", end);
     return tokens;
 }
 

@@ -15,7 +15,7 @@
 namespace holon::rules {
 
 std::optional<System> loadSystem(const std::string& path, std::ostream& out, const LoadOptions& options) {
-    const std::string text = readTextFile(path);
+    const std::string text = readTextFile(path, kMaxRuleFileBytes);
     Diagnostics diagnostics(path, text);
     for (const std::string& w : options.silencedWarnings) diagnostics.silence(w);
     auto system = parseSystem(text, diagnostics, path);

@@ -8,12 +8,14 @@
 
 #include "rules/Error.h"
 #include "rules/Lexer.h"
+#include "rules/Limits.h"
 #include "rules/Validate.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
-#include <sstream>
 
 namespace holon::rules {
 
@@ -62,7 +64,7 @@ public:
     Parser(const std::vector<Token>& tokens, Diagnostics& d) : t_(tokens), d_(d) {}
 
     System run() {
-        while (peek().kind != Token::Kind::End) {
+        while (peek().kind != Token::Kind::End && !d_.stopped()) {
             if (peek().kind == Token::Kind::Newline) {
                 ++p_;
                 continue;
@@ -142,14 +144,10 @@ private:
     struct ValueRef {
         int field = -1, value = -1;
     };
+    std::map<std::string, std::vector<ValueRef>, std::less<>> values_;  // by name: a lookup per use stays cheap
     std::vector<ValueRef> findValue(const std::string& name) const {
-        std::vector<ValueRef> found;
-        for (int f = 0; f < static_cast<int>(s_.fields.size()); ++f) {
-            const auto& vs = s_.fields[f].values;
-            for (int v = 0; v < static_cast<int>(vs.size()); ++v)
-                if (vs[v] == name) found.push_back({f, v});
-        }
-        return found;
+        auto it = values_.find(name);
+        return it == values_.end() ? std::vector<ValueRef>{} : it->second;
     }
     bool nameTaken(const std::string& name) const {
         return !findValue(name).empty() || s_.fieldIndex(name) >= 0 || s_.inputIndex(name) >= 0;
@@ -235,12 +233,17 @@ private:
         sawSymmetry_ = true;
     }
 
+    // A name declared twice is reported and the declaration read on, so that its other names are
+    // declared and their uses give no further errors.
     void fieldDecl(SourceLoc loc, const std::string& name) {
         Field f;
         f.name = name;
         f.loc = loc;
-        if (s_.fieldIndex(name) >= 0) fail(loc, "field '" + name + "' is declared twice");
-        if (nameTaken(name)) fail(loc, "'" + name + "' already names a state or an input");
+        if (s_.fieldIndex(name) >= 0) d_.error(loc, "field '" + name + "' is declared twice");
+        else if (nameTaken(name)) d_.error(loc, "'" + name + "' already names a state or an input");
+        // Past a limit the declaration is still read (once reported, the rest is not an error).
+        if (static_cast<int>(s_.fields.size()) == kMaxFields)
+            d_.error(loc, "a system has at most " + std::to_string(kMaxFields) + " fields");
         if (accept("dir")) {
             f.kind = FieldKind::Dir;
         } else if (peek().kind == Token::Kind::Int || at("-")) {
@@ -249,13 +252,18 @@ private:
             expect("..", "between the bounds of an integer field, as in 0..3");
             f.hi = integer("the upper bound");
             if (f.hi < f.lo) fail(loc, "empty integer range " + std::to_string(f.lo) + ".." + std::to_string(f.hi));
-            if (f.hi - f.lo > 255) fail(loc, "integer fields hold at most 256 values");
+            if (f.hi - f.lo >= kMaxFieldValues)
+                fail(loc, "a field holds at most " + std::to_string(kMaxFieldValues) + " values");
         } else {
             do {
                 const Token& v = freshName("a state");
                 if (nameTaken(v.text) || std::count(f.values.begin(), f.values.end(), v.text))
-                    fail(v.loc, "'" + v.text + "' is declared twice; state names must be unique in a system");
-                f.values.push_back(v.text);
+                    d_.error(v.loc, "'" + v.text + "' is declared twice; state names must be unique in a system");
+                else {
+                    if (static_cast<int>(f.values.size()) == kMaxFieldValues)
+                        d_.error(v.loc, "a field holds at most " + std::to_string(kMaxFieldValues) + " values");
+                    f.values.push_back(v.text);
+                }
             } while (accept("|"));
         }
         if (accept("if")) {
@@ -268,13 +276,20 @@ private:
                 f.whenValues.push_back(r.value);
             } while (accept("|"));
         }
+        const int index = static_cast<int>(s_.fields.size());
+        for (int v = 0; v < static_cast<int>(f.values.size()); ++v) values_[f.values[v]].push_back({index, v});
         s_.fields.push_back(std::move(f));
     }
 
     void inputDecl() {
         do {
             const Token& n = freshName("an input");
-            if (nameTaken(n.text)) fail(n.loc, "'" + n.text + "' is declared twice");
+            if (nameTaken(n.text)) {
+                d_.error(n.loc, "'" + n.text + "' is declared twice");
+                continue;
+            }
+            if (static_cast<int>(s_.inputs.size()) == kMaxInputs)
+                d_.error(n.loc, "a system has at most " + std::to_string(kMaxInputs) + " inputs (one bit each in a cell's input mask)");
             s_.inputs.push_back(n.text);
             s_.inputLocs.push_back(n.loc);
         } while (accept(","));
@@ -309,7 +324,7 @@ private:
         r.name = freshName("a rule").text;
         if (accept("/")) r.reverseName = freshName("the reverse rule").text;
         for (const std::string& n : {r.name, r.reverseName})
-            if (!n.empty() && !ruleNames_.insert(n).second) fail(loc, "rule '" + n + "' is declared twice");
+            if (!n.empty() && !ruleNames_.insert(n).second) d_.error(loc, "rule '" + n + "' is declared twice");
         expect(":", "after the rule name");
         patternCells_ = -1;
         r.lhs = pattern();
@@ -322,6 +337,8 @@ private:
         if (r.lhs.size() != r.rhs.size())
             fail(arrow.loc, "the left side has " + cells(r.lhs.size()) + " and the right side " + cells(r.rhs.size()) +
                                 "; a rule rewrites the same cells");
+        if (r.lhs.size() > kMaxRuleCells)
+            fail(loc, "rule '" + r.name + "' has " + cells(r.lhs.size()) + "; a rule reads at most " + std::to_string(kMaxRuleCells));
         patternCells_ = static_cast<int>(r.lhs.size());
         checkLayout(r);
         if (accept("if")) {
@@ -568,123 +585,167 @@ private:
     }
 
     // ---- expressions ---------------------------------------------------------------------------
-    Expr boolExpr() {
+    // Every tree is at most kMaxExprDepth deep, each operator of a chain counting as a level (each
+    // function returns its tree with its height), and the parser's own recursion (parentheses,
+    // `not`, unary minus, `implies`, a quantifier's cell guard) stops at the same depth. So neither
+    // the parser nor a later pass over expressions (printer, interpreter, compiled guards, SMT
+    // encoding: all recursive) can overflow the stack, and chains are built in linear time.
+    struct Tree {
+        Expr expr;
+        int height = 1;
+    };
+    int nesting_ = 0;
+    [[noreturn]] void tooDeep(SourceLoc loc) {
+        fail(loc, "expression nested deeper than " + std::to_string(kMaxExprDepth) +
+                      " levels; split it into smaller expressions (each operator of a chain such as a + b + c counts as a level)");
+    }
+    /// One level of the parser's recursion, left on return or on failure.
+    class Nest {
+    public:
+        Nest(Parser& p, SourceLoc loc) : p_(p) {
+            if (p_.nesting_ >= kMaxExprDepth) p_.tooDeep(loc);
+            ++p_.nesting_;
+        }
+        ~Nest() { --p_.nesting_; }
+        Nest(const Nest&) = delete;
+        Nest& operator=(const Nest&) = delete;
+
+    private:
+        Parser& p_;
+    };
+    Expr boolExpr() { return condition().expr; }
+    Tree condition() {
         SourceLoc loc = peek().loc;
-        Expr e = expr();
-        if (!isBoolExpr(e)) fail(loc, "expected a condition, found a number; compare it, as in count(F) >= 1");
+        Tree e = expr();
+        if (!isBoolExpr(e.expr)) fail(loc, "expected a condition, found a number; compare it, as in count(F) >= 1");
         return e;
     }
     Expr numberExpr() {
         SourceLoc loc = peek().loc;
-        Expr e = expr();
+        Expr e = expr().expr;
         if (isBoolExpr(e)) fail(loc, "expected a number, found a condition");
         return e;
     }
-    Expr node(Expr::Kind kind, SourceLoc loc, std::vector<Expr> kids = {}) {
+    Expr node(Expr::Kind kind, SourceLoc loc) {
         Expr e;
         e.kind = kind;
         e.loc = loc;
-        e.kids = std::move(kids);
         return e;
+    }
+    /// A node over `kids`, which are moved, not copied (a copy per operator made chains quadratic).
+    template <class... Kids>
+    Tree join(Expr::Kind kind, SourceLoc loc, Kids&&... kids) {
+        Tree t{node(kind, loc), 1 + std::max({kids.height...})};
+        if (t.height > kMaxExprDepth) tooDeep(loc);
+        t.expr.kids.reserve(sizeof...(kids));
+        (t.expr.kids.push_back(std::move(kids.expr)), ...);
+        return t;
     }
     void requireBool(const Expr& e, bool want) {
         if (isBoolExpr(e) != want) fail(e.loc, want ? "expected a condition here, found a number" : "expected a number here, found a condition");
     }
-    Expr expr() {
-        Expr lhs = disjunction();
+    Tree expr() {
+        Tree lhs = disjunction();
         if (peek().is("implies")) {
             SourceLoc loc = next().loc;
-            Expr rhs = expr();
-            requireBool(lhs, true), requireBool(rhs, true);
-            return node(Expr::Kind::Implies, loc, {std::move(lhs), std::move(rhs)});
+            Nest nest(*this, loc);
+            Tree rhs = expr();
+            requireBool(lhs.expr, true), requireBool(rhs.expr, true);
+            return join(Expr::Kind::Implies, loc, std::move(lhs), std::move(rhs));
         }
         return lhs;
     }
-    Expr disjunction() {
-        Expr e = conjunction();
+    Tree disjunction() {
+        Tree e = conjunction();
         while (peek().is("or")) {
             SourceLoc loc = next().loc;
-            Expr rhs = conjunction();
-            requireBool(e, true), requireBool(rhs, true);
-            e = node(Expr::Kind::Or, loc, {std::move(e), std::move(rhs)});
+            Tree rhs = conjunction();
+            requireBool(e.expr, true), requireBool(rhs.expr, true);
+            e = join(Expr::Kind::Or, loc, std::move(e), std::move(rhs));
         }
         return e;
     }
-    Expr conjunction() {
-        Expr e = negation();
+    Tree conjunction() {
+        Tree e = negation();
         while (peek().is("and")) {
             SourceLoc loc = next().loc;
-            Expr rhs = negation();
-            requireBool(e, true), requireBool(rhs, true);
-            e = node(Expr::Kind::And, loc, {std::move(e), std::move(rhs)});
+            Tree rhs = negation();
+            requireBool(e.expr, true), requireBool(rhs.expr, true);
+            e = join(Expr::Kind::And, loc, std::move(e), std::move(rhs));
         }
         return e;
     }
-    Expr negation() {
+    Tree negation() {
         if (peek().is("not")) {
             SourceLoc loc = next().loc;
-            Expr e = negation();
-            requireBool(e, true);
-            return node(Expr::Kind::Not, loc, {std::move(e)});
+            Nest nest(*this, loc);
+            Tree e = negation();
+            requireBool(e.expr, true);
+            return join(Expr::Kind::Not, loc, std::move(e));
         }
         return comparison();
     }
-    Expr comparison() {
-        Expr lhs = sum();
+    Tree comparison() {
+        Tree lhs = sum();
         static const std::pair<const char*, CmpOp> ops[] = {{"==", CmpOp::Eq}, {"!=", CmpOp::Ne}, {"<=", CmpOp::Le},
                                                             {">=", CmpOp::Ge}, {"<", CmpOp::Lt},  {">", CmpOp::Gt}};
         for (auto [text, op] : ops)
             if (at(text)) {
                 SourceLoc loc = next().loc;
-                Expr rhs = sum();
-                requireBool(lhs, false), requireBool(rhs, false);
-                Expr e = node(Expr::Kind::Compare, loc, {std::move(lhs), std::move(rhs)});
-                e.op = op;
+                Tree rhs = sum();
+                requireBool(lhs.expr, false), requireBool(rhs.expr, false);
+                Tree e = join(Expr::Kind::Compare, loc, std::move(lhs), std::move(rhs));
+                e.expr.op = op;
                 return e;
             }
         return lhs;
     }
-    Expr sum() {
-        Expr e = unary();
+    Tree sum() {
+        Tree e = unary();
         while (at("+") || at("-")) {
             SourceLoc loc = peek().loc;
             Expr::Kind kind = next().text == "+" ? Expr::Kind::Add : Expr::Kind::Sub;
-            Expr rhs = unary();
-            requireBool(e, false), requireBool(rhs, false);
-            e = node(kind, loc, {std::move(e), std::move(rhs)});
+            Tree rhs = unary();
+            requireBool(e.expr, false), requireBool(rhs.expr, false);
+            e = join(kind, loc, std::move(e), std::move(rhs));
         }
+        if (at("*") || at("/"))
+            fail(peek().loc, "expressions add and subtract (+, -) but do not multiply or divide; write 2 * count(F) as "
+                             "count(F) + count(F), and a fraction as 3/2");
         return e;
     }
-    Expr unary() {
+    Tree unary() {
         if (at("-")) {
             SourceLoc loc = next().loc;
-            Expr e = unary();
-            requireBool(e, false);
-            return node(Expr::Kind::Neg, loc, {std::move(e)});
+            Nest nest(*this, loc);
+            Tree e = unary();
+            requireBool(e.expr, false);
+            return join(Expr::Kind::Neg, loc, std::move(e));
         }
         return primary();
     }
-    Expr primary() {
+    Tree primary() {
         const Token& tok = peek();
         SourceLoc loc = tok.loc;
         if (tok.kind == Token::Kind::Int) {
             Expr e = node(Expr::Kind::Number, loc);
             e.value = rational();
-            return e;
+            return {std::move(e)};
         }
         if (accept("(")) {
-            Expr e = expr();
+            Nest nest(*this, loc);
+            Tree e = expr();
             expect(")", "to close the parenthesis");
             return e;
         }
         if (accept("true") || accept("false")) {
             Expr e = node(Expr::Kind::Bool, loc);
             e.value = tok.text == "true" ? 1 : 0;
-            return e;
+            return {std::move(e)};
         }
         if (accept("mass")) {
             if (inGuard_) fail(loc, "a guard is local; total mass is a non-local condition, write it as a constraint");
-            return node(Expr::Kind::Mass, loc);
+            return {node(Expr::Kind::Mass, loc)};
         }
         static const std::pair<const char*, Expr::Kind> quantifiers[] = {
             {"count", Expr::Kind::Count}, {"all", Expr::Kind::All}, {"some", Expr::Kind::Some}, {"no", Expr::Kind::No}};
@@ -696,7 +757,7 @@ private:
                 if (!inGuard_) fail(loc, "'connected nbr' looks at a rule's neighbourhood and belongs in a guard");
                 aroundCell(e);
                 e.pred = predicate();
-                return e;
+                return {std::move(e)};
             }
             nonLocal(loc, "connected");
             if (accept("(")) {
@@ -707,7 +768,7 @@ private:
                 occupied.base = CellTerm::Base::Occupied;
                 e.pred = {occupied};
             }
-            return e;
+            return {std::move(e)};
         }
         if (accept("reaches")) {
             nonLocal(loc, "reaches");
@@ -723,7 +784,7 @@ private:
             expect(",", "after the field");
             e.target = predicate();
             expect(")", "to close reaches(...)");
-            return e;
+            return {std::move(e)};
         }
         const std::string hint = tok.kind == Token::Kind::Ident
                                      ? suggestion(tok.text, {"connected", "reaches", "count", "all", "some", "no", "mass", "true", "false", "not"})
@@ -733,8 +794,9 @@ private:
     void nonLocal(SourceLoc loc, const std::string& what) {
         if (inGuard_) fail(loc, "a guard is local; '" + what + "' is non-local, write it as a constraint");
     }
-    Expr quantifier(Expr::Kind kind, SourceLoc loc, const std::string& word) {
-        Expr e = node(kind, loc);
+    Tree quantifier(Expr::Kind kind, SourceLoc loc, const std::string& word) {
+        Tree t{node(kind, loc)};
+        Expr& e = t.expr;
         if (accept("nbr")) {
             if (!inGuard_) fail(loc, "'" + word + " nbr' quantifies over a rule's neighbourhood and belongs in a guard");
             aroundCell(e);
@@ -748,10 +810,14 @@ private:
             expect("(", "after " + word + ", as in " + word + "(F)");
             e.pred = predicate();
             if (accept(":")) {  // a local condition on each of those cells, @0 being the cell
+                Nest nest(*this, loc);
                 const int outerCells = patternCells_;
                 inGuard_ = true, patternCells_ = 1;
                 try {
-                    e.kids.push_back(boolExpr());
+                    Tree guard = condition();
+                    t.height = 1 + guard.height;
+                    if (t.height > kMaxExprDepth) tooDeep(loc);
+                    e.kids.push_back(std::move(guard.expr));
                 } catch (const Fail&) {
                     inGuard_ = false, patternCells_ = outerCells;
                     throw;
@@ -760,7 +826,7 @@ private:
             }
             expect(")", "to close " + word + "(...)");
         }
-        return e;
+        return t;
     }
     /// After `nbr`: the pattern cell whose neighbours are meant, `@k` or by default @0.
     void aroundCell(Expr& e) {
@@ -807,12 +873,21 @@ std::optional<System> parseSystem(std::string_view source, Diagnostics& diagnost
     return system;
 }
 
-std::string readTextFile(const std::string& path) {
+std::string readTextFile(const std::string& path, std::size_t maxBytes) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) throw InputError("cannot read '" + path + "': it is a folder, not a file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError("cannot read '" + path + "': no such file or not readable");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    std::string text;
+    std::vector<char> buffer(1 << 16);
+    while (in.read(buffer.data(), static_cast<std::streamsize>(buffer.size())) || in.gcount() > 0) {
+        text.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
+        if (text.size() > maxBytes)
+            throw InputError("'" + path + "' is larger than " + std::to_string(maxBytes >> 20) +
+                             " MiB, the most holon reads from such a file; is it the right file?");
+    }
+    if (in.bad()) throw InputError("cannot read '" + path + "': a read error");
+    return text;
 }
 
 int System::fieldIndex(const std::string& name) const {

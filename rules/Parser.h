@@ -3,6 +3,7 @@
 
 #include "rules/Diagnostics.h"
 #include "rules/Ir.h"
+#include "rules/Limits.h"
 
 #include <optional>
 #include <string>
@@ -14,7 +15,8 @@ namespace holon::rules {
 /// reported either way. Each phase (syntax and names, then semantics) reports all its errors.
 std::optional<System> parseSystem(std::string_view source, Diagnostics& diagnostics, std::string sourceName = "");
 
-/// Reads a file and parses it; throws InputError when the file cannot be read.
-std::string readTextFile(const std::string& path);
+/// Reads a whole file; throws InputError naming the file when it cannot be read, is a folder, or
+/// holds more than `maxBytes` (so /dev/zero or a wrong file stops with a message, not the machine).
+std::string readTextFile(const std::string& path, std::size_t maxBytes = kMaxFileBytes);
 
 }  // namespace holon::rules

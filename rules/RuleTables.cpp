@@ -101,7 +101,7 @@ RuleTables::RuleTables(const Model& model, std::vector<std::uint32_t> combos)
     }
     for (const RuleShape& shape : model.shapes()) {
         const DirectedRule& rule = model.rules()[shape.rule];
-        if (shape.offsets.size() > kMaxCells) throw InputError("rule '" + rule.name + "' has more than " + std::to_string(kMaxCells) + " cells");
+        if (shape.offsets.size() > kMaxCells) throw InternalError("rule '" + rule.name + "' has more cells than the parser admits");
         Shape t;
         for (std::size_t k = 0; k < shape.offsets.size(); ++k) {
             t.lhs.push_back(compileTerm(rule.lhs()[k], &shape.offsets, shape.offsets[k], rule.reversed ? &rule.rhs()[k] : nullptr));

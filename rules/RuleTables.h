@@ -5,6 +5,7 @@
 // Engine places these tables on a region; the planner places them on a padded box by index
 // arithmetic. Both therefore run exactly the same compiled rules.
 
+#include "rules/Limits.h"
 #include "rules/Model.h"
 
 #include <bit>
@@ -15,7 +16,7 @@ namespace holon::rules {
 
 class RuleTables {
 public:
-    static constexpr int kMaxCells = 20;  // pattern cells per rule (a hex hole move reads 19)
+    static constexpr int kMaxCells = kMaxRuleCells;  // the parser refuses larger rules, with their place
 
     /// A bit set over (input combination, cell state).
     struct Mask {
