@@ -414,13 +414,12 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 const auto& placed = e.instances()[q];
                 z3::expr lhs = enc.legal(before) && enc.fires(q, before, after) && enc.legal(after);
                 z3::expr amountBefore = ctx.int_val(0), amountAfter = ctx.int_val(0);
+                auto amount = [&](const SmtEncoding::State& s, int c) {
+                    return byMass ? enc.cellMassUnits(s, c) : z3::ite(s.is[c][0], ctx.int_val(0), ctx.int_val(1));
+                };
                 for (int k = 0; k < placed.size; ++k) {
-                    const int c = placed.cells[k];
-                    for (int v = 0; v < model.alphabet().size(); ++v) {
-                        const std::int64_t w = byMass ? e.massUnitsOf(static_cast<rules::CellValue>(v)) : (v != 0);
-                        amountBefore = amountBefore + z3::ite(before.is[c][v], ctx.int_val(static_cast<int64_t>(w)), ctx.int_val(0));
-                        amountAfter = amountAfter + z3::ite(after.is[c][v], ctx.int_val(static_cast<int64_t>(w)), ctx.int_val(0));
-                    }
+                    amountBefore = amountBefore + amount(before, placed.cells[k]);
+                    amountAfter = amountAfter + amount(after, placed.cells[k]);
                 }
                 anyRule = anyRule || (selector == q && lhs && amountBefore != amountAfter);
             }

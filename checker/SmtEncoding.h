@@ -59,6 +59,8 @@ public:
     /// Every component of the ranking is the same after the step as before.
     z3::expr keptAfter(const std::vector<rules::Expr>& ranking, int placed, const State& after, const State& before);
     z3::expr massUnits(const State& s);
+    /// Cell `cell`'s mass in units of the mass denominator (an integer term).
+    z3::expr cellMassUnits(const State& s, int cell) const;
     /// Lemmas for the solver: every connectivity or reachability hypothesis made since the last
     /// call, restated for the cut and stray sets the refutations made since then, or without
     /// refutations for the predicates named in its state (see the .cpp). Implied by the
