@@ -92,6 +92,7 @@ int runHolon(int argc, char** argv) {
     add(holon::cli::addPlanCommand);
     add(holon::cli::addHexCommand);
     add(holon::cli::addRoombotsCommand);
+    add(holon::cli::addReplayCommand);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
