@@ -27,6 +27,7 @@ int runHolon(int argc, char** argv) {
     add(addPlanCommand);
     add(addHexCommand);
     add(addRoombotsCommand);
+    add(addReplayCommand);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -94,5 +94,6 @@ Run addVerifyCommand(CLI::App& app);
 Run addPlanCommand(CLI::App& app);
 Run addHexCommand(CLI::App& app);
 Run addRoombotsCommand(CLI::App& app);
+Run addReplayCommand(CLI::App& app);
 
 }  // namespace holon::cli

@@ -1,7 +1,8 @@
 // The metamodule design of DiskDesign.h and the search that finds its motion sequences. The pair
-// of slots A (west) and B (east) is the whole world of the search: a move is allowed only if both
-// cells next to both its ends lie in the pair (so the pivot rule never reads a neighbouring slot),
-// the pair's disks are one connected set after it, and it leaves the rings alone outside the door.
+// of slots A (west) and B (east) is the whole world of the search: a move is allowed only if
+// hex_pivot.holon enables it with every cell it reads inside the pair (the rule compiled on the
+// pair alone, PivotRules, so it never reads a neighbouring slot), the pair's disks are one connected
+// set after it, and it leaves the rings alone outside the door.
 // A sequence has three phases. The door's three disks on each side roll into their own pocket
 // (not right beside the door, where a parked disk would rest on the next door disk). The unit
 // moves: each disk by a shortest pivot path (breadth-first search with the disk lifted), leaving A
@@ -16,6 +17,8 @@
 
 #include "planner/hex/DiskDesign.h"
 
+#include "planner/hex/HexArray.h"
+#include "planner/hex/PivotRules.h"
 #include "rules/Error.h"
 
 #include <algorithm>
@@ -27,41 +30,42 @@ namespace holon::planner::hex {
 
 namespace {
 
-constexpr Vec kStep[6] = {{1, 0, 0}, {1, -1, 0}, {0, -1, 0}, {-1, 0, 0}, {-1, 1, 0}, {0, 1, 0}};  // counterclockwise
-
-int distance(Vec a, Vec b) {
-    const int dq = a.x - b.x, dr = a.y - b.y;
-    return (std::abs(dq) + std::abs(dr) + std::abs(dq + dr)) / 2;
-}
-
-/// The pair of slots as a small occupancy grid, 2s wide and s high, A at q < s.
+/// The pair of slots as a small grid of disk cells, 2s wide and s high, A at q < s, on which
+/// hex_pivot is compiled (shared by copies: a copy is a what-if of the disks only).
 class Pair {
 public:
-    explicit Pair(int side) : s_(side), cells_(static_cast<std::size_t>(2 * side * side), 0) {}
-    bool inside(Vec v) const { return v.x >= 0 && v.y >= 0 && v.x < 2 * s_ && v.y < s_; }
+    explicit Pair(const PivotRules& rules) : rules_(&rules), cells_(static_cast<std::size_t>(rules.board().size()), 0) {}
+    bool inside(Vec v) const {
+        const Vec e = rules_->board().extent();
+        return v.x >= 0 && v.y >= 0 && v.x < e.x && v.y < e.y;
+    }
     bool filled(Vec v) const { return inside(v) && cells_[index(v)]; }
-    void set(Vec v, bool f) { cells_[index(v)] = f; }
-    /// The pivot of a step from `a` to its neighbour in direction d, or nothing: the other cell
-    /// next to both must be empty, and both must lie in the pair.
+    void set(Vec v, bool f) { cells_[index(v)] = f ? rules_->disk() : 0; }
+    /// The pivot of a roll of a disk at `a` (there or not: the path search lifts it) to its
+    /// neighbour in direction d, if hex_pivot enables one there.
     bool step(Vec a, int d, Vec& pivot) const {
-        const Vec b = a + kStep[d], c1 = a + kStep[(d + 1) % 6], c2 = a + kStep[(d + 5) % 6];
-        if (!inside(b) || filled(b) || !inside(c1) || !inside(c2) || filled(c1) == filled(c2)) return false;
-        pivot = filled(c1) ? c1 : c2;
-        return true;
+        for (int side = 0; side < 2; ++side) {
+            const PivotRules::Instance roll = rules_->roll(index(a), d, side);
+            if (rules_->engine().matches(cells_.data(), roll.anchor, roll.shape, index(a), rules_->disk())) {
+                pivot = a + hex().direction((d + (side ? 5 : 1)) % 6);
+                return true;
+            }
+        }
+        return false;
     }
     bool connected() const {
         std::vector<std::uint8_t> seen(cells_.size(), 0);
         std::vector<Vec> stack;
         std::size_t total = 0, reached = 0;
-        for (int i = 0; i < static_cast<int>(cells_.size()); ++i)
-            if (cells_[i]) {
-                ++total;
-                if (stack.empty() && !reached) stack.push_back(at(i)), seen[i] = 1;
-            }
+        rules_->board().forEachInside([&](std::int64_t i, Vec p) {
+            if (!cells_[i]) return;
+            ++total;
+            if (stack.empty() && !reached) stack.push_back(p), seen[i] = 1;
+        });
         while (!stack.empty()) {
             const Vec c = stack.back();
             stack.pop_back(), ++reached;
-            for (Vec d : kStep)
+            for (Vec d : hex().directions())
                 if (filled(c + d) && !seen[index(c + d)]) seen[index(c + d)] = 1, stack.push_back(c + d);
         }
         return reached == total;
@@ -81,7 +85,7 @@ public:
             if (const int r = rank(c); r >= 0 && (bestRank < 0 || r < bestRank)) bestRank = r, best = c;
             for (int d = 0; d < 6; ++d) {
                 Vec pivot;
-                const Vec n = c + kStep[d];
+                const Vec n = c + hex().direction(d);
                 if (!step(c, d, pivot) || parent.count({n.x, n.y})) continue;
                 parent[{n.x, n.y}] = {c, pivot};
                 queue.push_back(n);
@@ -104,10 +108,10 @@ public:
     }
 
 private:
-    std::size_t index(Vec v) const { return static_cast<std::size_t>(v.y) * 2 * s_ + v.x; }
-    Vec at(int i) const { return {i % (2 * s_), i / (2 * s_), 0}; }
-    int s_;
-    std::vector<std::uint8_t> cells_;
+    static const rules::Lattice& hex() { return rules::Lattice::get(rules::LatticeKind::Hex2D); }
+    std::size_t index(Vec v) const { return static_cast<std::size_t>(rules_->board().index(v)); }
+    const PivotRules* rules_;
+    std::vector<PivotRules::Value> cells_;
 };
 
 bool contains(const std::vector<Vec>& cells, Vec v) { return std::find(cells.begin(), cells.end(), v) != cells.end(); }
@@ -133,7 +137,7 @@ bool DiskDesign::build(int s, int doorZone) {
         for (int i = 1; i < s - 1; ++i) {
             const Vec c{i, j, 0};
             int door = 1 << 20;
-            for (Vec d : doorCentres) door = std::min(door, distance(c, d));
+            for (Vec d : doorCentres) door = std::min(door, hexDistance(c, d));
             if (door < doorZone) continue;
             const int layer = std::min({i, j, s - 1 - i, s - 1 - j});
             ranked.push_back({{layer, -door}, c});
@@ -170,11 +174,12 @@ bool DiskDesign::build(int s, int doorZone) {
     }
 
     base_.assign(units_, {});
+    const PivotRules rules(Vec{0, 0, 0}, Vec{2 * s, s, 1});
     const Vec east{s, 0, 0};
     std::vector<Vec> doorA, doorB;
     for (int j = m - 1; j <= m + 1; ++j) doorA.push_back({s - 1, j, 0}), doorB.push_back({s, j, 0});
     for (int k = 0; k < units_; ++k) {
-        Pair pair(s);
+        Pair pair(rules);
         std::vector<Vec> goal, fixed;
         for (Vec c : layouts_[units_]) pair.set(c, true);
         for (Vec c : layouts_[k]) pair.set(c + east, true);
@@ -199,7 +204,7 @@ bool DiskDesign::build(int s, int doorZone) {
         const auto nearDoor = [&](Vec c) {
             for (const auto* cells : {&doorA, &doorB})
                 for (Vec e : *cells)
-                    if (distance(c, e) < 2) return true;
+                    if (hexDistance(c, e) < 2) return true;
             return false;
         };
         // Phase 1: the door's disks roll into their own pocket, onto free cells no goal needs.
@@ -212,7 +217,7 @@ bool DiskDesign::build(int s, int doorZone) {
                 const bool cuts = !pair.connected();
                 pair.set(d, true);
                 if (cuts) return false;
-                const auto moves = pair.path(d, [&](Vec c) { return inA(c) != a || onRing(c) || nearDoor(c) || contains(goal, c) ? -1 : distance(c, d); });
+                const auto moves = pair.path(d, [&](Vec c) { return inA(c) != a || onRing(c) || nearDoor(c) || contains(goal, c) ? -1 : hexDistance(c, d); });
                 if (moves.empty()) return false;
                 commit(moves);
                 parked.push_back(moves.back().to);
@@ -223,7 +228,7 @@ bool DiskDesign::build(int s, int doorZone) {
             if (!contains(layouts_[units_ - 1], c)) sources.push_back(c);
         for (Vec c : layouts_[k + 1])
             if (!contains(layouts_[k], c) && !contains(doorB, c + east)) targets.push_back(c + east);
-        std::stable_sort(sources.begin(), sources.end(), [&](Vec a, Vec b) { return distance(a, doorway) < distance(b, doorway); });
+        std::stable_sort(sources.begin(), sources.end(), [&](Vec a, Vec b) { return hexDistance(a, doorway) < hexDistance(b, doorway); });
         const auto moveOne = [&](std::vector<Vec>& from, const std::function<int(Vec)>& rank) {
             for (std::size_t i = 0; i < from.size(); ++i) {
                 pair.set(from[i], false);
@@ -245,7 +250,7 @@ bool DiskDesign::build(int s, int doorZone) {
             Pair peeled = pair;
             for (Vec t : targets) peeled.set(t, true);
             std::vector<Vec> left = targets;
-            std::stable_sort(left.begin(), left.end(), [&](Vec a, Vec b) { return distance(a, doorway) < distance(b, doorway); });
+            std::stable_sort(left.begin(), left.end(), [&](Vec a, Vec b) { return hexDistance(a, doorway) < hexDistance(b, doorway); });
             while (!left.empty()) {
                 bool peeledOne = false;
                 for (std::size_t i = 0; i < left.size() && !peeledOne; ++i) {

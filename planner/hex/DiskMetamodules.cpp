@@ -1,10 +1,13 @@
 // general_n metamodules on hex-lattice disks (seed 000 §III-C, Fig. 4a): a planner run expanded into
 // disk moves. A fired template changes the mass of two neighbouring metamodules by one unit each way
 // (create_i, delete_i, transfer; seed 000 §III-C); the disks behind it are DiskDesign's motion
-// sequence for those two levels, turned and mirrored onto the two slots. The design guarantees the
-// sequence whatever the neighbouring slots hold; replayDiskMoves re-checks every move on its own,
-// knowing nothing of the design (a roll about an occupied common neighbour with the other one
-// empty, onto an empty cell, all disks connected after it).
+// sequence for those two levels, turned and mirrored onto the two slots, each move applied as the
+// hex_pivot instance that rolls that disk about that pivot. The design guarantees the sequence
+// whatever the neighbouring slots hold (and that every move is a pivot move: one that is not is a
+// bug, reported as such); the engine refuses a move hex_pivot does not enable there. The compiled
+// engine does not evaluate the system's constraint `connected`: replayDiskMoves re-checks every
+// move on its own, knowing nothing of the design or the engine (a roll about an occupied common
+// neighbour with the other one empty, onto an empty cell, all disks connected after it).
 
 #include "planner/hex/DiskMetamodules.h"
 
@@ -18,8 +21,6 @@
 namespace holon::planner::hex {
 
 namespace {
-
-constexpr Vec kNeighbour[6] = {{1, 0, 0}, {1, -1, 0}, {0, -1, 0}, {-1, 0, 0}, {-1, 1, 0}, {0, 1, 0}};  // counterclockwise
 
 /// The levels of mass the problem's system uses (C = the heaviest), after checking that disks can
 /// realise it: a plane, and templates that conserve mass.
@@ -40,12 +41,13 @@ int levelsOf(const Problem& problem) {
 
 DiskMetamodules::DiskMetamodules(const Problem& problem) : problem_(&problem), design_(levelsOf(problem)) {
     const Board& board = *problem.board;
-    origin_ = slotOrigin(Vec{board.lower().x - 1, board.lower().y - 1, 0});  // one empty slot of margin around the board
-    width_ = side() * (board.extent().x + 2), height_ = side() * (board.extent().y + 2);
-    occupied_.assign(static_cast<std::size_t>(width_) * height_, 0);
+    // One empty slot of margin around the board.
+    pivots_ = std::make_unique<PivotRules>(slotOrigin(Vec{board.lower().x - 1, board.lower().y - 1, 0}),
+                                           Vec{side() * (board.extent().x + 2), side() * (board.extent().y + 2), 1});
+    cells_.assign(static_cast<std::size_t>(pivots_->board().size()), 0);
     board.forEachInside([&](std::int64_t i, Vec p) {
         for (Vec c : design_.layout(static_cast<int>(problem.tables->massUnitsOf(problem.cells[i])))) {
-            occupied_[at(slotOrigin(p) + c)] = 1;
+            cells_[pivots_->board().index(slotOrigin(p) + c)] = pivots_->disk();
             start_.push_back(slotOrigin(p) + c);
         }
     });
@@ -79,9 +81,17 @@ bool DiskMetamodules::fired(std::int64_t anchor, int shape, const BoxEngine::Val
     bool ok = false;
     const std::vector<PivotMove> sequence = design_.sequence(a.before, b.before, a.after, b.after, alongY, slotOrigin(a.slot), ok);
     if (!ok) return fail("moves more than one unit of mass between two metamodules");
+    const BoxEngine& pivot = pivots_->engine();
+    BoxEngine::Value was[rules::RuleTables::kMaxCells];
     for (const PivotMove& m : sequence) {
-        if (!occupied_[at(m.from)] || occupied_[at(m.to)]) return fail("the design's sequence does not fit the disks there (a slot was not in its layout)");
-        occupied_[at(m.from)] = 0, occupied_[at(m.to)] = 1;
+        const PivotRules::Instance roll = pivots_->find(m.from, m.to, m.pivot);
+        const auto cell = [](Vec v) { return "(" + std::to_string(v.x) + "," + std::to_string(v.y) + ")"; };
+        if (roll.shape < 0)
+            throw InternalError("hex disks: the design moves a disk from " + cell(m.from) + " to " + cell(m.to) + " about " + cell(m.pivot) +
+                                ", which is no instance of hex_pivot");
+        if (!pivot.matches(cells_.data(), roll.anchor, roll.shape))
+            return fail("the design's sequence does not fit the disks there (a slot was not in its layout)");
+        pivot.apply(cells_.data(), roll.anchor, roll.shape, was);
         moves_.push_back({instance, rule, m.from, m.to, m.pivot});
     }
     return true;
@@ -89,8 +99,9 @@ bool DiskMetamodules::fired(std::int64_t anchor, int shape, const BoxEngine::Val
 
 std::vector<Vec> DiskMetamodules::disks() const {
     std::vector<Vec> out;
-    for (std::size_t i = 0; i < occupied_.size(); ++i)
-        if (occupied_[i]) out.push_back(diskOf(static_cast<std::int64_t>(i)));
+    pivots_->board().forEachInside([&](std::int64_t i, Vec p) {
+        if (cells_[i]) out.push_back(p);
+    });
     return out;
 }
 
@@ -102,9 +113,9 @@ bool DiskMetamodules::slotsMatch(const std::vector<BoxEngine::Value>& now, std::
         const std::vector<Vec>& layout = design_.layout(static_cast<int>(problem_->tables->massUnitsOf(now[i])));
         std::int64_t held = 0;
         for (int j = 0; j < side(); ++j)
-            for (int k = 0; k < side(); ++k) held += occupied_[at(slotOrigin(p) + Vec{k, j, 0})];
+            for (int k = 0; k < side(); ++k) held += occupied(slotOrigin(p) + Vec{k, j, 0});
         bool inLayout = true;
-        for (Vec c : layout) inLayout &= occupied_[at(slotOrigin(p) + c)] != 0;
+        for (Vec c : layout) inLayout &= occupied(slotOrigin(p) + c);
         placed += held;
         if (held != static_cast<std::int64_t>(layout.size()) || !inLayout)
             why = "slot (" + std::to_string(p.x) + "," + std::to_string(p.y) + ") does not hold its state's layout", ok = false;
@@ -131,14 +142,15 @@ std::string replayDiskMoves(const std::vector<Vec>& start, const std::vector<Dis
     // Whether the disks next to `gone` (just emptied) still reach each other. If they are one arc
     // around it they touch in turn; otherwise a breadth-first search from one of them, which stops
     // once it has met them all (in a connected ensemble the others are near).
+    const std::vector<Vec>& neighbours = rules::Lattice::get(rules::LatticeKind::Hex2D).directions();  // counterclockwise
     std::vector<std::uint32_t> seen(grid.size(), 0);
     std::uint32_t epoch = 0;
     const auto rejoined = [&](Vec gone) {
         std::vector<Vec> ends;
         int arcs = 0;
         for (int d = 0; d < 6; ++d) {
-            const bool here = has(gone + kNeighbour[d]), before = has(gone + kNeighbour[(d + 5) % 6]);
-            if (here) ends.push_back(gone + kNeighbour[d]);
+            const bool here = has(gone + neighbours[d]), before = has(gone + neighbours[(d + 5) % 6]);
+            if (here) ends.push_back(gone + neighbours[d]);
             arcs += here && !before;
         }
         if (arcs <= 1) return true;
@@ -149,7 +161,7 @@ std::string replayDiskMoves(const std::vector<Vec>& start, const std::vector<Dis
         while (!queue.empty() && found < ends.size()) {
             const Vec c = queue.front();
             queue.pop_front();
-            for (Vec d : kNeighbour) {
+            for (Vec d : neighbours) {
                 const Vec n = c + d;
                 if (!has(n) || seen[index(n)] == epoch) continue;
                 seen[index(n)] = epoch, queue.push_back(n);
@@ -168,7 +180,7 @@ std::string replayDiskMoves(const std::vector<Vec>& start, const std::vector<Dis
         while (!stack.empty()) {
             const Vec c = stack.back();
             stack.pop_back(), ++reached;
-            for (Vec d : kNeighbour)
+            for (Vec d : neighbours)
                 if (has(c + d) && seen[index(c + d)] != epoch) seen[index(c + d)] = epoch, stack.push_back(c + d);
         }
         if (reached != start.size()) return "the start's disks are not connected";
@@ -178,11 +190,11 @@ std::string replayDiskMoves(const std::vector<Vec>& start, const std::vector<Dis
         const std::string where = "move " + std::to_string(k + 1) + " (" + m.rule + "): ";
         int direction = -1;
         for (int d = 0; d < 6; ++d)
-            if (m.from + kNeighbour[d] == m.to) direction = d;
+            if (m.from + neighbours[d] == m.to) direction = d;
         if (!has(m.from)) return where + "no disk at the start cell";
         if (has(m.to)) return where + "the end cell is occupied";
         if (direction < 0) return where + "start and end cells are not neighbours";
-        const Vec c1 = m.from + kNeighbour[(direction + 1) % 6], c2 = m.from + kNeighbour[(direction + 5) % 6];
+        const Vec c1 = m.from + neighbours[(direction + 1) % 6], c2 = m.from + neighbours[(direction + 5) % 6];
         if (!((m.pivot == c1 && has(c1) && !has(c2)) || (m.pivot == c2 && has(c2) && !has(c1))))
             return where + "not a pivot: the disk must roll about an occupied common neighbour with the other one empty";
         grid[index(m.from)] = 0;

@@ -3,12 +3,15 @@
 // the U/P/F planner on the square metamodule lattice becomes module-level pivot moves. Metamodule
 // (x, y) is a slot of disks laid out by DiskDesign; every fired template that moves a unit of mass
 // between two slots replays the design's motion sequence for that template, turned and mirrored
-// into place, and templates that only relabel move no disk.
+// into place, each move one applied instance of hex_pivot.holon (PivotRules), and templates that
+// only relabel move no disk.
 
 #include "planner/Problem.h"
 #include "planner/hex/DiskDesign.h"
+#include "planner/hex/PivotRules.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -30,7 +33,9 @@ public:
     int side() const { return design_.side(); }
     int disksPerUnit() const { return design_.disksPerUnit(); }
     /// Moves the disks for one fired instance (`old`: its cells' previous values, `now`: the board).
-    /// Returns false, with failure() saying why, for a template the design has no sequence for.
+    /// Returns false, with failure() saying why, for a template the design has no sequence for or
+    /// a move hex_pivot does not enable there. Throws InternalError for a move of the design that
+    /// is no pivot move at all.
     bool fired(std::int64_t anchor, int shape, const BoxEngine::Value* old, const std::vector<BoxEngine::Value>& now);
     const std::vector<DiskMove>& moves() const { return moves_; }
     const std::string& failure() const { return failure_; }
@@ -40,22 +45,21 @@ public:
     bool slotsMatch(const std::vector<BoxEngine::Value>& now, std::string& why) const;
 
 private:
-    std::int64_t at(Vec disk) const { return (disk.x - origin_.x) + std::int64_t(width_) * (disk.y - origin_.y); }
-    Vec diskOf(std::int64_t i) const { return {static_cast<int>(i % width_) + origin_.x, static_cast<int>(i / width_) + origin_.y, 0}; }
+    bool occupied(Vec disk) const { return cells_[pivots_->board().index(disk)] != 0; }
     Vec slotOrigin(Vec metamodule) const { return {side() * metamodule.x, side() * metamodule.y, 0}; }
 
     const Problem* problem_;
     DiskDesign design_;
-    int width_ = 0, height_ = 0;
-    Vec origin_;                          // the disk at grid index 0
-    std::vector<std::uint8_t> occupied_;  // per disk cell of the grid
+    std::unique_ptr<PivotRules> pivots_;       // on the slots of the board and one slot of margin
+    std::vector<BoxEngine::Value> cells_;      // the disks, on pivots_'s board
     std::int64_t instances_ = 0;
     std::vector<Vec> start_;
     std::vector<DiskMove> moves_;
     std::string failure_;
 };
 
-/// Replays `moves` from `start` and checks each one independently of how it was found: it moves a
+/// Replays `moves` from `start` and checks each one independently of how it was found and of the
+/// engine that applied it (hex_pivot's left side and its constraint `connected`): it moves a
 /// disk to an empty neighbouring cell, rolling about an occupied common neighbour with the other
 /// common neighbour empty, and all disks are connected afterwards. Returns "" or the first fault.
 std::string replayDiskMoves(const std::vector<Vec>& start, const std::vector<DiskMove>& moves);

@@ -10,6 +10,7 @@
 // taken afresh from the ensemble at the start of each window.
 
 #include "planner/Recorder.h"
+#include "planner/Replay.h"
 
 #include <algorithm>
 #include <map>
@@ -95,13 +96,9 @@ private:
                                                   : a.instance;
         const rules::Interpreter& in = interpreter(m, model);
         const std::string name = model.rules()[model.shapes()[instance.shape].rule].name;
-        if (!in.matches(config, instance)) {
-            fault_ = system + ": rule " + name + " fired where it is not enabled (left side or guard false)";
-            return;
-        }
-        rules::Configuration next = in.apply(config, instance);
-        if (!model.system().constraints.empty() && in.legal(config) && !in.legal(next)) {
-            fault_ = system + ": rule " + name + " fired into a configuration its constraints forbid";
+        rules::Configuration next;
+        if (const planner::StepFault f = planner::replayStep(in, config, instance, next); f != planner::StepFault::None) {
+            fault_ = system + ": rule " + name + " fired, but " + planner::describe(f);
             return;
         }
         m.state = std::move(next.cells);

@@ -7,6 +7,7 @@
 
 #include "planner/Random.h"
 #include "planner/hex/DiskMetamodules.h"
+#include "planner/hex/PivotRules.h"
 #include "rules/Error.h"
 
 #include <set>
@@ -126,6 +127,28 @@ TEST_CASE("the disk replay refuses a move without a pivot, onto a disk, or one t
     CHECK(fault({0, "r", {2, 0, 0}, {3, 0, 0}, {2, -1, 0}}).find("not a pivot") != std::string::npos);
     CHECK(fault({0, "r", {1, 0, 0}, {1, -1, 0}, {0, 0, 0}}).find("no longer connected") != std::string::npos);
     CHECK(planner::hex::replayDiskMoves({{0, 0, 0}, {2, 0, 0}}, {}).find("not connected") != std::string::npos);
+}
+
+TEST_CASE("hex_pivot compiled for the disks rolls a disk about an occupied neighbour, the other side empty, and nothing else") {
+    const planner::hex::PivotRules pivots(Vec{0, 0, 0}, Vec{6, 6, 1});
+    const planner::Board& board = pivots.board();
+    std::vector<planner::BoxEngine::Value> cells(static_cast<std::size_t>(board.size()), 0);
+    for (Vec v : {Vec{2, 2, 0}, Vec{3, 2, 0}}) cells[board.index(v)] = pivots.disk();
+    // (3,2) rolls about (2,2) to (2,3) (direction SW, pivot W = clockwise), the swept cell (3,3) empty.
+    const auto roll = pivots.find({3, 2, 0}, {2, 3, 0}, {2, 2, 0});
+    REQUIRE(roll.shape >= 0);
+    CHECK(pivots.engine().matches(cells.data(), roll.anchor, roll.shape));
+    cells[board.index({3, 3, 0})] = pivots.disk();  // the swept cell full: no roll
+    CHECK_FALSE(pivots.engine().matches(cells.data(), roll.anchor, roll.shape));
+    cells[board.index({3, 3, 0})] = 0;
+    planner::BoxEngine::Value old[rules::RuleTables::kMaxCells];
+    pivots.engine().apply(cells.data(), roll.anchor, roll.shape, old);
+    CHECK(cells[board.index({2, 3, 0})] == pivots.disk());
+    CHECK(cells[board.index({3, 2, 0})] == 0);
+    CHECK(cells[board.index({2, 2, 0})] == pivots.disk());
+    // Not a pivot move: not neighbours, or the pivot not next to both ends.
+    CHECK(pivots.find({3, 2, 0}, {5, 2, 0}, {4, 2, 0}).shape < 0);
+    CHECK(pivots.find({3, 2, 0}, {4, 2, 0}, {2, 2, 0}).shape < 0);
 }
 
 TEST_CASE("hex disks refuse what they cannot realise") {
