@@ -10,6 +10,7 @@
 #include "rules/Printer.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 
 namespace holon::cli {
@@ -26,8 +27,14 @@ rules::LoadOptions loadOptions(const std::vector<std::string>& noWarnings) {
     return load;
 }
 
+std::string rulesPath(const std::string& name) {
+    if (std::filesystem::exists(name)) return name;
+    const std::string bundled = rules::libraryDir() + "/" + name + ".holon";
+    return std::filesystem::exists(bundled) ? bundled : name;  // a missing file is reported by the reader
+}
+
 std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings) {
-    return rules::loadSystem(file, std::cerr, loadOptions(noWarnings));
+    return rules::loadSystem(rulesPath(file), std::cerr, loadOptions(noWarnings));
 }
 
 std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::vector<std::string>& specs, std::uint32_t* named) {

@@ -14,7 +14,11 @@ namespace holon::cli {
 
 /// The load options of -W arguments ("no-unused-value"); an unknown name throws InputError.
 rules::LoadOptions loadOptions(const std::vector<std::string>& noWarnings);
-/// Parses a rule file, printing diagnostics to stderr; nothing when it has errors.
+/// A rule file, or the stem of a bundled system ("planner_general1"): the path to read. Every
+/// subcommand that takes a rule file takes a bundled name this way.
+std::string rulesPath(const std::string& name);
+/// Parses a rule file or bundled system (rulesPath), printing diagnostics to stderr; nothing when
+/// it has errors.
 std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings);
 /// Per-cell input bits from NAME=FILE arguments (FILE: an ASCII mask; `none`: the input holds
 /// nowhere, `all`: everywhere, so a file by either name is written ./none). `named`, if given,

@@ -58,12 +58,6 @@ struct PlanArgs {
     bool check = false, json = false, quiet = false;
 };
 
-std::string rulePath(const std::string& name) {
-    if (std::filesystem::exists(name)) return name;
-    const std::string bundled = rules::libraryDir() + "/" + name + ".holon";
-    if (std::filesystem::exists(bundled)) return bundled;
-    throw InputError("--rules '" + name + "': no such file, and no bundled system of that name (try planner_intermediate or planner_general1)");
-}
 
 /// --seed-cell x,y (2D shapes) or x,y,z (3D): as many coordinates as the shapes have dimensions.
 std::optional<planner::Vec> parseCell(const std::string& text, int dimension) {
@@ -191,7 +185,7 @@ int run(const PlanArgs& a) {
     if (!a.traceOut.empty()) traceFile.emplace("--trace-out", a.traceOut);
     else if (!a.out.empty()) traceFile.emplace("--out", a.out + "/violation.itf.json");
 
-    auto system = loadRules(rulePath(a.rules), a.noWarnings);
+    auto system = loadRules(a.rules, a.noWarnings);
     if (!system) return 2;
     const std::uint64_t memory = a.memoryMiB << 20;
     planner::Shape from = planner::parseShape(a.from, a.scale, memory);

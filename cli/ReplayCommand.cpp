@@ -28,13 +28,6 @@ struct Args {
     std::string rules, plan;
 };
 
-/// A rule file, or the name of a bundled system (as `plan --rules` takes it).
-std::string rulesPath(const std::string& name) {
-    if (std::filesystem::exists(name)) return name;
-    const std::string bundled = rules::libraryDir() + "/" + name + ".holon";
-    if (std::filesystem::exists(bundled)) return bundled;
-    throw InputError("RULES '" + name + "': no such file, and no bundled system of that name (try planner_intermediate or planner_general1)");
-}
 
 /// A lattice point given as [x, y] or [x, y, z].
 rules::Vec pointOf(const nlohmann::json& j, const std::string& where) {
@@ -48,7 +41,7 @@ rules::Vec pointOf(const nlohmann::json& j, const std::string& where) {
 std::string text(const nlohmann::json& j, const char* key) { return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : ""; }
 
 int run(const Args& a) {
-    const std::optional<rules::System> system = loadRules(rulesPath(a.rules), {});
+    const std::optional<rules::System> system = loadRules(a.rules, {});
     if (!system) return kExitBadInput;
     std::ifstream file(a.plan);
     if (!file) throw InputError(a.plan + ": cannot open the plan");
