@@ -42,6 +42,9 @@ inline CLI::Validator secondsValidator() {
         "SECONDS");
 }
 
+/// --memory values in MiB: from 16 MiB to 16 TiB.
+inline CLI::Range memoryRange() { return CLI::Range(std::uint64_t{16}, std::uint64_t{1} << 24); }
+
 using Run = std::function<int()>;
 
 Run addRulesCommand(CLI::App& app);

@@ -7,6 +7,7 @@
 #include "rules/Error.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -110,6 +111,9 @@ int runHolon(int argc, char** argv) {
     } catch (const holon::InputError& e) {
         std::cerr << "holon: error: " << e.what() << '\n';
         return holon::cli::kExitBadInput;
+    } catch (const holon::Interrupted& e) {
+        std::cerr << "holon: " << (e.signal() == SIGINT ? "interrupted (SIGINT)" : e.signal() == SIGTERM ? "terminated (SIGTERM)" : e.what()) << '\n';
+        return 128 + e.signal();
     } catch (const std::bad_alloc&) {
         std::cerr << "holon: error: out of memory before the job could finish; raise the machine's memory or lower --memory / --max-states\n";
         return holon::cli::kExitUndecided;
