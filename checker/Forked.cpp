@@ -129,10 +129,7 @@ ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::functi
     // The jobs' own timeouts answer first; a child past them by this much is stuck.
     constexpr double kGraceSeconds = 0.5;
     for (std::size_t open = decided ? 0 : children.size(); open > 0 && !decided;) {
-        if (stopSignal) {
-            stopAll();
-            throw Interrupted(stopSignal);
-        }
+        if (stopSignal) break;
         if (budget.limited() && budget.elapsed() > budget.seconds() + kGraceSeconds) {
             if (result.job < 0) result.answer = {{"error", "timeout: the solver process did not answer in time"}};
             break;
@@ -167,6 +164,7 @@ ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::functi
         }
     }
     stopAll();
+    if (stopSignal) throw Interrupted(stopSignal);  // also one that came while job 0 ran here
     if (result.answer.is_object() && result.answer.contains("input_error")) throw InputError(result.answer["input_error"].get<std::string>());
     return result;
 }
