@@ -12,6 +12,7 @@
 #include <optional>
 #include <poll.h>
 #include <string>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -36,16 +37,52 @@ nlohmann::json answerOf(const ForkedJob& job, bool forked) {
     }
 }
 
+/// The signal that stopped a race (0: none); only the handler writes it.
+volatile std::sig_atomic_t stopSignal = 0;
+
+extern "C" void onStopSignal(int signal) { stopSignal = signal; }
+
+/// SIGINT and SIGTERM, while children run, are recorded for the race to stop them (the default
+/// would end this process and leave them running). Signals the caller ignores stay ignored.
+class StopSignals {
+public:
+    StopSignals() {
+        stopSignal = 0;
+        struct sigaction action {};
+        action.sa_handler = onStopSignal;
+        sigemptyset(&action.sa_mask);
+        sigaction(SIGINT, &action, &oldInt_);
+        sigaction(SIGTERM, &action, &oldTerm_);
+        if (oldInt_.sa_handler == SIG_IGN) sigaction(SIGINT, &oldInt_, nullptr);
+        if (oldTerm_.sa_handler == SIG_IGN) sigaction(SIGTERM, &oldTerm_, nullptr);
+    }
+    ~StopSignals() {
+        sigaction(SIGINT, &oldInt_, nullptr);
+        sigaction(SIGTERM, &oldTerm_, nullptr);
+    }
+    StopSignals(const StopSignals&) = delete;
+    StopSignals& operator=(const StopSignals&) = delete;
+
+private:
+    struct sigaction oldInt_ {}, oldTerm_ {};
+};
+
 std::optional<Child> spawn(const ForkedJob& job) {
     int fds[2];
     if (pipe(fds) != 0) return std::nullopt;
     std::cout.flush(), std::cerr.flush();
+    const pid_t parent = getpid();
     const pid_t pid = fork();
     if (pid < 0) {
         close(fds[0]), close(fds[1]);
         return std::nullopt;
     }
     if (pid == 0) {
+        // The child dies with its parent, however the parent ends (SIGKILL included); a parent
+        // gone before this line is seen as a new parent id.
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (getppid() != parent) _exit(1);
+        signal(SIGINT, SIG_DFL), signal(SIGTERM, SIG_DFL);
         close(fds[0]);
         const std::string text = answerOf(job, true).dump();
         for (std::size_t done = 0; done < text.size();) {
@@ -69,7 +106,8 @@ nlohmann::json received(const Child& c, int status) {
 
 }  // namespace
 
-ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::function<bool(const nlohmann::json&)>& decisive) {
+ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::function<bool(const nlohmann::json&)>& decisive, const Budget& budget) {
+    const StopSignals stopSignals;
     std::vector<Child> children;
     for (const ForkedJob& job : jobs) {
         auto child = spawn(job);
@@ -88,11 +126,19 @@ ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::functi
         result = {0, answerOf(jobs[0], false)};
     }
     bool decided = result.job >= 0;
+    // The jobs' own timeouts answer first; a child past them by this much is stuck.
+    constexpr double kGraceSeconds = 0.5;
     for (std::size_t open = decided ? 0 : children.size(); open > 0 && !decided;) {
+        if (stopSignal) break;
+        if (budget.limited() && budget.elapsed() > budget.seconds() + kGraceSeconds) {
+            if (result.job < 0) result.answer = {{"error", "timeout: the solver process did not answer in time"}};
+            break;
+        }
         std::vector<pollfd> polled;
         for (const Child& c : children)
             if (c.fd >= 0) polled.push_back({c.fd, POLLIN, 0});
-        if (poll(polled.data(), polled.size(), -1) < 0) {
+        // Short waits, so that a signal or the deadline is seen at once.
+        if (poll(polled.data(), polled.size(), 100) < 0) {
             if (errno == EINTR) continue;
             break;
         }
@@ -118,6 +164,7 @@ ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::functi
         }
     }
     stopAll();
+    if (stopSignal) throw Interrupted(stopSignal);  // also one that came while job 0 ran here
     if (result.answer.is_object() && result.answer.contains("input_error")) throw InputError(result.answer["input_error"].get<std::string>());
     return result;
 }

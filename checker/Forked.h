@@ -3,6 +3,8 @@
 // child ends with _exit, skipping destructors (Z3 4.8.12 takes longer to free a context after
 // Spacer than to solve).
 
+#include "checker/Budget.h"
+
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -21,6 +23,10 @@ struct ForkedAnswer {
 /// Runs the jobs at once, one child each, and returns the first answer `decisive` accepts (the
 /// other children are killed), else the first answer to arrive. An InputError thrown by a job
 /// ends the race and is thrown again here. When a child cannot be started, job 0 runs in this process instead.
-ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::function<bool(const nlohmann::json&)>& decisive);
+/// Children never outlive the race: past `budget` (and a short grace for the jobs' own timeouts
+/// to answer) they are killed and the answer is {"error": "timeout ..."}; SIGINT or SIGTERM kills
+/// them and throws Interrupted; a child whose parent dies is killed by the kernel.
+ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::function<bool(const nlohmann::json&)>& decisive,
+                           const Budget& budget = Budget());
 
 }  // namespace holon::checker

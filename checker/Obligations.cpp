@@ -16,6 +16,7 @@
 
 #include "checker/Reach.h"
 #include "checker/SmtEncoding.h"
+#include "checker/Solver.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
@@ -95,14 +96,23 @@ public:
         return o;
     }
 
-    /// A solver with the per-obligation timeout and the encoding's domain facts.
+    /// A solver with the encoding's domain facts and the obligation's time left.
     z3::solver newSolver(z3::context& ctx, SmtEncoding& enc, double timeoutShare = 1.0) const {
         z3::solver solver(ctx);
-        z3::params params(ctx);
-        params.set("timeout", static_cast<unsigned>(options_.timeoutSeconds * timeoutShare * 1000));
-        solver.set(params);
+        limitTime(ctx, solver, enc.budget(), timeoutShare);
         for (const z3::expr& f : enc.facts()) solver.add(f);
         return solver;
+    }
+
+    /// The solver's timeout: what the obligation has left, or `share` of the whole if less (a
+    /// side query). Throws OutOfTime when nothing is left.
+    void limitTime(z3::context& ctx, z3::solver& solver, const Budget& budget, double share = 1.0) const {
+        budget.check("building the formulas");
+        if (!budget.limited()) return;
+        const double seconds = std::min(options_.timeoutSeconds * share, budget.remaining());
+        z3::params params(ctx);
+        params.set("timeout", std::max(1u, static_cast<unsigned>(seconds * 1000)));
+        solver.set(params);
     }
 
     /// Solves `query` (after the encoding's domain facts); a model becomes a counterexample via
@@ -125,7 +135,7 @@ public:
         if (!options_.smtOut.empty()) {
             z3::solver exported = newSolver(ctx, enc, timeoutShare);
             exported.add(query);
-            write(name, exported, o);
+            write(name, exported, o, enc.budget());
         }
         // With two sets of lemmas, both are tried at once on the two cores and the first definite
         // answer counts (Z3 is deterministic: a satisfiable answer is found again here for its model).
@@ -134,11 +144,13 @@ public:
         if (lemmas.differ) {
             std::vector<ForkedJob> jobs;
             for (const z3::expr* variant : {&lemmas.all, &lemmas.lean})
-                jobs.push_back([&, variant](bool) -> nlohmann::json {
+                jobs.push_back([&, variant](bool forked) -> nlohmann::json {
+                    if (forked) shareSolverMemory(2);
                     const auto [r, solver] = check(*variant);
                     return {{"result", r == z3::unsat ? "unsat" : r == z3::sat ? "sat" : "unknown"}, {"reason", r == z3::unknown ? solver.reason_unknown() : ""}};
                 });
-            const ForkedAnswer answer = firstDecisive(jobs, [](const nlohmann::json& a) { return a.contains("result") && a["result"] != "unknown"; });
+            const ForkedAnswer answer =
+                firstDecisive(jobs, [](const nlohmann::json& a) { return a.contains("result") && a["result"] != "unknown"; }, enc.budget());
             result = answer.answer.value("result", "unknown");
             reason = answer.answer.value("reason", answer.answer.value("error", std::string("no answer")));
             if (answer.job == 1) chosen = &lemmas.lean;
@@ -161,7 +173,7 @@ public:
             if (o.result.trace) o.result.trace->property = name;
         } else {
             o.result.verdict = Verdict::Unknown;
-            o.result.summary = "the solver gave up: " + reason;
+            o.result.summary = "the solver gave up: " + unknownReason(reason);
         }
         return o;
     }
@@ -204,17 +216,17 @@ public:
             exported.add(base);
             for (int p = 0; p < count; ++p) exported.add(z3::implies(act[p], perInstance(p)));
             exported.add(z3::mk_or(acts));
-            write(name, exported, o);
+            write(name, exported, o, enc.budget());
         }
         o.result.verdict = Verdict::Holds;
         o.result.summary = provedText;
         for (int p = 0; p < count; ++p) {
-            const double left = options_.timeoutSeconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (left <= 0) {
+            if (enc.budget().expired()) {
                 o.result.verdict = Verdict::Unknown;
                 o.result.summary = "timeout after " + std::to_string(p) + " of " + std::to_string(count) + " instances";
                 break;
             }
+            limitTime(ctx, solver, enc.budget());
             z3::expr_vector assume(ctx);
             assume.push_back(act[p]);
             const z3::check_result r = solver.check(assume);
@@ -227,7 +239,7 @@ public:
             }
             if (r == z3::unknown) {
                 o.result.verdict = Verdict::Unknown;
-                o.result.summary = "the solver gave up on instance " + std::to_string(p) + ": " + solver.reason_unknown();
+                o.result.summary = "the solver gave up on instance " + std::to_string(p) + ": " + unknownReason(solver.reason_unknown());
                 break;
             }
         }
@@ -241,7 +253,8 @@ public:
         return rules::OutputFile(smtOutOption(options_), (dir / (fileSafe(model_.system().name) + "." + fileSafe(region_.spec()) + "." + fileSafe(name) + ".smt2")).string());
     }
 
-    void write(const std::string& name, z3::solver& solver, Obligation& o) {
+    void write(const std::string& name, z3::solver& solver, Obligation& o, const Budget& budget) {
+        budget.check("writing the SMT-LIB2 file");
         const rules::OutputFile file = smtPath(name);
         file.write("; holon proof obligation: system " + model_.system().name + ", region " + region_.spec() + ", property " + name +
                    "\n; expected: unsat (the property holds for every configuration of the region)\n(set-logic ALL)\n" + solver.to_smt2());
@@ -263,6 +276,45 @@ Obligation notEncoded(const std::string& name, const std::string& kind, const st
     o.result.kind = kind;
     o.result.summary = why;
     return o;
+}
+
+const char* kindName(rules::Property::Kind kind) {
+    switch (kind) {
+    case rules::Property::Kind::Conserves: return "conserves";
+    case rules::Property::Kind::Invariant: return "invariant";
+    case rules::Property::Kind::Ranking: return "ranking";
+    case rules::Property::Kind::Progress: return "progress";
+    case rules::Property::Kind::Holonomic: return "holonomic";
+    }
+    throw InternalError("verify: a property kind with no name");
+}
+
+/// Runs one obligation, whose Z3 context lives inside `prove`. One cut short by a limit is unknown,
+/// with the limit named, and the next obligation goes on: its budget spent while the formulas were
+/// built, or Z3 out of memory (reset here, once its context is gone). Any other Z3 failure is an
+/// InternalError.
+Obligation withinLimits(const std::string& name, const std::string& kind, const std::function<Obligation()>& prove) {
+    const Budget clock;
+    auto stopped = [&](const std::string& why) {
+        Obligation o = notEncoded(name, kind, why);
+        o.result.seconds = clock.elapsed();
+        return o;
+    };
+    try {
+        Obligation o = prove();
+        if (outOfMemory(o.result.summary)) recoverSolverMemory();  // Z3 said unknown rather than throwing
+        return o;
+    } catch (const OutOfTime& e) {
+        return stopped(e.what());
+    } catch (const z3::exception& e) {
+        Obligation o = stopped(solverFailure(e));
+        recoverSolverMemory();
+        return o;
+    } catch (const std::bad_alloc&) {  // from Z3's own containers, or holon's
+        Obligation o = stopped("out of memory: " + unknownReason("out of memory"));
+        recoverSolverMemory();
+        return o;
+    }
 }
 
 /// Progress fails at s (Lemma 2): outside the goal, under the property's assumption, and no
@@ -301,9 +353,11 @@ bool stuckAt(const std::vector<CellValue>& c, const rules::Engine& e, const rule
 /// after every step (proved before it, in order), so then conjunct k does too, without a query
 /// per rule instance. Planner Safety's `connected` follows from the tree conjuncts (1.8-2.3 s on
 /// square:5x5, against 11-21 s instance by instance; single runs each). Gets a quarter of the time; `total` counts it.
-bool impliedByEarlier(Runner& run, const std::string& name, const std::vector<const rules::Expr*>& conjuncts, std::size_t k, Obligation& total) {
-    z3::context ctx;
-    SmtEncoding enc(ctx, run.engine());
+bool impliedByEarlier(Runner& run, const std::string& name, const std::vector<const rules::Expr*>& conjuncts, std::size_t k, Obligation& total,
+                      const Budget& budget) {
+    const Context context = newContext(budget);
+    z3::context& ctx = *context;
+    SmtEncoding enc(ctx, run.engine(), SmtEncoding::Use::Queries, budget);
     auto d = enc.state("d");
     z3::expr q = enc.legal(d);
     for (std::size_t j = 0; j < k; ++j) q = q && enc.holds(*conjuncts[j], d, true);
@@ -315,8 +369,8 @@ bool impliedByEarlier(Runner& run, const std::string& name, const std::vector<co
     return true;
 }
 
-/// Inductiveness of an invariant (Lemma 1, Safety).
-Obligation proveInductive(Runner& run, const rules::Property& p) {
+/// Inductiveness of an invariant (Lemma 1, Safety), every conjunct within one budget.
+Obligation proveInductive(Runner& run, const rules::Property& p, const Budget& budget) {
     const rules::Engine& e = run.engine();
     const rules::Model& model = e.model();
     // Inductiveness, one conjunct of the invariant at a time: I(c), a step, and the conjunct
@@ -334,12 +388,13 @@ Obligation proveInductive(Runner& run, const rules::Property& p) {
     total.result.summary = "inductive: every step from a state where it holds keeps it";
     std::vector<std::string> implied;
     for (std::size_t k = 0; k < conjuncts.size(); ++k) {
-        if (k > 0 && impliedByEarlier(run, p.name + "." + std::to_string(k + 1), conjuncts, k, total)) {
+        if (k > 0 && impliedByEarlier(run, p.name + "." + std::to_string(k + 1), conjuncts, k, total, budget)) {
             implied.push_back(std::to_string(k + 1));
             continue;
         }
-        z3::context cctx;
-        SmtEncoding cenc(cctx, e);
+        const Context context = newContext(budget);
+        z3::context& cctx = *context;
+        SmtEncoding cenc(cctx, e, SmtEncoding::Use::Queries, budget);
         auto c = cenc.state("c"), d = cenc.state("d");
         const z3::expr base = cenc.legal(c) && cenc.holds(p.exprs[0], c, true) && cenc.legal(d) && !cenc.holds(*conjuncts[k], d, false);
         Obligation part = run.stepwise(
@@ -378,6 +433,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
     const rules::System& system = model.system();
     // The folder first: a proof that takes minutes is not thrown away for a path.
     if (!options.smtOut.empty()) rules::prepareOutputDir(smtOutOption(options), options.smtOut);
+    limitSolverMemory(options.memoryMiB);
     VerifyReport report;
     report.system = system.name;
     report.region = region.spec();
@@ -397,184 +453,181 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
     for (const rules::Property& p : system.properties) {
         if (!selected(p.name)) continue;
         announce(p.name);
-        z3::context ctx;
-        SmtEncoding enc(ctx, e);
-        switch (p.kind) {
-        case rules::Property::Kind::Conserves: {
-            // Region-independent: each rule's own cells, before and after, at one placement.
-            const bool byMass = p.quantity == rules::Property::Quantity::Mass;
-            auto before = enc.state("c"), after = enc.state("d");
-            z3::expr anyRule = ctx.bool_val(false);
-            std::vector<int> firstPlaced(model.rules().size(), -1);
-            for (int q = 0; q < static_cast<int>(e.instances().size()); ++q)
-                if (firstPlaced[e.instances()[q].rule] < 0) firstPlaced[e.instances()[q].rule] = q;
-            z3::expr selector = ctx.int_const("rule_instance");
-            for (int q : firstPlaced) {
-                if (q < 0) continue;
-                const auto& placed = e.instances()[q];
-                z3::expr lhs = enc.legal(before) && enc.fires(q, before, after) && enc.legal(after);
-                z3::expr amountBefore = ctx.int_val(0), amountAfter = ctx.int_val(0);
-                auto amount = [&](const SmtEncoding::State& s, int c) {
-                    return byMass ? enc.cellMassUnits(s, c) : z3::ite(s.is[c][0], ctx.int_val(0), ctx.int_val(1));
-                };
-                for (int k = 0; k < placed.size; ++k) {
-                    amountBefore = amountBefore + amount(before, placed.cells[k]);
-                    amountAfter = amountAfter + amount(after, placed.cells[k]);
-                }
-                anyRule = anyRule || (selector == q && lhs && amountBefore != amountAfter);
-            }
-            auto decode = [&](const z3::model& m, PropertyResult& r) {
-                const int q = run.placedFrom(m, selector);
-                const std::string rule = model.rules()[e.instances()[q].rule].name;
-                Trace t;
-                t.steps.push_back({enc.decode(m, before), -1});
-                t.steps.push_back({enc.decode(m, after), q});
-                t.description = "rule '" + rule + "' changes the " + (byMass ? "mass" : "count");
-                r.trace = t;
-                r.summary = t.description;
-                r.witness = {{"rule", rule}};
-            };
-            report.obligations.push_back(run.solve(p.name, "conserves", ctx, enc, anyRule, decode, "every rule keeps it"));
-            break;
-        }
-        case rules::Property::Kind::Invariant: {
-            report.obligations.push_back(proveInductive(run, p));
-            break;
-        }
-        case rules::Property::Kind::Ranking: {
-            auto c = enc.state("c"), d = enc.state("d");
-            auto kept = [&](int q) { return model.ruleNamed(e.instances()[q].rule, p.except); };
-            report.obligations.push_back(run.stepwise(
-                p.name, "ranking", ctx, enc, enc.legal(c) && enc.legal(d),
-                [&](int q) { return enc.fires(q, c, d) && !(kept(q) ? enc.keptAfter(p.exprs, q, d, c) : enc.lexLessAfter(p.exprs, q, d, c)); },
-                [&](const z3::model& m, int q, PropertyResult& r) {
-                    const std::string why = kept(q) ? "changes it (an excepted rule must keep it)" : "does not decrease it";
-                    r.trace = Trace{{{enc.decode(m, c), -1}, {enc.decode(m, d), q}}, {}, {}, "a step that " + why, {}};
-                    r.summary = "rule '" + model.rules()[e.instances()[q].rule].name + "' " + why;
-                    r.witness = {{"rule", model.rules()[e.instances()[q].rule].name}};
-                },
-                "every step decreases it lexicographically" + exceptText(p)));
-            break;
-        }
-        case rules::Property::Kind::Progress: {
-            auto c = enc.state("c");
-            z3::expr q = stuck(enc, c, e, p);
-            for (const rules::Property* inv : invariants) q = q && enc.holds(inv->exprs[0], c, true);
-            auto decode = [&](const z3::model& m, PropertyResult& r) {
-                Trace t;
-                t.steps.push_back({enc.decode(m, c), -1});
-                t.description = "every invariant holds, the goal is not reached, and no rule is enabled" +
-                                std::string(system.constraints.empty() ? "" : " (or each leads to an illegal configuration)");
-                r.trace = t;
-                r.summary = t.description;
-                r.witness = nlohmann::json::object();
-            };
-            report.obligations.push_back(run.solve(p.name, "progress", ctx, enc, q, decode, "outside the goal, some rule is enabled wherever the invariants hold"));
-            break;
-        }
-        case rules::Property::Kind::Holonomic: {
-            const bool byMove = p.adjacency == rules::Property::Adjacency::Move;
-            if (!byMove && (model.alphabet().size() > 2 || !p.exprs.empty())) {
-                report.obligations.push_back(notEncoded(p.name, "holonomic", "holonomy modulo transfers is checked by holon check (it needs reachability)"));
-                break;
-            }
-            // One definition with `holon check` (Holonomy.cpp): an adjacent pair with no rule step
-            // between them breaks holonomy only when the second is reachable from the first. With
-            // no such pair at all (strong holonomy) it holds; otherwise paths from the first of such
-            // a pair to the second are sought by deepening, so the first found is a shortest one,
-            // the counterexample the explorer draws too.
-            const int n = region.size();
-            const std::string adjacency = byMove ? "module move" : "occupancy toggle";
-            auto adjacent = [&](const SmtEncoding::State& c, const SmtEncoding::State& d) {
-                auto same = [&](int i, int j) {
-                    z3::expr all = ctx.bool_val(true);
-                    for (int v = 0; v < model.alphabet().size(); ++v) all = all && c.is[i][v] == d.is[j][v];
-                    return all;
-                };
-                z3::expr any = ctx.bool_val(false);
-                if (!byMove) {
-                    // Exactly one cell differs (its occupancy toggles: one occupied state).
-                    for (int i = 0; i < n; ++i) {
-                        z3::expr only = !same(i, i);
-                        for (int j = 0; j < n; ++j)
-                            if (j != i) only = only && same(j, j);
-                        any = any || only;
+        const Budget budget(options.timeoutSeconds);
+        report.obligations.push_back(withinLimits(p.name, kindName(p.kind), [&]() -> Obligation {
+            const Context context = newContext(budget);
+            z3::context& ctx = *context;
+            SmtEncoding enc(ctx, e, SmtEncoding::Use::Queries, budget);
+            switch (p.kind) {
+            case rules::Property::Kind::Conserves: {
+                // Region-independent: each rule's own cells, before and after, at one placement.
+                const bool byMass = p.quantity == rules::Property::Quantity::Mass;
+                auto before = enc.state("c"), after = enc.state("d");
+                z3::expr anyRule = ctx.bool_val(false);
+                std::vector<int> firstPlaced(model.rules().size(), -1);
+                for (int q = 0; q < static_cast<int>(e.instances().size()); ++q)
+                    if (firstPlaced[e.instances()[q].rule] < 0) firstPlaced[e.instances()[q].rule] = q;
+                z3::expr selector = ctx.int_const("rule_instance");
+                for (int q : firstPlaced) {
+                    if (q < 0) continue;
+                    const auto& placed = e.instances()[q];
+                    z3::expr lhs = enc.legal(before) && enc.fires(q, before, after) && enc.legal(after);
+                    z3::expr amountBefore = ctx.int_val(0), amountAfter = ctx.int_val(0);
+                    auto amount = [&](const SmtEncoding::State& s, int c) {
+                        return byMass ? enc.cellMassUnits(s, c) : z3::ite(s.is[c][0], ctx.int_val(0), ctx.int_val(1));
+                    };
+                    for (int k = 0; k < placed.size; ++k) {
+                        amountBefore = amountBefore + amount(before, placed.cells[k]);
+                        amountAfter = amountAfter + amount(after, placed.cells[k]);
                     }
+                    anyRule = anyRule || (selector == q && lhs && amountBefore != amountAfter);
+                }
+                auto decode = [&](const z3::model& m, PropertyResult& r) {
+                    const int q = run.placedFrom(m, selector);
+                    const std::string rule = model.rules()[e.instances()[q].rule].name;
+                    Trace t;
+                    t.steps.push_back({enc.decode(m, before), -1});
+                    t.steps.push_back({enc.decode(m, after), q});
+                    t.description = "rule '" + rule + "' changes the " + (byMass ? "mass" : "count");
+                    r.trace = t;
+                    r.summary = t.description;
+                    r.witness = {{"rule", rule}};
+                };
+                return run.solve(p.name, "conserves", ctx, enc, anyRule, decode, "every rule keeps it");
+            }
+            case rules::Property::Kind::Invariant: {
+                return proveInductive(run, p, budget);
+            }
+            case rules::Property::Kind::Ranking: {
+                auto c = enc.state("c"), d = enc.state("d");
+                auto kept = [&](int q) { return model.ruleNamed(e.instances()[q].rule, p.except); };
+                return run.stepwise(
+                    p.name, "ranking", ctx, enc, enc.legal(c) && enc.legal(d),
+                    [&](int q) { return enc.fires(q, c, d) && !(kept(q) ? enc.keptAfter(p.exprs, q, d, c) : enc.lexLessAfter(p.exprs, q, d, c)); },
+                    [&](const z3::model& m, int q, PropertyResult& r) {
+                        const std::string why = kept(q) ? "changes it (an excepted rule must keep it)" : "does not decrease it";
+                        r.trace = Trace{{{enc.decode(m, c), -1}, {enc.decode(m, d), q}}, {}, {}, "a step that " + why, {}};
+                        r.summary = "rule '" + model.rules()[e.instances()[q].rule].name + "' " + why;
+                        r.witness = {{"rule", model.rules()[e.instances()[q].rule].name}};
+                    },
+                    "every step decreases it lexicographically" + exceptText(p));
+            }
+            case rules::Property::Kind::Progress: {
+                auto c = enc.state("c");
+                z3::expr q = stuck(enc, c, e, p);
+                for (const rules::Property* inv : invariants) q = q && enc.holds(inv->exprs[0], c, true);
+                auto decode = [&](const z3::model& m, PropertyResult& r) {
+                    Trace t;
+                    t.steps.push_back({enc.decode(m, c), -1});
+                    t.description = "every invariant holds, the goal is not reached, and no rule is enabled" +
+                                    std::string(system.constraints.empty() ? "" : " (or each leads to an illegal configuration)");
+                    r.trace = t;
+                    r.summary = t.description;
+                    r.witness = nlohmann::json::object();
+                };
+                return run.solve(p.name, "progress", ctx, enc, q, decode, "outside the goal, some rule is enabled wherever the invariants hold");
+            }
+            case rules::Property::Kind::Holonomic: {
+                const bool byMove = p.adjacency == rules::Property::Adjacency::Move;
+                if (!byMove && (model.alphabet().size() > 2 || !p.exprs.empty()))
+                    return notEncoded(p.name, "holonomic", "holonomy modulo transfers is checked by holon check (it needs reachability)");
+                // One definition with `holon check` (Holonomy.cpp): an adjacent pair with no rule step
+                // between them breaks holonomy only when the second is reachable from the first. With
+                // no such pair at all (strong holonomy) it holds; otherwise paths from the first of such
+                // a pair to the second are sought by deepening, so the first found is a shortest one,
+                // the counterexample the explorer draws too.
+                const int n = region.size();
+                const std::string adjacency = byMove ? "module move" : "occupancy toggle";
+                auto adjacent = [&](const SmtEncoding::State& c, const SmtEncoding::State& d) {
+                    auto same = [&](int i, int j) {
+                        z3::expr all = ctx.bool_val(true);
+                        for (int v = 0; v < model.alphabet().size(); ++v) all = all && c.is[i][v] == d.is[j][v];
+                        return all;
+                    };
+                    z3::expr any = ctx.bool_val(false);
+                    if (!byMove) {
+                        // Exactly one cell differs (its occupancy toggles: one occupied state).
+                        for (int i = 0; i < n; ++i) {
+                            z3::expr only = !same(i, i);
+                            for (int j = 0; j < n; ++j)
+                                if (j != i) only = only && same(j, j);
+                            any = any || only;
+                        }
+                        return any;
+                    }
+                    // One module moves to an empty neighbour, keeping its state.
+                    for (int i = 0; i < n; ++i)
+                        for (int dir = 0; dir < region.lattice().degree(); ++dir) {
+                            const int j = region.neighbour(i, dir);
+                            if (j < 0) continue;
+                            z3::expr move = !c.is[i][0] && c.is[j][0] && d.is[i][0] && same(i, j);
+                            for (int k = 0; k < n; ++k)
+                                if (k != i && k != j) move = move && same(k, k);
+                            any = any || move;
+                        }
                     return any;
+                };
+                const SmtEncoding::State first = enc.state("c");
+                auto unjoined = [&](const SmtEncoding::State& d) {
+                    z3::expr q = adjacent(first, d);
+                    for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) q = q && !enc.fires(placed, first, d);
+                    return q;
+                };
+                const z3::expr legalFirst = enc.legal(first);
+                const auto partner = enc.state("d");
+                const std::string proved = "configurations one " + adjacency + " apart are one rule step apart (so no such pair is left to be reachable)";
+                Obligation o = run.solve(p.name, "holonomic", ctx, enc, legalFirst && enc.legal(partner) && unjoined(partner),
+                                         [](const z3::model&, PropertyResult&) {}, proved);
+                if (o.result.verdict != Verdict::Violated) {
+                    return o;
                 }
-                // One module moves to an empty neighbour, keeping its state.
-                for (int i = 0; i < n; ++i)
-                    for (int dir = 0; dir < region.lattice().degree(); ++dir) {
-                        const int j = region.neighbour(i, dir);
-                        if (j < 0) continue;
-                        z3::expr move = !c.is[i][0] && c.is[j][0] && d.is[i][0] && same(i, j);
-                        for (int k = 0; k < n; ++k)
-                            if (k != i && k != j) move = move && same(k, k);
-                        any = any || move;
+                // Strong holonomy fails: deepen from paths of two steps.
+                std::vector<SmtEncoding::State> path{first};
+                std::vector<z3::expr> selectors;
+                z3::expr steps = ctx.bool_val(true), lemmas = enc.instantiate().all;
+                auto decode = [&](const z3::model& m, PropertyResult& r) {
+                    Trace t;
+                    for (std::size_t k = 0; k < path.size(); ++k) t.steps.push_back({enc.decode(m, path[k]), k ? run.placedFrom(m, selectors[k - 1]) : -1});
+                    const std::size_t distance = t.steps.size() - 1;
+                    t.description = "two configurations one " + adjacency + " apart need " + stepCount(distance);
+                    r.trace = t;
+                    r.summary = "configurations one " + adjacency + " apart, with no rule step between them, are " + stepCount(distance) + " apart";
+                    r.witness = {{"distance", distance}, {"adjacency", byMove ? "move" : "occupancy"}};
+                };
+                double spent = o.result.seconds;
+                const double configurations = std::pow(static_cast<double>(model.alphabet().size()), n);
+                for (int k = 1;; ++k) {
+                    path.push_back(enc.state("p" + std::to_string(k)));
+                    selectors.push_back(ctx.int_const(("step" + std::to_string(k)).c_str()));
+                    steps = steps && enc.step(path[k - 1], path[k], selectors.back());
+                    if (k == 1) continue;  // a pair one step apart is joined
+                    if (k > configurations - 1) {
+                        // A shortest path visits each configuration once: none of such a pair is reachable.
+                        o = Runner::named(p.name, "holonomic");
+                        o.result.verdict = Verdict::Holds;
+                        o.result.summary = "configurations one " + adjacency + " apart are one rule step apart, or unreachable (no path of up to " +
+                                           stepCount(k - 1) + " joins them, and a shortest path is shorter than the " +
+                                           std::to_string(static_cast<long long>(configurations)) + " configurations)";
+                        break;
                     }
-                return any;
-            };
-            const SmtEncoding::State first = enc.state("c");
-            auto unjoined = [&](const SmtEncoding::State& d) {
-                z3::expr q = adjacent(first, d);
-                for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) q = q && !enc.fires(placed, first, d);
-                return q;
-            };
-            const z3::expr legalFirst = enc.legal(first);
-            const auto partner = enc.state("d");
-            const std::string proved = "configurations one " + adjacency + " apart are one rule step apart (so no such pair is left to be reachable)";
-            Obligation o = run.solve(p.name, "holonomic", ctx, enc, legalFirst && enc.legal(partner) && unjoined(partner),
-                                     [](const z3::model&, PropertyResult&) {}, proved);
-            if (o.result.verdict != Verdict::Violated) {
-                report.obligations.push_back(o);
-                break;
-            }
-            // Strong holonomy fails: deepen from paths of two steps.
-            std::vector<SmtEncoding::State> path{first};
-            std::vector<z3::expr> selectors;
-            z3::expr steps = ctx.bool_val(true), lemmas = enc.instantiate().all;
-            auto decode = [&](const z3::model& m, PropertyResult& r) {
-                Trace t;
-                for (std::size_t k = 0; k < path.size(); ++k) t.steps.push_back({enc.decode(m, path[k]), k ? run.placedFrom(m, selectors[k - 1]) : -1});
-                const std::size_t distance = t.steps.size() - 1;
-                t.description = "two configurations one " + adjacency + " apart need " + stepCount(distance);
-                r.trace = t;
-                r.summary = "configurations one " + adjacency + " apart, with no rule step between them, are " + stepCount(distance) + " apart";
-                r.witness = {{"distance", distance}, {"adjacency", byMove ? "move" : "occupancy"}};
-            };
-            double spent = o.result.seconds;
-            const double configurations = std::pow(static_cast<double>(model.alphabet().size()), n);
-            for (int k = 1;; ++k) {
-                path.push_back(enc.state("p" + std::to_string(k)));
-                selectors.push_back(ctx.int_const(("step" + std::to_string(k)).c_str()));
-                steps = steps && enc.step(path[k - 1], path[k], selectors.back());
-                if (k == 1) continue;  // a pair one step apart is joined
-                if (k > configurations - 1) {
-                    // A shortest path visits each configuration once: none of such a pair is reachable.
-                    o = Runner::named(p.name, "holonomic");
-                    o.result.verdict = Verdict::Holds;
-                    o.result.summary = "configurations one " + adjacency + " apart are one rule step apart, or unreachable (no path of up to " +
-                                       stepCount(k - 1) + " joins them, and a shortest path is shorter than the " +
-                                       std::to_string(static_cast<long long>(configurations)) + " configurations)";
-                    break;
+                    if (budget.expired()) {
+                        o = Runner::named(p.name, "holonomic");
+                        o.result.summary = "undecided: legal configurations one " + adjacency + " apart with no rule step between them exist, and no path of up to " +
+                                           stepCount(k - 1) + " joins such a pair (timeout)";
+                        break;
+                    }
+                    lemmas = lemmas && enc.instantiate().all;
+                    o = run.solve(p.name, "holonomic", ctx, enc, legalFirst && steps && unjoined(path[k]), decode, proved, 1.0, lemmas);
+                    spent += o.result.seconds;
+                    o.result.seconds = spent;
+                    if (o.result.verdict != Verdict::Holds) break;  // a shortest path, or the solver gave up
                 }
-                if (spent >= options.timeoutSeconds) {
-                    o = Runner::named(p.name, "holonomic");
-                    o.result.summary = "undecided: legal configurations one " + adjacency + " apart with no rule step between them exist, and no path of up to " +
-                                       stepCount(k - 1) + " joins such a pair (timeout)";
-                    break;
-                }
-                lemmas = lemmas && enc.instantiate().all;
-                o = run.solve(p.name, "holonomic", ctx, enc, legalFirst && steps && unjoined(path[k]), decode, proved, 1.0, lemmas);
-                spent += o.result.seconds;
                 o.result.seconds = spent;
-                if (o.result.verdict != Verdict::Holds) break;  // a shortest path, or the solver gave up
+                return o;
             }
-            o.result.seconds = spent;
-            report.obligations.push_back(o);
-            break;
-        }
-        }
+            }
+            throw InternalError("verify: a property kind with no obligation");
+        }));
     }
 
     // What --depth and --reach show unreachable: a state breaking an invariant, or (progress) a
@@ -603,8 +656,10 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
     // (and the timeout): a bad state within k steps, for k = 0, 1, ..., so the first one found
     // is at the end of a shortest path. The last query asked is the whole obligation.
     auto bmc = [&](const Target& target, int depth, const std::string& name) {
-        z3::context ctx;
-        SmtEncoding enc(ctx, e);
+        const Budget budget(options.timeoutSeconds);
+        const Context context = newContext(budget);
+        z3::context& ctx = *context;
+        SmtEncoding enc(ctx, e, SmtEncoding::Use::Queries, budget);
         std::vector<SmtEncoding::State> path{enc.state("s0")};
         std::vector<z3::expr> selectors;
         z3::expr start = ctx.bool_val(false);
@@ -628,7 +683,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         Obligation o = run.solve(name, "bmc", ctx, enc, start && someBad, decode, proved, 1.0, lemmas);
         for (int k = 1; k <= depth && o.result.verdict == Verdict::Holds; ++k) {
             const double spent = o.result.seconds;
-            if (spent >= options.timeoutSeconds) {
+            if (budget.expired()) {
                 o.result.verdict = Verdict::Unknown;
                 o.result.summary = "timeout at depth " + std::to_string(k);
                 break;
@@ -648,7 +703,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             if (t.property->kind != rules::Property::Kind::Invariant) continue;
             const std::string name = t.property->name + "@bmc" + std::to_string(options.depth);
             announce(name);
-            report.obligations.push_back(bmc(t, options.depth, name));
+            report.obligations.push_back(withinLimits(name, "bmc", [&] { return bmc(t, options.depth, name); }));
         }
 
     // Every reachable state, without a depth bound: Horn clauses for Spacer (Reach.cpp). A
@@ -668,7 +723,9 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             });
             if (!initially) continue;
             auto asked = std::find_if(report.obligations.begin(), report.obligations.end(), [&](const Obligation& o) { return o.result.name == p->name; });
-            if ((asked != report.obligations.end() ? asked->result.verdict : proveInductive(quietRun, *p).result.verdict) == Verdict::Holds) known.push_back(p);
+            const Budget budget(options.timeoutSeconds);
+            const auto proved = [&] { return withinLimits(p->name, "invariant", [&] { return proveInductive(quietRun, *p, budget); }).result.verdict; };
+            if ((asked != report.obligations.end() ? asked->result.verdict : proved()) == Verdict::Holds) known.push_back(p);
         }
     }
     auto knownAt = [&](SmtEncoding& enc, const SmtEncoding::State& s) {
@@ -682,7 +739,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             announce(name);
             const std::optional<rules::OutputFile> file = options.smtOut.empty() ? std::nullopt : std::optional(run.smtPath(name));
             const bool isKnown = std::find(known.begin(), known.end(), t.property) != known.end();
-            const ReachProof proof = isKnown ? ReachProof{} : proveUnreachable(e, t.bad, options.initial, options.timeoutSeconds, file ? &*file : nullptr, known.empty() ? BadStates() : BadStates(knownAt));
+            const ReachProof proof = isKnown ? ReachProof{} : proveUnreachable(e, t.bad, options.initial, Budget(options.timeoutSeconds), file ? &*file : nullptr, known.empty() ? BadStates() : BadStates(knownAt));
             Obligation o = Runner::named(name, "reach");
             for (const std::string& f : proof.certificateFiles) o.smtFile += (o.smtFile.empty() ? "" : " ") + f;
             o.result.verdict = proof.verdict;
@@ -698,11 +755,11 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 o.result.witness = {{"inductive_invariant", proof.invariant}};
                 if (t.property->kind == rules::Property::Kind::Invariant) known.push_back(t.property);
             } else if (proof.verdict == Verdict::Unknown) {
-                o.result.summary = "the solver gave up: " + proof.reason;
+                o.result.summary = "the solver gave up: " + unknownReason(proof.reason);
             } else {
                 o.result.verdict = Verdict::Unknown;
                 o.result.summary = "a bad state is reachable, but no trace to it within the timeout";
-                Obligation shortest = bmc(t, std::numeric_limits<int>::max(), name);
+                Obligation shortest = withinLimits(name, "reach", [&] { return bmc(t, std::numeric_limits<int>::max(), name); });
                 o.result.seconds += shortest.result.seconds;
                 if (shortest.result.verdict == Verdict::Violated) {
                     shortest.result.kind = "reach";

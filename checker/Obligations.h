@@ -14,7 +14,8 @@
 namespace holon::checker {
 
 struct VerifyOptions {
-    double timeoutSeconds = 120;                // per obligation
+    double timeoutSeconds = 120;                // per obligation: building, writing and solving it
+    std::uint64_t memoryMiB = 0;                // Z3's memory limit for this process; 0: none
     int depth = 0;                              // > 0: bounded model checking from `initial`
     bool reach = false;                         // every state reachable from `initial` (Spacer)
     std::vector<rules::Configuration> initial;

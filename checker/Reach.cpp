@@ -15,6 +15,7 @@
 
 #include "checker/Forked.h"
 #include "checker/SmtEncoding.h"
+#include "checker/Solver.h"
 #include "rules/Error.h"
 
 #include <algorithm>
@@ -159,7 +160,7 @@ std::vector<z3::expr> irredundant(const z3::expr& found, const z3::expr& onState
 
 /// The Horn clauses, built and solved in this process.
 ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadStates& bad, const BadStates& known,
-                     const std::vector<rules::Configuration>& initial, double timeoutSeconds, const std::string& smtOption, const std::string& smtFile) {
+                     const std::vector<rules::Configuration>& initial, const Budget& budget, const std::string& smtOption, const std::string& smtFile) {
     const auto start = std::chrono::steady_clock::now();
     const rules::Region& region = engine.region();
     const rules::Model& model = engine.model();
@@ -169,7 +170,7 @@ ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadSta
     // are fixed in every clause; otherwise they are arguments of reach, set by the initial clause.
     const bool sharedInputs = std::all_of(initial.begin(), initial.end(), [&](const auto& c) { return c.inputs == initial.front().inputs; });
 
-    SmtEncoding enc(ctx, engine, SmtEncoding::Use::HornClauses);
+    SmtEncoding enc(ctx, engine, SmtEncoding::Use::HornClauses, budget);
     std::vector<Atom> atoms;
     for (int i = 0; i < region.size(); ++i) {
         const rules::Vec v = region.cell(i);
@@ -214,9 +215,14 @@ ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadSta
     const z3::expr badBody = isBad && newFacts();
 
     z3::solver solver(ctx, "HORN");
-    z3::params params(ctx);
-    params.set("timeout", static_cast<unsigned>(timeoutSeconds * 1000));
-    solver.set(params);
+    // Spacer and each certificate check get the time left.
+    auto limitTime = [&](z3::solver& s) {
+        budget.check("building the Horn clauses");
+        if (!budget.limited()) return;
+        z3::params params(ctx);
+        params.set("timeout", std::max(1u, static_cast<unsigned>(budget.remaining() * 1000)));
+        s.set(params);
+    };
     solver.add(clause(initBody, at(s)));
     solver.add(clause(stepBody && at(a), at(b)));
     solver.add(clause(badBody && at(q), ctx.bool_val(false)));
@@ -225,10 +231,13 @@ ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadSta
     auto header = [&](const std::string& expected) {
         return "; holon reachability proof: system " + model.system().name + ", region " + region.spec() + "\n; expected: " + expected + "\n";
     };
-    if (!smtFile.empty())
+    if (!smtFile.empty()) {
+        budget.check("writing the SMT-LIB2 file");
         rules::OutputFile(smtOption, smtFile)
             .write(header("sat (the model's `reach` is an inductive invariant excluding the bad states)") + "(set-logic HORN)\n" + solver.to_smt2());
+    }
 
+    limitTime(solver);
     const z3::check_result r = solver.check();
     if (r == z3::unsat) proof.verdict = Verdict::Violated;
     if (r == z3::unknown) proof.reason = solver.reason_unknown();
@@ -244,7 +253,7 @@ ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadSta
         proof.verdict = Verdict::Holds;
         for (const auto& [part, query] : checks) {
             z3::solver check(ctx);
-            check.set(params);
+            limitTime(check);
             check.add(query);
             if (!smtFile.empty()) {
                 const std::string file = smtFile.substr(0, smtFile.size() - 5) + "." + part + ".smt2";
@@ -298,7 +307,7 @@ std::string variantFile(const std::string& smtFile, std::size_t k) {
 // gained reaches(U, nbr, P|F): general2 Progress on 3x2, 1.5 s with safety, 112 s without;
 // general3, a timeout with, 31 s without); the first definite answer wins.
 ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, const std::vector<rules::Configuration>& initial,
-                            double timeoutSeconds, const rules::OutputFile* smt, const BadStates& known) {
+                            const Budget& budget, const rules::OutputFile* smt, const BadStates& known) {
     const std::string smtFile = smt ? smt->path() : std::string(), smtOption = smt ? smt->option() : std::string();
     const BadStates nothing = [](SmtEncoding&, const SmtEncoding::State& st) { return st.is[0][0].ctx().bool_val(true); };
     std::vector<BadStates> variants{known ? known : nothing};
@@ -307,17 +316,18 @@ ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, c
     for (std::size_t k = 0; k < variants.size(); ++k)
         jobs.push_back([&, k](bool forked) {
             auto solve = [&](z3::context& ctx) {
-                ReachProof p = solveHorn(ctx, engine, bad, variants[k], initial, timeoutSeconds, smtOption, variantFile(smtFile, k));
+                ReachProof p = solveHorn(ctx, engine, bad, variants[k], initial, budget, smtOption, variantFile(smtFile, k));
                 p.usedKnown = known && k == 0;
                 return toJson(p);
             };
-            if (forked) return solve(*new z3::context);  // never freed: the child ends with _exit
-            z3::context ctx;
-            return solve(ctx);
+            if (forked) {
+                shareSolverMemory(static_cast<int>(variants.size()));
+                return solve(*newContext().release());  // never freed: the child ends with _exit
+            }
+            return solve(*newContext(budget));
         });
-    const ForkedAnswer answer = firstDecisive(jobs, [](const nlohmann::json& a) {
-        return a.contains("verdict") && static_cast<Verdict>(a["verdict"].get<int>()) != Verdict::Unknown;
-    });
+    const ForkedAnswer answer = firstDecisive(
+        jobs, [](const nlohmann::json& a) { return a.contains("verdict") && static_cast<Verdict>(a["verdict"].get<int>()) != Verdict::Unknown; }, budget);
     ReachProof best = answer.job >= 0 ? fromJson(answer.answer) : ReachProof{};
     const int winner = best.verdict != Verdict::Unknown ? answer.job : -1;
     // The winner's files take the plain names; the others' are removed, with the temporaries of a

@@ -2,6 +2,7 @@
 // Unbounded reachability on a fixed region: an invariant proved for every state reachable from
 // given configurations, by Z3's Spacer engine over constrained Horn clauses.
 
+#include "checker/Budget.h"
 #include "checker/SmtEncoding.h"
 #include "checker/Verdict.h"
 #include "rules/Interpreter.h"
@@ -33,10 +34,11 @@ using BadStates = std::function<z3::expr(SmtEncoding&, const SmtEncoding::State&
 /// Shows the `bad` states unreachable from `initial`. `known`, if given, holds in every reachable
 /// state (invariants proved already); a second solver then takes steps only from states satisfying
 /// it, which can spare Spacer rediscovering it (or not: the first answer wins). `engine` must cover
-/// every input combination (Engine(..., true)). A proof is only reported after the invariant Spacer
+/// every input combination (Engine(..., true)). `budget` bounds building the clauses, Spacer and
+/// the certificate checks; past it the children are stopped and the verdict is unknown. A proof is only reported after the invariant Spacer
 /// found has been checked as a certificate. `smtFile` (a path ending ".smt2"), if given, names the
 /// Horn clauses' file; the certificate checks go next to it, under the same option in messages.
 ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, const std::vector<rules::Configuration>& initial,
-                            double timeoutSeconds, const rules::OutputFile* smtFile = nullptr, const BadStates& known = {});
+                            const Budget& budget, const rules::OutputFile* smtFile = nullptr, const BadStates& known = {});
 
 }  // namespace holon::checker

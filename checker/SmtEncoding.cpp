@@ -25,8 +25,8 @@ namespace holon::checker {
 using rules::CellValue;
 using rules::Expr;
 
-SmtEncoding::SmtEncoding(z3::context& ctx, const rules::Engine& engine, Use use)
-    : ctx_(ctx), engine_(engine), alphabet_(engine.model().alphabet().size()), use_(use) {
+SmtEncoding::SmtEncoding(z3::context& ctx, const rules::Engine& engine, Use use, Budget budget)
+    : ctx_(ctx), engine_(engine), alphabet_(engine.model().alphabet().size()), use_(use), budget_(budget) {
     const int inputs = static_cast<int>(engine.model().system().inputs.size());
     for (int i = 0; i < engine.region().size(); ++i) {
         std::vector<z3::expr> bits;
@@ -47,6 +47,7 @@ z3::expr SmtEncoding::fresh(const std::string& prefix, const z3::sort& sort) {
 }
 
 SmtEncoding::State SmtEncoding::state(const std::string& name) {
+    budget_.check("building the formulas");
     State s;
     for (int i = 0; i < engine_.region().size(); ++i) {
         std::vector<z3::expr> row;
@@ -313,6 +314,7 @@ std::optional<z3::expr> SmtEncoding::cellwise(const Expr& e, const State& s) {
 }
 
 z3::expr SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
+    budget_.check("building the formulas");
     const int n = engine_.region().size();
     switch (e.kind) {
     case Expr::Kind::Bool: return ctx_.bool_val(e.value.num() != 0);
@@ -404,6 +406,7 @@ SmtEncoding::Lemmas SmtEncoding::instantiate() {
     z3::expr kept = ctx_.bool_val(true), reach = ctx_.bool_val(true);
     bool differ = false;
     for (const Hypothesis& h : hypotheses_) {
+        budget_.check("building the lemmas");
         std::vector<std::pair<const std::vector<z3::expr>*, bool>> sets;  // (set, a named predicate)
         for (const std::vector<z3::expr>& set : refutationSets_) sets.push_back({&set, false});
         for (const auto& [state, set] : predicateSets_)
@@ -617,6 +620,7 @@ z3::expr SmtEncoding::guard(const rules::Engine::GuardNode& g, const std::int32_
 }
 
 z3::expr SmtEncoding::matches(int placed, const State& s) {
+    budget_.check("building the formulas");
     const auto& p = engine_.instances()[placed];
     z3::expr all = ctx_.bool_val(true);
     for (int k = 0; k < p.size; ++k)

@@ -1,7 +1,8 @@
 #pragma once
 // The one translation from the rule IR (through the engine's compiled tables) to Z3 expressions.
-// Z3 appears only here and in Obligations.cpp.
+// Z3's limits and failures are in Solver.h.
 
+#include "checker/Budget.h"
 #include "rules/Engine.h"
 
 #include <functional>
@@ -21,7 +22,10 @@ public:
     /// counts and masses stay two sums instead of one sum of per-cell differences (see the .cpp).
     enum class Use { Queries, HornClauses };
     /// `engine` must cover every input combination (Engine(..., true)) when inputs are left open.
-    SmtEncoding(z3::context& ctx, const rules::Engine& engine, Use use = Use::Queries);
+    /// Building formulas throws OutOfTime once `budget` is spent: on a large region encoding alone
+    /// can take longer than the solver is given.
+    SmtEncoding(z3::context& ctx, const rules::Engine& engine, Use use = Use::Queries, Budget budget = Budget());
+    const Budget& budget() const { return budget_; }
 
     /// A configuration, one-hot: is[i][v] says cell i holds state v; exactly one per cell (the
     /// domain constraints go to `facts()`).
@@ -141,6 +145,7 @@ private:
     const rules::Engine& engine_;
     int alphabet_;
     Use use_;
+    Budget budget_;
     std::vector<std::vector<z3::expr>> inputBits_;  // [cell][input]
     std::vector<z3::expr> facts_;
     int counter_ = 0;

@@ -6,6 +6,7 @@
 #include "rules/Error.h"
 #include "rules/Escape.h"
 
+#include <csignal>
 #include <iostream>
 #include <map>
 
@@ -46,6 +47,9 @@ int runHolon(int argc, char** argv) {
     } catch (const holon::InputError& e) {
         std::cerr << "holon: error: " << rules::escapeText(e.what(), true) << '\n';
         return kExitBadInput;
+    } catch (const Interrupted& e) {
+        std::cerr << "holon: " << (e.signal() == SIGINT ? "interrupted (SIGINT)" : e.signal() == SIGTERM ? "terminated (SIGTERM)" : e.what()) << '\n';
+        return 128 + e.signal();
     } catch (const LimitError& e) {
         std::cerr << "holon: limit: " << rules::escapeText(e.what(), true) << '\n';
         return kExitUndecided;

@@ -82,6 +82,9 @@ inline int withinMemory(std::uint64_t memoryMiB, const std::function<int()>& job
     }
 }
 
+/// --memory values in MiB: from 16 MiB to 16 TiB.
+inline CLI::Range memoryRange() { return CLI::Range(std::uint64_t{16}, std::uint64_t{1} << 24); }
+
 using Run = std::function<int()>;
 
 /// Parses the arguments, runs the subcommand they name and returns its exit code; every exception

@@ -23,6 +23,7 @@ struct VerifyArgs {
     std::vector<std::string> from, inputs, properties, noWarnings;
     int depth = 0;
     double timeout = 120;
+    std::uint64_t memoryMiB = 16384;
     bool json = false, reach = false;
 };
 
@@ -38,6 +39,7 @@ int run(const VerifyArgs& a) {
     if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
     checker::VerifyOptions options;
     options.timeoutSeconds = a.timeout;
+    options.memoryMiB = a.memoryMiB;
     options.depth = a.depth;
     options.reach = a.reach;
     options.properties = a.properties;
@@ -153,7 +155,8 @@ Run addVerifyCommand(CLI::App& app) {
     sub->add_flag("--reach", a->reach, "also prove the invariants for every state reachable from --from, at any depth (Spacer)");
     sub->add_option("--from", a->from, "initial configuration for --depth and --reach (JSON or ASCII art); repeatable");
     sub->add_option("--input", a->inputs, "inputs of the initial configurations: NAME=FILE (ASCII mask), NAME=none or NAME=all; each input must be given with --from");
-    sub->add_option("--timeout", a->timeout, "seconds per obligation (default 120)")->check(secondsValidator());
+    sub->add_option("--timeout", a->timeout, "seconds per obligation, encoding and solving (default 120)")->check(secondsValidator());
+    sub->add_option("--memory", a->memoryMiB, "memory bound for Z3 in MiB (default 16384)")->check(memoryRange());
     sub->add_flag("--json", a->json, "print the report as JSON");
     sub->add_option("--smt-out", a->smtOut, "write every obligation as SMT-LIB2 into this directory");
     sub->add_option("--trace-out", a->traceOut, "write each counterexample as an ITF JSON trace (several: FILE with the obligation's name inserted)");

@@ -2,7 +2,7 @@
 // The exception types holon throws: InputError for bad input or misuse (the CLI's exit code 2,
 // with a message that names the place and the fix), LimitError for a job over a limit the user can
 // raise (exit code 3), InternalError for a bug in holon itself (exit code 4, with a request for a
-// report; never shown as bad input).
+// report; never shown as bad input), Interrupted for a job stopped by a signal (128 + the signal).
 
 #include <stdexcept>
 #include <string>
@@ -24,6 +24,17 @@ public:
 class InternalError : public std::logic_error {
 public:
     explicit InternalError(const std::string& message) : std::logic_error(message) {}
+};
+
+/// A long job stopped by SIGINT or SIGTERM after it stopped its helpers (verify's solver
+/// processes): the CLI exits 128 + the signal.
+class Interrupted : public std::runtime_error {
+public:
+    explicit Interrupted(int signal) : std::runtime_error("interrupted by signal " + std::to_string(signal)), signal_(signal) {}
+    int signal() const { return signal_; }
+
+private:
+    int signal_;
 };
 
 }  // namespace holon
