@@ -69,6 +69,8 @@ public:
     /// Ids handed out so far (including those of blocks their threads did not use, see isHole()).
     StateId capacityUsed() const { return next_.load(std::memory_order_relaxed); }
     std::uint64_t size() const { return capacityUsed() - holes_.load(std::memory_order_relaxed); }
+    /// States the arena holds without growing.
+    std::uint64_t capacity() const { return capacity_; }
     /// Makes room for `more` new states without reallocating; call only while no thread inserts.
     void reserve(std::uint64_t more);
     /// Releases the headroom reserve() kept: the table is rebuilt at most half full and the arena cut
