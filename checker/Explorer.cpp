@@ -312,7 +312,7 @@ bool Explorer::legalCells(const CellValue* cells, std::uint64_t* occupied) const
     return engine_->legalOn(words);
 }
 
-void Explorer::gather(StateId id, Successors& out) const {
+bool Explorer::gather(StateId id, Successors& out, Worker& worker) {
     // Under a ranking a successor is only its rank; otherwise it is packed by patching the
     // parent's words and its table slot is prefetched. On words, a successor's legality is
     // decided here, before any look-up: only legal states are stored, so an illegal successor
@@ -340,6 +340,7 @@ void Explorer::gather(StateId id, Successors& out) const {
             out.via[k] = p, ++out.count;
         });
     } else {
+        bool stopped = false;
         std::vector<CellValue>& cells = out.cells;
         cells.resize(engine_->region().size());
         unpack(id, cells.data());
@@ -360,14 +361,18 @@ void Explorer::gather(StateId id, Successors& out) const {
                 return;
             }
             // Only the hash is kept: resolve rebuilds the words where it needs them, so that one
-            // state's successors never hold the region's words once per instance.
+            // state's successors never hold the region's words once per instance. A limit
+            // skips the rest (a state of a huge region has hundreds of thousands).
+            if ((at & 255) == 255) stopped = stopped || stopping(worker, 256);
+            if (stopped) return;
             packSuccessor(out, p, out.packed.data());
             out.keys[at] = store_.prefetch(out.packed.data());
         });
-        return;
+        return !stopped;
     }
     if (!ranked())
         for (std::size_t k = 0; k < out.count; ++k) out.keys[k] = store_.prefetch(&out.packed[k * words]);
+    return true;
 }
 
 void Explorer::packSuccessor(const Successors& s, int placed, std::uint64_t* out) const {
@@ -387,24 +392,33 @@ Explorer::Worker::Worker(const rules::Engine& engine, int words, bool onWords) :
     for (Successors& s : ring) s.packed.resize((onWords ? room : 1) * words), s.keys.resize(room), s.probe.resize(room), s.via.resize(room);
 }
 
-bool Explorer::claimRoom(std::uint64_t n) {
-    const auto want = static_cast<std::int64_t>(n);
-    if (room_.fetch_sub(want, std::memory_order_relaxed) >= want) return true;
-    room_.fetch_add(want, std::memory_order_relaxed);
+bool Explorer::claimRoom(Worker& worker, std::uint64_t n, bool mayRefuse) {
+    // From the worker's own share first; the round's room is taken a block at a time, so the
+    // threads seldom meet on its cache line.
+    if (worker.room >= n) return worker.room -= n, true;
+    for (const std::uint64_t take : {std::max<std::uint64_t>(n, 4096), n}) {
+        const auto want = static_cast<std::int64_t>(take);
+        if (room_.fetch_sub(want, std::memory_order_relaxed) >= want) return worker.room += take - n, true;
+        room_.fetch_add(want, std::memory_order_relaxed);
+    }
+    if (!mayRefuse) return false;
     for (std::uint64_t seen = refusedClaim_.load(); seen < n && !refusedClaim_.compare_exchange_weak(seen, n);) {}
     abandon_.store(true, std::memory_order_relaxed);
     return false;
 }
 
 bool Explorer::resolve(const Successors& s, Worker& worker) {
-    // Two passes, so that a state is either done or untouched. The first looks every successor
-    // up and decides the legality of those not found, changing nothing: a limit or a full store
-    // puts the state back for a later round. The second stores the new ones in the room taken
-    // for them and records the edges. Only legal states are ever stored, so a successor found
-    // needs no constraint check; one not found is new if gather already decided it is legal (on
-    // words), is checked with the incremental evaluator (cell by cell), or, when the store
-    // already holds every legal configuration (--all), known to be illegal.
+    // A state is either done or untouched. Its new successors are stored in room taken for them
+    // beforehand: for a state with few successors, one for each (most are known already, and the
+    // rest is given back); otherwise a first pass looks every successor up and decides the
+    // legality of those not found, changing nothing, so that a limit or a full store puts the
+    // state back for a later round, and takes room for exactly the new ones. Only legal states
+    // are ever stored, so a successor found needs no constraint check; one not found is new if
+    // gather already decided it is legal (on words), is checked with the incremental evaluator
+    // (cell by cell), or, when the store already holds every legal configuration (--all), known
+    // to be illegal.
     constexpr StateId kFresh = kNoState - 1;  // a new legal successor, not stored yet
+    constexpr std::size_t kOnePass = 1024;
     const int words = store_.layout().words();
     std::uint64_t* scratch = worker.scratch.data();
     auto successor = [&](std::size_t k) -> const std::uint64_t* {
@@ -412,31 +426,38 @@ bool Explorer::resolve(const Successors& s, Worker& worker) {
         packSuccessor(s, s.via[k], scratch);
         return scratch;
     };
-    std::vector<StateId>& found = worker.found;
-    found.resize(s.count);
     rules::Engine::Evaluator& ev = worker.ev;
     bool loaded = false;
-    std::uint64_t fresh = 0;
-    for (std::size_t k = 0; k < s.count; ++k) {
-        if (stopping(worker, 1)) return false;
-        found[k] = ranked() ? rankOf(s.keys[k]) : store_.find(successor(k), s.keys[k], s.probe[k]);
-        if (found[k] != kNoState || complete_) continue;
-        bool legal = true;  // on words: decided in gather
-        if (!words_) {
+    auto lookUp = [&](std::size_t k) {
+        const StateId sid = ranked() ? rankOf(s.keys[k]) : store_.find(successor(k), s.keys[k], s.probe[k]);
+        if (sid != kNoState || complete_) return sid;
+        if (!words_) {  // on words: decided in gather
             if (!loaded) ev.load(s.cells.data()), loaded = true;
             CellValue saved[rules::Engine::kMaxCells];
             ev.apply(s.via[k], saved);
-            legal = ev.legal();
+            const bool legal = ev.legal();
             ev.undo(s.via[k], saved);
+            if (!legal) return kNoState;
         }
-        if (legal) found[k] = kFresh, ++fresh;
+        return kFresh;
+    };
+    std::uint64_t room = s.count;
+    const bool onePass = s.count <= kOnePass && (complete_ || claimRoom(worker, room, false));
+    std::vector<StateId>& found = worker.found;
+    if (!onePass) {
+        found.resize(s.count);
+        room = 0;
+        for (std::size_t k = 0; k < s.count; ++k) {
+            if ((k & 255) == 255 && stopping(worker, 256)) return false;  // a state of a huge region can take seconds
+            if ((found[k] = lookUp(k)) == kFresh) ++room;
+        }
+        if (room && !claimRoom(worker, room, true)) return false;
     }
-    if (fresh && !claimRoom(fresh)) return false;
     thread_local std::vector<StateId> seen;
     seen.clear();
     std::uint64_t edges = 0, added = 0;
     for (std::size_t k = 0; k < s.count; ++k) {
-        StateId sid = found[k];
+        StateId sid = onePass ? lookUp(k) : found[k];
         if (sid == kNoState) continue;
         if (sid == kFresh) {
             const auto [id, inserted] = store_.insert(successor(k), s.keys[k], worker.ids);
@@ -462,7 +483,7 @@ bool Explorer::resolve(const Successors& s, Worker& worker) {
         ++edges;
         if (options_.recordEdges) worker.edges.push_back({s.from, sid, s.via[k]});
     }
-    if (fresh > added) room_.fetch_add(static_cast<std::int64_t>(fresh - added), std::memory_order_relaxed);
+    if (!complete_) worker.room += room - added;  // what was not used, or another thread stored first
     if (edges == 0) worker.terminal.push_back(s.from);
     worker.edgeCount += edges;
     return true;
@@ -477,8 +498,7 @@ void Explorer::expandRange(const StateId* states, std::size_t lo, std::size_t hi
     auto putBack = [&](std::size_t first) { worker.deferred.insert(worker.deferred.end(), states + first, states + hi); };
     for (std::size_t k = lo; k < hi + 2; ++k) {
         if (k < hi) {
-            if (stopping(worker, 1)) return putBack(k - std::min<std::size_t>(k - lo, 2));
-            gather(states[k], ring[k % 3]);
+            if (stopping(worker, 1) || !gather(states[k], ring[k % 3], worker)) return putBack(k - std::min<std::size_t>(k - lo, 2));
         }
         if (k >= lo + 1 && k - 1 < hi) {
             Successors& s = ring[(k - 1) % 3];
@@ -498,8 +518,12 @@ std::size_t Explorer::bytesPerNewState() const {
 }
 
 std::size_t Explorer::bytesHeld(const std::vector<Worker>& workers, std::size_t listed) const {
-    std::size_t bytes = store_.bytes() + rankingBytes() + parent_.size() * (sizeof(StateId) + sizeof(std::int32_t)) +
-                        (listed + terminal_.size()) * sizeof(StateId);
+    // The stored states with their table and BFS links, and the row starts built when the search
+    // ends. Room reserved beyond the states stored is not counted: its pages are untouched until
+    // a state is stored there, and a round stores at most the room it was given.
+    const std::size_t used = store_.capacityUsed();
+    std::size_t bytes = store_.bytesUsed() + rankingBytes() + used * (sizeof(StateId) + sizeof(std::int32_t)) +
+                        (options_.recordEdges ? used * sizeof(std::uint64_t) : 0) + (listed + terminal_.size()) * sizeof(StateId);
     for (const Worker& w : workers) {
         // Each edge is held by its worker now and in the rows (successor and instance) later.
         bytes += w.edges.size() * (sizeof(Worker::Edge) + sizeof(StateId) + sizeof(std::int32_t));
@@ -570,18 +594,20 @@ const ExploreStats& Explorer::explore() {
                     if (store_.size() < options_.limits.maxStates) want = std::min<std::uint64_t>(want, options_.limits.maxStates - store_.size());
                     want = std::max(want, refused);
                 }
+                // As many states as --memory has left room for, and at least the largest state
+                // put back.
                 const std::size_t held = bytesHeld(workers, sizeOf(level) + sizeOf(next) + sizeOf(retry));
-                const std::uint64_t covered = store_.capacity() - std::min<std::uint64_t>(store_.capacity(), store_.capacityUsed() + blockRoom);
-                const std::uint64_t extra = want > covered ? (want - covered) * perState : 0;
+                want = std::min<std::uint64_t>(want, held < options_.limits.memoryBytes ? (options_.limits.memoryBytes - held) / perState : 0);
                 StopReason limit = StopReason::Finished;
                 if (store_.size() >= options_.limits.maxStates) limit = StopReason::MaxStates;
                 else if (budget_.expired()) limit = StopReason::Timeout;
-                else if (held + extra >= options_.limits.memoryBytes) limit = StopReason::Memory;
+                else if (held >= options_.limits.memoryBytes || want < std::max<std::uint64_t>(refused, complete_ ? 0 : 1)) limit = StopReason::Memory;
                 if (limit == StopReason::Finished && !complete_) {
                     store_.reserve(want + blockRoom);
                     growLinks(store_.capacityUsed() + want + blockRoom);
                 }
                 room_ = static_cast<std::int64_t>(want);
+                for (Worker& w : workers) w.room = 0;
                 abandon_ = false;
                 if (limit == StopReason::Finished) try {
                         pool.run([&](int t) {

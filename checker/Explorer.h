@@ -130,6 +130,7 @@ private:
         std::vector<StateId> found;     // resolve's first pass: per successor its id, kNoState or kFresh
         std::vector<std::uint64_t> scratch;  // one successor's words
         std::uint32_t ticks = 0;        // work since the clock was last read
+        std::uint64_t room = 0;         // room for new states taken from the round's, not used yet
         struct Edge {
             StateId from, to;
             std::int32_t via;
@@ -147,7 +148,8 @@ private:
     bool legalCells(const CellValue* cells, std::uint64_t* occupied) const;
     /// The cells of the candidate with this index (its digits in base alphabet size).
     void digits(std::uint64_t index, CellValue* cells) const;
-    void gather(StateId id, Successors& out) const;
+    /// Lists a state's successors; false when a limit stopped it first.
+    bool gather(StateId id, Successors& out, Worker& worker);
     /// The cell-by-cell path's successor by instance `placed` of the state gather loaded into `s`.
     void packSuccessor(const Successors& s, int placed, std::uint64_t* out) const;
     /// Stores a state's new successors and records its edges; false when the round must stop
@@ -173,9 +175,9 @@ private:
         abandon_.store(true, std::memory_order_relaxed);
     }
     StopReason halted() const { return static_cast<StopReason>(halt_.load()); }
-    /// Takes room for n new states from the round's reservation; false (and the round stops)
-    /// when it is spent.
-    bool claimRoom(std::uint64_t n);
+    /// Takes room for n new states from the round's reservation; false when it is spent, and
+    /// then, if `mayRefuse`, the round stops to grow.
+    bool claimRoom(Worker& worker, std::uint64_t n, bool mayRefuse);
     /// What the explorer holds now, and what one more stored state costs at most.
     std::size_t bytesHeld(const std::vector<Worker>& workers, std::size_t listed) const;
     std::size_t bytesPerNewState() const;

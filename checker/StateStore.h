@@ -69,8 +69,6 @@ public:
     /// Ids handed out so far (including those of blocks their threads did not use, see isHole()).
     StateId capacityUsed() const { return next_.load(std::memory_order_relaxed); }
     std::uint64_t size() const { return capacityUsed() - holes_.load(std::memory_order_relaxed); }
-    /// States the arena holds without growing.
-    std::uint64_t capacity() const { return capacity_; }
     /// Makes room for `more` new states without reallocating; call only while no thread inserts.
     void reserve(std::uint64_t more);
     /// Releases the headroom reserve() kept: the table is rebuilt at most half full and the arena cut
@@ -128,6 +126,8 @@ public:
     /// Memory held per stored state, table and arena together.
     double bytesPerState() const;
     std::size_t bytes() const;
+    /// bytes() without the arena's room beyond the states stored (untouched pages).
+    std::size_t bytesUsed() const;
 
 private:
     // A slot is 0 (empty) or id + 1 in its low bits (as many as the slot count needs) and, above

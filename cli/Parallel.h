@@ -1,11 +1,11 @@
 #pragma once
 // Independent jobs spread over the machine's cores (or `threads`), with an optional progress line on
-// a terminal. The first exception a job throws stops the others and is rethrown as an InputError.
-
-#include "rules/Error.h"
+// a terminal. The first exception a job throws stops the others and is rethrown as it was (an
+// InputError is bad input, std::bad_alloc a job too large for the machine, anything else a bug).
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
 #include <functional>
 #include <iostream>
 #include <mutex>
@@ -18,14 +18,14 @@ namespace holon::cli {
 inline void runParallel(int jobs, int threads, bool progress, const std::string& unit, const std::function<void(int)>& job) {
     std::atomic<int> next{0}, done{0};
     std::mutex io;
-    std::string firstError;
+    std::exception_ptr firstError;
     auto worker = [&] {
         for (int j; (j = next++) < jobs;) {
             try {
                 job(j);
-            } catch (const std::exception& e) {
+            } catch (...) {
                 std::lock_guard lock(io);
-                if (firstError.empty()) firstError = e.what();
+                if (!firstError) firstError = std::current_exception();
                 next = jobs;
                 return;
             }
@@ -40,7 +40,7 @@ inline void runParallel(int jobs, int threads, bool progress, const std::string&
     for (int t = 0; t < n; ++t) pool.emplace_back(worker);
     for (auto& t : pool) t.join();
     if (progress) std::cerr << '\n';
-    if (!firstError.empty()) throw InputError(firstError);
+    if (firstError) std::rethrow_exception(firstError);
 }
 
 }  // namespace holon::cli

@@ -76,6 +76,17 @@ std::string stdoutFailure() {
     return err != 0 ? std::strerror(err) : "an earlier write failed";
 }
 
+/// What to change when a subcommand runs out of the machine's memory: the options that size its
+/// work. check's own --memory bound stops it cleanly first unless it is set above what is free.
+std::string memoryAdvice(const std::string& command) {
+    if (command == "check") return "set --memory below the memory this machine has free (it bounds the exploration), lower --max-states, or choose a smaller --region";
+    if (command == "verify") return "choose a smaller --region or a lower --depth";
+    if (command == "plan") return "choose smaller --from/--to shapes or a lower --scale";
+    if (command == "hex") return "choose a smaller --size or fewer --steps";
+    if (command == "roombots") return "choose a smaller structure or fewer --runs";
+    return "give it fewer or smaller files";
+}
+
 int runHolon(int argc, char** argv) {
     CLI::App app{"holon: check, verify and run rule systems for lattice modular robots"};
     app.require_subcommand(1);
@@ -104,14 +115,18 @@ int runHolon(int argc, char** argv) {
         app.exit(e);
         return holon::cli::kExitBadInput;
     }
+    std::string command;
     try {
         for (auto& [sub, run] : runs)
-            if (sub->parsed()) return run();
+            if (sub->parsed()) {
+                command = sub->get_name();
+                return run();
+            }
     } catch (const holon::InputError& e) {
         std::cerr << "holon: error: " << e.what() << '\n';
         return holon::cli::kExitBadInput;
     } catch (const std::bad_alloc&) {
-        std::cerr << "holon: error: out of memory before the job could finish; raise the machine's memory or lower --memory / --max-states\n";
+        std::cerr << "holon " << command << ": stopped: the machine has no memory left for this job; " << memoryAdvice(command) << '\n';
         return holon::cli::kExitUndecided;
     } catch (const std::exception& e) {
         std::cerr << "holon: internal error: " << e.what() << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
