@@ -602,14 +602,17 @@ const ExploreStats& Explorer::explore() {
                 if (store_.size() >= options_.limits.maxStates) limit = StopReason::MaxStates;
                 else if (budget_.expired()) limit = StopReason::Timeout;
                 else if (held >= options_.limits.memoryBytes || want < std::max<std::uint64_t>(refused, complete_ ? 0 : 1)) limit = StopReason::Memory;
-                if (limit == StopReason::Finished && !complete_) {
-                    store_.reserve(want + blockRoom);
-                    growLinks(store_.capacityUsed() + want + blockRoom);
-                }
                 room_ = static_cast<std::int64_t>(want);
                 for (Worker& w : workers) w.room = 0;
                 abandon_ = false;
-                if (limit == StopReason::Finished) try {
+                if (limit != StopReason::Finished) {
+                    halt(limit);
+                } else {
+                    try {
+                        if (!complete_) {
+                            store_.reserve(want + blockRoom);
+                            growLinks(store_.capacityUsed() + want + blockRoom);
+                        }
                         pool.run([&](int t) {
                             try {
                                 for (int i = 0; i < threads; ++i) {
@@ -622,10 +625,10 @@ const ExploreStats& Explorer::explore() {
                                 throw;
                             }
                         });
-                    } catch (const std::bad_alloc&) {
+                    } catch (const std::bad_alloc&) {  // every thread is back: a memory stop
                         halt(StopReason::Memory);
                     }
-                else halt(limit);
+                }
                 for (int t = 0; t < threads; ++t) {
                     Worker& w = workers[t];
                     store_.release(w.ids);

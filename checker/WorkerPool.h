@@ -8,10 +8,8 @@
 // process (an exception leaving a thread's function calls std::terminate) nor let the caller
 // unwind while other threads still run on its data: each thread catches, the round still ends at
 // the barrier with every thread back, and run() then rethrows the first exception on the caller.
-// failed() lets the other threads' jobs stop early. A thread that cannot be created leaves the
-// pool smaller, not broken.
+// A thread that cannot be created leaves the pool smaller, not broken.
 
-#include <atomic>
 #include <barrier>
 #include <exception>
 #include <functional>
@@ -55,14 +53,11 @@ public:
     void run(const std::function<void(int)>& job) {
         job_ = &job;
         failure_ = nullptr;
-        failed_.store(false, std::memory_order_relaxed);
         start_.arrive_and_wait();
         guarded(0);
         end_.arrive_and_wait();
         if (failure_) std::rethrow_exception(failure_);
     }
-    /// Some thread's job of this round has thrown: the others may stop early.
-    bool failed() const { return failed_.load(std::memory_order_relaxed); }
 
 private:
     void guarded(int t) {
@@ -71,7 +66,6 @@ private:
         } catch (...) {
             const std::lock_guard<std::mutex> lock(failureMutex_);
             if (!failure_) failure_ = std::current_exception();
-            failed_.store(true, std::memory_order_relaxed);
         }
     }
 
@@ -80,7 +74,6 @@ private:
     bool stop_ = false;
     std::mutex failureMutex_;
     std::exception_ptr failure_;
-    std::atomic<bool> failed_{false};
     std::vector<std::thread> helpers_;
 };
 
