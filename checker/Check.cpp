@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <mutex>
+#include <optional>
 
 namespace holon::checker {
 
@@ -43,6 +44,7 @@ nlohmann::json CheckReport::toJson() const {
             {"depth", stats.depth},
             {"seconds", stats.seconds},
             {"stopped", stopReasonName(stats.stopped)},
+            {"enumerating", stats.enumerating},
             {"frontier", stats.frontier},
             {"bytes_per_state", bytesPerState},
             {"properties", props}};
@@ -156,6 +158,40 @@ void judgeStuck(PropertyResult& r, const Explorer& ex, const Stuck& stuck, bool 
     r.witness["unclassified"] = stuck.unclassified;
 }
 
+const char* kindName(rules::Property::Kind kind) {
+    switch (kind) {
+    case rules::Property::Kind::Invariant: return "invariant";
+    case rules::Property::Kind::Conserves: return "conserves";
+    case rules::Property::Kind::Ranking: return "ranking";
+    case rules::Property::Kind::Progress: return "progress";
+    case rules::Property::Kind::Holonomic: return "holonomic";
+    }
+    return "";
+}
+
+/// What a phase after the exploration needs beside the explored graph, per state and per edge,
+/// from its containers (a BGL compressed-sparse-row copy of the graph is 8 bytes a state and 4
+/// an edge; its algorithms' maps a few words a state).
+struct PhaseCost {
+    double perState = 0, perEdge = 0;
+};
+
+/// Why a phase cannot start within the limits (empty: it can): the deadline has passed, or what it
+/// needs beside the explored graph exceeds --memory.
+std::string beyondLimits(const ExploreStats& stats, const Limits& limits, const Budget& budget, PhaseCost cost) {
+    if (budget.expired()) return "not checked: the timeout expired before this phase; raise --timeout";
+    const double need = static_cast<double>(stats.bytes) + cost.perState * static_cast<double>(stats.states) + cost.perEdge * static_cast<double>(stats.edges);
+    if (need <= static_cast<double>(limits.memoryBytes)) return "";
+    const auto mib = [](double bytes) { return std::to_string(static_cast<std::uint64_t>(bytes / (1 << 20)) + 1); };
+    return "not checked: with the explored graph it needs about " + mib(need) + " MiB, more than --memory " + mib(static_cast<double>(limits.memoryBytes) - 1) +
+           "; raise --memory";
+}
+
+constexpr PhaseCost kComponentsCost{16, 0}, kConservesCost{8, 0}, kHolonomyCost{64 + kComponentsCost.perState, 4}, kGoalCost{32, 12};
+/// Two strong-component runs and a shortest path, a flag per edge, and per state a vector of
+/// `terms` ranking values.
+PhaseCost rankingCost(std::size_t terms) { return {128.0 + 16.0 * static_cast<double>(terms), 13}; }
+
 }  // namespace
 
 CheckReport check(const rules::Model& model, const rules::Region& region, const CheckOptions& options, Exploration* keep) {
@@ -187,6 +223,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
 
     Explorer::Options xo;
     xo.limits = options.limits;
+    xo.budget = budget;
     xo.recordEdges = true;
     xo.onProgress = options.onProgress;
     if (!invariants.empty())
@@ -221,9 +258,13 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
     report.stats = ex->explore();
     report.bytesPerState = ex->bytesPerState();
     const bool complete = report.stats.stopped == StopReason::Finished;
+    // Each phase after the exploration starts only within the limits; one that cannot is unknown
+    // with the limit to raise.
+    auto beyond = [&](PhaseCost cost) { return beyondLimits(report.stats, options.limits, budget, cost); };
     Components comps;
-    comps = components(*ex);
-    report.components = complete ? comps.count : -1;
+    const bool componentsFit = complete && beyond(kComponentsCost).empty();  // only a whole graph's count is shown
+    if (componentsFit) comps = components(*ex);
+    report.components = componentsFit ? comps.count : -1;
 
     const auto ids = ex->ids();
     const auto& row = ex->rowStart();
@@ -238,9 +279,27 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
         const auto t0 = Clock::now();
         PropertyResult r;
         r.name = p.name;
+        r.kind = kindName(p.kind);
+        // The phases that need the whole graph, or walk it, with what they hold beside it.
+        std::optional<PhaseCost> cost;
+        switch (p.kind) {
+        case rules::Property::Kind::Invariant:
+        case rules::Property::Kind::Progress: break;  // on the stored states; stuck states have their own budget
+        case rules::Property::Kind::Conserves: cost = kConservesCost; break;
+        case rules::Property::Kind::Ranking: cost = rankingCost(p.exprs.size()); break;
+        case rules::Property::Kind::Holonomic:
+            if (complete) cost = kHolonomyCost;  // beyond when the components were: it holds them too
+            break;
+        }
+        if (const std::string why = cost ? beyond(*cost) : ""; !why.empty()) {
+            r.verdict = Verdict::Unknown;
+            r.summary = why;
+            r.seconds = since(t0);
+            report.properties.push_back(std::move(r));
+            continue;
+        }
         switch (p.kind) {
         case rules::Property::Kind::Invariant: {
-            r.kind = "invariant";
             const auto& bad = invariantViolations[std::find(invariants.begin(), invariants.end(), &p) - invariants.begin()];
             if (bad.empty()) {
                 unknownOr(r, "holds in all " + std::to_string(report.stats.states) + " states");
@@ -263,7 +322,6 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
             break;
         }
         case rules::Property::Kind::Conserves: {
-            r.kind = "conserves";
             const bool byMass = p.quantity == rules::Property::Quantity::Mass;
             std::vector<std::int64_t> amount(ex->store().capacityUsed(), 0);
             for (StateId s : ids) {
@@ -285,7 +343,6 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
             break;
         }
         case rules::Property::Kind::Ranking: {
-            r.kind = "ranking";
             std::vector<std::vector<rules::Rational>> rank(ex->store().capacityUsed());
             for (StateId s : ids) {
                 const auto cells = ex->cells(s);
@@ -361,7 +418,6 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
             break;
         }
         case rules::Property::Kind::Progress: {
-            r.kind = "progress";
             judgeStuck(r, *ex, stuckStates(*ex, e, p.exprs.empty() ? nullptr : &p.exprs[0], budget), complete,
                        "outside the goal with no enabled rule", "stuck outside the goal: no rule is enabled", "stuck",
                        "some rule is enabled in every state outside the goal");
@@ -369,7 +425,6 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
         }
         case rules::Property::Kind::Holonomic:
             if (!complete) {
-                r.kind = "holonomic";
                 r.summary = "needs the whole graph; the search stopped at a limit";
             } else {
                 r = checkHolonomy(*ex, comps, p, budget);
@@ -401,6 +456,8 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
         r.kind = "goal_reachable";
         if (!complete) {
             r.summary = "needs the whole graph; the search stopped at a limit";
+        } else if (const std::string why = beyond(kGoalCost); !why.empty()) {
+            r.summary = why;
         } else {
             std::vector<StateId> goals;
             const std::vector<StateId> ids = ex->ids();

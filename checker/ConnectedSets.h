@@ -18,7 +18,7 @@ public:
     /// `neighbours[i]`: the cells adjacent to cell i, as a word.
     explicit ConnectedSets(std::vector<std::uint64_t> neighbours) : neighbours_(std::move(neighbours)) {}
     int cells() const { return static_cast<int>(neighbours_.size()); }
-    /// Calls f(set) for every connected set whose lowest cell is v.
+    /// Calls f(set) for every connected set whose lowest cell is v, until f returns false.
     template <class F>
     void forEachFrom(int v, F&& f) const {
         const std::uint64_t after = ~((std::uint64_t{2} << v) - 1);  // cells above v
@@ -26,15 +26,17 @@ public:
     }
 
 private:
+    /// False once f has asked to stop.
     template <class F>
-    void grow(std::uint64_t set, std::uint64_t extension, std::uint64_t closed, std::uint64_t after, F& f) const {
-        f(set);
+    bool grow(std::uint64_t set, std::uint64_t extension, std::uint64_t closed, std::uint64_t after, F& f) const {
+        if (!f(set)) return false;
         while (extension) {
             const int w = std::countr_zero(extension);
             extension &= extension - 1;
             const std::uint64_t exclusive = neighbours_[w] & ~closed & after;
-            grow(set | (std::uint64_t{1} << w), extension | exclusive, closed | neighbours_[w], after, f);
+            if (!grow(set | (std::uint64_t{1} << w), extension | exclusive, closed | neighbours_[w], after, f)) return false;
         }
+        return true;
     }
 
     std::vector<std::uint64_t> neighbours_;

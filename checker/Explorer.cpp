@@ -34,6 +34,7 @@ std::string stopReasonName(StopReason r) {
 
 Explorer::Explorer(const rules::Engine& engine, Options options)
     : engine_(&engine), options_(std::move(options)),
+      budget_(options_.budget.limited() ? options_.budget : Budget(options_.limits.timeoutSeconds)),
       store_(StateLayout(engine.region().size(), engine.model().alphabet().size(), options_.onWords && WordSuccessors::fits(engine))) {
     if (store_.layout().planeMajor()) words_ = std::make_unique<WordSuccessors>(engine, store_.layout());
 }
@@ -100,18 +101,44 @@ void Explorer::addAllLegal() {
     std::vector<PageArray<std::uint64_t>> bitmaps(privateBits ? threads : 0);
     for (auto& b : bitmaps) b.resize(legalBits_.size());
     std::vector<std::vector<std::uint64_t>> lists;
+    struct alignas(64) Count {
+        std::atomic<std::uint64_t> n{0};
+    };
+    std::vector<Count> listed(threads);  // per thread: indices it listed
     auto found = [&](int thread, std::size_t job, std::uint64_t index) {
         if (privateBits) bitmaps[thread][index >> 6] |= std::uint64_t{1} << (index & 63);
-        else lists[job].push_back(index);
+        else lists[job].push_back(index), listed[thread].n.store(listed[thread].n.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+    };
+    // Asked by the enumerations every so often: the deadline, and the lists against the memory
+    // bound (16 bytes an index: a vector's doubling) and --max-states.
+    const std::size_t fixedBytes = (bitmaps.size() + 1) * legalBits_.size() * 8;
+    auto stop = [&] {
+        std::uint64_t n = 0;
+        for (const Count& c : listed) n += c.n.load(std::memory_order_relaxed);
+        if (budget_.expired()) halt(StopReason::Timeout);
+        else if (n > options_.limits.maxStates) halt(StopReason::MaxStates);
+        else if (fixedBytes + 16 * n >= options_.limits.memoryBytes) halt(StopReason::Memory);
+        return halted() != StopReason::Finished;
     };
     const rules::CellPredicate* connected = n <= 64 ? engine_->connectedConjunct() : nullptr;
     if (connected) {
         lists.resize(n + 1);
-        legalByConnectedSets(*connected, found);
+        legalByConnectedSets(*connected, found, stop);
     } else {
         const std::uint64_t batch = 1u << 20;
         lists.resize((total + batch - 1) / batch);
-        legalByIndex(total, batch, found);
+        legalByIndex(total, batch, found, stop);
+    }
+    auto giveUp = [&](std::uint64_t count) {  // a limit: nothing is stored, explore() reports it
+        enumerated_ = count;
+        legalBits_ = {}, placeValue_ = {};
+    };
+    if (halted() != StopReason::Finished) {
+        std::uint64_t count = 0;
+        for (const auto& list : lists) count += list.size();
+        for (const auto& b : bitmaps)
+            for (const std::uint64_t w : b) count += std::popcount(w);
+        return giveUp(count);
     }
     // Phase 2: store them, ranked in candidate order (an id is its rank), else in job order (ids
     // do not depend on the threads).
@@ -126,9 +153,9 @@ void Explorer::addAllLegal() {
     std::size_t count = 0;
     for (const auto& list : lists) count += list.size();
     for (const std::uint64_t w : legalBits_) count += std::popcount(w);
-    if (count > options_.limits.maxStates)
-        throw InputError("region " + engine_->region().spec() + " has more than --max-states=" + std::to_string(options_.limits.maxStates) +
-                         " legal configurations; raise the limit or choose a smaller region");
+    if (count > options_.limits.maxStates) halt(StopReason::MaxStates);
+    else if (rankingBytes() + count * bytesPerNewState() >= options_.limits.memoryBytes) halt(StopReason::Memory);
+    if (halted() != StopReason::Finished) return giveUp(count);
     if (!rank) store_.reserve(count);
     growLinks(count);
     frontier_.reserve(count);
@@ -181,8 +208,8 @@ void Explorer::digits(std::uint64_t index, CellValue* cells) const {
     }
 }
 
-template <class Sink>
-void Explorer::legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& found) {
+template <class Sink, class Stop>
+void Explorer::legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& found, Stop& stop) {
     // Every candidate, in batches of indices (the index is the number whose digits in base a
     // are the cells' states): the evaluator follows the few cells that change from one to the
     // next.
@@ -191,7 +218,7 @@ void Explorer::legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& foun
     auto work = [&](int thread) {
         rules::Engine::Evaluator ev(*engine_);
         std::vector<CellValue> cells(n);
-        for (std::uint64_t job; (job = next.fetch_add(1)) * batch < total;) {
+        for (std::uint64_t job; !stop() && (job = next.fetch_add(1)) * batch < total;) {
             const std::uint64_t lo = job * batch, hi = std::min(total, lo + batch);
             digits(lo, cells.data());
             ev.load(cells.data());
@@ -202,8 +229,8 @@ void Explorer::legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& foun
     WorkerPool(std::max(1, options_.limits.threads)).run(work);
 }
 
-template <class Sink>
-void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink& found) {
+template <class Sink, class Stop>
+void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink& found, Stop& stop) {
     // Every legal configuration's T cells are connected (T: the predicate of a `connected(T)`
     // conjunct), so only configurations whose T cells are a connected set (or none) are
     // candidates: each cell of the set takes a state T accepts, each other cell one it does not.
@@ -263,9 +290,13 @@ void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink&
                 if (k == varying.size()) return;
             }
         };
-        for (int v; (v = next.fetch_add(1)) <= n;) {
+        std::uint32_t done = 0;
+        for (int v; !stop() && (v = next.fetch_add(1)) <= n;) {
             if (v == n) each(n, 0);  // no T cell at all
-            else sets.forEachFrom(v, [&](std::uint64_t set) { each(v, set); });
+            else sets.forEachFrom(v, [&](std::uint64_t set) {
+                each(v, set);
+                return ++done % 4096 != 0 || !stop();
+            });
         }
     };
     WorkerPool(std::max(1, options_.limits.threads)).run(work);
@@ -281,7 +312,7 @@ bool Explorer::legalCells(const CellValue* cells, std::uint64_t* occupied) const
     return engine_->legalOn(words);
 }
 
-void Explorer::gather(StateId id, Successors& out) const {
+bool Explorer::gather(StateId id, Successors& out, Worker& worker) {
     // Under a ranking a successor is only its rank; otherwise it is packed by patching the
     // parent's words and its table slot is prefetched. On words, a successor's legality is
     // decided here, before any look-up: only legal states are stored, so an illegal successor
@@ -309,6 +340,7 @@ void Explorer::gather(StateId id, Successors& out) const {
             out.via[k] = p, ++out.count;
         });
     } else {
+        bool stopped = false;
         std::vector<CellValue>& cells = out.cells;
         cells.resize(engine_->region().size());
         unpack(id, cells.data());
@@ -328,63 +360,120 @@ void Explorer::gather(StateId id, Successors& out) const {
                 out.keys[at] = successorIndex;
                 return;
             }
-            std::uint64_t* successor = &out.packed[at * words];
-            for (int w = 0; w < words; ++w) successor[w] = base[w];
-            for (int k = 0; k < placed.size; ++k) layout.set(successor, placed.cells[k], engine_->rewritten(placed, k, old));
+            // Only the hash is kept: resolve rebuilds the words where it needs them, so that one
+            // state's successors never hold the region's words once per instance. A limit
+            // skips the rest (a state of a huge region has hundreds of thousands).
+            if ((at & 255) == 255) stopped = stopped || stopping(worker, 256);
+            if (stopped) return;
+            packSuccessor(out, p, out.packed.data());
+            out.keys[at] = store_.prefetch(out.packed.data());
         });
+        return !stopped;
     }
     if (!ranked())
         for (std::size_t k = 0; k < out.count; ++k) out.keys[k] = store_.prefetch(&out.packed[k * words]);
+    return true;
 }
 
-Explorer::Worker::Worker(const rules::Engine& engine, int words) : ev(engine) {
+void Explorer::packSuccessor(const Successors& s, int placed, std::uint64_t* out) const {
+    const rules::Engine::Placed& p = engine_->instances()[placed];
+    const StateLayout& layout = store_.layout();
+    const std::uint64_t* base = store_.state(s.from);
+    std::copy(base, base + layout.words(), out);
+    CellValue old[rules::Engine::kMaxCells];
+    for (int k = 0; k < p.size; ++k) old[k] = s.cells[p.cells[k]];
+    for (int k = 0; k < p.size; ++k) layout.set(out, p.cells[k], engine_->rewritten(p, k, old));
+}
+
+Explorer::Worker::Worker(const rules::Engine& engine, int words, bool onWords) : ev(engine), scratch(words) {
     const std::size_t room = engine.instances().size();  // successors of one state at most
-    for (Successors& s : ring) s.packed.resize(room * words), s.keys.resize(room), s.probe.resize(room), s.via.resize(room);
+    // On words a state has at most 6 words and the region 64 cells: every successor is kept
+    // packed. Cell by cell, one successor's words at a time.
+    for (Successors& s : ring) s.packed.resize((onWords ? room : 1) * words), s.keys.resize(room), s.probe.resize(room), s.via.resize(room);
 }
 
-void Explorer::resolve(const Successors& s, Worker& worker) {
-    // Only legal states are ever stored, so a successor found needs no constraint check; one not
-    // found is new if gather already decided it is legal (on words), is checked with the
-    // incremental evaluator (cell by cell), or, when the store already holds every legal
-    // configuration (--all), known to be illegal.
+bool Explorer::claimRoom(Worker& worker, std::uint64_t n, bool mayRefuse) {
+    // From the worker's own share first; the round's room is taken a block at a time, so the
+    // threads seldom meet on its cache line.
+    if (worker.room >= n) return worker.room -= n, true;
+    for (const std::uint64_t take : {std::max<std::uint64_t>(n, 4096), n}) {
+        const auto want = static_cast<std::int64_t>(take);
+        if (room_.fetch_sub(want, std::memory_order_relaxed) >= want) return worker.room += take - n, true;
+        room_.fetch_add(want, std::memory_order_relaxed);
+    }
+    if (!mayRefuse) return false;
+    for (std::uint64_t seen = refusedClaim_.load(); seen < n && !refusedClaim_.compare_exchange_weak(seen, n);) {}
+    abandon_.store(true, std::memory_order_relaxed);
+    return false;
+}
+
+bool Explorer::resolve(const Successors& s, Worker& worker) {
+    // A state is either done or untouched. Its new successors are stored in room taken for them
+    // beforehand: for a state with few successors, one for each (most are known already, and the
+    // rest is given back); otherwise a first pass looks every successor up and decides the
+    // legality of those not found, changing nothing, so that a limit or a full store puts the
+    // state back for a later round, and takes room for exactly the new ones. Only legal states
+    // are ever stored, so a successor found needs no constraint check; one not found is new if
+    // gather already decided it is legal (on words), is checked with the incremental evaluator
+    // (cell by cell), or, when the store already holds every legal configuration (--all), known
+    // to be illegal.
+    constexpr StateId kFresh = kNoState - 1;  // a new legal successor, not stored yet
+    constexpr std::size_t kOnePass = 1024;
     const int words = store_.layout().words();
-    CellValue saved[rules::Engine::kMaxCells];
+    std::uint64_t* scratch = worker.scratch.data();
+    auto successor = [&](std::size_t k) -> const std::uint64_t* {
+        if (words_) return &s.packed[k * words];
+        packSuccessor(s, s.via[k], scratch);
+        return scratch;
+    };
     rules::Engine::Evaluator& ev = worker.ev;
+    bool loaded = false;
+    auto lookUp = [&](std::size_t k) {
+        const StateId sid = ranked() ? rankOf(s.keys[k]) : store_.find(successor(k), s.keys[k], s.probe[k]);
+        if (sid != kNoState || complete_) return sid;
+        if (!words_) {  // on words: decided in gather
+            if (!loaded) ev.load(s.cells.data()), loaded = true;
+            CellValue saved[rules::Engine::kMaxCells];
+            ev.apply(s.via[k], saved);
+            const bool legal = ev.legal();
+            ev.undo(s.via[k], saved);
+            if (!legal) return kNoState;
+        }
+        return kFresh;
+    };
+    std::uint64_t room = s.count;
+    const bool onePass = s.count <= kOnePass && (complete_ || claimRoom(worker, room, false));
+    std::vector<StateId>& found = worker.found;
+    if (!onePass) {
+        found.resize(s.count);
+        room = 0;
+        for (std::size_t k = 0; k < s.count; ++k) {
+            if ((k & 255) == 255 && stopping(worker, 256)) return false;  // a state of a huge region can take seconds
+            if ((found[k] = lookUp(k)) == kFresh) ++room;
+        }
+        if (room && !claimRoom(worker, room, true)) return false;
+    }
     thread_local std::vector<StateId> seen;
     seen.clear();
-    std::uint64_t edges = 0;
-    bool loaded = false;
+    std::uint64_t edges = 0, added = 0;
     for (std::size_t k = 0; k < s.count; ++k) {
-        StateId sid = ranked() ? rankOf(s.keys[k]) : store_.find(&s.packed[k * words], s.keys[k], s.probe[k]);
-        if (sid == kNoState) {
-            if (complete_) continue;
-            const std::uint64_t* successor = &s.packed[k * words];
-            bool legal;
-            const CellValue* cells = nullptr;
-            if (words_) {
-                legal = true;  // decided in gather
-            } else {
-                if (!loaded) ev.load(s.cells.data()), loaded = true;
-                ev.apply(s.via[k], saved);
-                legal = ev.legal();
-                cells = ev.cells();
-            }
-            if (legal) {
-                const auto [added, inserted] = store_.insert(successor, s.keys[k], worker.ids);
-                sid = added;
-                if (inserted) {
-                    parent_[sid] = s.from + 1;
-                    via_[sid] = s.via[k] + 1;
-                    worker.next.push_back(sid);
-                    if (options_.onState) {
-                        thread_local std::vector<CellValue> unpacked;
-                        if (!cells) unpacked.resize(engine_->region().size()), unpack(sid, unpacked.data()), cells = unpacked.data();
-                        options_.onState(sid, cells);
-                    }
+        StateId sid = onePass ? lookUp(k) : found[k];
+        if (sid == kNoState) continue;
+        if (sid == kFresh) {
+            const auto [id, inserted] = store_.insert(successor(k), s.keys[k], worker.ids);
+            sid = id;
+            if (inserted) {
+                ++added;
+                parent_[sid] = s.from + 1;
+                via_[sid] = s.via[k] + 1;
+                worker.next.push_back(sid);
+                if (options_.onState) {
+                    thread_local std::vector<CellValue> unpacked;
+                    unpacked.resize(engine_->region().size());
+                    unpack(sid, unpacked.data());
+                    options_.onState(sid, unpacked.data());
                 }
             }
-            if (!words_) ev.undo(s.via[k], saved);
-            if (!legal) continue;
         }
         // Two instances with the same effect are one edge of the graph.
         if (!words_ || !words_->unique(s.via[k])) {
@@ -394,18 +483,23 @@ void Explorer::resolve(const Successors& s, Worker& worker) {
         ++edges;
         if (options_.recordEdges) worker.edges.push_back({s.from, sid, s.via[k]});
     }
+    if (!complete_) worker.room += room - added;  // what was not used, or another thread stored first
     if (edges == 0) worker.terminal.push_back(s.from);
     worker.edgeCount += edges;
+    return true;
 }
 
 void Explorer::expandRange(const StateId* states, std::size_t lo, std::size_t hi, Worker& worker) {
     // A software pipeline over the frontier, so that a look-up finds its data in cache: the
     // successors of state k are generated (their table slots prefetched) while those of state k - 1
     // have their stored states (or their words of the ranking) prefetched and those of state k - 2
-    // are looked up.
+    // are looked up. A stop puts back every state not resolved yet.
     Successors* ring = worker.ring;
+    auto putBack = [&](std::size_t first) { worker.deferred.insert(worker.deferred.end(), states + first, states + hi); };
     for (std::size_t k = lo; k < hi + 2; ++k) {
-        if (k < hi) gather(states[k], ring[k % 3]);
+        if (k < hi) {
+            if (stopping(worker, 1) || !gather(states[k], ring[k % 3], worker)) return putBack(k - std::min<std::size_t>(k - lo, 2));
+        }
         if (k >= lo + 1 && k - 1 < hi) {
             Successors& s = ring[(k - 1) % 3];
             if (ranked())
@@ -413,20 +507,47 @@ void Explorer::expandRange(const StateId* states, std::size_t lo, std::size_t hi
             else
                 for (std::size_t j = 0; j < s.count; ++j) s.probe[j] = store_.prefetchStored(s.keys[j]);
         }
-        if (k >= lo + 2) resolve(ring[(k - 2) % 3], worker);
+        if (k >= lo + 2 && !resolve(ring[(k - 2) % 3], worker)) return putBack(k - 2);
     }
+}
+
+std::size_t Explorer::bytesPerNewState() const {
+    // Its words, its table slots at 7/8 full and while the table is rebuilt, its hole flag, its
+    // BFS links, its row start, its place in a frontier list.
+    return static_cast<std::size_t>(store_.layout().words()) * 8 + 10 + 1 + 8 + 8 + 4;
+}
+
+std::size_t Explorer::bytesHeld(const std::vector<Worker>& workers, std::size_t listed) const {
+    // The stored states with their table and BFS links, and the row starts built when the search
+    // ends. Room reserved beyond the states stored is not counted: its pages are untouched until
+    // a state is stored there, and a round stores at most the room it was given.
+    const std::size_t used = store_.capacityUsed();
+    std::size_t bytes = store_.bytesUsed() + rankingBytes() + used * (sizeof(StateId) + sizeof(std::int32_t)) +
+                        (options_.recordEdges ? used * sizeof(std::uint64_t) : 0) + (listed + terminal_.size()) * sizeof(StateId);
+    for (const Worker& w : workers) {
+        // Each edge is held by its worker now and in the rows (successor and instance) later.
+        bytes += w.edges.size() * (sizeof(Worker::Edge) + sizeof(StateId) + sizeof(std::int32_t));
+        for (const Successors& s : w.ring)
+            bytes += s.packed.capacity() * 8 + (s.keys.capacity() + s.probe.capacity()) * 8 + s.via.capacity() * 4 + s.cells.capacity();
+        bytes += (w.found.capacity() + w.next.capacity() + w.terminal.capacity() + w.deferred.capacity()) * sizeof(StateId);
+    }
+    return bytes;
 }
 
 const ExploreStats& Explorer::explore() {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     auto last = start;
+    stats_ = {};
     const int threads = std::max(1, options_.limits.threads);
     const std::uint64_t branching = std::max<std::size_t>(1, engine_->instances().size());
-    // A chunk reserves room for chunk * branching new states; keep that headroom near a million.
+    // A chunk of frontier states per round; the room reserved for a round's new states is at
+    // most kRoundBytes of store (a million states of a few words), whatever the branching: a
+    // round that needs more puts its remaining states back and runs again after growing.
     const std::uint64_t chunk = std::max<std::uint64_t>(64, std::min<std::uint64_t>(1u << 14, (1u << 20) / branching));
+    constexpr std::uint64_t kRoundBytes = 32ull << 20;
     std::vector<Worker> workers;
-    for (int t = 0; t < threads; ++t) workers.emplace_back(*engine_, store_.layout().words());
+    for (int t = 0; t < threads; ++t) workers.emplace_back(*engine_, store_.layout().words(), words_ != nullptr);
     WorkerPool pool(threads);
     // A level's states are kept by the worker that found them, and each worker expands a slice of
     // its own list first (their words were written from its core, so they are in its cache),
@@ -435,68 +556,110 @@ const ExploreStats& Explorer::explore() {
     constexpr std::size_t kPiece = 256;
     struct alignas(64) Cursor {
         std::atomic<std::size_t> next{0};
+        const StateId* states = nullptr;
         std::size_t end = 0;
     };
     std::vector<Cursor> cursors(threads);
-    std::vector<std::vector<StateId>> level(threads), next(threads);
+    std::vector<std::vector<StateId>> level(threads), next(threads), retry(threads), putBack(threads);
     level[0] = std::move(frontier_);
     frontier_.clear();
     const std::uint64_t blockRoom = static_cast<std::uint64_t>(threads) * StateStore::IdBlock::kSize;
-    const std::size_t edgeBytes = options_.recordEdges ? 12 : 0;
+    const std::uint64_t perState = bytesPerNewState();
     auto sizeOf = [](const std::vector<std::vector<StateId>>& lists) {
         std::size_t n = 0;
         for (const auto& l : lists) n += l.size();
         return n;
     };
-    stats_ = {};
+    if (halted() != StopReason::Finished)  // --all stopped while listing the legal configurations
+        stats_.stopped = halted(), stats_.enumerating = true, stats_.frontier = enumerated_;
     while (sizeOf(level) > 0 && stats_.stopped == StopReason::Finished) {
         const std::size_t chunks = (sizeOf(level) + chunk - 1) / chunk;
         for (std::size_t c = 0; c < chunks; ++c) {
             auto from = [&](int t, std::size_t k) { return level[t].size() * k / chunks; };  // slice k of list t
-            std::size_t left = 0;  // states of this level not yet expanded
+            std::size_t left = 0;  // states of this level not yet expanded, the chunk's included
             for (int t = 0; t < threads; ++t) left += level[t].size() - from(t, c);
-            const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-            std::size_t edgesHeld = 0;
-            for (const Worker& w : workers) edgesHeld += w.edges.size();
-            const std::size_t bytes = store_.bytes() + parent_.size() * 8 + edgesHeld * edgeBytes;
-            if (store_.size() >= options_.limits.maxStates) stats_.stopped = StopReason::MaxStates;
-            else if (options_.limits.timeoutSeconds > 0 && elapsed >= options_.limits.timeoutSeconds) stats_.stopped = StopReason::Timeout;
-            else if (bytes >= options_.limits.memoryBytes) stats_.stopped = StopReason::Memory;
-            if (stats_.stopped != StopReason::Finished) {
-                stats_.frontier = left + sizeOf(next);
-                break;
-            }
-            std::size_t size = 0;
+            // Rounds on the chunk's slices, then on the states a round put back.
+            std::size_t size = 0, pending = 0;
             for (int t = 0; t < threads; ++t) {
-                cursors[t].next = from(t, c), cursors[t].end = from(t, c + 1);
-                size += cursors[t].end - from(t, c);
+                cursors[t].next = 0, cursors[t].states = level[t].data() + from(t, c), cursors[t].end = from(t, c + 1) - from(t, c);
+                size += cursors[t].end;
             }
-            if (!complete_) {  // a complete store gains no states
-                store_.reserve(size * branching + blockRoom);
-                growLinks(store_.capacityUsed() + size * branching + blockRoom);
-            }
-            pool.run([&](int t) {
-                for (int i = 0; i < threads; ++i) {
-                    const int u = (t + i) % threads;
-                    for (std::size_t lo; (lo = cursors[u].next.fetch_add(kPiece)) < cursors[u].end;)
-                        expandRange(level[u].data(), lo, std::min(cursors[u].end, lo + kPiece), workers[t]);
+            for (pending = size; pending > 0;) {
+                // The room for this round's new states: what the states put back asked for at
+                // least, within --max-states and --memory.
+                const std::uint64_t refused = refusedClaim_.exchange(0);
+                std::uint64_t want = 0;
+                if (!complete_) {
+                    want = std::min<std::uint64_t>(pending * branching, std::max<std::uint64_t>(1, kRoundBytes / perState));
+                    if (store_.size() < options_.limits.maxStates) want = std::min<std::uint64_t>(want, options_.limits.maxStates - store_.size());
+                    want = std::max(want, refused);
                 }
-            });
-            for (int t = 0; t < threads; ++t) {
-                Worker& w = workers[t];
-                store_.release(w.ids);
-                next[t].insert(next[t].end(), w.next.begin(), w.next.end());
-                terminal_.insert(terminal_.end(), w.terminal.begin(), w.terminal.end());
-                stats_.edges += w.edgeCount;
-                w.next.clear(), w.terminal.clear(), w.edgeCount = 0;
+                // As many states as --memory has left room for, and at least the largest state
+                // put back.
+                const std::size_t held = bytesHeld(workers, sizeOf(level) + sizeOf(next) + sizeOf(retry));
+                want = std::min<std::uint64_t>(want, held < options_.limits.memoryBytes ? (options_.limits.memoryBytes - held) / perState : 0);
+                StopReason limit = StopReason::Finished;
+                if (store_.size() >= options_.limits.maxStates) limit = StopReason::MaxStates;
+                else if (budget_.expired()) limit = StopReason::Timeout;
+                else if (held >= options_.limits.memoryBytes || want < std::max<std::uint64_t>(refused, complete_ ? 0 : 1)) limit = StopReason::Memory;
+                room_ = static_cast<std::int64_t>(want);
+                for (Worker& w : workers) w.room = 0;
+                abandon_ = false;
+                if (limit != StopReason::Finished) {
+                    halt(limit);
+                } else {
+                    try {
+                        if (!complete_) {
+                            store_.reserve(want + blockRoom);
+                            growLinks(store_.capacityUsed() + want + blockRoom);
+                        }
+                        pool.run([&](int t) {
+                            try {
+                                for (int i = 0; i < threads; ++i) {
+                                    const int u = (t + i) % threads;
+                                    for (std::size_t lo; !abandon_.load(std::memory_order_relaxed) && (lo = cursors[u].next.fetch_add(kPiece)) < cursors[u].end;)
+                                        expandRange(cursors[u].states, lo, std::min(cursors[u].end, lo + kPiece), workers[t]);
+                                }
+                            } catch (...) {
+                                abandon_ = true;  // the others stop too; the pool rethrows on this thread
+                                throw;
+                            }
+                        });
+                    } catch (const std::bad_alloc&) {  // every thread is back: a memory stop
+                        halt(StopReason::Memory);
+                    }
+                }
+                for (int t = 0; t < threads; ++t) {
+                    Worker& w = workers[t];
+                    store_.release(w.ids);
+                    next[t].insert(next[t].end(), w.next.begin(), w.next.end());
+                    terminal_.insert(terminal_.end(), w.terminal.begin(), w.terminal.end());
+                    stats_.edges += w.edgeCount;
+                    w.next.clear(), w.terminal.clear(), w.edgeCount = 0;
+                    // What the round left: the states the workers put back, the pieces no one took.
+                    putBack[t].swap(w.deferred);
+                    w.deferred.clear();
+                }
+                for (int u = 0; u < threads; ++u)
+                    for (std::size_t k = std::min(cursors[u].next.load(), cursors[u].end); k < cursors[u].end; ++k) putBack[u].push_back(cursors[u].states[k]);
+                std::swap(retry, putBack);
+                for (auto& l : putBack) l.clear();
+                pending = sizeOf(retry);
+                for (int t = 0; t < threads; ++t) cursors[t].next = 0, cursors[t].states = retry[t].data(), cursors[t].end = retry[t].size();
+                stats_.states = store_.size();
+                stats_.frontier = left - size + pending + sizeOf(next);
+                if (halted() != StopReason::Finished) {
+                    stats_.stopped = halted();
+                    break;
+                }
+                if (options_.onProgress && std::chrono::duration<double>(Clock::now() - last).count() > 0.5) {
+                    last = Clock::now();
+                    stats_.seconds = std::chrono::duration<double>(last - start).count();
+                    options_.onProgress(stats_);
+                }
             }
-            stats_.states = store_.size();
-            if (options_.onProgress && std::chrono::duration<double>(Clock::now() - last).count() > 0.5) {
-                last = Clock::now();
-                stats_.seconds = std::chrono::duration<double>(last - start).count();
-                stats_.frontier = left - size + sizeOf(next);
-                options_.onProgress(stats_);
-            }
+            for (auto& l : retry) l.clear();
+            if (stats_.stopped != StopReason::Finished) break;
         }
         if (stats_.stopped != StopReason::Finished) break;
         std::swap(level, next);

@@ -3,10 +3,12 @@
 // or over every legal configuration of a region, on all cores, with limits that stop the search
 // cleanly and say what was left.
 
+#include "checker/Budget.h"
 #include "checker/StateStore.h"
 #include "checker/WordSuccessors.h"
 #include "rules/Engine.h"
 
+#include <atomic>
 #include <bit>
 #include <chrono>
 #include <cstdint>
@@ -18,7 +20,9 @@
 namespace holon::checker {
 
 /// When to give up. A budget is a value passed to every long-running call (OMPL's termination
-/// condition): it never throws, it only says "stop".
+/// condition): it never throws, it only says "stop". memoryBytes bounds what the explorer holds
+/// (the store, the BFS links, the frontier, the edges and the rows built from them, the workers'
+/// buffers, --all's lists and bitmaps), counted before each allocation.
 struct Limits {
     std::uint64_t maxStates = 50'000'000;
     double timeoutSeconds = 0;           // 0: none
@@ -34,6 +38,7 @@ struct ExploreStats {
     int depth = 0;
     double seconds = 0;
     StopReason stopped = StopReason::Finished;
+    bool enumerating = false;  // stopped while --all listed the legal configurations (frontier: those found)
     std::size_t bytes = 0;
 };
 
@@ -56,13 +61,17 @@ public:
         std::function<bool()> decided;
         /// Progress reports, about every half second, from the thread that runs explore().
         std::function<void(const ExploreStats&)> onProgress;
+        /// The job's deadline, when it started before the explorer (the check's setup counts);
+        /// without one, limits.timeoutSeconds runs from the explorer's construction.
+        Budget budget;
     };
 
     Explorer(const rules::Engine& engine, Options options);
     /// Adds an initial configuration (it must be legal; the caller checks).
     StateId addInitial(const CellValue* cells);
     /// Adds every legal configuration of the region (the `--all` graph); throws InputError when the
-    /// region has more candidate configurations than the limits allow.
+    /// region has more candidate configurations than the limits allow. A limit hit while listing
+    /// them leaves the explorer empty, and explore() reports the limit.
     void addAllLegal();
     /// Runs the breadth-first search until done or a limit is hit.
     const ExploreStats& explore();
@@ -108,12 +117,20 @@ private:
         std::size_t count = 0;
     };
     /// Per worker thread: its tools, kept from chunk to chunk, and what it found in the chunk.
+    /// Its buffers grow with one state's successors (a word per instance), never with the region
+    /// times the instances: on the cell-by-cell path a successor's words are rebuilt from its
+    /// instance where they are needed instead of being kept for every successor.
     struct Worker {
-        Worker(const rules::Engine& engine, int words);
+        Worker(const rules::Engine& engine, int words, bool onWords);
         rules::Engine::Evaluator ev;
         Successors ring[3];  // expandRange's pipeline
         StateStore::IdBlock ids;
         std::vector<StateId> next, terminal;
+        std::vector<StateId> deferred;  // states of the round left for a later one (no room, or a limit)
+        std::vector<StateId> found;     // resolve's first pass: per successor its id, kNoState or kFresh
+        std::vector<std::uint64_t> scratch;  // one successor's words
+        std::uint32_t ticks = 0;        // work since the clock was last read
+        std::uint64_t room = 0;         // room for new states taken from the round's, not used yet
         struct Edge {
             StateId from, to;
             std::int32_t via;
@@ -123,20 +140,56 @@ private:
     };
     /// addAllLegal's first phase: found(thread, job, index) for every legal candidate, from
     /// every index in turn, or from the connected sets when a conjunct requires connectivity.
-    template <class Sink>
-    void legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& found);
-    template <class Sink>
-    void legalByConnectedSets(const rules::CellPredicate& connected, Sink& found);
+    /// stop() is asked between pieces of work; true ends the enumeration.
+    template <class Sink, class Stop>
+    void legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& found, Stop& stop);
+    template <class Sink, class Stop>
+    void legalByConnectedSets(const rules::CellPredicate& connected, Sink& found, Stop& stop);
     bool legalCells(const CellValue* cells, std::uint64_t* occupied) const;
     /// The cells of the candidate with this index (its digits in base alphabet size).
     void digits(std::uint64_t index, CellValue* cells) const;
-    void gather(StateId id, Successors& out) const;
-    void resolve(const Successors& s, Worker& worker);
+    /// Lists a state's successors; false when a limit stopped it first.
+    bool gather(StateId id, Successors& out, Worker& worker);
+    /// The cell-by-cell path's successor by instance `placed` of the state gather loaded into `s`.
+    void packSuccessor(const Successors& s, int placed, std::uint64_t* out) const;
+    /// Stores a state's new successors and records its edges; false when the round must stop
+    /// first (a limit, or no room left), with nothing of the state done.
+    bool resolve(const Successors& s, Worker& worker);
+    /// Expands states[lo, hi); those a stop left undone go to worker.deferred.
     void expandRange(const StateId* states, std::size_t lo, std::size_t hi, Worker& worker);
     void buildRows(std::vector<Worker>& workers);
 
+    // Stopping a round. A worker reads the clock every few thousand units of work (a state, a
+    // successor); a limit, a worker's failure or the store's room running out makes every worker
+    // put back the rest of its states. halt_ holds the limit (StopReason::Finished: none).
+    bool stopping(Worker& w, std::uint32_t work) {
+        if ((w.ticks += work) >= 4096) {
+            w.ticks = 0;
+            if (budget_.expired()) halt(StopReason::Timeout);
+        }
+        return abandon_.load(std::memory_order_relaxed);
+    }
+    void halt(StopReason why) {
+        int none = static_cast<int>(StopReason::Finished);
+        halt_.compare_exchange_strong(none, static_cast<int>(why));
+        abandon_.store(true, std::memory_order_relaxed);
+    }
+    StopReason halted() const { return static_cast<StopReason>(halt_.load()); }
+    /// Takes room for n new states from the round's reservation; false when it is spent, and
+    /// then, if `mayRefuse`, the round stops to grow.
+    bool claimRoom(Worker& worker, std::uint64_t n, bool mayRefuse);
+    /// What the explorer holds now, and what one more stored state costs at most.
+    std::size_t bytesHeld(const std::vector<Worker>& workers, std::size_t listed) const;
+    std::size_t bytesPerNewState() const;
+
     const rules::Engine* engine_;
     Options options_;
+    Budget budget_;
+    std::atomic<int> halt_{static_cast<int>(StopReason::Finished)};
+    std::atomic<bool> abandon_{false};
+    std::atomic<std::int64_t> room_{0};           // new states the round may still add
+    std::atomic<std::uint64_t> refusedClaim_{0};  // the largest claim the round refused
+    std::uint64_t enumerated_ = 0;                // legal configurations --all found before a limit
     StateStore store_;
     std::unique_ptr<WordSuccessors> words_;  // regions of at most 64 cells
     // One more than the parent's id and the instance's index, so that the zero pages a PageArray

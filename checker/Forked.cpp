@@ -32,6 +32,8 @@ nlohmann::json answerOf(const ForkedJob& job, bool forked) {
         return job(forked);
     } catch (const InputError& e) {
         return {{"input_error", e.what()}};
+    } catch (const std::bad_alloc&) {  // what() is "std::bad_alloc": say it
+        return {{"error", "the solver job ran out of memory; choose a smaller region"}};
     } catch (const std::exception& e) {
         return {{"error", e.what()}};
     }

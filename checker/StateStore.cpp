@@ -165,6 +165,10 @@ std::size_t StateStore::bytes() const {
     return arena_.size() * sizeof(std::uint64_t) + slots_.size() * sizeof(std::uint32_t) + holeFlags_.size();
 }
 
+std::size_t StateStore::bytesUsed() const {
+    return static_cast<std::size_t>(capacityUsed()) * (layout_.words() * sizeof(std::uint64_t) + 1) + slots_.size() * sizeof(std::uint32_t);
+}
+
 double StateStore::bytesPerState() const {
     const double n = static_cast<double>(std::max<std::uint64_t>(1, size()));
     // What a stored state costs: its packed words, its table slots at the current load, its flag.

@@ -126,6 +126,8 @@ public:
     /// Memory held per stored state, table and arena together.
     double bytesPerState() const;
     std::size_t bytes() const;
+    /// bytes() without the arena's room beyond the states stored (untouched pages).
+    std::size_t bytesUsed() const;
 
 private:
     // A slot is 0 (empty) or id + 1 in its low bits (as many as the slot count needs) and, above

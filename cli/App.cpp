@@ -9,8 +9,25 @@
 #include <csignal>
 #include <iostream>
 #include <map>
+#include <string>
 
 namespace holon::cli {
+
+namespace {
+
+/// What to change when a subcommand runs out of the machine's memory: the options that size its
+/// work. The --memory bound of check, plan, hex, roombots and verify stops them cleanly first unless
+/// it is set above what is free.
+std::string memoryAdvice(const std::string& command) {
+    if (command == "check") return "set --memory below the memory this machine has free (it bounds the exploration), lower --max-states, or choose a smaller --region";
+    if (command == "verify") return "set --memory below the memory this machine has free, or choose a smaller --region or a lower --depth";
+    if (command == "plan") return "set --memory below the memory this machine has free, or choose smaller --from/--to shapes or a lower --scale";
+    if (command == "hex") return "set --memory below the memory this machine has free, or choose a smaller --size or fewer --steps";
+    if (command == "roombots") return "set --memory below the memory this machine has free, or choose a smaller structure or fewer --runs";
+    return "give it fewer or smaller files";
+}
+
+}  // namespace
 
 int runHolon(int argc, char** argv) {
     CLI::App app{"holon: check, verify and run rule systems for lattice modular robots"};
@@ -41,9 +58,13 @@ int runHolon(int argc, char** argv) {
         app.exit(e);
         return kExitBadInput;
     }
+    std::string command;
     try {
         for (auto& [sub, run] : runs)
-            if (sub->parsed()) return run();
+            if (sub->parsed()) {
+                command = sub->get_name();
+                return run();
+            }
     } catch (const holon::InputError& e) {
         std::cerr << "holon: error: " << rules::escapeText(e.what(), true) << '\n';
         return kExitBadInput;
@@ -54,7 +75,7 @@ int runHolon(int argc, char** argv) {
         std::cerr << "holon: limit: " << rules::escapeText(e.what(), true) << '\n';
         return kExitUndecided;
     } catch (const std::bad_alloc&) {
-        std::cerr << "holon: error: out of memory before the job could finish; raise the machine's memory or lower --memory / --max-states\n";
+        std::cerr << "holon " << command << ": stopped: the machine has no memory left for this job; " << memoryAdvice(command) << '\n';
         return kExitUndecided;
     } catch (const std::exception& e) {
         std::cerr << "holon: internal error: " << rules::escapeText(e.what(), true) << "\n  this is a bug in holon, not in your input; please report it with the command line\n";

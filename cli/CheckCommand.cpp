@@ -30,6 +30,18 @@ struct CheckArgs {
     int threads = 2;
 };
 
+/// The option that sets a limit, for "raise --memory".
+std::string limitOption(checker::StopReason r) {
+    switch (r) {
+    case checker::StopReason::MaxStates: return "--max-states";
+    case checker::StopReason::Timeout: return "--timeout";
+    case checker::StopReason::Memory: return "--memory";
+    case checker::StopReason::Finished:
+    case checker::StopReason::Decided: break;
+    }
+    return "";
+}
+
 int run(const CheckArgs& a) {
     auto system = loadRules(a.file, a.noWarnings);
     if (!system) return 2;
@@ -113,7 +125,11 @@ int run(const CheckArgs& a) {
               << (report.components < 0 ? std::string("? components") : std::to_string(report.components) + (report.components == 1 ? " component" : " components"))
               << ", depth " << s.depth << ", " << std::fixed << std::setprecision(2) << s.seconds << " s, " << report.bytesPerState << " bytes/state";
     if (s.stopped == checker::StopReason::Decided) std::cout << "\n  stopped early: every property asked for is violated; explored " << s.states << ", frontier " << s.frontier;
-    else if (s.stopped != checker::StopReason::Finished) std::cout << "\n  stopped by " << checker::stopReasonName(s.stopped) << ": explored " << s.states << ", frontier " << s.frontier;
+    else if (s.stopped != checker::StopReason::Finished)
+        std::cout << "\n  stopped by " << checker::stopReasonName(s.stopped)
+                  << (s.enumerating ? " while listing the legal configurations of the region (" + std::to_string(s.frontier) + " found)"
+                                    : ": explored " + std::to_string(s.states) + ", frontier " + std::to_string(s.frontier))
+                  << "; raise " << limitOption(s.stopped) << " to go further";
     std::cout << "\n\n  " << std::left << std::setw(20) << "property" << std::setw(10) << "verdict" << std::setw(10) << "time" << "evidence\n";
     for (const auto& p : report.properties)
         std::cout << "  " << std::setw(20) << p.name << std::setw(10) << checker::verdictName(p.verdict) << std::setw(10)
