@@ -6,6 +6,7 @@
 
 #include "rules/Error.h"
 
+#include <csignal>
 #include <cstdint>
 
 namespace holon::checker {
@@ -49,6 +50,8 @@ bool outOfMemory(const std::string& message) {
 }
 
 std::string unknownReason(const std::string& reason) {
+    // Z3 catches SIGINT itself while it solves and answers unknown; the user asked holon to stop.
+    if (reason.find("interrupted from keyboard") != std::string::npos) throw Interrupted(SIGINT);
     if (!outOfMemory(reason) || limitMiB == 0) return reason;
     return "out of memory (Z3's memory limit is " + std::to_string(limitMiB) + " MiB)";
 }

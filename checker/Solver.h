@@ -42,6 +42,7 @@ Context newContext(const Budget& budget = Budget());
 /// Whether a Z3 failure or reason for "unknown" is Z3 running out of memory.
 bool outOfMemory(const std::string& message);
 /// A reason for "unknown" as a verdict's summary says it: naming the memory limit where it was hit.
+/// Z3's "interrupted from keyboard" (it catches SIGINT while solving) throws Interrupted(SIGINT).
 std::string unknownReason(const std::string& reason);
 /// A Z3 exception as an obligation's summary: running out of memory (with the limit); any other
 /// failure throws InternalError.

@@ -5,6 +5,7 @@
 #include "rules/ConfigIo.h"
 #include "rules/Diagnostics.h"
 #include "rules/Error.h"
+#include "rules/Escape.h"
 #include "rules/Library.h"
 #include "rules/Parser.h"
 #include "rules/Printer.h"
@@ -97,6 +98,21 @@ std::string missingInput(const rules::System& system, int k, const std::string& 
 
 }  // namespace
 
+namespace {
+
+/// The system a JSON configuration or ITF trace says it was written for, or "" (ASCII art names none).
+std::string writtenFor(const std::string& path) {
+    const std::string file = path.substr(0, path.find('#'));  // FILE#N picks a trace's state
+    const std::string text = rules::readTextFile(file);
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos || text[text.find_first_not_of(" \t\r\n")] != '{') return "";
+    const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);  // already read once, so well formed
+    if (!j.is_object()) return "";
+    const nlohmann::json* name = j.contains("system") ? &j["system"] : j.contains("#meta") && j["#meta"].is_object() && j["#meta"].contains("system") ? &j["#meta"]["system"] : nullptr;
+    return name && name->is_string() ? name->get<std::string>() : "";
+}
+
+}  // namespace
+
 std::vector<rules::Configuration> readStarts(const rules::Interpreter& in, const std::vector<std::string>& from,
                                              const std::vector<std::string>& inputSpecs, std::vector<std::uint32_t>* inputsOut) {
     const rules::System& system = in.model().system();
@@ -110,6 +126,12 @@ std::vector<rules::Configuration> readStarts(const rules::Interpreter& in, const
     for (const std::string& path : from) {
         std::uint32_t namedInFile = 0;
         rules::Configuration c = rules::readConfigFile(in, path, &namedInFile);
+        // A configuration of another system reads by field and value names (a design's variant is
+        // checked from the reference design's starts); the reader refused any name this system
+        // lacks, and the user is told which system the file was written for.
+        if (const std::string other = writtenFor(path); !other.empty() && other != system.name)
+            std::cerr << "holon: note: " << path << " was written for system '" << rules::excerpt(other) << "'; reading it as '" << system.name
+                      << "' by field and value names\n";
         for (std::size_t k = 0; k < system.inputs.size(); ++k)
             if (!((named | namedInFile) >> k & 1u)) throw InputError(missingInput(system, static_cast<int>(k), "--from " + path + ": "));
         for (int i = 0; i < in.region().size(); ++i) c.inputs[i] |= inputs[i];
