@@ -167,8 +167,11 @@ int run(const RoombotsArgs& a) {
         std::atomic<int> derived{0};
         runParallel(static_cast<int>(keys.size()), a.threads, false, "recipes", [&](int k) {
             rb::Setting& s = runSettings[keys[k]];
-            s.recipe = rb::automaticRecipe(table, keys[k].first, s);
-            ++derived;
+            try {
+                s.recipe = rb::automaticRecipe(table, keys[k].first, s, expired);
+                ++derived;
+            } catch (const rb::AssemblyStopped&) {
+            }
         }, expired);
         if (derived < static_cast<int>(keys.size()))
             throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached while deriving the recipes, before any run; nothing was written; raise --timeout");
@@ -192,9 +195,13 @@ int run(const RoombotsArgs& a) {
                          std::to_string(jobs.size()) + " runs (" + std::to_string(parallel) + " at once)");
     rb::AssemblyOptions options;
     options.stallSteps = a.stall;
+    options.stop = expired;  // a run the deadline cuts short is dropped, not counted
     runParallel(static_cast<int>(jobs.size()), a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int k) {
-        jobs[k].result = rb::assemble(table, jobs[k].coupling, jobs[k].strategy, runSettings.at({jobs[k].coupling, jobs[k].run}), options);
-        jobs[k].ran = true;
+        try {
+            jobs[k].result = rb::assemble(table, jobs[k].coupling, jobs[k].strategy, runSettings.at({jobs[k].coupling, jobs[k].run}), options);
+            jobs[k].ran = true;
+        } catch (const rb::AssemblyStopped&) {
+        }
     }, expired);
     // Stopped by --timeout: the tables and files hold the runs made, each whole.
     const std::size_t planned = jobs.size();
@@ -267,7 +274,7 @@ Run addRoombotsCommand(CLI::App& app) {
     sub->add_option("--clouds", a->clouds, "collision-cloud table (default: the one shipped with holon)");
     sub->add_option("--make-clouds", a->makeClouds, "compute the collision-cloud table from the kinematics, write it to FILE and stop");
     sub->add_option("--threads", a->threads, "parallel runs, 1 to 64 (default: the machine's cores)")->check(threadsValidator());
-    sub->add_option("--timeout", a->timeout, "stop starting runs after this many seconds in all; the tables hold the runs made (exit 3; default: no limit)")->check(secondsValidator());
+    sub->add_option("--timeout", a->timeout, "stop after this many seconds in all, a run in progress dropped; the tables hold the runs made (exit 3; default: no limit)")->check(secondsValidator());
     sub->add_option("--memory", a->memoryMiB, "memory bound in MiB, checked before the runs (default 16384)")->check(memoryValidator());
     sub->add_option("--out", a->out, "directory for per-run traces (CSV), foot-trace pictures and assembly snapshots (SVG) (created if missing; its parent must exist)");
     sub->add_flag("--json", a->json, "print a JSON summary");

@@ -21,7 +21,7 @@ Strategy parseStrategy(const std::string& name) {
 }
 
 AssemblyResult assemble(const CloudTable& table, Coupling coupling, Strategy strategy, const Setting& setting, const AssemblyOptions& options) {
-    if (strategy == Strategy::Reserve) return detail::assembleByReservation(table, coupling, setting);
+    if (strategy == Strategy::Reserve) return detail::assembleByReservation(table, coupling, setting, options);
     return detail::assembleByForceField(table, coupling, strategy, setting, options);
 }
 

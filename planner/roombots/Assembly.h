@@ -7,6 +7,7 @@
 #include "planner/roombots/Structures.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,11 +47,18 @@ struct AssemblyResult {
 
 struct AssemblyOptions {
     int stallSteps = 12;  // K: deadlock when no metamodule came closer to an active seed for K steps
+    /// Asked before every action; once it says so the run stops and assemble() throws
+    /// AssemblyStopped (a --timeout: a run cut short is not a run, so no result is made of it).
+    std::function<bool()> stop;
 };
+
+/// Thrown by assemble() when AssemblyOptions::stop said so.
+struct AssemblyStopped {};
 
 /// A seeding order derived from the seeds' cells and the kinematics: each seed, when its turn comes,
 /// can be walked to and filled, and leaves every later seed fillable. The given order if none exists.
-Recipe automaticRecipe(const CloudTable& table, Coupling coupling, const Setting& setting);
+/// `stop` is asked before each candidate seed; once it says so, AssemblyStopped is thrown.
+Recipe automaticRecipe(const CloudTable& table, Coupling coupling, const Setting& setting, const std::function<bool()>& stop = {});
 
 /// The seeds no metamodule of this configuration can change shape into, even on an empty floor
 /// (indices into the recipe).

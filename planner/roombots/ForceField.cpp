@@ -19,7 +19,9 @@ constexpr double kRange = 8, kPauseRange = 4;
 class ForceField : public World {
 public:
     ForceField(const CloudTable& table, Coupling coupling, Strategy strategy, const Setting& setting, const AssemblyOptions& options)
-        : World(table, coupling, setting), strategy_(strategy), options_(options), claimed_(setting.recipe.seeds.size()) {}
+        : World(table, coupling, setting), strategy_(strategy), options_(options), claimed_(setting.recipe.seeds.size()) {
+        stopWhen(options.stop);
+    }
     AssemblyResult run();
 
 private:
@@ -47,6 +49,7 @@ AssemblyResult ForceField::run() {
         const auto [t, i] = events_.top();
         events_.pop();
         now_ = t;
+        stopIfAsked();
         decide(i);
         if (++decisions > cap) deadlock("no seed filled within " + std::to_string(cap) + " decisions");
         if (!result_.deadlocked && stalled()) deadlock("no metamodule came closer to an active seed for " + std::to_string(options_.stallSteps) + " steps");

@@ -30,6 +30,7 @@ AssemblyResult Reservation::run() {
         const auto [t, i] = events_.top();
         events_.pop();
         now_ = t;
+        stopIfAsked();
         advance(i);
         startWaiting();
     }
@@ -213,8 +214,10 @@ void Reservation::advance(int i) {
 }
 
 
-AssemblyResult assembleByReservation(const CloudTable& table, Coupling coupling, const Setting& setting) {
-    return Reservation(table, coupling, setting).run();
+AssemblyResult assembleByReservation(const CloudTable& table, Coupling coupling, const Setting& setting, const AssemblyOptions& options) {
+    Reservation r(table, coupling, setting);
+    r.stopWhen(options.stop);
+    return r.run();
 }
 
 }  // namespace holon::planner::roombots::detail
