@@ -4,6 +4,7 @@
 #include "checker/Forked.h"
 
 #include "rules/Error.h"
+#include "rules/StopSignals.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -39,35 +40,6 @@ nlohmann::json answerOf(const ForkedJob& job, bool forked) {
     }
 }
 
-/// The signal that stopped a race (0: none); only the handler writes it.
-volatile std::sig_atomic_t stopSignal = 0;
-
-extern "C" void onStopSignal(int signal) { stopSignal = signal; }
-
-/// SIGINT and SIGTERM, while children run, are recorded for the race to stop them (the default
-/// would end this process and leave them running). Signals the caller ignores stay ignored.
-class StopSignals {
-public:
-    StopSignals() {
-        stopSignal = 0;
-        struct sigaction action {};
-        action.sa_handler = onStopSignal;
-        sigemptyset(&action.sa_mask);
-        sigaction(SIGINT, &action, &oldInt_);
-        sigaction(SIGTERM, &action, &oldTerm_);
-        if (oldInt_.sa_handler == SIG_IGN) sigaction(SIGINT, &oldInt_, nullptr);
-        if (oldTerm_.sa_handler == SIG_IGN) sigaction(SIGTERM, &oldTerm_, nullptr);
-    }
-    ~StopSignals() {
-        sigaction(SIGINT, &oldInt_, nullptr);
-        sigaction(SIGTERM, &oldTerm_, nullptr);
-    }
-    StopSignals(const StopSignals&) = delete;
-    StopSignals& operator=(const StopSignals&) = delete;
-
-private:
-    struct sigaction oldInt_ {}, oldTerm_ {};
-};
 
 std::optional<Child> spawn(const ForkedJob& job) {
     int fds[2];
@@ -109,7 +81,10 @@ nlohmann::json received(const Child& c, int status) {
 }  // namespace
 
 ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::function<bool(const nlohmann::json&)>& decisive, const Budget& budget) {
-    const StopSignals stopSignals;
+    // SIGINT and SIGTERM, while children run, are recorded for the race to stop them (the default
+    // would end this process and leave them running).
+    const rules::StopSignals stopSignals(false);
+    const volatile std::sig_atomic_t& stopSignal = *rules::StopSignals::caught();
     std::vector<Child> children;
     for (const ForkedJob& job : jobs) {
         auto child = spawn(job);

@@ -16,6 +16,7 @@
 #include "rules/Limits.h"
 #include "rules/Library.h"
 #include "rules/OutputFile.h"
+#include "rules/StopSignals.h"
 
 #include <nlohmann/json.hpp>
 
@@ -120,39 +121,6 @@ bool writeDisks(const std::string& dir, const planner::hex::DiskMetamodules& dis
     return fault.empty();
 }
 
-/// The signal that interrupted the plan (0: none). Only the handler writes it; the run reads it
-/// between rounds (RunOptions::interrupt).
-volatile std::sig_atomic_t interruptSignal = 0;
-
-extern "C" void onInterrupt(int signal) { interruptSignal = signal; }
-
-/// Catches SIGINT and SIGTERM while a plan runs and writes its files. The handler is one-shot: a
-/// second signal ends holon at once (every file written so far is still whole: files are renamed
-/// into place complete, and the temporaries of unfinished ones are all that is left).
-class InterruptGuard {
-public:
-    InterruptGuard() {
-        struct sigaction action {};
-        action.sa_handler = onInterrupt;
-        sigemptyset(&action.sa_mask);
-        action.sa_flags = SA_RESETHAND;
-        sigaction(SIGINT, &action, &oldInt_);
-        sigaction(SIGTERM, &action, &oldTerm_);
-        // A signal the caller ignores (a shell's background job, nohup) stays ignored.
-        if (oldInt_.sa_handler == SIG_IGN) sigaction(SIGINT, &oldInt_, nullptr);
-        if (oldTerm_.sa_handler == SIG_IGN) sigaction(SIGTERM, &oldTerm_, nullptr);
-    }
-    ~InterruptGuard() {
-        sigaction(SIGINT, &oldInt_, nullptr);
-        sigaction(SIGTERM, &oldTerm_, nullptr);
-    }
-    InterruptGuard(const InterruptGuard&) = delete;
-    InterruptGuard& operator=(const InterruptGuard&) = delete;
-
-private:
-    struct sigaction oldInt_ {}, oldTerm_ {};
-};
-
 /// A system fixed to a lattice plan does not run on: plan picks the lattice from the shapes
 /// (square2d for 2D, cubic3d for 3D), so the fix is the rule file or the shapes, not a region.
 void requirePlanLattice(const rules::System& system, const rules::Lattice& lattice) {
@@ -205,7 +173,7 @@ int run(const PlanArgs& a) {
     else if (a.scheduler == "adversarial") options.scheduler = planner::Scheduler::Adversarial;
     else throw InputError("--scheduler '" + a.scheduler + "': choose sync, async or adversarial");
     options.seed = a.seed, options.maxSteps = a.maxSteps, options.maxRounds = a.maxRounds;
-    options.interrupt = &interruptSignal;
+    options.interrupt = rules::StopSignals::caught();
 
     std::unique_ptr<planner::hex::DiskMetamodules> disks;
     if (!a.hexDisks.empty()) {
@@ -214,7 +182,7 @@ int run(const PlanArgs& a) {
         disks = std::make_unique<planner::hex::DiskMetamodules>(problem);
     }
     // From here on a signal stops the run at a round boundary and the files are still written.
-    const InterruptGuard guard;
+    const rules::StopSignals guard(true);  // one-shot: a second signal ends holon at once
     during("preparing the run");
     if (budget.limited()) options.timeoutSeconds = std::max(budget.remaining(), 1e-6);
     planner::Execution execution(problem, *allocator, options);
@@ -257,7 +225,7 @@ int run(const PlanArgs& a) {
         std::cout << ", relabels " << stats.relabels << "\n  " << stats.rounds << " rounds, " << stats.steps << " steps, " << stats.evaluations
                   << " rule evaluations, " << std::fixed << std::setprecision(3) << stats.seconds << " s\n  ";
         if (stats.complete) std::cout << "complete: the target is reached\n";
-        else if (interrupted) std::cout << "NOT complete: interrupted by " << (interruptSignal == SIGTERM ? "SIGTERM" : "SIGINT") << " after round " << stats.rounds << "\n";
+        else if (interrupted) std::cout << "NOT complete: interrupted by " << (*rules::StopSignals::caught() == SIGTERM ? "SIGTERM" : "SIGINT") << " after round " << stats.rounds << "\n";
         else std::cout << "NOT complete: stopped by " << stats.stopped << '\n';
         if (!stats.complete) printShortOfGoal(problem, execution);
         if (monitor) std::cout << "  monitor: " << monitor->summary() << '\n';
@@ -275,7 +243,7 @@ int run(const PlanArgs& a) {
     }
     // A file that could not be written outranks the verdict: the summary above is all there is.
     errors.raise();
-    if (interrupted) return 128 + interruptSignal;
+    if (interrupted) return 128 + *rules::StopSignals::caught();
     if (!disksOk || violated) return kExitViolated;
     return exitCodeFor(stats);
 }

@@ -1,0 +1,28 @@
+#pragma once
+// SIGINT and SIGTERM caught while a long job runs, so it stops at a point where its outputs are
+// whole (a plan at a round boundary, verify after killing its solver processes) instead of dying
+// mid-write. One mechanism for every subcommand that needs it.
+
+#include <csignal>
+
+namespace holon::rules {
+
+/// Installs the catcher for its lifetime and restores the previous handlers after. A signal the
+/// caller ignores (a shell's background job, nohup) stays ignored. With `oneShot`, a second signal
+/// ends the process at once (the first one's orderly stop is taking too long for the user).
+class StopSignals {
+public:
+    explicit StopSignals(bool oneShot);
+    ~StopSignals();
+    StopSignals(const StopSignals&) = delete;
+    StopSignals& operator=(const StopSignals&) = delete;
+
+    /// The signal caught since the catcher was installed (SIGINT or SIGTERM), 0 for none; the
+    /// address is what a run polls (planner::RunOptions::interrupt).
+    static const volatile std::sig_atomic_t* caught();
+
+private:
+    struct sigaction oldInt_ {}, oldTerm_ {};
+};
+
+}  // namespace holon::rules
