@@ -53,7 +53,7 @@ int run(const Args& a) {
         ++lineNo;
         try {
             j = nlohmann::json::parse(line);
-        } catch (const nlohmann::json::parse_error& e) {
+        } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number past a double
             throw InputError(where() + ": not a JSON line (" + e.what() + ")");
         }
         if (!j.is_object()) throw InputError(where() + ": expected a JSON object");

@@ -137,7 +137,7 @@ Shape fromJson(std::string_view argument, const std::string& text) {
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number past a double
         bad(argument, std::string("not valid JSON: ") + e.what());
     }
     const nlohmann::json& list = j.is_object() && j.contains("cells") ? j["cells"] : j;
