@@ -31,15 +31,25 @@ namespace holon::checker {
 
 namespace {
 
-void collectConstants(const z3::expr& e, std::unordered_set<unsigned>& seen, z3::expr_vector& out) {
-    if (!seen.insert(e.id()).second) return;
-    if (e.is_quantifier()) return collectConstants(e.body(), seen, out);
-    if (!e.is_app()) return;
-    if (e.num_args() == 0 && e.decl().decl_kind() == Z3_OP_UNINTERPRETED) {
-        out.push_back(e);
-        return;
+/// The uninterpreted constants of `root` in depth-first preorder, each once. Iterative: formulas
+/// built as chains (`q = q && x`) are thousands deep, past the stack of a sanitizer build.
+void collectConstants(const z3::expr& root, std::unordered_set<unsigned>& seen, z3::expr_vector& out) {
+    std::vector<z3::expr> stack{root};
+    while (!stack.empty()) {
+        const z3::expr e = stack.back();
+        stack.pop_back();
+        if (!seen.insert(e.id()).second) continue;
+        if (e.is_quantifier()) {
+            stack.push_back(e.body());
+            continue;
+        }
+        if (!e.is_app()) continue;
+        if (e.num_args() == 0 && e.decl().decl_kind() == Z3_OP_UNINTERPRETED) {
+            out.push_back(e);
+            continue;
+        }
+        for (unsigned k = e.num_args(); k-- > 0;) stack.push_back(e.arg(k));  // the first argument on top
     }
-    for (unsigned k = 0; k < e.num_args(); ++k) collectConstants(e.arg(k), seen, out);
 }
 
 /// body -> head, closed over every constant in it (each Horn clause is its own universal sentence).

@@ -8,6 +8,7 @@
 
 #include <csignal>
 #include <cstdint>
+#include <vector>
 
 namespace holon::checker {
 
@@ -33,6 +34,16 @@ void shareSolverMemory(int ways) {
     if (limitMiB == 0 || ways <= 1) return;
     const std::uint64_t used = Z3_get_estimated_alloc_size() >> 20, limit = limitMiB;
     setLimit(used >= limit ? limit : used + (limit - used) / static_cast<std::uint64_t>(ways));
+}
+
+void ContextRelease::operator()(z3::context* c) const {
+    if (!budget_.expired()) {
+        delete c;
+        return;
+    }
+    // Kept reachable, not dropped: it is memory the process holds on purpose, not a leak.
+    static std::vector<z3::context*> kept;
+    kept.push_back(c);
 }
 
 Context newContext(const Budget& budget) {

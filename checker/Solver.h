@@ -26,9 +26,7 @@ void shareSolverMemory(int ways);
 class ContextRelease {
 public:
     explicit ContextRelease(const Budget& budget = Budget()) : budget_(budget) {}
-    void operator()(z3::context* c) const {
-        if (!budget_.expired()) delete c;
-    }
+    void operator()(z3::context* c) const;
 
 private:
     Budget budget_;

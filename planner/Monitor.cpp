@@ -163,8 +163,12 @@ bool Monitor::linkedNearby(std::int64_t cell) const {
     const auto& cells = execution_->cells();
     std::uint64_t occupied = 0, reached = 0;  // bit k: window cell k
     int first = -1;
-    for (std::size_t k = 0; k < window_.size(); ++k)
-        if (cells[cell + window_[k]]) occupied |= std::uint64_t{1} << k;
+    const auto size = static_cast<std::int64_t>(cells.size());
+    for (std::size_t k = 0; k < window_.size(); ++k) {
+        // Two steps can leave the board's padding (one cell): beyond it is empty.
+        const std::int64_t j = cell + window_[k];
+        if (j >= 0 && j < size && cells[j]) occupied |= std::uint64_t{1} << k;
+    }
     int stack[64], top = 0;
     for (std::size_t k = 0; k < window_.size() && first < 0; ++k)
         if (windowNeighbour_[k] && (occupied >> k & 1)) first = static_cast<int>(k);
