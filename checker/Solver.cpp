@@ -41,9 +41,10 @@ void ContextRelease::operator()(z3::context* c) const {
         delete c;
         return;
     }
-    // Kept reachable, not dropped: it is memory the process holds on purpose, not a leak.
-    static std::vector<z3::context*> kept;
-    kept.push_back(c);
+    // Kept reachable, not dropped: it is memory the process holds on purpose, not a leak. The list
+    // itself is never destroyed, so it still holds them when the leak check runs at exit.
+    static auto* const kept = new std::vector<z3::context*>;
+    kept->push_back(c);
 }
 
 Context newContext(const Budget& budget) {
