@@ -18,9 +18,11 @@ using rules::Vec;
 
 namespace {
 
+/// The lattice neighbours of v on the planner's lattice of that dimension (square2d, cubic3d).
 std::vector<Vec> faceNeighbours(Vec v, int dimension) {
-    std::vector<Vec> out = {{v.x + 1, v.y, v.z}, {v.x - 1, v.y, v.z}, {v.x, v.y + 1, v.z}, {v.x, v.y - 1, v.z}};
-    if (dimension == 3) out.push_back({v.x, v.y, v.z + 1}), out.push_back({v.x, v.y, v.z - 1});
+    const rules::Lattice& lattice = rules::Lattice::get(dimension == 3 ? rules::LatticeKind::Cubic3D : rules::LatticeKind::Square2D);
+    std::vector<Vec> out;
+    for (int d = 0; d < lattice.degree(); ++d) out.push_back(v + lattice.direction(d));
     return out;
 }
 
