@@ -98,5 +98,6 @@ Run addPlanCommand(CLI::App& app);
 Run addHexCommand(CLI::App& app);
 Run addRoombotsCommand(CLI::App& app);
 Run addReplayCommand(CLI::App& app);
+Run addPathCommand(CLI::App& app);
 
 }  // namespace holon::cli

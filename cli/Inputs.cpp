@@ -114,7 +114,8 @@ std::string writtenFor(const std::string& path) {
 }  // namespace
 
 std::vector<rules::Configuration> readStarts(const rules::Interpreter& in, const std::vector<std::string>& from,
-                                             const std::vector<std::string>& inputSpecs, std::vector<std::uint32_t>* inputsOut) {
+                                             const std::vector<std::string>& inputSpecs, std::vector<std::uint32_t>* inputsOut,
+                                             const std::string& option) {
     const rules::System& system = in.model().system();
     std::uint32_t named = 0;
     const std::vector<std::uint32_t> inputs = readInputs(in, inputSpecs, &named);
@@ -133,12 +134,12 @@ std::vector<rules::Configuration> readStarts(const rules::Interpreter& in, const
             std::cerr << "holon: note: " << path << " was written for system '" << rules::excerpt(other) << "'; reading it as '" << system.name
                       << "' by field and value names\n";
         for (std::size_t k = 0; k < system.inputs.size(); ++k)
-            if (!((named | namedInFile) >> k & 1u)) throw InputError(missingInput(system, static_cast<int>(k), "--from " + path + ": "));
+            if (!((named | namedInFile) >> k & 1u)) throw InputError(missingInput(system, static_cast<int>(k), option + " " + path + ": "));
         for (int i = 0; i < in.region().size(); ++i) c.inputs[i] |= inputs[i];
         for (const rules::Constraint& constraint : system.constraints)
             if (!in.holds(constraint.expr, c))
                 throw InputError(path + ": this configuration violates the constraint '" + rules::printExpr(system, constraint.expr) + "' (" +
-                                 system.sourceName + ":" + std::to_string(constraint.loc.line) + "); every start must be legal");
+                                 system.sourceName + ":" + std::to_string(constraint.loc.line) + "); every configuration given with " + option + " must be legal");
         starts.push_back(std::move(c));
     }
     return starts;

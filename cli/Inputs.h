@@ -34,8 +34,10 @@ nlohmann::json traceJson(const checker::Trace& trace, const rules::Engine& engin
 /// The start configurations of --from, each with the inputs of `inputSpecs` (--input) added, every
 /// declared input set by one or the other (an input left out is not silently false everywhere), and
 /// each legal (else the error names the constraint that fails, with its line). With no --from,
-/// the inputs alone must still be complete (--all): `inputsOut` gets them either way.
+/// the inputs alone must still be complete (--all): `inputsOut` gets them either way. `option`
+/// names the configurations in messages (`holon path` reads its --to this way too).
 std::vector<rules::Configuration> readStarts(const rules::Interpreter& in, const std::vector<std::string>& from,
-                                             const std::vector<std::string>& inputSpecs, std::vector<std::uint32_t>* inputsOut = nullptr);
+                                             const std::vector<std::string>& inputSpecs, std::vector<std::uint32_t>* inputsOut = nullptr,
+                                             const std::string& option = "--from");
 
 }  // namespace holon::cli

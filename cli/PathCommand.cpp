@@ -1,0 +1,134 @@
+// `holon path FILE --region R --from A (--to B | --goal)`: a shortest sequence of rule steps
+// between two configurations, or to the nearest goal configuration (checker/Path.h), replayed
+// through the reference interpreter before it is shown; "unreachable" comes with the size of the
+// space searched, which is every configuration reachable from A.
+
+#include "checker/Draw.h"
+#include "checker/Path.h"
+#include "cli/Commands.h"
+#include "cli/Inputs.h"
+#include "rules/OutputFile.h"
+
+#include <iomanip>
+#include <iostream>
+#include <unistd.h>
+
+namespace holon::cli {
+
+namespace {
+
+struct PathArgs {
+    std::string file, region, from, to, traceOut, svg;
+    std::vector<std::string> inputs, noWarnings;
+    bool goal = false, json = false;
+    std::uint64_t maxStates = 50'000'000;
+    double timeout = 0;
+    std::uint64_t memoryMiB = kDefaultMemoryMiB;
+    int threads = 2;
+};
+
+std::string outcomeName(checker::PathOutcome o) {
+    switch (o) {
+    case checker::PathOutcome::Found: return "found";
+    case checker::PathOutcome::Unreachable: return "unreachable";
+    case checker::PathOutcome::Undecided: return "undecided";
+    }
+    return "?";
+}
+
+int run(const PathArgs& a) {
+    if (a.to.empty() == !a.goal) throw InputError("say where to go: --to CONFIG (JSON or ASCII art) or --goal (any configuration where the system's goal holds), not both");
+    auto system = loadRules(a.file, a.noWarnings);
+    if (!system) return kExitBadInput;
+    const rules::Region region = rules::Region::parse(a.region, 1u << 22);
+    rules::Model model(*system, region.lattice());
+    rules::Interpreter in(model, region);
+    std::optional<rules::OutputFile> traceOut, svgOut;
+    if (!a.traceOut.empty()) traceOut.emplace("--trace-out", a.traceOut);
+    if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
+
+    checker::PathQuery query;
+    query.from = readStarts(in, {a.from}, a.inputs).front();
+    if (!a.to.empty()) {
+        query.to = readStarts(in, {a.to}, a.inputs, nullptr, "--to").front();
+        if (query.to->inputs != query.from.inputs)
+            throw InputError("--to " + a.to + ": its inputs differ from those of --from " + a.from + "; a path never changes an input");
+    }
+    query.limits.maxStates = a.maxStates;
+    query.limits.timeoutSeconds = a.timeout;
+    query.limits.memoryBytes = a.memoryMiB << 20;
+    query.limits.threads = a.threads;
+    const bool terminal = isatty(2) && !a.json;
+    if (terminal)
+        query.onProgress = [](const checker::ExploreStats& s) {
+            std::cerr << "\r  searching: " << s.states << " states, depth " << s.depth << ", " << std::fixed << std::setprecision(1) << s.seconds << " s   "
+                      << std::flush;
+        };
+    const rules::Engine engine(model, region, query.from.inputs);
+    const checker::PathResult result = checker::shortestPath(engine, query);
+    if (terminal) std::cerr << "\r" << std::string(70, ' ') << "\r";
+
+    const bool found = result.outcome == checker::PathOutcome::Found;
+    std::string why;
+    const bool replayed = found && checker::replay(result.trace, engine, in, &why);
+    if (found && !replayed)
+        std::cerr << "holon path: internal error: the path does not replay: " << why
+                  << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+    const std::size_t length = found ? result.trace.steps.size() - 1 : 0;
+    const std::string title = system->name + " on " + region.spec() + ": " + (found ? "a shortest path, " + checker::stepCount(length) : outcomeName(result.outcome));
+    if (found && traceOut) traceOut->write(checker::toItf(result.trace, engine, a.file).dump(2) + "\n");
+    if (found && svgOut) svgOut->write(checker::drawTraceSvg(result.trace, engine, title));
+
+    const auto& s = result.stats;
+    const int code = !found ? (result.outcome == checker::PathOutcome::Unreachable ? kExitViolated : kExitUndecided) : replayed ? kExitOk : kExitInternal;
+    if (a.json) {
+        nlohmann::json j = {{"system", system->name}, {"region", region.spec()},     {"outcome", outcomeName(result.outcome)},
+                            {"states", s.states},     {"depth", s.depth},           {"seconds", s.seconds},
+                            {"stopped", checker::stopReasonName(s.stopped)}};
+        if (found) j["length"] = length, j["replayed"] = replayed, j["path"] = traceJson(result.trace, engine, in);
+        std::cout << j.dump(2) << '\n';
+        return code;
+    }
+    std::cout << system->name << " on " << region.spec() << ", from " << a.from << " to " << (a.goal ? "the goal" : a.to) << '\n';
+    switch (result.outcome) {
+    case checker::PathOutcome::Found:
+        std::cout << "  a shortest path: " << checker::stepCount(length) << " (searched " << s.states << " states, " << std::fixed << std::setprecision(2)
+                  << s.seconds << " s" << (replayed ? "; replayed through the reference interpreter)" : "; NOT confirmed by the reference interpreter)") << "\n\n"
+                  << checker::drawTraceAscii(result.trace, engine);
+        break;
+    case checker::PathOutcome::Unreachable:
+        std::cout << "  unreachable: the " << s.states << (s.states == 1 ? " configuration" : " configurations") << " reachable from the start (depth " << s.depth << ") include no "
+                  << (a.goal ? "goal configuration" : "configuration equal to the target") << '\n';
+        break;
+    case checker::PathOutcome::Undecided:
+        std::cout << "  undecided: stopped by " << checker::stopReasonName(s.stopped) << " after " << s.states << " states (none within " << checker::stepCount(static_cast<std::size_t>(s.depth))
+                  << "); raise " << (s.stopped == checker::StopReason::Timeout ? "--timeout" : s.stopped == checker::StopReason::Memory ? "--memory" : "--max-states")
+                  << " to search further\n";
+        break;
+    }
+    return code;
+}
+
+}  // namespace
+
+Run addPathCommand(CLI::App& app) {
+    auto a = std::make_shared<PathArgs>();
+    CLI::App* sub = app.add_subcommand("path", "A shortest sequence of rule steps from one configuration to another, or to the goal");
+    sub->add_option("file", a->file, "rule file (.holon) or bundled system name")->required();
+    sub->add_option("--region", a->region, "bounded region: square:WxH, cubic:WxHxD or hex:rR")->required();
+    sub->add_option("--from", a->from, "start configuration (JSON, ITF#N or ASCII art)")->required();
+    sub->add_option("--to", a->to, "target configuration (JSON, ITF#N or ASCII art)");
+    sub->add_flag("--goal", a->goal, "go to the nearest configuration where the system's goal holds");
+    sub->add_option("--input", a->inputs, "set an input from an ASCII mask: NAME=FILE (any character but '.' marks a cell)");
+    sub->add_option("--max-states", a->maxStates, "stop after this many states (default 50000000)")->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
+    sub->add_option("--timeout", a->timeout, "stop after this many seconds (default: no limit)")->check(secondsValidator());
+    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB (default 16384)")->check(memoryValidator());
+    sub->add_option("--threads", a->threads, "worker threads (default 2)")->check(threadsValidator());
+    sub->add_flag("--json", a->json, "print the result as JSON (length: the number of rule steps)");
+    sub->add_option("--trace-out", a->traceOut, "write the path as an ITF JSON trace");
+    sub->add_option("--svg", a->svg, "draw the path as SVG");
+    sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
+    return [a] { return run(*a); };
+}
+
+}  // namespace holon::cli
