@@ -67,13 +67,6 @@ bool lexLess(const std::vector<rules::Rational>& a, const std::vector<rules::Rat
     return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end());
 }
 
-/// The trace to `from` followed by the step along edge index `e`.
-Trace traceWithStep(const Explorer& ex, StateId from, std::uint64_t e) {
-    Trace t = traceTo(ex, from);
-    t.steps.push_back({ex.cells(ex.successors()[e]), ex.successorVia()[e]});
-    return t;
-}
-
 /// Among `states`, those `bad` accepts make `r` violated: how many, and a shortest trace to the
 /// nearest. False when there is none.
 template <class Bad>

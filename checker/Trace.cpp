@@ -20,6 +20,12 @@ Trace traceTo(const Explorer& ex, StateId id) {
     return t;
 }
 
+Trace traceWithStep(const Explorer& explorer, StateId from, std::uint64_t edge) {
+    Trace t = traceTo(explorer, from);
+    t.steps.push_back({explorer.cells(explorer.successors()[edge]), explorer.successorVia()[edge]});
+    return t;
+}
+
 Trace traceAlong(const Explorer& ex, const std::vector<StateId>& states) {
     Trace t;
     const auto& row = ex.rowStart();

@@ -29,6 +29,9 @@ struct Trace {
 
 /// The BFS-tree path to a state, as a trace.
 Trace traceTo(const Explorer& explorer, StateId id);
+/// The BFS-tree path to `from`, then the step along its edge `edge` (an index into the explorer's
+/// successor rows): the witness of a property, or of a difference, that lives on one step.
+Trace traceWithStep(const Explorer& explorer, StateId from, std::uint64_t edge);
 /// A trace along a list of states, choosing for each step an instance that leads to the next.
 Trace traceAlong(const Explorer& explorer, const std::vector<StateId>& states);
 

@@ -22,6 +22,7 @@ std::string memoryAdvice(const std::string& command) {
     if (command == "check") return "set --memory below the memory this machine has free (it bounds the exploration), lower --max-states, or choose a smaller --region";
     if (command == "verify") return "set --memory below the memory this machine has free, or choose a smaller --region or a lower --depth";
     if (command == "plan") return "set --memory below the memory this machine has free, or choose smaller --from/--to shapes or a lower --scale";
+    if (command == "diff") return "set --memory below the memory this machine has free (both explorations share it), lower --max-states, or choose a smaller --region";
     if (command == "path") return "set --memory below the memory this machine has free (it bounds the search), lower --max-states, or choose a smaller --region";
     if (command == "hex") return "set --memory below the memory this machine has free, or choose a smaller --size or fewer --steps";
     if (command == "roombots") return "set --memory below the memory this machine has free, or choose a smaller structure or fewer --runs";
@@ -48,6 +49,7 @@ int runHolon(int argc, char** argv) {
     add(addRoombotsCommand);
     add(addReplayCommand);
     add(addPathCommand);
+    add(addDiffCommand);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -99,5 +99,6 @@ Run addHexCommand(CLI::App& app);
 Run addRoombotsCommand(CLI::App& app);
 Run addReplayCommand(CLI::App& app);
 Run addPathCommand(CLI::App& app);
+Run addDiffCommand(CLI::App& app);
 
 }  // namespace holon::cli
