@@ -5,7 +5,7 @@
 // incrementally: a conjunct that is a linear comparison of counts and the mass is a sum a rule
 // step changes by a fixed amount, and a connectivity conjunct is decided around the cells that
 // changed (a cut cell of a connected set, a flood from the added cells). rules::Engine::legal is
-// the reference these are tested against (tests/checker/WordConstraintsTest.cpp).
+// the reference these are tested against (tests/checker/WordsTest.cpp).
 
 #include "checker/WordAdjacency.h"
 #include "rules/Engine.h"
