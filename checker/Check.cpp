@@ -9,6 +9,7 @@
 #include "checker/Check.h"
 
 #include "checker/Budget.h"
+#include "checker/FailureCells.h"
 #include "checker/Graph.h"
 #include "checker/Holonomy.h"
 #include "rules/Error.h"
@@ -306,7 +307,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
             r.trace = traceTo(*ex, best);
             // Mark what a person should look at: the cells that make it false.
             const auto last = ex->cells(best);
-            r.trace->marked = e.failureCells(p.exprs[0], last.data());
+            r.trace->marked = failureCells(e, p.exprs[0], last.data());
             r.witness = {{"distance", r.trace->steps.size() - 1}};
             r.summary = "violated after " + stepCount(r.trace->steps.size() - 1);
             const std::string which = nameFailingConjunct(r, p, rules::Interpreter(model, region), {last, e.inputs()});

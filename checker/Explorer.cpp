@@ -33,10 +33,10 @@ std::string stopReasonName(StopReason r) {
 }
 
 Explorer::Explorer(const rules::Engine& engine, Options options)
-    : engine_(&engine), options_(std::move(options)),
+    : engine_(&engine), constraints_(engine), options_(std::move(options)),
       budget_(options_.budget.limited() ? options_.budget : Budget(options_.limits.timeoutSeconds)),
       store_(StateLayout(engine.region().size(), engine.model().alphabet().size(), options_.onWords && WordSuccessors::fits(engine))) {
-    if (store_.layout().planeMajor()) words_ = std::make_unique<WordSuccessors>(engine, store_.layout());
+    if (store_.layout().planeMajor()) words_ = std::make_unique<WordSuccessors>(constraints_, store_.layout());
 }
 
 std::vector<CellValue> Explorer::cells(StateId id) const {
@@ -120,7 +120,7 @@ void Explorer::addAllLegal() {
         else if (fixedBytes + 16 * n >= options_.limits.memoryBytes) halt(StopReason::Memory);
         return halted() != StopReason::Finished;
     };
-    const rules::CellPredicate* connected = n <= 64 ? engine_->connectedConjunct() : nullptr;
+    const rules::CellPredicate* connected = n <= 64 ? constraints_.connectedConjunct() : nullptr;
     if (connected) {
         lists.resize(n + 1);
         legalByConnectedSets(*connected, found, stop);
@@ -216,7 +216,7 @@ void Explorer::legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& foun
     const int n = engine_->region().size();
     std::atomic<std::uint64_t> next{0};
     auto work = [&](int thread) {
-        rules::Engine::Evaluator ev(*engine_);
+        Evaluator ev(constraints_);
         std::vector<CellValue> cells(n);
         for (std::uint64_t job; !stop() && (job = next.fetch_add(1)) * batch < total;) {
             const std::uint64_t lo = job * batch, hi = std::min(total, lo + batch);
@@ -238,11 +238,11 @@ void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink&
     std::vector<std::vector<CellValue>> in(n), out(n);  // per cell, the states T accepts / rejects
     for (int c = 0; c < n; ++c)
         for (int v = 0; v < a; ++v) (engine_->cellMatches(connected, c, static_cast<CellValue>(v)) ? in : out)[c].push_back(static_cast<CellValue>(v));
-    const ConnectedSets sets(engine_->neighbourWords());
+    const ConnectedSets sets(constraints_.adjacency().neighbours());
     std::atomic<int> next{0};
     // The common case: every cell has one state T accepts and one it rejects (pixel: M and _),
     // so a set is one candidate, whose cells in each state and index follow from the set alone.
-    const bool determined = engine_->constraintsOnWords() &&
+    const bool determined = constraints_.onWords() &&
                             std::all_of(in.begin(), in.end(), [](const auto& o) { return o.size() == 1; }) &&
                             std::all_of(out.begin(), out.end(), [](const auto& o) { return o.size() == 1; });
     std::vector<std::uint64_t> inCells(a), outCells(a), gain(n);  // gain: index added by a cell joining
@@ -252,7 +252,7 @@ void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink&
             inCells[in[c][0]] |= std::uint64_t{1} << c, outCells[out[c][0]] |= std::uint64_t{1} << c;
             base += out[c][0] * placeValue_[c], gain[c] = (in[c][0] - out[c][0]) * placeValue_[c];  // wraps: unsigned
         }
-    const int connectedWord = engine_->connectedConjunctWord();  // holds by construction
+    const int connectedWord = constraints_.connectedConjunctWord();  // holds by construction
     auto work = [&](int thread) {
         std::vector<CellValue> cells(n);
         std::vector<int> choice(n), varying;
@@ -261,9 +261,9 @@ void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink&
             std::uint64_t index = base;
             for (std::uint64_t b = set; b; b &= b - 1) index += gain[std::countr_zero(b)];
             for (int v = 0; v < a; ++v) occupied[v] = (set & inCells[v]) | (~set & outCells[v]);
-            rules::Engine::ConstraintWords words;
-            engine_->constraintWords(occupied, words);
-            if (engine_->legalOn(words, nullptr, connectedWord)) found(thread, job, index);
+            WordConstraints::Words words;
+            constraints_.wordsOf(occupied, words);
+            if (constraints_.legalOn(words, nullptr, connectedWord)) found(thread, job, index);
         };
         auto each = [&](std::size_t job, std::uint64_t set) {
             if (determined) return one(job, set);
@@ -303,13 +303,13 @@ void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink&
 }
 
 bool Explorer::legalCells(const CellValue* cells, std::uint64_t* occupied) const {
-    if (!engine_->constraintsOnWords()) return engine_->legal(cells);
+    if (!constraints_.onWords()) return engine_->legal(cells);
     const int n = engine_->region().size(), a = engine_->model().alphabet().size();
     for (int v = 0; v < a; ++v) occupied[v] = 0;
     for (int c = 0; c < n; ++c) occupied[cells[c]] |= std::uint64_t{1} << c;
-    rules::Engine::ConstraintWords words;
-    engine_->constraintWords(occupied, words);
-    return engine_->legalOn(words);
+    WordConstraints::Words words;
+    constraints_.wordsOf(occupied, words);
+    return constraints_.legalOn(words);
 }
 
 bool Explorer::gather(StateId id, Successors& out, Worker& worker) {
@@ -385,8 +385,8 @@ void Explorer::packSuccessor(const Successors& s, int placed, std::uint64_t* out
     for (int k = 0; k < p.size; ++k) layout.set(out, p.cells[k], engine_->rewritten(p, k, old));
 }
 
-Explorer::Worker::Worker(const rules::Engine& engine, int words, bool onWords) : ev(engine), scratch(words) {
-    const std::size_t room = engine.instances().size();  // successors of one state at most
+Explorer::Worker::Worker(const WordConstraints& constraints, int words, bool onWords) : ev(constraints), scratch(words) {
+    const std::size_t room = constraints.engine().instances().size();  // successors of one state at most
     // On words a state has at most 6 words and the region 64 cells: every successor is kept
     // packed. Cell by cell, one successor's words at a time.
     for (Successors& s : ring) s.packed.resize((onWords ? room : 1) * words), s.keys.resize(room), s.probe.resize(room), s.via.resize(room);
@@ -426,7 +426,7 @@ bool Explorer::resolve(const Successors& s, Worker& worker) {
         packSuccessor(s, s.via[k], scratch);
         return scratch;
     };
-    rules::Engine::Evaluator& ev = worker.ev;
+    Evaluator& ev = worker.ev;
     bool loaded = false;
     auto lookUp = [&](std::size_t k) {
         const StateId sid = ranked() ? rankOf(s.keys[k]) : store_.find(successor(k), s.keys[k], s.probe[k]);
@@ -547,7 +547,7 @@ const ExploreStats& Explorer::explore() {
     const std::uint64_t chunk = std::max<std::uint64_t>(64, std::min<std::uint64_t>(1u << 14, (1u << 20) / branching));
     constexpr std::uint64_t kRoundBytes = 32ull << 20;
     std::vector<Worker> workers;
-    for (int t = 0; t < threads; ++t) workers.emplace_back(*engine_, store_.layout().words(), words_ != nullptr);
+    for (int t = 0; t < threads; ++t) workers.emplace_back(constraints_, store_.layout().words(), words_ != nullptr);
     WorkerPool pool(threads);
     // A level's states are kept by the worker that found them, and each worker expands a slice of
     // its own list first (their words were written from its core, so they are in its cache),

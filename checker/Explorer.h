@@ -4,7 +4,9 @@
 // cleanly and say what was left.
 
 #include "checker/Budget.h"
+#include "checker/Evaluator.h"
 #include "checker/StateStore.h"
+#include "checker/WordConstraints.h"
 #include "checker/WordSuccessors.h"
 #include "rules/Engine.h"
 
@@ -121,8 +123,8 @@ private:
     /// times the instances: on the cell-by-cell path a successor's words are rebuilt from its
     /// instance where they are needed instead of being kept for every successor.
     struct Worker {
-        Worker(const rules::Engine& engine, int words, bool onWords);
-        rules::Engine::Evaluator ev;
+        Worker(const WordConstraints& constraints, int words, bool onWords);
+        Evaluator ev;
         Successors ring[3];  // expandRange's pipeline
         StateStore::IdBlock ids;
         std::vector<StateId> next, terminal;
@@ -183,6 +185,7 @@ private:
     std::size_t bytesPerNewState() const;
 
     const rules::Engine* engine_;
+    WordConstraints constraints_;
     Options options_;
     Budget budget_;
     std::atomic<int> halt_{static_cast<int>(StopReason::Finished)};

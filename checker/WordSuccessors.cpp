@@ -7,13 +7,13 @@
 
 namespace holon::checker {
 
-bool WordSuccessors::fits(const rules::Engine& engine) {
-    return engine.matchesOnWords() && engine.region().size() <= 64 && engine.model().alphabet().size() <= 64;
-}
+bool WordSuccessors::fits(const rules::Engine& engine) { return WordMatcher::fits(engine.region().size(), engine.model().alphabet().size()); }
 
-WordSuccessors::WordSuccessors(const rules::Engine& engine, const StateLayout& layout)
-    : engine_(&engine), layout_(&layout), alphabet_(engine.model().alphabet().size()),
-      planes_(layout.bitsPerCell()), words_(layout.words()), needCells_(engine.hasGuards()) {
+WordSuccessors::WordSuccessors(const WordConstraints& constraints, const StateLayout& layout)
+    : engine_(&constraints.engine()), constraints_(&constraints), layout_(&layout), alphabet_(engine_->model().alphabet().size()),
+      planes_(layout.bitsPerCell()), words_(layout.words()), needCells_(false) {
+    const rules::Engine& engine = *engine_;
+    for (int s = 0; s < engine.tables().shapeCount(); ++s) needCells_ = needCells_ || engine.tables().shape(s).hasGuard;
     const int n = engine.region().size();
     placeValue_.assign(n, 1);
     for (int i = 1; i < n; ++i) placeValue_[i] = placeValue_[i - 1] * static_cast<std::uint64_t>(alphabet_);
@@ -45,25 +45,25 @@ WordSuccessors::WordSuccessors(const rules::Engine& engine, const StateLayout& l
         fixed_[p] = 1;
         for (int k = 0; k < placed.size; ++k) pinned[p * rules::Engine::kMaxCells + k] = cells[placed.cells[k]];
         fixedIndexDelta_[p] = computeDelta(static_cast<int>(p), cells, &fixedDelta_[p * words_]);
-        if (!engine.constraintsOnWords()) continue;
+        if (!constraints.onWords()) continue;
         CellValue old[rules::Engine::kMaxCells];
         for (int k = 0; k < placed.size; ++k) old[k] = cells[placed.cells[k]];
-        for (int k = 0; k < placed.size; ++k) engine.addChange(placed.cells[k], old[k], engine.rewritten(placed, k, old), fixedChange_[p]);
-        const auto checks = engine.compileChange(fixedChange_[p]);
+        for (int k = 0; k < placed.size; ++k) constraints.addChange(placed.cells[k], old[k], engine.rewritten(placed, k, old), fixedChange_[p]);
+        const auto checks = constraints.compileChange(fixedChange_[p]);
         firstCheck_[p] = static_cast<std::uint32_t>(checks_.size());
         checks_.insert(checks_.end(), checks.begin(), checks.end());
         firstCheck_[p + 1] = static_cast<std::uint32_t>(checks_.size());
     }
     findUnique(pinned);
-    matcher_ = engine.newWordMatcher();
-    if (engine.constraintsOnWords()) addFilters();
+    matcher_ = std::make_unique<WordMatcher>(engine);
+    if (constraints.onWords()) addFilters();
     matcher_->finish();
 }
 
 void WordSuccessors::addFilters() {
     // Per shape, the (word, pattern cell) removals every instance of it makes; the instances'
     // cut-cell checks on them become the matcher's filter.
-    using Kind = rules::Engine::Check::Kind;
+    using Kind = WordConstraints::Check::Kind;
     const auto& instances = engine_->instances();
     std::vector<std::vector<std::pair<int, int>>> common(engine_->model().shapes().size());
     std::vector<char> seen(common.size(), 0);
@@ -92,13 +92,13 @@ void WordSuccessors::addFilters() {
             matcher_->require(static_cast<int>(shape), k, static_cast<int>(it - filteredWord_.begin()));
         }
     // The filtered instances' cut-cell checks are now the matcher's: drop them.
-    std::vector<rules::Engine::Check> kept;
+    std::vector<WordConstraints::Check> kept;
     std::vector<std::uint32_t> first(firstCheck_.size(), 0);
     for (std::size_t p = 0; p < instances.size(); ++p) {
         first[p] = static_cast<std::uint32_t>(kept.size());
         const auto& filtered = common[instances[p].shape];
         for (std::uint32_t i = firstCheck_[p]; i < firstCheck_[p + 1]; ++i) {
-            const rules::Engine::Check& c = checks_[i];
+            const WordConstraints::Check& c = checks_[i];
             const bool dropped = c.kind == Kind::Removed && std::find(filteredWord_.begin(), filteredWord_.end(), c.index) != filteredWord_.end() &&
                                  std::any_of(filtered.begin(), filtered.end(), [&](const auto& r) {
                                      return r.first == c.index && instances[p].cells[r.second] == std::countr_zero(c.bits);
@@ -181,22 +181,22 @@ void WordSuccessors::occupiedOf(const std::uint64_t* packed, std::uint64_t* occu
 void WordSuccessors::load(const std::uint64_t* packed, Loaded& out, bool withCells, bool prune) const {
     occupiedOf(packed, out.occupied);
     if (withCells || needCells_) layout_->unpack(packed, out.cells);
-    if (engine_->constraintsOnWords()) engine_->constraintWords(out.occupied, out.legal.words), engine_->prepare(out.legal);
-    for (std::size_t f = 0; f < filteredWord_.size(); ++f) out.allowed[f] = prune ? ~engine_->cutsOf(out.legal, filteredWord_[f]) : ~std::uint64_t{0};
+    if (constraints_->onWords()) constraints_->wordsOf(out.occupied, out.legal.words), constraints_->prepare(out.legal);
+    for (std::size_t f = 0; f < filteredWord_.size(); ++f) out.allowed[f] = prune ? ~constraints_->cutsOf(out.legal, filteredWord_[f]) : ~std::uint64_t{0};
 }
 
 bool WordSuccessors::legal(const std::uint64_t* packed, const Loaded& parent, int placed) const {
-    if (!engine_->constraintsOnWords()) {
+    if (!constraints_->onWords()) {
         CellValue cells[64];
         layout_->unpack(packed, cells);
         return engine_->legal(cells);
     }
     if (fixed_[placed])
-        return engine_->legalAfter(parent.legal, checks_.data() + firstCheck_[placed], firstCheck_[placed + 1] - firstCheck_[placed], fixedChange_[placed]);
-    rules::Engine::ConstraintWords now;
+        return constraints_->legalAfter(parent.legal, checks_.data() + firstCheck_[placed], firstCheck_[placed + 1] - firstCheck_[placed], fixedChange_[placed]);
+    WordConstraints::Words now;
     std::uint64_t occupied[64];
     occupiedOf(packed, occupied);
-    engine_->constraintWords(occupied, now);
-    return engine_->legalOn(now, &parent.legal);
+    constraints_->wordsOf(occupied, now);
+    return constraints_->legalOn(now, &parent.legal);
 }
 }  // namespace holon::checker

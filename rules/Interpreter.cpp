@@ -196,8 +196,11 @@ bool Interpreter::holdsAt(const Expr& e, const Configuration& c, const Placement
         return reached.size() == members.size();
     }
     case Expr::Kind::Reaches: return reaches(e, c);
-    default: return false;  // numeric kinds never reach here: the parser types every expression
+    case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Add: case Expr::Kind::Sub: case Expr::Kind::Neg:
+    case Expr::Kind::Count:
+        break;  // numbers never reach here: the parser types every expression
     }
+    return false;
 }
 
 Rational Interpreter::numberAt(const Expr& e, const Configuration& c, const Placement* at) const {
@@ -208,8 +211,12 @@ Rational Interpreter::numberAt(const Expr& e, const Configuration& c, const Plac
     case Expr::Kind::Sub: return numberAt(e.kids[0], c, at) - numberAt(e.kids[1], c, at);
     case Expr::Kind::Neg: return -numberAt(e.kids[0], c, at);
     case Expr::Kind::Count: return countCells(e, c, at);
-    default: return 0;
+    case Expr::Kind::Bool: case Expr::Kind::And: case Expr::Kind::Or: case Expr::Kind::Not: case Expr::Kind::Implies:
+    case Expr::Kind::Compare: case Expr::Kind::All: case Expr::Kind::Some: case Expr::Kind::No: case Expr::Kind::Connected:
+    case Expr::Kind::Reaches:
+        break;  // conditions never reach here: the parser types every expression
     }
+    return 0;
 }
 
 bool Interpreter::connected(const CellPredicate& pred, const Configuration& c) const {

@@ -54,9 +54,12 @@ bool isBoolExpr(const Expr& e) {
     case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Add: case Expr::Kind::Sub:
     case Expr::Kind::Neg: case Expr::Kind::Count:
         return false;
-    default:
+    case Expr::Kind::Bool: case Expr::Kind::And: case Expr::Kind::Or: case Expr::Kind::Not: case Expr::Kind::Implies:
+    case Expr::Kind::Compare: case Expr::Kind::All: case Expr::Kind::Some: case Expr::Kind::No: case Expr::Kind::Connected:
+    case Expr::Kind::Reaches:
         return true;
     }
+    return true;
 }
 
 class Parser {
@@ -111,8 +114,9 @@ private:
         switch (tok.kind) {
         case Token::Kind::Newline: return "end of line";
         case Token::Kind::End: return "end of file";
-        default: return "'" + tok.text + "'";
+        case Token::Kind::Ident: case Token::Kind::Int: case Token::Kind::Punct: break;
         }
+        return "'" + tok.text + "'";
     }
     void expect(std::string_view text, std::string_view context) {
         if (!accept(text))

@@ -101,8 +101,12 @@ public:
         case Expr::Kind::No: return !guardAny(g, at, cells);
         case Expr::Kind::All: return guardCount(g, at, cells) == static_cast<int>(g.perSite.size());
         case Expr::Kind::Connected: return directionsConnected(guardMembers(g, at, cells));
-        default: return false;
+        case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Add: case Expr::Kind::Sub: case Expr::Kind::Neg:
+        case Expr::Kind::Count:
+        case Expr::Kind::Reaches:  // the parser refuses these in guards
+            break;
         }
+        return false;
     }
 
 private:
@@ -159,8 +163,13 @@ private:
         case Expr::Kind::Sub: return guardNumber(g.kids[0], at, cells) - guardNumber(g.kids[1], at, cells);
         case Expr::Kind::Neg: return -guardNumber(g.kids[0], at, cells);
         case Expr::Kind::Count: return guardCount(g, at, cells);
-        default: return 0;
+        case Expr::Kind::Mass:  // the parser refuses it in guards
+        case Expr::Kind::Bool: case Expr::Kind::And: case Expr::Kind::Or: case Expr::Kind::Not: case Expr::Kind::Implies:
+        case Expr::Kind::Compare: case Expr::Kind::All: case Expr::Kind::Some: case Expr::Kind::No: case Expr::Kind::Connected:
+        case Expr::Kind::Reaches:
+            break;
         }
+        return 0;
     }
     Mask compileTerm(const CellTerm& term, const std::vector<Vec>* pattern, Vec position, const CellTerm* alsoInputs) const;
     GuardNode compileGuard(const Expr& e, const RuleShape& shape) const;

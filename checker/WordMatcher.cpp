@@ -4,14 +4,17 @@
 // instances are grouped by how far each pattern cell sits from its anchor in region indices: one
 // group per pattern cell in a box region, a few more where rows differ in length (hex disks).
 
-#include "rules/WordMatcher.h"
+#include "checker/WordMatcher.h"
 
 #include <algorithm>
 
-namespace holon::rules {
+namespace holon::checker {
 
-WordMatcher::WordMatcher(const RuleTables& tables, const std::vector<int>& combo)
-    : regionSize_(static_cast<int>(combo.size())), alphabet_(tables.alphabet()) {
+using rules::RuleTables;
+
+WordMatcher::WordMatcher(const rules::Engine& engine)
+    : engine_(&engine), regionSize_(engine.region().size()), alphabet_(engine.tables().alphabet()) {
+    const RuleTables& tables = engine.tables();
     for (int s = 0; s < tables.shapeCount(); ++s) {
         const RuleTables::Shape& shape = tables.shape(s);
         shapes_.push_back({});
@@ -26,8 +29,9 @@ WordMatcher::WordMatcher(const RuleTables& tables, const std::vector<int>& combo
     for (std::size_t t = 0; t < tests_.size(); ++t)
         for (int c = 0; c < regionSize_; ++c)
             for (int v = 0; v < alphabet_; ++v)
-                if (tables.test(tests_[t], combo[c], static_cast<CellValue>(v))) testCells_[t * alphabet_ + v] |= std::uint64_t{1} << c;
+                if (tables.test(tests_[t], engine.comboOfCell(c), static_cast<CellValue>(v))) testCells_[t * alphabet_ + v] |= std::uint64_t{1} << c;
     pending_.resize(cellTest_.size());
+    for (const rules::Engine::Placed& p : engine.instances()) addInstance(p.shape, p.cells, p.size);
 }
 
 void WordMatcher::addInstance(int shape, const std::int32_t* cells, int size) {
@@ -63,4 +67,4 @@ void WordMatcher::finish() {
     cellTest_.clear();
 }
 
-}  // namespace holon::rules
+}  // namespace holon::checker

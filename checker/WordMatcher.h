@@ -3,46 +3,53 @@
 // most 64 cells a set of cells is one 64-bit word, so the anchors where a shape's left side holds
 // are the intersection, over its pattern cells, of the cells that accept their state shifted back
 // to the anchor (the bitboard move generation of chess programs). The explorer's successor
-// generator uses it; the instance-by-instance matcher stays for larger regions and alphabets.
+// generator uses it; rules::Engine's cell-by-cell matcher serves larger regions and alphabets.
 
-#include "rules/RuleTables.h"
+#include "rules/Engine.h"
 
 #include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <vector>
 
-namespace holon::rules {
+namespace holon::checker {
+
+using rules::CellValue;
 
 class WordMatcher {
 public:
     /// Usable when the region has at most 64 cells and the alphabet at most 64 states.
     static bool fits(int regionSize, int alphabet) { return regionSize <= 64 && alphabet <= 64; }
-    /// `combo`: per region cell, its input combination in `tables`.
-    WordMatcher(const RuleTables& tables, const std::vector<int>& combo);
-    /// Registers one instance: shape `shape` with its pattern cells at region indices `cells`
-    /// (the first is its anchor).
-    void addInstance(int shape, const std::int32_t* cells, int size);
-    /// A test whose word the caller supplies at match time (forEachShapeIn's `extra`); returns
+    /// Every instance of `engine`, not yet finished: the caller may add tests (addWordTest,
+    /// require) before finish().
+    explicit WordMatcher(const rules::Engine& engine);
+    /// A test whose word the caller supplies at match time (forEachMatch's `extra`); returns
     /// its index among the extra words.
     int addWordTest() { return extraTests_++; }
     /// Instances of `shape` match only where pattern cell k lies in extra word `test`.
     void require(int shape, int k, int test) { filters_.push_back({shape, k, test}); }
-    /// Lays the instances out for matching; call once, after the last addInstance and require.
+    /// Lays the instances out for matching; call once, after the last require.
     void finish();
 
-    /// Calls f(shape, anchors) for every shape, `anchors` holding the first cells of its instances
-    /// whose left side holds (guards are not tested).
+    /// f(placed) for every instance whose left side, guard and required tests hold, given the
+    /// cells in each state as words (`occupied[v]`) and the words of the tests added by
+    /// addWordTest (`extra`); `cells` is read only by guards.
     template <class F>
-    void forEachShape(const CellValue* cells, F&& f) const {
-        std::uint64_t occupied[64] = {};  // per state, the cells in it
-        for (int c = 0; c < regionSize_; ++c) occupied[cells[c]] |= std::uint64_t{1} << c;
-        forEachShapeIn(occupied, f);
+    void forEachMatch(const std::uint64_t* occupied, const std::uint64_t* extra, const CellValue* cells, F&& f) const {
+        forEachShape(occupied, extra, [&](int s, std::uint64_t anchors) {
+            const bool guarded = engine_->tables().shape(s).hasGuard;
+            for (; anchors; anchors &= anchors - 1) {
+                const std::int32_t p = engine_->instanceAt(std::countr_zero(anchors), s);
+                if (!guarded || engine_->guardHolds(cells, p)) f(p);
+            }
+        });
     }
-    /// The same, from the cells in each state: `occupied[v]` holds the cells in state v, and
-    /// `extra` the words of the tests added by addWordTest.
+
+private:
+    /// Calls f(shape, anchors) for every shape, `anchors` holding the first cells of its instances
+    /// whose left side and required tests hold (guards are not tested).
     template <class F>
-    void forEachShapeIn(const std::uint64_t* occupied, F&& f, const std::uint64_t* extra = nullptr) const {
+    void forEachShape(const std::uint64_t* occupied, const std::uint64_t* extra, F&& f) const {
         // Loops with fixed trip counts and shifts without branches: the branch predictor learns
         // them, where an early exit on the data mispredicts (measured: a third of the explorer's
         // mispredictions came from here).
@@ -83,7 +90,10 @@ public:
         }
     }
 
-private:
+    /// Registers one instance: shape `shape` with its pattern cells at region indices `cells`
+    /// (the first is its anchor).
+    void addInstance(int shape, const std::int32_t* cells, int size);
+
     /// One test of a shape's matching: the anchors whose pattern cell k sits delta = right - left
     /// indices away from them (one of the two is 0) keep only those where that cell passes
     /// test k; the other anchors (`others`) are left alone. A pattern cell's groups of anchors
@@ -98,10 +108,11 @@ private:
         int first = 0, last = 0;    // its steps in steps_
     };
 
+    const rules::Engine* engine_;
     int regionSize_, alphabet_;
     std::vector<Shape> shapes_;
     std::vector<int> cellTest_;                 // per (shape, pattern cell): index into tests_, while instances are added
-    std::vector<RuleTables::Mask> tests_;       // distinct left-side masks
+    std::vector<rules::RuleTables::Mask> tests_;       // distinct left-side masks
     std::vector<std::uint64_t> testCells_;      // [test * alphabet + state]: cells whose combination accepts the state
     struct Pending {
         int delta;
@@ -117,4 +128,4 @@ private:
     std::vector<Filter> filters_;  // until finish()
 };
 
-}  // namespace holon::rules
+}  // namespace holon::checker

@@ -1,0 +1,73 @@
+// Failure cells for pictures (see FailureCells.h): what a person should look at in the last
+// configuration of a violated invariant's trace. Only the quantifiers whose failure has cells
+// contribute; the parts of a disconnected set are found by a flood fill over the region.
+
+#include "checker/FailureCells.h"
+
+#include <algorithm>
+
+namespace holon::checker {
+
+using rules::Expr;
+
+namespace {
+
+void collect(const rules::Engine& engine, const Expr& e, const rules::CellValue* cells, std::vector<int>& out) {
+    if (engine.holds(e, cells)) return;
+    const rules::Region& region = engine.region();
+    const int n = region.size();
+    auto where = [&](const rules::CellPredicate& pred, auto&& also) {
+        for (std::int32_t i = 0; i < n; ++i)
+            if (engine.cellMatches(pred, i, cells[i]) && also(i)) out.push_back(i);
+    };
+    switch (e.kind) {
+    case Expr::Kind::And:
+    case Expr::Kind::Or:  // a false `or`: every disjunct is false
+        for (const Expr& k : e.kids) collect(engine, k, cells, out);
+        break;
+    case Expr::Kind::No:
+        if (e.around == -1 && e.kids.empty()) where(e.pred, [](int) { return true; });
+        break;
+    case Expr::Kind::All:
+        if (rules::hasCellGuard(e)) where(e.pred, [&](std::int32_t i) { return !engine.cellGuardHolds(e, cells, i); });
+        break;
+    case Expr::Kind::Connected: {
+        if (e.around != -1) break;
+        // The parts of the T cells; every part but the largest is cut off.
+        std::vector<int> part(n, -1), sizes;
+        for (int s = 0; s < n; ++s) {
+            if (part[s] >= 0 || !engine.cellMatches(e.pred, s, cells[s])) continue;
+            const int id = static_cast<int>(sizes.size());
+            sizes.push_back(0);
+            std::vector<int> stack{s};
+            part[s] = id;
+            while (!stack.empty()) {
+                const int i = stack.back();
+                stack.pop_back();
+                ++sizes[id];
+                for (int d = 0; d < region.lattice().degree(); ++d)
+                    if (const int j = region.neighbour(i, d); j >= 0 && part[j] < 0 && engine.cellMatches(e.pred, j, cells[j])) part[j] = id, stack.push_back(j);
+            }
+        }
+        const int largest = static_cast<int>(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
+        where(e.pred, [&](int i) { return part[i] != largest; });
+        break;
+    }
+    case Expr::Kind::Bool: case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Not: case Expr::Kind::Implies:
+    case Expr::Kind::Compare: case Expr::Kind::Add: case Expr::Kind::Sub: case Expr::Kind::Neg: case Expr::Kind::Count:
+    case Expr::Kind::Some: case Expr::Kind::Reaches:
+        break;  // no cells to show
+    }
+}
+
+}  // namespace
+
+std::vector<int> failureCells(const rules::Engine& engine, const Expr& e, const rules::CellValue* cells) {
+    std::vector<int> out;
+    collect(engine, e, cells, out);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+}  // namespace holon::checker
