@@ -115,7 +115,7 @@ Term operator/(const Term& a, const Term& b);
 Term implies(const Term& a, const Term& b);
 Term ite(const Term& c, const Term& t, const Term& e);
 Term toReal(const Term& a);
-/// The disjunction of `terms` as one n-ary or (false when there are none).
+/// The disjunction of `terms` as one n-ary or (a nullary one, false, when there are none).
 Term anyOf(Context& ctx, const std::vector<Term>& terms);
 /// Structural identity (Z3 shares equal terms).
 bool same(const Term& a, const Term& b);
