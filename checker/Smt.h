@@ -31,9 +31,10 @@ public:
     /// Throws Failure("out of memory") where Z3 cannot make a context within its memory limit.
     /// Freed with the Context unless `budget` is spent by then (see the destructor).
     explicit Context(const Budget& budget = Budget());
-    /// Z3 4.8.12 frees a context whose formulas are deep in time quadratic in their depth (40 s
-    /// after a 0.5 s timeout for Progress on square:12x12). Past the deadline that time is not
-    /// spent: the context stays allocated, and reachable, until the process ends.
+    /// Z3 frees the terms a move assignment left referenced (see Term) only with the context,
+    /// layer by layer, in time quadratic in the formulas' depth (40 s after a 0.5 s timeout for
+    /// Progress on square:12x12). Past the deadline that time is not spent: the context stays
+    /// allocated, and reachable, until the process ends.
     ~Context();
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
