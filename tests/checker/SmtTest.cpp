@@ -56,8 +56,9 @@ TEST_CASE("terms are inspected as the invariant printer needs") {
 
 TEST_CASE("a move assignment keeps the overwritten term referenced, as the exported files need") {
     // Z3's SMT-LIB2 printer let-binds a subterm with more than one reference. proofs/smt was
-    // written with z3++'s move assignment, which never releases the term it overwrites: `q` built
-    // as a chain prints with a let per link, and must go on doing so for the files to regenerate.
+    // written with Z3 4.8.12's C++ move assignment, which never releases the term it overwrites:
+    // `q` built as a chain prints with a let per link, and must go on doing so for the files to
+    // regenerate.
     smt::Context ctx;
     smt::Term q = ctx.boolVal(false);
     for (const char* name : {"a", "b", "c"}) q = q || ctx.boolConst(name);
