@@ -16,7 +16,7 @@
 
 #include "checker/Reach.h"
 #include "checker/SmtEncoding.h"
-#include "checker/Solver.h"
+#include "checker/SolverLimits.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
@@ -61,12 +61,11 @@ std::string fileSafe(std::string s) {
     return s;
 }
 
-std::vector<std::uint32_t> inputsOf(const z3::model& m, z3::context& ctx, const rules::Engine& e) {
+std::vector<std::uint32_t> inputsOf(const smt::Model& m, smt::Context& ctx, const rules::Engine& e) {
     std::vector<std::uint32_t> in(e.region().size(), 0);
     for (int i = 0; i < e.region().size(); ++i)
         for (std::size_t k = 0; k < e.model().system().inputs.size(); ++k) {
-            z3::expr b = ctx.bool_const(("in_" + e.model().system().inputs[k] + "_" + std::to_string(i)).c_str());
-            if (m.eval(b, true).is_true()) in[i] |= 1u << k;
+            if (m.isTrue(ctx.boolConst("in_" + e.model().system().inputs[k] + "_" + std::to_string(i)))) in[i] |= 1u << k;
         }
     return in;
 }
@@ -97,83 +96,87 @@ public:
     }
 
     /// A solver with the encoding's domain facts and the obligation's time left.
-    z3::solver newSolver(z3::context& ctx, SmtEncoding& enc, double timeoutShare = 1.0) const {
-        z3::solver solver(ctx);
-        limitTime(ctx, solver, enc.budget(), timeoutShare);
-        for (const z3::expr& f : enc.facts()) solver.add(f);
+    smt::Solver newSolver(smt::Context& ctx, SmtEncoding& enc, double timeoutShare = 1.0) const {
+        smt::Solver solver(ctx);
+        limitTime(solver, enc.budget(), timeoutShare);
+        for (const smt::Term& f : enc.facts()) solver.add(f);
         return solver;
     }
 
     /// The solver's timeout: what the obligation has left, or `share` of the whole if less (a
     /// side query). Throws OutOfTime when nothing is left.
-    void limitTime(z3::context& ctx, z3::solver& solver, const Budget& budget, double share = 1.0) const {
+    void limitTime(smt::Solver& solver, const Budget& budget, double share = 1.0) const {
         budget.check("building the formulas");
         if (!budget.limited()) return;
         const double seconds = std::min(options_.timeoutSeconds * share, budget.remaining());
-        z3::params params(ctx);
-        params.set("timeout", std::max(1u, static_cast<unsigned>(seconds * 1000)));
-        solver.set(params);
+        solver.setTimeout(std::max(1u, static_cast<unsigned>(seconds * 1000)));
     }
 
     /// Solves `query` (after the encoding's domain facts); a model becomes a counterexample via
     /// `decode`. The encoding's lemmas (and `earlierLemmas`) help the solver but are not written
     /// with --smt-out: an exported obligation is the theorem alone, so that a re-check does not
     /// rest on the argument that makes them valid.
-    Obligation solve(const std::string& name, const std::string& kind, z3::context& ctx, SmtEncoding& enc, const z3::expr& query,
-                     const std::function<void(const z3::model&, PropertyResult&)>& decode, const std::string& provedText,
-                     double timeoutShare = 1.0, const std::optional<z3::expr>& earlierLemmas = std::nullopt) {
+    Obligation solve(const std::string& name, const std::string& kind, smt::Context& ctx, SmtEncoding& enc, const smt::Term& query,
+                     const std::function<void(const smt::Model&, PropertyResult&)>& decode, const std::string& provedText,
+                     double timeoutShare = 1.0, const std::optional<smt::Term>& earlierLemmas = std::nullopt) {
         const auto start = std::chrono::steady_clock::now();
         Obligation o = named(name, kind);
         const SmtEncoding::Lemmas lemmas = enc.instantiate();
-        auto check = [&](const z3::expr& chosen) {
-            z3::solver solver = newSolver(ctx, enc, timeoutShare);
+        auto check = [&](const smt::Term& chosen) {
+            smt::Solver solver = newSolver(ctx, enc, timeoutShare);
             solver.add(query);
             solver.add(chosen);
             if (earlierLemmas) solver.add(*earlierLemmas);
             return std::make_pair(solver.check(), solver);
         };
         if (!options_.smtOut.empty()) {
-            z3::solver exported = newSolver(ctx, enc, timeoutShare);
+            smt::Solver exported = newSolver(ctx, enc, timeoutShare);
             exported.add(query);
             write(name, exported, o, enc.budget());
         }
         // With two sets of lemmas, both are tried at once on the two cores and the first definite
         // answer counts (Z3 is deterministic: a satisfiable answer is found again here for its model).
-        const z3::expr* chosen = &lemmas.all;
-        std::string result, reason;
+        const smt::Term* chosen = &lemmas.all;
+        std::optional<smt::Result> result;
+        std::string reason;
         if (lemmas.differ) {
+            constexpr int unknown = static_cast<int>(smt::Result::Unknown);
             std::vector<ForkedJob> jobs;
-            for (const z3::expr* variant : {&lemmas.all, &lemmas.lean})
+            for (const smt::Term* variant : {&lemmas.all, &lemmas.lean})
                 jobs.push_back([&, variant](bool forked) -> nlohmann::json {
                     if (forked) shareSolverMemory(2);
                     const auto [r, solver] = check(*variant);
-                    return {{"result", r == z3::unsat ? "unsat" : r == z3::sat ? "sat" : "unknown"}, {"reason", r == z3::unknown ? solver.reason_unknown() : ""}};
+                    return {{"result", static_cast<int>(r)}, {"reason", r == smt::Result::Unknown ? solver.reasonUnknown() : ""}};
                 });
             const ForkedAnswer answer =
-                firstDecisive(jobs, [](const nlohmann::json& a) { return a.contains("result") && a["result"] != "unknown"; }, enc.budget());
-            result = answer.answer.value("result", "unknown");
+                firstDecisive(jobs, [](const nlohmann::json& a) { return a.contains("result") && a["result"] != unknown; }, enc.budget());
+            result = static_cast<smt::Result>(answer.answer.value("result", unknown));
             reason = answer.answer.value("reason", answer.answer.value("error", std::string("no answer")));
             if (answer.job == 1) chosen = &lemmas.lean;
         }
-        std::optional<z3::solver> solver;
-        if (result.empty() || result == "sat") {
+        std::optional<smt::Solver> solver;
+        if (!result || *result == smt::Result::Sat) {
             auto [r, s] = check(*chosen);
-            result = r == z3::unsat ? "unsat" : r == z3::sat ? "sat" : "unknown";
-            if (r == z3::unknown) reason = s.reason_unknown();
+            result = r;
+            if (r == smt::Result::Unknown) reason = s.reasonUnknown();
             solver = s;
         }
         o.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (result == "unsat") {
+        switch (*result) {
+        case smt::Result::Unsat:
             o.result.verdict = Verdict::Holds;
             o.result.summary = provedText;
-        } else if (result == "sat") {
+            break;
+        case smt::Result::Sat:
             o.result.verdict = Verdict::Violated;
-            decode(solver->get_model(), o.result);
-            recordInputs(solver->get_model(), ctx, o.result);
+            decode(solver->model(), o.result);
+            recordInputs(solver->model(), ctx, o.result);
             if (o.result.trace) o.result.trace->property = name;
-        } else {
+            break;
+        case smt::Result::Unknown:
             o.result.verdict = Verdict::Unknown;
             o.result.summary = "the solver gave up: " + unknownReason(reason);
+            break;
         }
         return o;
     }
@@ -182,7 +185,7 @@ public:
 
     /// A counterexample holds for the inputs the solver chose (free, or fixed to a problem's): they
     /// go with it into the confirmation, the pictures and the trace, and by name into the witness.
-    void recordInputs(const z3::model& m, z3::context& ctx, PropertyResult& r) const {
+    void recordInputs(const smt::Model& m, smt::Context& ctx, PropertyResult& r) const {
         r.inputs = inputsOf(m, ctx, engine_);
         if (model_.system().inputs.empty()) return;
         if (!r.witness.is_object()) r.witness = nlohmann::json::object();
@@ -193,29 +196,27 @@ public:
     /// every instance, `perInstance(p)` is guarded by an activation literal, and each instance is
     /// checked under its literal. The SMT-LIB2 export is the equivalent single query "base and
     /// exactly one instance".
-    Obligation stepwise(const std::string& name, const std::string& kind, z3::context& ctx, SmtEncoding& enc, const z3::expr& base,
-                        const std::function<z3::expr(int)>& perInstance,
-                        const std::function<void(const z3::model&, int, PropertyResult&)>& decode, const std::string& provedText) {
+    Obligation stepwise(const std::string& name, const std::string& kind, smt::Context& ctx, SmtEncoding& enc, const smt::Term& base,
+                        const std::function<smt::Term(int)>& perInstance,
+                        const std::function<void(const smt::Model&, int, PropertyResult&)>& decode, const std::string& provedText) {
         const auto start = std::chrono::steady_clock::now();
         Obligation o = named(name, kind);
         const int count = static_cast<int>(engine_.instances().size());
-        const z3::expr lemmas = enc.instantiate().all;
-        z3::solver solver = newSolver(ctx, enc);
+        const smt::Term lemmas = enc.instantiate().all;
+        smt::Solver solver = newSolver(ctx, enc);
         solver.add(base);
         solver.add(lemmas);
-        std::vector<z3::expr> act;
-        z3::expr_vector acts(ctx);
+        std::vector<smt::Term> act;
         for (int p = 0; p < count; ++p) {
-            act.push_back(ctx.bool_const(("instance_" + std::to_string(p)).c_str()));
-            acts.push_back(act.back());
-            solver.add(z3::implies(act.back(), perInstance(p)));
+            act.push_back(ctx.boolConst("instance_" + std::to_string(p)));
+            solver.add(smt::implies(act.back(), perInstance(p)));
         }
         if (!options_.smtOut.empty()) {
-            z3::solver exported(ctx);
-            for (const z3::expr& f : enc.facts()) exported.add(f);
+            smt::Solver exported(ctx);
+            for (const smt::Term& f : enc.facts()) exported.add(f);
             exported.add(base);
-            for (int p = 0; p < count; ++p) exported.add(z3::implies(act[p], perInstance(p)));
-            exported.add(z3::mk_or(acts));
+            for (int p = 0; p < count; ++p) exported.add(smt::implies(act[p], perInstance(p)));
+            exported.add(smt::anyOf(ctx, act));
             write(name, exported, o, enc.budget());
         }
         o.result.verdict = Verdict::Holds;
@@ -226,20 +227,18 @@ public:
                 o.result.summary = "timeout after " + std::to_string(p) + " of " + std::to_string(count) + " instances";
                 break;
             }
-            limitTime(ctx, solver, enc.budget());
-            z3::expr_vector assume(ctx);
-            assume.push_back(act[p]);
-            const z3::check_result r = solver.check(assume);
-            if (r == z3::sat) {
+            limitTime(solver, enc.budget());
+            const smt::Result r = solver.check({act[p]});
+            if (r == smt::Result::Sat) {
                 o.result.verdict = Verdict::Violated;
-                decode(solver.get_model(), p, o.result);
-                recordInputs(solver.get_model(), ctx, o.result);
+                decode(solver.model(), p, o.result);
+                recordInputs(solver.model(), ctx, o.result);
                 if (o.result.trace) o.result.trace->property = name;
                 break;
             }
-            if (r == z3::unknown) {
+            if (r == smt::Result::Unknown) {
                 o.result.verdict = Verdict::Unknown;
-                o.result.summary = "the solver gave up on instance " + std::to_string(p) + ": " + unknownReason(solver.reason_unknown());
+                o.result.summary = "the solver gave up on instance " + std::to_string(p) + ": " + unknownReason(solver.reasonUnknown());
                 break;
             }
         }
@@ -253,15 +252,15 @@ public:
         return rules::OutputFile(smtOutOption(options_), (dir / (fileSafe(model_.system().name) + "." + fileSafe(region_.spec()) + "." + fileSafe(name) + ".smt2")).string());
     }
 
-    void write(const std::string& name, z3::solver& solver, Obligation& o, const Budget& budget) {
+    void write(const std::string& name, const smt::Solver& solver, Obligation& o, const Budget& budget) {
         budget.check("writing the SMT-LIB2 file");
         const rules::OutputFile file = smtPath(name);
         file.write("; holon proof obligation: system " + model_.system().name + ", region " + region_.spec() + ", property " + name +
-                   "\n; expected: unsat (the property holds for every configuration of the region)\n(set-logic ALL)\n" + solver.to_smt2());
+                   "\n; expected: unsat (the property holds for every configuration of the region)\n(set-logic ALL)\n" + solver.toSmt2());
         o.smtFile = file.path();
     }
 
-    int placedFrom(const z3::model& m, const z3::expr& selector) const { return m.eval(selector, true).get_numeral_int(); }
+    int placedFrom(const smt::Model& m, const smt::Term& selector) const { return m.intValue(selector); }
 
     const rules::Model& model_;
     const rules::Region& region_;
@@ -306,7 +305,7 @@ Obligation withinLimits(const std::string& name, const std::string& kind, const 
         return o;
     } catch (const OutOfTime& e) {
         return stopped(e.what());
-    } catch (const z3::exception& e) {
+    } catch (const smt::Failure& e) {
         Obligation o = stopped(solverFailure(e));
         recoverSolverMemory();
         return o;
@@ -321,9 +320,9 @@ Obligation withinLimits(const std::string& name, const std::string& kind, const 
 /// instance is enabled. With non-local constraints s is legal and an instance is enabled only if
 /// its successor is legal too (seed 000 §II-C): each one fails to match or leads to an illegal
 /// configuration (its successor written over s's variables, no new ones).
-z3::expr stuck(SmtEncoding& enc, const SmtEncoding::State& s, const rules::Engine& e, const rules::Property& progress) {
+smt::Term stuck(SmtEncoding& enc, const SmtEncoding::State& s, const rules::Engine& e, const rules::Property& progress) {
     const rules::System& system = e.model().system();
-    z3::expr q = system.goal ? !enc.holds(*system.goal, s, false) : s.is[0][0].ctx().bool_val(true);
+    smt::Term q = system.goal ? !enc.holds(*system.goal, s, false) : s.is[0][0].context().boolVal(true);
     if (!progress.exprs.empty()) q = q && enc.holds(progress.exprs[0], s, true);
     const bool constrained = !system.constraints.empty();
     if (constrained) q = q && enc.legal(s);
@@ -355,14 +354,13 @@ bool stuckAt(const std::vector<CellValue>& c, const rules::Engine& e, const rule
 /// square:5x5, against 11-21 s instance by instance; single runs each). Gets a quarter of the time; `total` counts it.
 bool impliedByEarlier(Runner& run, const std::string& name, const std::vector<const rules::Expr*>& conjuncts, std::size_t k, Obligation& total,
                       const Budget& budget) {
-    const Context context = newContext(budget);
-    z3::context& ctx = *context;
+    smt::Context ctx(budget);
     SmtEncoding enc(ctx, run.engine(), SmtEncoding::Use::Queries, budget);
     auto d = enc.state("d");
-    z3::expr q = enc.legal(d);
+    smt::Term q = enc.legal(d);
     for (std::size_t j = 0; j < k; ++j) q = q && enc.holds(*conjuncts[j], d, true);
     q = q && !enc.holds(*conjuncts[k], d, false);
-    Obligation part = run.solve(name, "invariant", ctx, enc, q, [](const z3::model&, PropertyResult&) {}, "", 0.25);
+    Obligation part = run.solve(name, "invariant", ctx, enc, q, [](const smt::Model&, PropertyResult&) {}, "", 0.25);
     total.result.seconds += part.result.seconds;
     if (part.result.verdict != Verdict::Holds) return false;
     if (!part.smtFile.empty()) total.smtFile += (total.smtFile.empty() ? "" : " ") + part.smtFile;
@@ -392,14 +390,13 @@ Obligation proveInductive(Runner& run, const rules::Property& p, const Budget& b
             implied.push_back(std::to_string(k + 1));
             continue;
         }
-        const Context context = newContext(budget);
-        z3::context& cctx = *context;
+        smt::Context cctx(budget);
         SmtEncoding cenc(cctx, e, SmtEncoding::Use::Queries, budget);
         auto c = cenc.state("c"), d = cenc.state("d");
-        const z3::expr base = cenc.legal(c) && cenc.holds(p.exprs[0], c, true) && cenc.legal(d) && !cenc.holds(*conjuncts[k], d, false);
+        const smt::Term base = cenc.legal(c) && cenc.holds(p.exprs[0], c, true) && cenc.legal(d) && !cenc.holds(*conjuncts[k], d, false);
         Obligation part = run.stepwise(
             p.name + "." + std::to_string(k + 1), "invariant", cctx, cenc, base, [&](int q) { return cenc.fires(q, c, d); },
-            [&](const z3::model& m, int q, PropertyResult& r) {
+            [&](const smt::Model& m, int q, PropertyResult& r) {
                 r.trace = Trace{{{cenc.decode(m, c), -1}, {cenc.decode(m, d), q}}, {}, {},
                                 "a step from a state where it holds to one where it fails: not inductive", {}};
                 r.summary = r.trace->description;
@@ -455,26 +452,25 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         announce(p.name);
         const Budget budget(options.timeoutSeconds);
         report.obligations.push_back(withinLimits(p.name, kindName(p.kind), [&]() -> Obligation {
-            const Context context = newContext(budget);
-            z3::context& ctx = *context;
+            smt::Context ctx(budget);
             SmtEncoding enc(ctx, e, SmtEncoding::Use::Queries, budget);
             switch (p.kind) {
             case rules::Property::Kind::Conserves: {
                 // Region-independent: each rule's own cells, before and after, at one placement.
                 const bool byMass = p.quantity == rules::Property::Quantity::Mass;
                 auto before = enc.state("c"), after = enc.state("d");
-                z3::expr anyRule = ctx.bool_val(false);
+                smt::Term anyRule = ctx.boolVal(false);
                 std::vector<int> firstPlaced(model.rules().size(), -1);
                 for (int q = 0; q < static_cast<int>(e.instances().size()); ++q)
                     if (firstPlaced[e.instances()[q].rule] < 0) firstPlaced[e.instances()[q].rule] = q;
-                z3::expr selector = ctx.int_const("rule_instance");
+                smt::Term selector = ctx.intConst("rule_instance");
                 for (int q : firstPlaced) {
                     if (q < 0) continue;
                     const auto& placed = e.instances()[q];
-                    z3::expr lhs = enc.legal(before) && enc.fires(q, before, after) && enc.legal(after);
-                    z3::expr amountBefore = ctx.int_val(0), amountAfter = ctx.int_val(0);
+                    smt::Term lhs = enc.legal(before) && enc.fires(q, before, after) && enc.legal(after);
+                    smt::Term amountBefore = ctx.intVal(0), amountAfter = ctx.intVal(0);
                     auto amount = [&](const SmtEncoding::State& s, int c) {
-                        return byMass ? enc.cellMassUnits(s, c) : z3::ite(s.is[c][0], ctx.int_val(0), ctx.int_val(1));
+                        return byMass ? enc.cellMassUnits(s, c) : smt::ite(s.is[c][0], ctx.intVal(0), ctx.intVal(1));
                     };
                     for (int k = 0; k < placed.size; ++k) {
                         amountBefore = amountBefore + amount(before, placed.cells[k]);
@@ -482,7 +478,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                     }
                     anyRule = anyRule || (selector == q && lhs && amountBefore != amountAfter);
                 }
-                auto decode = [&](const z3::model& m, PropertyResult& r) {
+                auto decode = [&](const smt::Model& m, PropertyResult& r) {
                     const int q = run.placedFrom(m, selector);
                     const std::string rule = model.rules()[e.instances()[q].rule].name;
                     Trace t;
@@ -504,7 +500,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 return run.stepwise(
                     p.name, "ranking", ctx, enc, enc.legal(c) && enc.legal(d),
                     [&](int q) { return enc.fires(q, c, d) && !(kept(q) ? enc.keptAfter(p.exprs, q, d, c) : enc.lexLessAfter(p.exprs, q, d, c)); },
-                    [&](const z3::model& m, int q, PropertyResult& r) {
+                    [&](const smt::Model& m, int q, PropertyResult& r) {
                         const std::string why = kept(q) ? "changes it (an excepted rule must keep it)" : "does not decrease it";
                         r.trace = Trace{{{enc.decode(m, c), -1}, {enc.decode(m, d), q}}, {}, {}, "a step that " + why, {}};
                         r.summary = "rule '" + model.rules()[e.instances()[q].rule].name + "' " + why;
@@ -514,9 +510,9 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             }
             case rules::Property::Kind::Progress: {
                 auto c = enc.state("c");
-                z3::expr q = stuck(enc, c, e, p);
+                smt::Term q = stuck(enc, c, e, p);
                 for (const rules::Property* inv : invariants) q = q && enc.holds(inv->exprs[0], c, true);
-                auto decode = [&](const z3::model& m, PropertyResult& r) {
+                auto decode = [&](const smt::Model& m, PropertyResult& r) {
                     Trace t;
                     t.steps.push_back({enc.decode(m, c), -1});
                     t.description = "every invariant holds, the goal is not reached, and no rule is enabled" +
@@ -540,15 +536,15 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 const std::string adjacency = byMove ? "module move" : "occupancy toggle";
                 auto adjacent = [&](const SmtEncoding::State& c, const SmtEncoding::State& d) {
                     auto same = [&](int i, int j) {
-                        z3::expr all = ctx.bool_val(true);
+                        smt::Term all = ctx.boolVal(true);
                         for (int v = 0; v < model.alphabet().size(); ++v) all = all && c.is[i][v] == d.is[j][v];
                         return all;
                     };
-                    z3::expr any = ctx.bool_val(false);
+                    smt::Term any = ctx.boolVal(false);
                     if (!byMove) {
                         // Exactly one cell differs (its occupancy toggles: one occupied state).
                         for (int i = 0; i < n; ++i) {
-                            z3::expr only = !same(i, i);
+                            smt::Term only = !same(i, i);
                             for (int j = 0; j < n; ++j)
                                 if (j != i) only = only && same(j, j);
                             any = any || only;
@@ -560,7 +556,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                         for (int dir = 0; dir < region.lattice().degree(); ++dir) {
                             const int j = region.neighbour(i, dir);
                             if (j < 0) continue;
-                            z3::expr move = !c.is[i][0] && c.is[j][0] && d.is[i][0] && same(i, j);
+                            smt::Term move = !c.is[i][0] && c.is[j][0] && d.is[i][0] && same(i, j);
                             for (int k = 0; k < n; ++k)
                                 if (k != i && k != j) move = move && same(k, k);
                             any = any || move;
@@ -569,23 +565,23 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 };
                 const SmtEncoding::State first = enc.state("c");
                 auto unjoined = [&](const SmtEncoding::State& d) {
-                    z3::expr q = adjacent(first, d);
+                    smt::Term q = adjacent(first, d);
                     for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) q = q && !enc.fires(placed, first, d);
                     return q;
                 };
-                const z3::expr legalFirst = enc.legal(first);
+                const smt::Term legalFirst = enc.legal(first);
                 const auto partner = enc.state("d");
                 const std::string proved = "configurations one " + adjacency + " apart are one rule step apart (so no such pair is left to be reachable)";
                 Obligation o = run.solve(p.name, "holonomic", ctx, enc, legalFirst && enc.legal(partner) && unjoined(partner),
-                                         [](const z3::model&, PropertyResult&) {}, proved);
+                                         [](const smt::Model&, PropertyResult&) {}, proved);
                 if (o.result.verdict != Verdict::Violated) {
                     return o;
                 }
                 // Strong holonomy fails: deepen from paths of two steps.
                 std::vector<SmtEncoding::State> path{first};
-                std::vector<z3::expr> selectors;
-                z3::expr steps = ctx.bool_val(true), lemmas = enc.instantiate().all;
-                auto decode = [&](const z3::model& m, PropertyResult& r) {
+                std::vector<smt::Term> selectors;
+                smt::Term steps = ctx.boolVal(true), lemmas = enc.instantiate().all;
+                auto decode = [&](const smt::Model& m, PropertyResult& r) {
                     Trace t;
                     for (std::size_t k = 0; k < path.size(); ++k) t.steps.push_back({enc.decode(m, path[k]), k ? run.placedFrom(m, selectors[k - 1]) : -1});
                     const std::size_t distance = t.steps.size() - 1;
@@ -598,7 +594,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 const double configurations = std::pow(static_cast<double>(model.alphabet().size()), n);
                 for (int k = 1;; ++k) {
                     path.push_back(enc.state("p" + std::to_string(k)));
-                    selectors.push_back(ctx.int_const(("step" + std::to_string(k)).c_str()));
+                    selectors.push_back(ctx.intConst("step" + std::to_string(k)));
                     steps = steps && enc.step(path[k - 1], path[k], selectors.back());
                     if (k == 1) continue;  // a pair one step apart is joined
                     if (k > configurations - 1) {
@@ -657,16 +653,15 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
     // is at the end of a shortest path. The last query asked is the whole obligation.
     auto bmc = [&](const Target& target, int depth, const std::string& name) {
         const Budget budget(options.timeoutSeconds);
-        const Context context = newContext(budget);
-        z3::context& ctx = *context;
+        smt::Context ctx(budget);
         SmtEncoding enc(ctx, e, SmtEncoding::Use::Queries, budget);
         std::vector<SmtEncoding::State> path{enc.state("s0")};
-        std::vector<z3::expr> selectors;
-        z3::expr start = ctx.bool_val(false);
+        std::vector<smt::Term> selectors;
+        smt::Term start = ctx.boolVal(false);
         for (const rules::Configuration& c : options.initial) start = start || (enc.configurationIs(path[0], c.cells) && enc.inputsAre(c.inputs));
-        z3::expr steps = ctx.bool_val(true), someBad = target.bad(enc, path[0]);
-        z3::expr lemmas = enc.instantiate().all;  // kept for the deeper queries
-        auto decode = [&](const z3::model& m, PropertyResult& r) {
+        smt::Term steps = ctx.boolVal(true), someBad = target.bad(enc, path[0]);
+        smt::Term lemmas = enc.instantiate().all;  // kept for the deeper queries
+        auto decode = [&](const smt::Model& m, PropertyResult& r) {
             // The start the model chose may be any of the given configurations, each with its inputs.
             const rules::Engine concrete(model, region, inputsOf(m, ctx, e));
             Trace t;
@@ -689,7 +684,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 break;
             }
             path.push_back(enc.state("s" + std::to_string(k)));
-            selectors.push_back(ctx.int_const(("step" + std::to_string(k)).c_str()));
+            selectors.push_back(ctx.intConst("step" + std::to_string(k)));
             steps = steps && enc.step(path[k - 1], path[k], selectors.back());
             someBad = someBad || target.bad(enc, path[k]);
             lemmas = lemmas && enc.instantiate().all;
@@ -729,7 +724,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         }
     }
     auto knownAt = [&](SmtEncoding& enc, const SmtEncoding::State& s) {
-        z3::expr all = s.is[0][0].ctx().bool_val(true);
+        smt::Term all = s.is[0][0].context().boolVal(true);
         for (const rules::Property* p : known) all = all && enc.holds(p->exprs[0], s, true);
         return all;
     };

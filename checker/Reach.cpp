@@ -15,7 +15,7 @@
 
 #include "checker/Forked.h"
 #include "checker/SmtEncoding.h"
-#include "checker/Solver.h"
+#include "checker/SolverLimits.h"
 #include "rules/Error.h"
 
 #include <algorithm>
@@ -25,41 +25,13 @@
 #include <cstring>
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <unordered_set>
 
 namespace holon::checker {
 
 namespace {
 
-/// The uninterpreted constants of `root` in depth-first preorder, each once. Iterative: formulas
-/// built as chains (`q = q && x`) are thousands deep, past the stack of a sanitizer build.
-void collectConstants(const z3::expr& root, std::unordered_set<unsigned>& seen, z3::expr_vector& out) {
-    std::vector<z3::expr> stack{root};
-    while (!stack.empty()) {
-        const z3::expr e = stack.back();
-        stack.pop_back();
-        if (!seen.insert(e.id()).second) continue;
-        if (e.is_quantifier()) {
-            stack.push_back(e.body());
-            continue;
-        }
-        if (!e.is_app()) continue;
-        if (e.num_args() == 0 && e.decl().decl_kind() == Z3_OP_UNINTERPRETED) {
-            out.push_back(e);
-            continue;
-        }
-        for (unsigned k = e.num_args(); k-- > 0;) stack.push_back(e.arg(k));  // the first argument on top
-    }
-}
-
 /// body -> head, closed over every constant in it (each Horn clause is its own universal sentence).
-z3::expr clause(const z3::expr& body, const z3::expr& head) {
-    const z3::expr sentence = z3::implies(body, head);
-    std::unordered_set<unsigned> seen;
-    z3::expr_vector vars(sentence.ctx());
-    collectConstants(sentence, seen, vars);
-    return vars.empty() ? sentence : z3::forall(vars, sentence);
-}
+smt::Term clause(const smt::Term& body, const smt::Term& head) { return smt::universalClosure(smt::implies(body, head)); }
 
 /// An argument of the reach relation: cell `cell` holds state `state`, or (state < 0) an input bit.
 struct Atom {
@@ -68,43 +40,42 @@ struct Atom {
 };
 
 /// The solved relation as infix text; `atoms[k]` names argument k.
-std::string infix(const z3::expr& e, const std::vector<Atom>& atoms, int outer = 0) {
-    if (e.is_var()) return atoms.at(Z3_get_index_value(e.ctx(), e)).text;
-    if (e.is_true()) return "true";
-    if (e.is_false()) return "false";
-    if (!e.is_app()) return e.to_string();
+std::string infix(const smt::Term& e, const std::vector<Atom>& atoms, int outer = 0) {
     auto joined = [&](const char* op, int prec) {
         std::string s;
-        for (unsigned k = 0; k < e.num_args(); ++k) s += (k ? op : "") + infix(e.arg(k), atoms, prec + 1);
+        for (unsigned k = 0; k < e.arity(); ++k) s += (k ? op : "") + infix(e.arg(k), atoms, prec + 1);
         return prec < outer ? "(" + s + ")" : s;
     };
-    switch (e.decl().decl_kind()) {
-    case Z3_OP_NOT: return "not " + infix(e.arg(0), atoms, 4);
-    case Z3_OP_AND: return joined(" and ", 2);
-    case Z3_OP_OR: return joined(" or ", 1);
-    case Z3_OP_IMPLIES: return joined(" -> ", 0);
-    case Z3_OP_EQ:
-    case Z3_OP_IFF: return joined(" == ", 3);
-    case Z3_OP_XOR: return joined(" != ", 3);
-    default: return e.to_string();
+    switch (e.op()) {
+    case smt::Term::Op::Var: return atoms.at(e.varIndex()).text;
+    case smt::Term::Op::True: return "true";
+    case smt::Term::Op::False: return "false";
+    case smt::Term::Op::Not: return "not " + infix(e.arg(0), atoms, 4);
+    case smt::Term::Op::And: return joined(" and ", 2);
+    case smt::Term::Op::Or: return joined(" or ", 1);
+    case smt::Term::Op::Implies: return joined(" -> ", 0);
+    case smt::Term::Op::Eq: return joined(" == ", 3);
+    case smt::Term::Op::Xor: return joined(" != ", 3);
+    case smt::Term::Op::Other: return e.str();
     }
+    return e.str();
 }
 
 /// One conjunct of the invariant. A disjunction's positive atoms on one cell read as
 /// "(x,y) in {A, B}", or as the complement, "(x,y) not in {C, D}", when that is shorter (each cell
 /// holds exactly one state).
-std::string clauseText(const z3::expr& e, const std::vector<Atom>& atoms, const rules::Alphabet& alphabet) {
-    std::vector<z3::expr> literals;
-    if (e.is_app() && e.decl().decl_kind() == Z3_OP_OR)
-        for (unsigned k = 0; k < e.num_args(); ++k) literals.push_back(e.arg(k));
+std::string clauseText(const smt::Term& e, const std::vector<Atom>& atoms, const rules::Alphabet& alphabet) {
+    std::vector<smt::Term> literals;
+    if (e.op() == smt::Term::Op::Or)
+        for (unsigned k = 0; k < e.arity(); ++k) literals.push_back(e.arg(k));
     else
         literals.push_back(e);
     std::vector<std::pair<int, std::vector<int>>> byCell;  // in order of first mention
     std::vector<std::string> rest;
-    auto atomOf = [&](const z3::expr& x) { return x.is_var() ? &atoms.at(Z3_get_index_value(x.ctx(), x)) : nullptr; };
-    for (const z3::expr& l : literals) {
+    auto atomOf = [&](const smt::Term& x) { return x.op() == smt::Term::Op::Var ? &atoms.at(x.varIndex()) : nullptr; };
+    for (const smt::Term& l : literals) {
         const Atom* atom = atomOf(l);
-        const Atom* negated = l.is_app() && l.decl().decl_kind() == Z3_OP_NOT ? atomOf(l.arg(0)) : nullptr;
+        const Atom* negated = l.op() == smt::Term::Op::Not ? atomOf(l.arg(0)) : nullptr;
         if (negated && negated->state >= 0) {
             rest.push_back(negated->where + "!=" + alphabet.name(static_cast<rules::CellValue>(negated->state)));
             continue;
@@ -141,18 +112,16 @@ std::string clauseText(const z3::expr& e, const std::vector<Atom>& atoms, const 
 /// The conjuncts of `found` (over the reach relation's arguments) without those the others imply,
 /// given that each cell holds one state: Spacer's lemmas overlap ("(0,0)=_" next to
 /// "(0,0)!=S&to=1"). `onState` is `found` on state `s`, conjunct for conjunct.
-std::vector<z3::expr> irredundant(const z3::expr& found, const z3::expr& onState, const SmtEncoding::State& s, z3::context& ctx) {
-    std::vector<z3::expr> kept, concrete;
-    const bool conjunction = found.is_app() && found.decl().decl_kind() == Z3_OP_AND;
-    for (unsigned k = 0; k < (conjunction ? found.num_args() : 1); ++k) {
+std::vector<smt::Term> irredundant(const smt::Term& found, const smt::Term& onState, const SmtEncoding::State& s, smt::Context& ctx) {
+    std::vector<smt::Term> kept, concrete;
+    const bool conjunction = found.op() == smt::Term::Op::And;
+    for (unsigned k = 0; k < (conjunction ? found.arity() : 1); ++k) {
         kept.push_back(conjunction ? found.arg(k) : found);
         concrete.push_back(conjunction ? onState.arg(k) : onState);
     }
-    z3::solver oneState(ctx);
+    smt::Solver oneState(ctx);
     for (const auto& row : s.is) {
-        z3::expr_vector any(ctx);
-        for (const z3::expr& v : row) any.push_back(v);
-        oneState.add(z3::mk_or(any));
+        oneState.add(smt::anyOf(ctx, row));
         for (std::size_t a = 0; a < row.size(); ++a)
             for (std::size_t b = a + 1; b < row.size(); ++b) oneState.add(!(row[a] && row[b]));
     }
@@ -161,7 +130,7 @@ std::vector<z3::expr> irredundant(const z3::expr& found, const z3::expr& onState
         for (std::size_t j = 0; j < kept.size(); ++j)
             if (j != k) oneState.add(concrete[j]);
         oneState.add(!concrete[k]);
-        const bool implied = oneState.check() == z3::unsat;
+        const bool implied = oneState.check() == smt::Result::Unsat;
         oneState.pop();
         if (implied) kept.erase(kept.begin() + static_cast<long>(k)), concrete.erase(concrete.begin() + static_cast<long>(k));
     }
@@ -169,7 +138,7 @@ std::vector<z3::expr> irredundant(const z3::expr& found, const z3::expr& onState
 }
 
 /// The Horn clauses, built and solved in this process.
-ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadStates& bad, const BadStates& known,
+ReachProof solveHorn(smt::Context& ctx, const rules::Engine& engine, const BadStates& bad, const BadStates& known,
                      const std::vector<rules::Configuration>& initial, const Budget& budget, const std::string& smtOption, const std::string& smtFile) {
     const auto start = std::chrono::steady_clock::now();
     const rules::Region& region = engine.region();
@@ -189,15 +158,13 @@ ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadSta
         if (!sharedInputs)
             for (const std::string& in : inputNames) atoms.push_back({i, -1, where, in + where});
     }
-    z3::sort_vector sorts(ctx);
-    for (std::size_t k = 0; k < atoms.size(); ++k) sorts.push_back(ctx.bool_sort());
-    const z3::func_decl reach = ctx.function("reach", sorts, ctx.bool_sort());
+    const smt::Relation reach = ctx.relation("reach", static_cast<unsigned>(atoms.size()));
     auto argsOf = [&](const SmtEncoding::State& s) {
-        z3::expr_vector args(ctx);
+        std::vector<smt::Term> args;
         for (int i = 0; i < region.size(); ++i) {
             for (int v = 0; v < alphabet; ++v) args.push_back(s.is[i][v]);
             if (!sharedInputs)
-                for (const z3::expr& bit : enc.inputBits()[i]) args.push_back(bit);
+                for (const smt::Term& bit : enc.inputBits()[i]) args.push_back(bit);
         }
         return args;
     };
@@ -205,37 +172,35 @@ ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadSta
     // Each clause carries the facts (one state per cell, rank bounds, witnesses) made while building it.
     std::size_t factsFrom = 0;
     auto newFacts = [&] {
-        z3::expr all = sharedInputs ? enc.inputsAre(initial.front().inputs) : ctx.bool_val(true);
+        smt::Term all = sharedInputs ? enc.inputsAre(initial.front().inputs) : ctx.boolVal(true);
         for (std::size_t k = factsFrom; k < enc.facts().size(); ++k) all = all && enc.facts()[k];
         factsFrom = enc.facts().size();
         return all;
     };
 
     const SmtEncoding::State s = enc.state("s");
-    z3::expr init = ctx.bool_val(false);
-    for (const rules::Configuration& c : initial) init = init || (enc.configurationIs(s, c.cells) && (sharedInputs ? ctx.bool_val(true) : enc.inputsAre(c.inputs)));
-    const z3::expr initBody = newFacts() && init;
+    smt::Term init = ctx.boolVal(false);
+    for (const rules::Configuration& c : initial) init = init || (enc.configurationIs(s, c.cells) && (sharedInputs ? ctx.boolVal(true) : enc.inputsAre(c.inputs)));
+    const smt::Term initBody = newFacts() && init;
     const SmtEncoding::State a = enc.state("a"), b = enc.state("b");
     // Facts are collected after each body is built: building makes them. The encoding's lemmas
     // (SmtEncoding::instantiate) are left out: they made Spacer 30 times slower.
-    const z3::expr stepped = known(enc, a) && enc.step(a, b, ctx.int_const("instance"));
-    const z3::expr stepBody = stepped && newFacts();
+    const smt::Term stepped = known(enc, a) && enc.step(a, b, ctx.intConst("instance"));
+    const smt::Term stepBody = stepped && newFacts();
     const SmtEncoding::State q = enc.state("q");
-    const z3::expr isBad = known(enc, q) && bad(enc, q);
-    const z3::expr badBody = isBad && newFacts();
+    const smt::Term isBad = known(enc, q) && bad(enc, q);
+    const smt::Term badBody = isBad && newFacts();
 
-    z3::solver solver(ctx, "HORN");
+    smt::Solver solver(ctx, smt::Solver::Logic::Horn);
     // Spacer and each certificate check get the time left.
-    auto limitTime = [&](z3::solver& s) {
+    auto limitTime = [&](smt::Solver& s) {
         budget.check("building the Horn clauses");
         if (!budget.limited()) return;
-        z3::params params(ctx);
-        params.set("timeout", std::max(1u, static_cast<unsigned>(budget.remaining() * 1000)));
-        s.set(params);
+        s.setTimeout(std::max(1u, static_cast<unsigned>(budget.remaining() * 1000)));
     };
     solver.add(clause(initBody, at(s)));
     solver.add(clause(stepBody && at(a), at(b)));
-    solver.add(clause(badBody && at(q), ctx.bool_val(false)));
+    solver.add(clause(badBody && at(q), ctx.boolVal(false)));
 
     ReachProof proof;
     auto header = [&](const std::string& expected) {
@@ -244,40 +209,41 @@ ReachProof solveHorn(z3::context& ctx, const rules::Engine& engine, const BadSta
     if (!smtFile.empty()) {
         budget.check("writing the SMT-LIB2 file");
         rules::OutputFile(smtOption, smtFile)
-            .write(header("sat (the model's `reach` is an inductive invariant excluding the bad states)") + "(set-logic HORN)\n" + solver.to_smt2());
+            .write(header("sat (the model's `reach` is an inductive invariant excluding the bad states)") + "(set-logic HORN)\n" + solver.toSmt2());
     }
 
     limitTime(solver);
-    const z3::check_result r = solver.check();
-    if (r == z3::unsat) proof.verdict = Verdict::Violated;
-    if (r == z3::unknown) proof.reason = solver.reason_unknown();
-    if (r == z3::sat) {
+    const smt::Result r = solver.check();
+    if (r == smt::Result::Unsat) proof.verdict = Verdict::Violated;
+    if (r == smt::Result::Unknown) proof.reason = solver.reasonUnknown();
+    if (r == smt::Result::Sat) {
         // Spacer's answer is a certificate; it is checked here with three ordinary queries that
         // any SMT solver can re-check (--smt-out writes them): it holds initially, every step
         // keeps it, and no bad state satisfies it.
-        const z3::model m = solver.get_model();
-        z3::expr found = m.has_interp(reach) ? m.get_func_interp(reach).else_value().simplify() : ctx.bool_val(true);
-        auto inv = [&](const SmtEncoding::State& st) { return found.substitute(argsOf(st)); };
-        const std::pair<const char*, z3::expr> checks[] = {
+        const smt::Model m = solver.model();
+        const std::optional<smt::Term> definition = m.definition(reach);
+        const smt::Term found = definition ? definition->simplify() : ctx.boolVal(true);
+        auto inv = [&](const SmtEncoding::State& st) { return found.substituteVars(argsOf(st)); };
+        const std::pair<const char*, smt::Term> checks[] = {
             {"init", initBody && !inv(s)}, {"step", stepBody && inv(a) && !inv(b)}, {"safe", badBody && inv(q)}};
         proof.verdict = Verdict::Holds;
         for (const auto& [part, query] : checks) {
-            z3::solver check(ctx);
+            smt::Solver check(ctx);
             limitTime(check);
             check.add(query);
             if (!smtFile.empty()) {
                 const std::string file = smtFile.substr(0, smtFile.size() - 5) + "." + part + ".smt2";
-                rules::OutputFile(smtOption, file).write(header(std::string("unsat (certificate check '") + part + "' of Spacer's invariant)") + "(set-logic ALL)\n" + check.to_smt2());
+                rules::OutputFile(smtOption, file).write(header(std::string("unsat (certificate check '") + part + "' of Spacer's invariant)") + "(set-logic ALL)\n" + check.toSmt2());
                 proof.certificateFiles.push_back(file);
             }
-            if (check.check() != z3::unsat) {
+            if (check.check() != smt::Result::Unsat) {
                 proof.verdict = Verdict::Unknown;
                 proof.reason = std::string("Spacer's invariant failed its certificate check '") + part + "'";
                 break;
             }
         }
         if (proof.verdict == Verdict::Holds)
-            for (const z3::expr& c : irredundant(found, inv(s), s, ctx)) proof.invariant.push_back(clauseText(c, atoms, model.alphabet()));
+            for (const smt::Term& c : irredundant(found, inv(s), s, ctx)) proof.invariant.push_back(clauseText(c, atoms, model.alphabet()));
     }
     proof.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return proof;
@@ -317,24 +283,25 @@ std::string variantFile(const std::string& smtFile, std::size_t k) {
 // gained reaches(U, nbr, P|F): general2 Progress on 3x2, 1.5 s with safety, 112 s without;
 // general3, a timeout with, 31 s without); the first definite answer wins.
 ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, const std::vector<rules::Configuration>& initial,
-                            const Budget& budget, const rules::OutputFile* smt, const BadStates& known) {
-    const std::string smtFile = smt ? smt->path() : std::string(), smtOption = smt ? smt->option() : std::string();
-    const BadStates nothing = [](SmtEncoding&, const SmtEncoding::State& st) { return st.is[0][0].ctx().bool_val(true); };
+                            const Budget& budget, const rules::OutputFile* out, const BadStates& known) {
+    const std::string smtFile = out ? out->path() : std::string(), smtOption = out ? out->option() : std::string();
+    const BadStates nothing = [](SmtEncoding&, const SmtEncoding::State& st) { return st.is[0][0].context().boolVal(true); };
     std::vector<BadStates> variants{known ? known : nothing};
     if (known) variants.push_back(nothing);
     std::vector<ForkedJob> jobs;
     for (std::size_t k = 0; k < variants.size(); ++k)
         jobs.push_back([&, k](bool forked) {
-            auto solve = [&](z3::context& ctx) {
+            auto solve = [&](smt::Context& ctx) {
                 ReachProof p = solveHorn(ctx, engine, bad, variants[k], initial, budget, smtOption, variantFile(smtFile, k));
                 p.usedKnown = known && k == 0;
                 return toJson(p);
             };
             if (forked) {
                 shareSolverMemory(static_cast<int>(variants.size()));
-                return solve(*newContext().release());  // never freed: the child ends with _exit
+                return solve(*new smt::Context());  // never freed: the child ends with _exit
             }
-            return solve(*newContext(budget));
+            smt::Context ctx(budget);
+            return solve(ctx);
         });
     const ForkedAnswer answer = firstDecisive(
         jobs, [](const nlohmann::json& a) { return a.contains("verdict") && static_cast<Verdict>(a["verdict"].get<int>()) != Verdict::Unknown; }, budget);

@@ -29,7 +29,7 @@ struct ReachProof {
 };
 
 /// A set of states, as a formula on a state of the given encoding.
-using BadStates = std::function<z3::expr(SmtEncoding&, const SmtEncoding::State&)>;
+using BadStates = std::function<smt::Term(SmtEncoding&, const SmtEncoding::State&)>;
 
 /// Shows the `bad` states unreachable from `initial`. `known`, if given, holds in every reachable
 /// state (invariants proved already); a second solver then takes steps only from states satisfying

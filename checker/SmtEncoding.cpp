@@ -25,13 +25,13 @@ namespace holon::checker {
 using rules::CellValue;
 using rules::Expr;
 
-SmtEncoding::SmtEncoding(z3::context& ctx, const rules::Engine& engine, Use use, Budget budget)
+SmtEncoding::SmtEncoding(smt::Context& ctx, const rules::Engine& engine, Use use, Budget budget)
     : ctx_(ctx), engine_(engine), alphabet_(engine.model().alphabet().size()), use_(use), budget_(budget) {
     const int inputs = static_cast<int>(engine.model().system().inputs.size());
     for (int i = 0; i < engine.region().size(); ++i) {
-        std::vector<z3::expr> bits;
+        std::vector<smt::Term> bits;
         for (int k = 0; k < inputs; ++k)
-            bits.push_back(ctx_.bool_const(("in_" + engine.model().system().inputs[k] + "_" + std::to_string(i)).c_str()));
+            bits.push_back(ctx_.boolConst("in_" + engine.model().system().inputs[k] + "_" + std::to_string(i)));
         inputBits_.push_back(bits);
     }
     // Many inputs (roombots_reserve's eight walks) and every combination of them: acceptance()
@@ -42,18 +42,18 @@ SmtEncoding::SmtEncoding(z3::context& ctx, const rules::Engine& engine, Use use,
     if (std::find(comboOfBits_.begin(), comboOfBits_.end(), -1) != comboOfBits_.end()) comboOfBits_.clear();
 }
 
-z3::expr SmtEncoding::fresh(const std::string& prefix, const z3::sort& sort) {
-    return ctx_.constant((prefix + "_" + std::to_string(counter_++)).c_str(), sort);
+smt::Term SmtEncoding::fresh(const std::string& prefix, smt::Sort sort) {
+    return ctx_.constant(prefix + "_" + std::to_string(counter_++), sort);
 }
 
 SmtEncoding::State SmtEncoding::state(const std::string& name) {
     budget_.check("building the formulas");
     State s;
     for (int i = 0; i < engine_.region().size(); ++i) {
-        std::vector<z3::expr> row;
-        z3::expr some = ctx_.bool_val(false);
+        std::vector<smt::Term> row;
+        smt::Term some = ctx_.boolVal(false);
         for (int v = 0; v < alphabet_; ++v) {
-            row.push_back(ctx_.bool_const((name + "_" + std::to_string(i) + "_" + std::to_string(v)).c_str()));
+            row.push_back(ctx_.boolConst(name + "_" + std::to_string(i) + "_" + std::to_string(v)));
             some = some || row.back();
         }
         // Exactly one state per cell, in plain SMT-LIB (no pseudo-Boolean extension) so that
@@ -66,34 +66,34 @@ SmtEncoding::State SmtEncoding::state(const std::string& name) {
     return s;
 }
 
-z3::expr SmtEncoding::sameCell(const State& a, int i, const State& b, int j) const {
-    z3::expr all = ctx_.bool_val(true);
+smt::Term SmtEncoding::sameCell(const State& a, int i, const State& b, int j) const {
+    smt::Term all = ctx_.boolVal(true);
     for (int v = 0; v < alphabet_; ++v) all = all && a.is[i][v] == b.is[j][v];
     return all;
 }
 
-z3::expr SmtEncoding::inputsAre(const std::vector<std::uint32_t>& inputs) const {
-    z3::expr all = ctx_.bool_val(true);
+smt::Term SmtEncoding::inputsAre(const std::vector<std::uint32_t>& inputs) const {
+    smt::Term all = ctx_.boolVal(true);
     for (std::size_t i = 0; i < inputBits_.size(); ++i)
         for (std::size_t k = 0; k < inputBits_[i].size(); ++k) all = all && (((inputs[i] >> k) & 1u) ? inputBits_[i][k] : !inputBits_[i][k]);
     return all;
 }
 
-z3::expr SmtEncoding::configurationIs(const State& s, const std::vector<CellValue>& cells) const {
-    z3::expr all = ctx_.bool_val(true);
+smt::Term SmtEncoding::configurationIs(const State& s, const std::vector<CellValue>& cells) const {
+    smt::Term all = ctx_.boolVal(true);
     for (std::size_t i = 0; i < cells.size(); ++i) all = all && s.is[i][cells[i]];
     return all;
 }
 
-z3::expr SmtEncoding::inputCombo(int cell, int combo) const {
+smt::Term SmtEncoding::inputCombo(int cell, int combo) const {
     const std::uint32_t bits = engine_.comboInputs(combo);
-    z3::expr all = ctx_.bool_val(true);
+    smt::Term all = ctx_.boolVal(true);
     for (std::size_t k = 0; k < inputBits_[cell].size(); ++k) all = all && (((bits >> k) & 1u) ? inputBits_[cell][k] : !inputBits_[cell][k]);
     return all;
 }
 
-std::vector<std::pair<int, z3::expr>> SmtEncoding::acceptance(int cell, const std::function<bool(int, CellValue)>& accepts) {
-    std::vector<std::pair<int, z3::expr>> out;
+std::vector<std::pair<int, smt::Term>> SmtEncoding::acceptance(int cell, const std::function<bool(int, CellValue)>& accepts) {
+    std::vector<std::pair<int, smt::Term>> out;
     const int combos = engine_.comboCount();
     for (int v = 0; v < alphabet_; ++v) {
         std::vector<int> yes;
@@ -101,11 +101,11 @@ std::vector<std::pair<int, z3::expr>> SmtEncoding::acceptance(int cell, const st
             if (accepts(c, static_cast<CellValue>(v))) yes.push_back(c);
         if (yes.empty()) continue;
         if (static_cast<int>(yes.size()) == combos) {
-            out.push_back({v, ctx_.bool_val(true)});
+            out.push_back({v, ctx_.boolVal(true)});
             continue;
         }
         if (comboOfBits_.empty()) {  // some combinations only: one conjunction of input literals each
-            z3::expr when = ctx_.bool_val(false);
+            smt::Term when = ctx_.boolVal(false);
             for (int c : yes) when = when || inputCombo(cell, c);
             out.push_back({v, when});
             continue;
@@ -114,10 +114,10 @@ std::vector<std::pair<int, z3::expr>> SmtEncoding::acceptance(int cell, const st
         // inputs reads `a and b`, not a disjunction over the 2^k combinations (8 inputs: 64 of them).
         std::vector<char> accepted(comboOfBits_.size());
         for (std::size_t b = 0; b < comboOfBits_.size(); ++b) accepted[b] = std::find(yes.begin(), yes.end(), comboOfBits_[b]) != yes.end();
-        std::function<z3::expr(int, std::uint32_t)> expand = [&](int k, std::uint32_t bits) -> z3::expr {
-            if (k < 0) return ctx_.bool_val(accepted[bits] != 0);
-            const z3::expr off = expand(k - 1, bits), on = expand(k - 1, bits | (std::uint32_t{1} << k));
-            if (z3::eq(off, on)) return off;
+        std::function<smt::Term(int, std::uint32_t)> expand = [&](int k, std::uint32_t bits) -> smt::Term {
+            if (k < 0) return ctx_.boolVal(accepted[bits] != 0);
+            const smt::Term off = expand(k - 1, bits), on = expand(k - 1, bits | (std::uint32_t{1} << k));
+            if (smt::same(off, on)) return off;
             return ((inputBits_[cell][k] && on) || (!inputBits_[cell][k] && off)).simplify();
         };
         out.push_back({v, expand(static_cast<int>(inputBits_[cell].size()) - 1, 0)});
@@ -125,70 +125,70 @@ std::vector<std::pair<int, z3::expr>> SmtEncoding::acceptance(int cell, const st
     return out;
 }
 
-z3::expr SmtEncoding::member(const State& s, int cell, const std::function<bool(int, CellValue)>& accepts) {
+smt::Term SmtEncoding::member(const State& s, int cell, const std::function<bool(int, CellValue)>& accepts) {
     // A cell outside the region (cell < 0) is empty with no inputs.
-    if (cell < 0) return ctx_.bool_val(accepts(0, 0));
+    if (cell < 0) return ctx_.boolVal(accepts(0, 0));
     return inStateWhen(s, cell, acceptance(cell, accepts));
 }
 
-z3::expr SmtEncoding::memberPred(const State& s, int cell, const rules::CellPredicate& pred) {
-    if (cell < 0) return ctx_.bool_val(engine_.predicateAccepts(pred, 0, 0));
+smt::Term SmtEncoding::memberPred(const State& s, int cell, const rules::CellPredicate& pred) {
+    if (cell < 0) return ctx_.boolVal(engine_.predicateAccepts(pred, 0, 0));
     auto it = predicateAcceptance_.find({&pred, cell});
     if (it == predicateAcceptance_.end())
         it = predicateAcceptance_.emplace(std::make_pair(&pred, cell), acceptance(cell, [&](int c, CellValue v) { return engine_.predicateAccepts(pred, c, v); })).first;
     return inStateWhen(s, cell, it->second);
 }
 
-z3::expr SmtEncoding::inStateWhen(const State& s, int cell, const std::vector<std::pair<int, z3::expr>>& accepted) const {
-    z3::expr any = ctx_.bool_val(false);
+smt::Term SmtEncoding::inStateWhen(const State& s, int cell, const std::vector<std::pair<int, smt::Term>>& accepted) const {
+    smt::Term any = ctx_.boolVal(false);
     for (const auto& [v, when] : accepted) any = any || (s.is[cell][v] && when);
     return any.simplify();
 }
 
-z3::expr SmtEncoding::memberCounted(const State& s, std::int32_t cell, const Expr& quantifier) {
-    z3::expr m = memberPred(s, cell, quantifier.pred);
+smt::Term SmtEncoding::memberCounted(const State& s, std::int32_t cell, const Expr& quantifier) {
+    smt::Term m = memberPred(s, cell, quantifier.pred);
     return quantifier.kids.empty() ? m : m && guard(engine_.cellGuardOf(quantifier), &cell, s);
 }
 
-z3::expr SmtEncoding::cellMassUnits(const State& s, int cell) const {
+smt::Term SmtEncoding::cellMassUnits(const State& s, int cell) const {
     // One term per distinct mass, not per state: a planner over general-lock has 91 states and 4
     // masses, and a sum of 91 if-then-elses per cell made a one-step mass-conservation query take
     // 10 s (32 s for general-lock3) where this takes well under one.
-    std::map<std::int64_t, z3::expr> byMass;
+    std::map<std::int64_t, smt::Term> byMass;
     for (int v = 0; v < alphabet_; ++v)
         if (const std::int64_t m = engine_.massUnitsOf(static_cast<CellValue>(v))) {
             auto [at, fresh] = byMass.try_emplace(m, s.is[cell][v]);
             if (!fresh) at->second = at->second || s.is[cell][v];
         }
-    z3::expr total = ctx_.int_val(0);
-    for (const auto& [m, any] : byMass) total = total + z3::ite(any, ctx_.int_val(static_cast<int64_t>(m)), ctx_.int_val(0));
+    smt::Term total = ctx_.intVal(0);
+    for (const auto& [m, any] : byMass) total = total + smt::ite(any, ctx_.intVal(static_cast<int64_t>(m)), ctx_.intVal(0));
     return total;
 }
 
-z3::expr SmtEncoding::massUnits(const State& s) {
-    z3::expr total = ctx_.int_val(0);
+smt::Term SmtEncoding::massUnits(const State& s) {
+    smt::Term total = ctx_.intVal(0);
     for (std::size_t i = 0; i < s.is.size(); ++i) total = total + cellMassUnits(s, static_cast<int>(i));
     return total;
 }
 
-z3::expr SmtEncoding::number(const Expr& e, const State& s) {
+smt::Term SmtEncoding::number(const Expr& e, const State& s) {
     switch (e.kind) {
-    case Expr::Kind::Number: return ctx_.real_val(static_cast<int64_t>(e.value.num()), static_cast<int64_t>(e.value.den()));
-    case Expr::Kind::Mass: return z3::to_real(massUnits(s)) / ctx_.real_val(static_cast<int64_t>(engine_.massDenominator()));
+    case Expr::Kind::Number: return ctx_.realVal(static_cast<int64_t>(e.value.num()), static_cast<int64_t>(e.value.den()));
+    case Expr::Kind::Mass: return smt::toReal(massUnits(s)) / ctx_.realVal(static_cast<int64_t>(engine_.massDenominator()));
     case Expr::Kind::Add: return number(e.kids[0], s) + number(e.kids[1], s);
     case Expr::Kind::Sub: return number(e.kids[0], s) - number(e.kids[1], s);
     case Expr::Kind::Neg: return -number(e.kids[0], s);
     case Expr::Kind::Count: {
-        z3::expr n = ctx_.int_val(0);
-        for (int i = 0; i < engine_.region().size(); ++i) n = n + z3::ite(memberCounted(s, i, e), ctx_.int_val(1), ctx_.int_val(0));
-        return z3::to_real(n);
+        smt::Term n = ctx_.intVal(0);
+        for (int i = 0; i < engine_.region().size(); ++i) n = n + smt::ite(memberCounted(s, i, e), ctx_.intVal(1), ctx_.intVal(0));
+        return smt::toReal(n);
     }
     default: throw InputError("internal: not a number expression");
     }
 }
 
 namespace {
-z3::expr compareExprs(rules::CmpOp op, const z3::expr& a, const z3::expr& b) {
+smt::Term compareExprs(rules::CmpOp op, const smt::Term& a, const smt::Term& b) {
     switch (op) {
     case rules::CmpOp::Eq: return a == b;
     case rules::CmpOp::Ne: return a != b;
@@ -236,7 +236,7 @@ std::optional<SmtEncoding::PerCell> SmtEncoding::perCell(const Expr& e) const {
     }
 }
 
-std::optional<z3::expr> SmtEncoding::cellwise(const Expr& e, const State& s) {
+std::optional<smt::Term> SmtEncoding::cellwise(const Expr& e, const State& s) {
     // a op b as sum_i d(cell i) op c, with d = a - b per cell and c = b - a in constants, in integers.
     auto d = difference(perCell(e.kids[0]), perCell(e.kids[1]), -1);
     if (!d) return std::nullopt;
@@ -253,29 +253,29 @@ std::optional<z3::expr> SmtEncoding::cellwise(const Expr& e, const State& s) {
     auto where = [&](int i, const std::function<bool(std::int64_t)>& ok) {
         return member(s, i, [&](int combo, CellValue v) { return ok(term[static_cast<std::size_t>(combo * alphabet_ + v)]); });
     };
-    z3::expr sum = ctx_.int_val(0);
-    std::vector<z3::expr> pos, neg;
+    smt::Term sum = ctx_.intVal(0);
+    std::vector<smt::Term> pos, neg;
     for (int i = 0; i < n; ++i) {
         for (std::int64_t w : values)
-            if (w != 0) sum = sum + z3::ite(where(i, [w](std::int64_t t) { return t == w; }), ctx_.int_val(w), ctx_.int_val(0));
+            if (w != 0) sum = sum + smt::ite(where(i, [w](std::int64_t t) { return t == w; }), ctx_.intVal(w), ctx_.intVal(0));
         pos.push_back(where(i, [](std::int64_t t) { return t > 0; }));
         neg.push_back(where(i, [](std::int64_t t) { return t < 0; }));
     }
-    const z3::expr atom = compareExprs(e.op, sum, ctx_.int_val(c));
+    const smt::Term atom = compareExprs(e.op, sum, ctx_.intVal(c));
     // Sign lemmas: a sum at most 0 with a positive cell has a negative one, and so on. The solver
     // finds these pigeonhole facts only by trying every cell (Progress over general1: if the
     // mass fits the target and a metamodule lies outside it, some target cell is empty).
     auto atMost = [&](std::int64_t bound) {  // sum <= bound
-        z3::expr f = ctx_.bool_val(true);
+        smt::Term f = ctx_.boolVal(true);
         if (bound > 0) return f;
         for (int j = 0; j < n; ++j) {
-            z3::expr other = ctx_.bool_val(false);
+            smt::Term other = ctx_.boolVal(false);
             for (int k = 0; k < n; ++k)
                 if (k != j) other = other || neg[k];
-            f = f && z3::implies(pos[j], other);
+            f = f && smt::implies(pos[j], other);
         }
         if (bound < 0) {
-            z3::expr any = ctx_.bool_val(false);
+            smt::Term any = ctx_.boolVal(false);
             for (int k = 0; k < n; ++k) any = any || neg[k];
             f = f && any;
         }
@@ -283,20 +283,20 @@ std::optional<z3::expr> SmtEncoding::cellwise(const Expr& e, const State& s) {
     };
     auto atLeast = [&](std::int64_t bound) {  // sum >= bound: the mirror image
         std::swap(pos, neg);
-        z3::expr f = atMost(-bound);
+        smt::Term f = atMost(-bound);
         std::swap(pos, neg);
         return f;
     };
     auto signs = [&](rules::CmpOp op) {
         switch (op) {
         case rules::CmpOp::Eq: return atMost(c) && atLeast(c);
-        case rules::CmpOp::Ne: return ctx_.bool_val(true);
+        case rules::CmpOp::Ne: return ctx_.boolVal(true);
         case rules::CmpOp::Lt: return atMost(c - 1);
         case rules::CmpOp::Le: return atMost(c);
         case rules::CmpOp::Gt: return atLeast(c + 1);
         case rules::CmpOp::Ge: return atLeast(c);
         }
-        return ctx_.bool_val(true);
+        return ctx_.boolVal(true);
     };
     auto negated = [](rules::CmpOp op) {
         switch (op) {
@@ -309,15 +309,15 @@ std::optional<z3::expr> SmtEncoding::cellwise(const Expr& e, const State& s) {
         }
         return op;
     };
-    signLemmas_.push_back(z3::implies(atom, signs(e.op)) && z3::implies(!atom, signs(negated(e.op))));
+    signLemmas_.push_back(smt::implies(atom, signs(e.op)) && smt::implies(!atom, signs(negated(e.op))));
     return atom;
 }
 
-z3::expr SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
+smt::Term SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
     budget_.check("building the formulas");
     const int n = engine_.region().size();
     switch (e.kind) {
-    case Expr::Kind::Bool: return ctx_.bool_val(e.value.num() != 0);
+    case Expr::Kind::Bool: return ctx_.boolVal(e.value.num() != 0);
     case Expr::Kind::And: return holds(e.kids[0], s, positive) && holds(e.kids[1], s, positive);
     case Expr::Kind::Or: return holds(e.kids[0], s, positive) || holds(e.kids[1], s, positive);
     case Expr::Kind::Implies: return !holds(e.kids[0], s, !positive) || holds(e.kids[1], s, positive);
@@ -330,10 +330,10 @@ z3::expr SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
     case Expr::Kind::No:
     case Expr::Kind::All: {
         // With a cell guard, all(T: G) asks every T cell to satisfy G; some/no count T cells where G holds.
-        z3::expr any = ctx_.bool_val(false), all = ctx_.bool_val(true);
+        smt::Term any = ctx_.boolVal(false), all = ctx_.boolVal(true);
         for (int i = 0; i < n; ++i) {
-            z3::expr m = memberCounted(s, i, e);
-            any = any || m, all = all && (e.kids.empty() ? m : z3::implies(memberPred(s, i, e.pred), m));
+            smt::Term m = memberCounted(s, i, e);
+            any = any || m, all = all && (e.kids.empty() ? m : smt::implies(memberPred(s, i, e.pred), m));
         }
         return e.kind == Expr::Kind::Some ? any : e.kind == Expr::Kind::No ? !any : all;
     }
@@ -343,41 +343,41 @@ z3::expr SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
     }
 }
 
-z3::expr SmtEncoding::isCut(const std::vector<z3::expr>& members, const std::vector<z3::expr>& in) const {
+smt::Term SmtEncoding::isCut(const std::vector<smt::Term>& members, const std::vector<smt::Term>& in) const {
     // A non-empty proper subset of the members, closed under adjacency among them.
     const rules::Region& region = engine_.region();
-    z3::expr closed = ctx_.bool_val(true), inside = ctx_.bool_val(false), outside = ctx_.bool_val(false);
+    smt::Term closed = ctx_.boolVal(true), inside = ctx_.boolVal(false), outside = ctx_.boolVal(false);
     for (int i = 0; i < region.size(); ++i) {
-        closed = closed && z3::implies(in[i], members[i]);
+        closed = closed && smt::implies(in[i], members[i]);
         inside = inside || in[i];
         outside = outside || (members[i] && !in[i]);
         for (int d = 0; d < region.lattice().degree(); ++d)
-            if (int j = region.neighbour(i, d); j >= 0) closed = closed && z3::implies(in[i] && members[j], in[j]);
+            if (int j = region.neighbour(i, d); j >= 0) closed = closed && smt::implies(in[i] && members[j], in[j]);
     }
     return closed && inside && outside;
 }
 
-z3::expr SmtEncoding::isStray(const Reachability& r, const std::vector<z3::expr>& in) const {
+smt::Term SmtEncoding::isStray(const Reachability& r, const std::vector<smt::Term>& in) const {
     // A non-empty set of `from` cells, each stepping to no target and only into the set.
     const rules::Region& region = engine_.region();
-    z3::expr f = ctx_.bool_val(true), some = ctx_.bool_val(false);
+    smt::Term f = ctx_.boolVal(true), some = ctx_.boolVal(false);
     for (int i = 0; i < region.size(); ++i) {
         some = some || in[i];
-        z3::expr next = ctx_.bool_val(true);
+        smt::Term next = ctx_.boolVal(true);
         for (int d = 0; d < region.lattice().degree(); ++d) {
             const int j = region.neighbour(i, d);
             if (j < 0) continue;  // pointing out of the region is bad in itself
-            next = next && z3::implies(r.steps[i][d], !r.to[j] && (!r.from[j] || in[j]));
+            next = next && smt::implies(r.steps[i][d], !r.to[j] && (!r.from[j] || in[j]));
         }
-        f = f && z3::implies(in[i], r.from[i] && next);
+        f = f && smt::implies(in[i], r.from[i] && next);
     }
     return f && some;
 }
 
-std::vector<z3::expr> SmtEncoding::freshSet(const std::string& prefix, const std::vector<z3::expr>& members) {
-    std::vector<z3::expr> in, rest;
+std::vector<smt::Term> SmtEncoding::freshSet(const std::string& prefix, const std::vector<smt::Term>& members) {
+    std::vector<smt::Term> in, rest;
     for (std::size_t i = 0; i < members.size(); ++i) {
-        in.push_back(fresh(prefix, ctx_.bool_sort()));
+        in.push_back(fresh(prefix, smt::Sort::Bool));
         rest.push_back(members[i] && !in.back());
     }
     refutationSets_.push_back(in);
@@ -385,7 +385,7 @@ std::vector<z3::expr> SmtEncoding::freshSet(const std::string& prefix, const std
     return in;
 }
 
-z3::expr SmtEncoding::hypothesis(const z3::expr& witness, Hypothesis h) {
+smt::Term SmtEncoding::hypothesis(const smt::Term& witness, Hypothesis h) {
     h.witness = witness;
     hypotheses_.push_back(h);
     return witness;
@@ -403,24 +403,24 @@ SmtEncoding::Lemmas SmtEncoding::instantiate() {
     // Reachability restated for named predicates is what Progress on hex:r2 needs (a U next to
     // the tree) and what keeps it from finishing on cubic:3x3x3 (the P-leaf case drowns in stray
     // sets), so the caller gets the lemmas with and without that part.
-    z3::expr kept = ctx_.bool_val(true), reach = ctx_.bool_val(true);
+    smt::Term kept = ctx_.boolVal(true), reach = ctx_.boolVal(true);
     bool differ = false;
     for (const Hypothesis& h : hypotheses_) {
         budget_.check("building the lemmas");
-        std::vector<std::pair<const std::vector<z3::expr>*, bool>> sets;  // (set, a named predicate)
-        for (const std::vector<z3::expr>& set : refutationSets_) sets.push_back({&set, false});
+        std::vector<std::pair<const std::vector<smt::Term>*, bool>> sets;  // (set, a named predicate)
+        for (const std::vector<smt::Term>& set : refutationSets_) sets.push_back({&set, false});
         for (const auto& [state, set] : predicateSets_)
             if (state == h.state && refutationSets_.empty()) sets.push_back({&set, true});
-        const std::vector<z3::expr>& own = h.members;  // for reaches: the `from` cells
+        const std::vector<smt::Term>& own = h.members;  // for reaches: the `from` cells
         for (const auto& [set, named] : sets) {
-            std::vector<z3::expr> restricted;
+            std::vector<smt::Term> restricted;
             for (std::size_t i = 0; i < set->size(); ++i) restricted.push_back((*set)[i] && own[i]);
-            const z3::expr lemma = z3::implies(h.witness, !(h.reach ? isStray(*h.reach, restricted) : isCut(h.members, restricted)));
+            const smt::Term lemma = smt::implies(h.witness, !(h.reach ? isStray(*h.reach, restricted) : isCut(h.members, restricted)));
             if (h.reach && named) reach = reach && lemma, differ = true;
             else kept = kept && lemma;
         }
     }
-    for (const z3::expr& l : signLemmas_) kept = kept && l;
+    for (const smt::Term& l : signLemmas_) kept = kept && l;
     signLemmas_.clear();
     hypotheses_.clear();
     refutationSets_.clear();
@@ -428,9 +428,9 @@ SmtEncoding::Lemmas SmtEncoding::instantiate() {
     return {kept && reach, differ ? kept : kept && reach, differ};
 }
 
-void SmtEncoding::candidate(const State& s, const std::vector<z3::expr>& members) {
+void SmtEncoding::candidate(const State& s, const std::vector<smt::Term>& members) {
     for (const auto& [state, set] : predicateSets_)
-        if (state == s.is[0][0].id() && std::equal(set.begin(), set.end(), members.begin(), [](const z3::expr& a, const z3::expr& b) { return z3::eq(a, b); }))
+        if (state == s.is[0][0].id() && std::equal(set.begin(), set.end(), members.begin(), [](const smt::Term& a, const smt::Term& b) { return smt::same(a, b); }))
             return;
     predicateSets_.emplace_back(s.is[0][0].id(), members);
 }
@@ -451,7 +451,7 @@ void SmtEncoding::leftSideSets(const State& s) {
                 for (int v = 0; v < alphabet_; ++v) table.push_back(engine_.lhsAccepts(placed, k, c, static_cast<CellValue>(v)));
             if (std::find(seen.begin(), seen.end(), table) != seen.end()) continue;
             seen.push_back(table);
-            std::vector<z3::expr> cells;
+            std::vector<smt::Term> cells;
             for (int i = 0; i < n; ++i)
                 cells.push_back(member(s, i, [&](int c, CellValue v) { return table[static_cast<std::size_t>(c * alphabet_ + v)] != 0; }));
             candidate(s, cells);
@@ -459,35 +459,35 @@ void SmtEncoding::leftSideSets(const State& s) {
     }
 }
 
-z3::expr SmtEncoding::connected(const rules::CellPredicate& pred, const State& s, bool positive) {
+smt::Term SmtEncoding::connected(const rules::CellPredicate& pred, const State& s, bool positive) {
     const rules::Region& region = engine_.region();
     const int n = region.size();
-    std::vector<z3::expr> m;
+    std::vector<smt::Term> m;
     for (int i = 0; i < n; ++i) m.push_back(memberPred(s, i, pred));
     candidate(s, m);
     if (!positive) return !isCut(m, freshSet("cut", m));
     // One root among the members; every other member has a member neighbour of lower rank.
-    z3::expr f = ctx_.bool_val(true), someMember = ctx_.bool_val(false), someRoot = ctx_.bool_val(false);
-    z3::expr roots = ctx_.int_val(0);
-    std::vector<z3::expr> rank, root;
+    smt::Term f = ctx_.boolVal(true), someMember = ctx_.boolVal(false), someRoot = ctx_.boolVal(false);
+    smt::Term roots = ctx_.intVal(0);
+    std::vector<smt::Term> rank, root;
     for (int i = 0; i < n; ++i) {
-        rank.push_back(fresh("rank", ctx_.int_sort())), root.push_back(fresh("root", ctx_.bool_sort()));
+        rank.push_back(fresh("rank", smt::Sort::Int)), root.push_back(fresh("root", smt::Sort::Bool));
         facts_.push_back(rank.back() >= 0 && rank.back() < n);  // bounded ranks help the solver
     }
     for (int i = 0; i < n; ++i) {
         someMember = someMember || m[i];
         someRoot = someRoot || root[i];
-        roots = roots + z3::ite(root[i], ctx_.int_val(1), ctx_.int_val(0));
-        f = f && z3::implies(root[i], m[i]);
-        z3::expr down = ctx_.bool_val(false);
+        roots = roots + smt::ite(root[i], ctx_.intVal(1), ctx_.intVal(0));
+        f = f && smt::implies(root[i], m[i]);
+        smt::Term down = ctx_.boolVal(false);
         for (int d = 0; d < region.lattice().degree(); ++d)
             if (int j = region.neighbour(i, d); j >= 0) down = down || (m[j] && rank[j] < rank[i]);
-        f = f && z3::implies(m[i] && !root[i], down);
+        f = f && smt::implies(m[i] && !root[i], down);
     }
-    return hypothesis(f && z3::implies(someMember, someRoot) && roots <= 1, {m, std::nullopt, ctx_.bool_val(true), s.is[0][0].id()});
+    return hypothesis(f && smt::implies(someMember, someRoot) && roots <= 1, {m, std::nullopt, ctx_.boolVal(true), s.is[0][0].id()});
 }
 
-z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
+smt::Term SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
     const rules::Region& region = engine_.region();
     const rules::Alphabet& alphabet = engine_.model().alphabet();
     const int n = region.size(), degree = region.lattice().degree();
@@ -495,49 +495,49 @@ z3::expr SmtEncoding::reaches(const Expr& e, const State& s, bool positive) {
     for (int i = 0; i < n; ++i) {
         r.from.push_back(memberPred(s, i, e.pred)), r.to.push_back(memberPred(s, i, e.target));
         // A step from i in direction d is possible: along the pointer, or to any neighbour (`nbr`).
-        std::vector<z3::expr> steps;
+        std::vector<smt::Term> steps;
         for (int d = 0; d < degree; ++d)
-            steps.push_back(e.field < 0 ? ctx_.bool_val(true)
+            steps.push_back(e.field < 0 ? ctx_.boolVal(true)
                                         : member(s, i, [&](int, CellValue v) { return v != 0 && alphabet.fields(v)[e.field] == d; }));
         r.steps.push_back(steps);
     }
     candidate(s, r.from), candidate(s, r.to);
     if (!positive) return !isStray(r, freshSet("stray", r.from));
     // Ranks fall along pointers (or adjacency) until a target cell.
-    std::vector<z3::expr> rank;
+    std::vector<smt::Term> rank;
     for (int i = 0; i < n; ++i) {
-        rank.push_back(fresh("prank", ctx_.int_sort()));
+        rank.push_back(fresh("prank", smt::Sort::Int));
         facts_.push_back(rank.back() >= 0 && rank.back() < n);
     }
     // The witness also names the lowest and the highest rank among the `from` cells, which every
     // rank assignment has: a cell of lowest rank steps straight to a target cell, and nothing steps
     // onto a cell of highest rank (a P leaf, in the planner's Progress argument). Without them the
     // solver finds these extremes by descent through the ranks.
-    std::optional<z3::expr> lowest, highest;
-    if (use_ == Use::Queries) lowest = fresh("prank_low", ctx_.int_sort()), highest = fresh("prank_high", ctx_.int_sort());
-    z3::expr f = ctx_.bool_val(true), some = ctx_.bool_val(false), atLowest = ctx_.bool_val(false), atHighest = ctx_.bool_val(false);
+    std::optional<smt::Term> lowest, highest;
+    if (use_ == Use::Queries) lowest = fresh("prank_low", smt::Sort::Int), highest = fresh("prank_high", smt::Sort::Int);
+    smt::Term f = ctx_.boolVal(true), some = ctx_.boolVal(false), atLowest = ctx_.boolVal(false), atHighest = ctx_.boolVal(false);
     for (int i = 0; i < n; ++i) {
-        z3::expr ok = ctx_.bool_val(false);
+        smt::Term ok = ctx_.boolVal(false);
         for (int d = 0; d < degree; ++d) {
             const int j = region.neighbour(i, d);
             if (j < 0) continue;
             ok = ok || (r.steps[i][d] && (r.to[j] || (r.from[j] && rank[j] < rank[i])));
         }
         if (use_ != Use::Queries) {
-            f = f && z3::implies(r.from[i], ok);
+            f = f && smt::implies(r.from[i], ok);
             continue;
         }
-        f = f && z3::implies(r.from[i], ok && *lowest <= rank[i] && rank[i] <= *highest);
+        f = f && smt::implies(r.from[i], ok && *lowest <= rank[i] && rank[i] <= *highest);
         some = some || r.from[i];
         atLowest = atLowest || (r.from[i] && rank[i] == *lowest);
         atHighest = atHighest || (r.from[i] && rank[i] == *highest);
     }
-    if (use_ == Use::Queries) f = f && z3::implies(some, atLowest && atHighest);
-    return hypothesis(f, {r.from, r, ctx_.bool_val(true), s.is[0][0].id()});
+    if (use_ == Use::Queries) f = f && smt::implies(some, atLowest && atHighest);
+    return hypothesis(f, {r.from, r, ctx_.boolVal(true), s.is[0][0].id()});
 }
 
-z3::expr SmtEncoding::legal(const State& s, bool positive) {
-    z3::expr all = ctx_.bool_val(true);
+smt::Term SmtEncoding::legal(const State& s, bool positive) {
+    smt::Term all = ctx_.boolVal(true);
     for (const rules::Constraint& c : engine_.model().system().constraints) all = all && holds(c.expr, s, positive);
     return all;
 }
@@ -552,7 +552,7 @@ SmtEncoding::State SmtEncoding::successor(int placed, const State& s) const {
             continue;
         }
         for (int w = 0; w < alphabet_; ++w) {
-            z3::expr becomes = ctx_.bool_val(false);
+            smt::Term becomes = ctx_.boolVal(false);
             for (int v = 0; v < alphabet_; ++v)
                 if (engine_.rhsValue(placed, k, static_cast<CellValue>(v)) == w) becomes = becomes || s.is[cell][v];
             t.is[cell][w] = becomes;
@@ -561,8 +561,8 @@ SmtEncoding::State SmtEncoding::successor(int placed, const State& s) const {
     return t;
 }
 
-std::vector<z3::expr> SmtEncoding::acceptedSites(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {
-    std::vector<z3::expr> out;
+std::vector<smt::Term> SmtEncoding::acceptedSites(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {
+    std::vector<smt::Term> out;
     for (int d = 0; d < static_cast<int>(g.perSite.size()); ++d) {
         const int cell = g.around >= 0 ? engine_.region().neighbour(cells[g.around], d) : cells[d];
         out.push_back(member(s, cell, [&](int c, CellValue v) { return engine_.guardAccepts(g, d, c, v); }));
@@ -570,24 +570,24 @@ std::vector<z3::expr> SmtEncoding::acceptedSites(const rules::Engine::GuardNode&
     return out;
 }
 
-z3::expr SmtEncoding::guardNumber(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {
+smt::Term SmtEncoding::guardNumber(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {
     switch (g.kind) {
-    case Expr::Kind::Number: return ctx_.real_val(static_cast<int64_t>(g.value.num()), static_cast<int64_t>(g.value.den()));
+    case Expr::Kind::Number: return ctx_.realVal(static_cast<int64_t>(g.value.num()), static_cast<int64_t>(g.value.den()));
     case Expr::Kind::Add: return guardNumber(g.kids[0], cells, s) + guardNumber(g.kids[1], cells, s);
     case Expr::Kind::Sub: return guardNumber(g.kids[0], cells, s) - guardNumber(g.kids[1], cells, s);
     case Expr::Kind::Neg: return -guardNumber(g.kids[0], cells, s);
     case Expr::Kind::Count: {
-        z3::expr count = ctx_.int_val(0);
-        for (const z3::expr& accepted : acceptedSites(g, cells, s)) count = count + z3::ite(accepted, ctx_.int_val(1), ctx_.int_val(0));
-        return z3::to_real(count);
+        smt::Term count = ctx_.intVal(0);
+        for (const smt::Term& accepted : acceptedSites(g, cells, s)) count = count + smt::ite(accepted, ctx_.intVal(1), ctx_.intVal(0));
+        return smt::toReal(count);
     }
     default: throw InputError("internal: not a guard number");
     }
 }
 
-z3::expr SmtEncoding::guard(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {
+smt::Term SmtEncoding::guard(const rules::Engine::GuardNode& g, const std::int32_t* cells, const State& s) {
     switch (g.kind) {
-    case Expr::Kind::Bool: return ctx_.bool_val(g.value.num() != 0);
+    case Expr::Kind::Bool: return ctx_.boolVal(g.value.num() != 0);
     case Expr::Kind::And: return guard(g.kids[0], cells, s) && guard(g.kids[1], cells, s);
     case Expr::Kind::Or: return guard(g.kids[0], cells, s) || guard(g.kids[1], cells, s);
     case Expr::Kind::Implies: return !guard(g.kids[0], cells, s) || guard(g.kids[1], cells, s);
@@ -598,18 +598,18 @@ z3::expr SmtEncoding::guard(const rules::Engine::GuardNode& g, const std::int32_
     case Expr::Kind::All: {
         rules::Engine::GuardNode count = g;
         count.kind = Expr::Kind::Count;
-        z3::expr c = guardNumber(count, cells, s);
+        smt::Term c = guardNumber(count, cells, s);
         const int sites = static_cast<int>(g.perSite.size());
         return g.kind == Expr::Kind::Some ? c > 0 : g.kind == Expr::Kind::No ? c == 0 : c == sites;
     }
     case Expr::Kind::Connected: {
         // The accepted neighbours form a connected set: one of the (at most 2^6) connected sets.
         const int degree = static_cast<int>(g.perSite.size());
-        const std::vector<z3::expr> accepted = acceptedSites(g, cells, s);
-        z3::expr any = ctx_.bool_val(false);
+        const std::vector<smt::Term> accepted = acceptedSites(g, cells, s);
+        smt::Term any = ctx_.boolVal(false);
         for (std::uint32_t set = 0; set < (1u << degree); ++set) {
             if (!engine_.tables().directionsConnected(set)) continue;
-            z3::expr exactly = ctx_.bool_val(true);
+            smt::Term exactly = ctx_.boolVal(true);
             for (int d = 0; d < degree; ++d) exactly = exactly && ((set >> d) & 1u ? accepted[d] : !accepted[d]);
             any = any || exactly;
         }
@@ -619,29 +619,29 @@ z3::expr SmtEncoding::guard(const rules::Engine::GuardNode& g, const std::int32_
     }
 }
 
-z3::expr SmtEncoding::matches(int placed, const State& s) {
+smt::Term SmtEncoding::matches(int placed, const State& s) {
     budget_.check("building the formulas");
     const auto& p = engine_.instances()[placed];
-    z3::expr all = ctx_.bool_val(true);
+    smt::Term all = ctx_.boolVal(true);
     for (int k = 0; k < p.size; ++k)
         all = all && member(s, p.cells[k], [&](int c, CellValue v) { return engine_.lhsAccepts(placed, k, c, v); });
     if (const auto* g = engine_.guardOf(placed)) all = all && guard(*g, engine_.instances()[placed].cells, s);
     return all;
 }
 
-z3::expr SmtEncoding::rewritten(int placed, int k, const State& before, int fromCell, const State& after, int toCell) const {
+smt::Term SmtEncoding::rewritten(int placed, int k, const State& before, int fromCell, const State& after, int toCell) const {
     // One implication per old state: that state's rewrite is the new state.
-    z3::expr all = ctx_.bool_val(true);
+    smt::Term all = ctx_.boolVal(true);
     for (int v = 0; v < alphabet_; ++v) {
         const int w = engine_.rhsValue(placed, k, static_cast<CellValue>(v));
-        all = all && z3::implies(before.is[fromCell][v], after.is[toCell][w]);
+        all = all && smt::implies(before.is[fromCell][v], after.is[toCell][w]);
     }
     return all;
 }
 
-z3::expr SmtEncoding::fires(int placed, const State& from, const State& to) {
+smt::Term SmtEncoding::fires(int placed, const State& from, const State& to) {
     const auto& p = engine_.instances()[placed];
-    z3::expr f = matches(placed, from);
+    smt::Term f = matches(placed, from);
     std::vector<char> touched(from.is.size(), 0);
     for (int k = 0; k < p.size; ++k) {
         touched[p.cells[k]] = 1;
@@ -653,72 +653,72 @@ z3::expr SmtEncoding::fires(int placed, const State& from, const State& to) {
     return f;
 }
 
-z3::expr SmtEncoding::step(const State& from, const State& to, const z3::expr& selector) {
+smt::Term SmtEncoding::step(const State& from, const State& to, const smt::Term& selector) {
     // The selected instance matches and rewrites its cells; a cell no selected instance touches
     // keeps its state.
     const int count = static_cast<int>(engine_.instances().size());
-    z3::expr f = selector >= 0 && selector < count;
-    std::vector<z3::expr> touchedBy(from.is.size(), ctx_.bool_val(false));
+    smt::Term f = selector >= 0 && selector < count;
+    std::vector<smt::Term> touchedBy(from.is.size(), ctx_.boolVal(false));
     for (int placed = 0; placed < count; ++placed) {
         const auto& p = engine_.instances()[placed];
-        z3::expr body = matches(placed, from);
+        smt::Term body = matches(placed, from);
         for (int k = 0; k < p.size; ++k) {
             const int copy = engine_.rhsCopyFrom(placed, k);
             body = body && (copy >= 0 ? sameCell(from, p.cells[copy], to, p.cells[k]) : rewritten(placed, k, from, p.cells[k], to, p.cells[k]));
             touchedBy[p.cells[k]] = touchedBy[p.cells[k]] || selector == placed;
         }
-        f = f && z3::implies(selector == placed, body);
+        f = f && smt::implies(selector == placed, body);
     }
     for (std::size_t i = 0; i < from.is.size(); ++i) f = f && (touchedBy[i] || sameCell(from, static_cast<int>(i), to, static_cast<int>(i)));
     return f && legal(to);
 }
 
-z3::expr SmtEncoding::delta(const Expr& e, int placed, const State& after, const State& before) {
+smt::Term SmtEncoding::delta(const Expr& e, int placed, const State& after, const State& before) {
     const auto& p = engine_.instances()[placed];
     switch (e.kind) {
-    case Expr::Kind::Number: return ctx_.real_val(0);
+    case Expr::Kind::Number: return ctx_.realVal(0);
     case Expr::Kind::Add: return delta(e.kids[0], placed, after, before) + delta(e.kids[1], placed, after, before);
     case Expr::Kind::Sub: return delta(e.kids[0], placed, after, before) - delta(e.kids[1], placed, after, before);
     case Expr::Kind::Neg: return -delta(e.kids[0], placed, after, before);
     case Expr::Kind::Count: {
         // A cell guard reads neighbours, so a rewrite changes counts beyond its own cells.
         if (!e.kids.empty()) return number(e, after) - number(e, before);
-        z3::expr d = ctx_.int_val(0);
+        smt::Term d = ctx_.intVal(0);
         for (int k = 0; k < p.size; ++k)
-            d = d + z3::ite(memberPred(after, p.cells[k], e.pred), ctx_.int_val(1), ctx_.int_val(0)) -
-                z3::ite(memberPred(before, p.cells[k], e.pred), ctx_.int_val(1), ctx_.int_val(0));
-        return z3::to_real(d);
+            d = d + smt::ite(memberPred(after, p.cells[k], e.pred), ctx_.intVal(1), ctx_.intVal(0)) -
+                smt::ite(memberPred(before, p.cells[k], e.pred), ctx_.intVal(1), ctx_.intVal(0));
+        return smt::toReal(d);
     }
     case Expr::Kind::Mass: {
-        z3::expr d = ctx_.int_val(0);
+        smt::Term d = ctx_.intVal(0);
         for (int k = 0; k < p.size; ++k) d = d + cellMassUnits(after, p.cells[k]) - cellMassUnits(before, p.cells[k]);
-        return z3::to_real(d) / ctx_.real_val(static_cast<int64_t>(engine_.massDenominator()));
+        return smt::toReal(d) / ctx_.realVal(static_cast<int64_t>(engine_.massDenominator()));
     }
     default: throw InputError("internal: not a number expression");
     }
 }
 
-z3::expr SmtEncoding::lexLessAfter(const std::vector<Expr>& ranking, int placed, const State& after, const State& before) {
-    z3::expr less = ctx_.bool_val(false);
+smt::Term SmtEncoding::lexLessAfter(const std::vector<Expr>& ranking, int placed, const State& after, const State& before) {
+    smt::Term less = ctx_.boolVal(false);
     for (int k = static_cast<int>(ranking.size()) - 1; k >= 0; --k) {
-        z3::expr d = delta(ranking[k], placed, after, before);
+        smt::Term d = delta(ranking[k], placed, after, before);
         less = d < 0 || (d == 0 && less);
     }
     return less;
 }
 
-z3::expr SmtEncoding::keptAfter(const std::vector<Expr>& ranking, int placed, const State& after, const State& before) {
-    z3::expr same = ctx_.bool_val(true);
+smt::Term SmtEncoding::keptAfter(const std::vector<Expr>& ranking, int placed, const State& after, const State& before) {
+    smt::Term same = ctx_.boolVal(true);
     for (const Expr& component : ranking) same = same && delta(component, placed, after, before) == 0;
     return same;
 }
 
-std::vector<CellValue> SmtEncoding::decode(const z3::model& m, const State& s) const {
+std::vector<CellValue> SmtEncoding::decode(const smt::Model& m, const State& s) const {
     std::vector<CellValue> cells;
     for (const auto& row : s.is) {
         CellValue value = 0;
         for (int v = 0; v < alphabet_; ++v)
-            if (m.eval(row[v], true).is_true()) value = static_cast<CellValue>(v);
+            if (m.isTrue(row[v])) value = static_cast<CellValue>(v);
         cells.push_back(value);
     }
     return cells;

@@ -11,7 +11,6 @@
 #include <optional>
 #include <random>
 #include <sstream>
-#include <z3++.h>
 
 using namespace holon;
 using checker::Verdict;
@@ -90,10 +89,10 @@ invariant two: count(D) + count(target) >= 2
     struct Query {
         const rules::Property* property = nullptr;
         bool positive = true;
-        std::unique_ptr<z3::context> ctx = std::make_unique<z3::context>();
+        std::unique_ptr<checker::smt::Context> ctx = std::make_unique<checker::smt::Context>();
         std::unique_ptr<checker::SmtEncoding> enc;
         std::optional<checker::SmtEncoding::State> s;
-        std::unique_ptr<z3::solver> solver;
+        std::unique_ptr<checker::smt::Solver> solver;
     };
     std::vector<Query> queries;
     for (const rules::Property& p : w.model->system().properties)
@@ -102,9 +101,9 @@ invariant two: count(D) + count(target) >= 2
             q.property = &p, q.positive = positive;
             q.enc = std::make_unique<checker::SmtEncoding>(*q.ctx, every);
             q.s = q.enc->state("c");
-            const z3::expr f = q.enc->holds(p.exprs[0], *q.s, positive);
-            q.solver = std::make_unique<z3::solver>(*q.ctx);
-            for (const z3::expr& fact : q.enc->facts()) q.solver->add(fact);
+            const checker::smt::Term f = q.enc->holds(p.exprs[0], *q.s, positive);
+            q.solver = std::make_unique<checker::smt::Solver>(*q.ctx);
+            for (const checker::smt::Term& fact : q.enc->facts()) q.solver->add(fact);
             q.solver->add(positive ? f : !f);
             q.solver->add(q.enc->instantiate().all);
         }
@@ -127,7 +126,7 @@ invariant two: count(D) + count(target) >= 2
             q.solver->push();
             q.solver->add(q.enc->configurationIs(*q.s, cells));
             q.solver->add(q.enc->inputsAre(inputs));
-            CHECK(q.solver->check() == (truth == q.positive ? z3::sat : z3::unsat));
+            CHECK(q.solver->check() == (truth == q.positive ? checker::smt::Result::Sat : checker::smt::Result::Unsat));
             q.solver->pop();
         }
     }
@@ -411,10 +410,10 @@ TEST_CASE("Spacer proves general2's Progress for every reachable state, which no
     REQUIRE(files.size() == 3);
     for (const std::string& f : files) {
         CAPTURE(f);
-        z3::context ctx;
-        z3::solver s(ctx);
-        s.from_file(f.c_str());
-        CHECK(s.check() == z3::unsat);
+        checker::smt::Context ctx;
+        checker::smt::Solver s(ctx);
+        s.addFile(f);
+        CHECK(s.check() == checker::smt::Result::Unsat);
     }
     std::filesystem::remove_all(o.smtOut);
 }
