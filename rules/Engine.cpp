@@ -7,6 +7,8 @@
 
 #include "rules/Engine.h"
 
+#include "rules/Components.h"
+
 #include "rules/Error.h"
 #include "rules/Printer.h"
 
@@ -332,12 +334,7 @@ bool Engine::stillConnected(const LegalBefore& legal, int w, std::uint64_t remov
         else if (!added) return false;
     }
     if (kept) {
-        std::uint64_t reached = kept, frontier = around(kept) & added;
-        while (frontier) {
-            reached |= frontier;
-            frontier = around(frontier) & added & ~reached;
-        }
-        return !(added & ~reached);
+        return !(added & ~reachedWithin(kept, kept | added, [this](std::uint64_t r) { return around(r); }));
     }
     return reconnected(now, (around(removed) & now) | added);
 }
@@ -573,25 +570,9 @@ std::uint64_t Engine::cutCells(std::uint64_t set) const {
 }
 
 bool Engine::connectedCells(std::uint64_t m) const {
-    if (!m) return true;
-    std::uint64_t reached = m & (~m + 1), frontier = reached;
-    if (!shifts_.empty()) {
-        // Grow the reached set a layer at a time; a cell with no neighbour in m fails at once.
-        if ((m & (m - 1)) && (m & ~neighboursOf(m))) return false;
-        while (frontier) {
-            frontier = neighboursOf(frontier) & m & ~reached;
-            reached |= frontier;
-        }
-        return reached == m;
-    }
-    while (frontier) {
-        const int i = std::countr_zero(frontier);
-        frontier &= frontier - 1;
-        const std::uint64_t add = neighbourBits_[i] & m & ~reached;
-        reached |= add;
-        frontier |= add;
-    }
-    return reached == m;
+    // By shifts, a cell with no neighbour in m fails at once.
+    if (!shifts_.empty() && (m & (m - 1)) && (m & ~neighboursOf(m))) return false;
+    return connectedWord(m, [this](std::uint64_t r) { return around(r); });
 }
 
 int Engine::countCells(const Expr& e, const CellValue* cells, bool withCellGuard) const {
@@ -630,21 +611,13 @@ std::vector<int> Engine::failureCells(const Expr& e, const CellValue* cells) con
         if (e.around != -1) break;
         // The parts of the T cells; every part but the largest is cut off.
         const Mask& m = predicateMask(e.pred);
+        const auto member = [&](std::int64_t i) { return test(m, combo_[i], cells[i]); };
         std::vector<int> part(n, -1), sizes;
-        for (int s = 0; s < n; ++s) {
-            if (part[s] >= 0 || !test(m, combo_[s], cells[s])) continue;
-            const int id = static_cast<int>(sizes.size());
-            sizes.push_back(0);
-            std::vector<int> stack{s};
-            part[s] = id;
-            while (!stack.empty()) {
-                const int i = stack.back();
-                stack.pop_back();
-                ++sizes[id];
-                for (int d = 0; d < model_->lattice().degree(); ++d)
-                    if (const int j = region_->neighbour(i, d); j >= 0 && part[j] < 0 && test(m, combo_[j], cells[j])) part[j] = id, stack.push_back(j);
-            }
-        }
+        Flood flood;
+        components(flood, n, verticesWhere(n, member), regionEdges(*region_, member), [&](std::int64_t i, int k) {
+            if (k == static_cast<int>(sizes.size())) sizes.push_back(0);
+            part[i] = k, ++sizes[k];
+        });
         const int largest = static_cast<int>(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
         where(m, [&](int i) { return part[i] != largest; });
         break;
@@ -659,58 +632,22 @@ std::vector<int> Engine::failureCells(const Expr& e, const CellValue* cells) con
 
 bool Engine::reachesAlongAdjacency(const Mask& from, const Mask& to, const CellValue* cells) const {
     // Marks `from` cells outward from the `to` cells, then looks for an unmarked one.
-    thread_local std::vector<std::int32_t> stack;
-    thread_local std::vector<char> found;
-    const int n = region_->size(), degree = model_->lattice().degree();
-    found.assign(n, 0);
-    stack.clear();
-    auto spread = [&](int i) {
-        for (int d = 0; d < degree; ++d) {
-            const int j = region_->neighbour(i, d);
-            if (j >= 0 && !found[j] && test(from, combo_[j], cells[j])) found[j] = 1, stack.push_back(j);
-        }
-    };
+    thread_local Flood flood;
+    const int n = region_->size();
+    const auto edges = regionEdges(*region_, [&](std::int64_t j) { return test(from, combo_[j], cells[j]); });
+    flood.begin(n);
     for (int i = 0; i < n; ++i)
-        if (test(to, combo_[i], cells[i])) spread(i);
-    while (!stack.empty()) {
-        const int i = stack.back();
-        stack.pop_back();
-        spread(i);
-    }
+        if (test(to, combo_[i], cells[i])) edges(i, [&](std::int64_t j) { flood.add(j); });
+    flood.spread(edges);
     for (int i = 0; i < n; ++i)
-        if (!found[i] && test(from, combo_[i], cells[i])) return false;
+        if (!flood.seen(i) && test(from, combo_[i], cells[i])) return false;
     return true;
 }
 
 bool Engine::connected(const Mask& m, const CellValue* cells) const {
-    thread_local std::vector<std::int32_t> stack;
-    thread_local std::vector<std::uint32_t> seen;
-    thread_local std::uint32_t stamp = 0;
-    const int n = region_->size();
-    if (static_cast<int>(seen.size()) < n) seen.assign(n, 0), stamp = 0;
-    if (++stamp == 0) std::fill(seen.begin(), seen.end(), 0), stamp = 1;
-    int total = 0, start = -1;
-    for (int i = 0; i < n; ++i)
-        if (test(m, combo_[i], cells[i])) {
-            ++total;
-            if (start < 0) start = i;
-        }
-    if (total == 0) return true;
-    stack.clear();
-    stack.push_back(start);
-    seen[start] = stamp;
-    int reached = 0;
-    const int degree = model_->lattice().degree();
-    while (!stack.empty()) {
-        const int i = stack.back();
-        stack.pop_back();
-        ++reached;
-        for (int d = 0; d < degree; ++d) {
-            const int j = region_->neighbour(i, d);
-            if (j >= 0 && seen[j] != stamp && test(m, combo_[j], cells[j])) seen[j] = stamp, stack.push_back(j);
-        }
-    }
-    return reached == total;
+    thread_local Flood flood;
+    const auto member = [&](std::int64_t i) { return test(m, combo_[i], cells[i]); };
+    return rules::connected(flood, region_->size(), verticesWhere(region_->size(), member), regionEdges(*region_, member));
 }
 
 bool Engine::legal(const CellValue* cells) const {
