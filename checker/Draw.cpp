@@ -249,7 +249,8 @@ std::string translate(double x, double y) {
 /// Path data of an x of half-width r centred on (cx, cy).
 std::string cross(double cx, double cy, double r) {
     std::ostringstream s;
-    s << "M" << cx - r << "," << cy - r << " L" << cx + r << "," << cy + r << " M" << cx + r << "," << cy - r << " L" << cx - r << "," << cy + r;
+    s << "M" << cx - r << "," << cy - r << " L" << cx + r << "," << cy + r << " M" << cx + r << "," << cy - r
+      << " L" << cx - r << "," << cy + r;
     return s.str();
 }
 
@@ -295,7 +296,8 @@ struct Flow {
         x += w + 14;
     }
     void text(const std::string& s, const rules::SvgAttrs& attrs = {}) {
-        item(6.2 * static_cast<double>(s.size()), [&](double px, double py) { out.text(px, py + 11, s, attrs); });
+        item(6.2 * static_cast<double>(s.size()),
+             [&](double px, double py) { out.text(px, py + 11, s, attrs); });
     }
 };
 
@@ -413,11 +415,13 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
 
     rules::Svg body;
     for (std::size_t l = 0; l < titleLines.size(); ++l)
-        body.text(10, 22 + 18 * static_cast<double>(l), titleLines[l], {{"font-size", 14}, {"font-weight", "bold"}});
+        body.text(10, 22 + 18 * static_cast<double>(l), titleLines[l],
+                  {{"font-size", 14}, {"font-weight", "bold"}});
     for (int k = 0; k < steps; ++k) {
         const double ox = 10 + (k % perRow) * frameW, oy = titleH + 12 + (k / perRow) * frameH;
         body.open("g", {{"transform", translate(ox, oy)}});
-        for (std::size_t l = 0; l < frameTitles[k].size(); ++l) body.text(0, 13.0 * static_cast<double>(l), frameTitles[k][l]);
+        for (std::size_t l = 0; l < frameTitles[k].size(); ++l)
+            body.text(0, 13.0 * static_cast<double>(l), frameTitles[k][l]);
         body.open("g", {{"transform", translate(0, 13.0 * static_cast<double>(frameTitleLines - 1) + 8)}});
         const auto changed = changedCells(t, k);
         std::vector<int> context;
@@ -449,7 +453,8 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
             for (int i = 0; i < r.size(); ++i) {
                 if (!((e.inputs()[i] >> n) & 1u)) continue;
                 if (!t.steps[k].cells[i])
-                    body.polygon(corners(i, hex ? 0.5 : 1), {{"fill", "url(#hatch" + std::to_string(n) + ")"}, {"stroke", "none"}});
+                    body.polygon(corners(i, hex ? 0.5 : 1),
+                                 {{"fill", "url(#hatch" + std::to_string(n) + ")"}, {"stroke", "none"}});
                 const auto poly = corners(i, inset);
                 for (int d = 0; d < lattice.degree(); ++d) {
                     if (lattice.direction(d).z != 0) continue;
@@ -461,14 +466,16 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
                     // A white casing under the line keeps it visible on a dark fill.
                     for (const auto& [pen, penWidth] :
                          {std::pair<const char*, double>{"#ffffff", 3.6}, {kInputColour[n % 8], 2.0}})
-                        body.line(p.first, p.second, q.first, q.second, {{"stroke", pen}, {"stroke-width", penWidth}, {"stroke-linecap", "round"}});
+                        body.line(p.first, p.second, q.first, q.second,
+                                  {{"stroke", pen}, {"stroke-width", penWidth}, {"stroke-linecap", "round"}});
                 }
             }
         }
         if (k + 1 == steps)
             for (int i : t.marked) {
                 auto [cx, cy] = centre(r.cell(i));
-                body.path(cross(cx, cy, 8), {{"stroke", "#d62728"}, {"stroke-width", 3}, {"stroke-opacity", 0.75}});
+                body.path(cross(cx, cy, 8),
+                          {{"stroke", "#d62728"}, {"stroke-width", 3}, {"stroke-opacity", 0.75}});
             }
         // Pointers above the outlines.
         for (int i = 0; i < r.size(); ++i) {
@@ -513,8 +520,12 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
             const std::string text = cellText(system, fields);
             if (!text.empty())
                 body.text(cx, cy + 3.5, text,
-                          {{"text-anchor", "middle"}, {"font-size", 10}, {"fill", light(colour) ? "#111" : "#fff"}, {"stroke", colour},
-                           {"stroke-width", 2.5}, {"paint-order", "stroke"}});
+                          {{"text-anchor", "middle"},
+                           {"font-size", 10},
+                           {"fill", light(colour) ? "#111" : "#fff"},
+                           {"stroke", colour},
+                           {"stroke-width", 2.5},
+                           {"paint-order", "stroke"}});
         }
         if (slices)
             for (int z = 0; z < ext.z; ++z)
@@ -527,7 +538,8 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
     const double legendY = titleH + 12 + rows * frameH;
     Flow flow{legend, 10, width - 20, 10, legendY};
     auto swatch = [&](rules::SvgAttrs attrs, const std::string& label) {
-        flow.item(18 + 6.2 * static_cast<double>(label.size()), [&](double x, double y) { legend.legend(x, y, label, attrs); });
+        flow.item(18 + 6.2 * static_cast<double>(label.size()),
+                  [&](double x, double y) { legend.legend(x, y, label, attrs); });
     };
     auto penned = [](rules::SvgAttrs attrs, const rules::SvgAttrs& pen) {
         attrs.insert(attrs.end(), pen.begin(), pen.end());
@@ -537,7 +549,8 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
     swatch(penned({{"fill", "white"}}, kContextPen), "context / blocking");
     if (!t.marked.empty())
         flow.item(80, [&](double x, double y) {
-            legend.path(cross(x + 7, y + 7, 6), {{"stroke", "#d62728"}, {"stroke-width", 3}}).text(x + 18, y + 11, "marked");
+            legend.path(cross(x + 7, y + 7, 6), {{"stroke", "#d62728"}, {"stroke-width", 3}})
+                .text(x + 18, y + 11, "marked");
         });
     flow.x = flow.x0, flow.y += 20;
     for (std::size_t f = 0; f < system.fields.size(); ++f) {
@@ -570,9 +583,7 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
         case FieldKind::Dir: {
             const std::size_t j =
                 std::find(dirFields.begin(), dirFields.end(), static_cast<int>(f)) - dirFields.begin();
-            flow.item(36, [&](double x, double y) {
-                legend.line(x, y + 7, x + 30, y + 7, pointerPen(j));
-            });
+            flow.item(36, [&](double x, double y) { legend.line(x, y + 7, x + 30, y + 7, pointerPen(j)); });
             std::string list;
             for (int x : values)
                 list += (list.empty() ? "" : ", ") +
@@ -588,21 +599,35 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
         for (std::uint32_t bits : e.inputs()) any = any || ((bits >> n) & 1u);
         const std::string label = "input " + inputs[n] + (any ? "" : " (holds in no cell)");
         flow.item(18 + 6.2 * static_cast<double>(label.size()), [&](double x, double y) {
-            legend.legend(x, y, label, {{"fill", "url(#hatch" + std::to_string(n) + ")"}, {"stroke", kInputColour[n % 8]}, {"stroke-width", 2}});
+            legend.legend(x, y, label,
+                          {{"fill", "url(#hatch" + std::to_string(n) + ")"},
+                           {"stroke", kInputColour[n % 8]},
+                           {"stroke-width", 2}});
         });
     }
     const double height = flow.y + (inputs.empty() ? 0 : 20) + 10;
 
     rules::Svg defs;
     for (int j = 0; j < 4; ++j) {
-        defs.open("marker", {{"id", "head" + std::to_string(j)}, {"viewBox", "0 0 8 8"}, {"refX", 7}, {"refY", 4}, {"markerWidth", 7},
-                             {"markerHeight", 7}, {"markerUnits", "userSpaceOnUse"}, {"orient", "auto"}});
+        defs.open("marker", {{"id", "head" + std::to_string(j)},
+                             {"viewBox", "0 0 8 8"},
+                             {"refX", 7},
+                             {"refY", 4},
+                             {"markerWidth", 7},
+                             {"markerHeight", 7},
+                             {"markerUnits", "userSpaceOnUse"},
+                             {"orient", "auto"}});
         defs.path("M0,0 L8,4 L0,8 z", {{"fill", kPointerColour[j]}}).close("marker");
     }
     for (std::size_t n = 0; n < inputs.size(); ++n) {
-        defs.open("pattern", {{"id", "hatch" + std::to_string(n)}, {"patternUnits", "userSpaceOnUse"}, {"width", 6}, {"height", 6},
+        defs.open("pattern", {{"id", "hatch" + std::to_string(n)},
+                              {"patternUnits", "userSpaceOnUse"},
+                              {"width", 6},
+                              {"height", 6},
                               {"patternTransform", std::string("rotate(") + (n % 2 ? "-45" : "45") + ")"}});
-        defs.line(0, 0, 0, 6, {{"stroke", kInputColour[n % 8]}, {"stroke-width", 1.5}, {"stroke-opacity", 0.45}}).close("pattern");
+        defs.line(0, 0, 0, 6,
+                  {{"stroke", kInputColour[n % 8]}, {"stroke-width", 1.5}, {"stroke-opacity", 0.45}})
+            .close("pattern");
     }
     return body.document(width, height, {{"font-family", "sans-serif"}, {"font-size", 11}}, &defs);
 }
