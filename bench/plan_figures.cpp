@@ -8,6 +8,7 @@
 // Usage: plan_figures [OUT] [--max-k K] [--max-k-random K] [--max-k-gradient K] [--max-k-optimal K] [--seed N]
 
 #include "PlanSupport.h"
+#include "rules/Svg.h"
 
 #include <cmath>
 #include <cstdio>
@@ -42,33 +43,30 @@ std::string plot(const std::string& title, const std::string& xLabel, const std:
     const double W = 820, H = 400, L = 70, B = 50, T = 30;
     auto px = [&](double x) { return L + (tx(x) - x0) / (x1 - x0) * (W - L - 250); };
     auto py = [&](double y) { return T + (1 - (ty(y) - y0) / (y1 - y0)) * (H - T - B); };
-    std::ostringstream svg;
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\" font-family=\"sans-serif\" font-size=\"11\">\n"
-        << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << L << "\" y=\"18\" font-size=\"13\">" << title << "</text>\n";
+    holon::rules::Svg svg;
+    svg.text(L, 18, title, {{"font-size", 13}});
     for (double e = x0; e <= x1 + 1e-9; ++e) {
         const double x = L + (e - x0) / (x1 - x0) * (W - L - 250);
-        svg << "<line x1=\"" << x << "\" y1=\"" << T << "\" x2=\"" << x << "\" y2=\"" << H - B << "\" stroke=\"#ddd\"/><text x=\"" << x - 10 << "\" y=\"" << H - B + 15
-            << "\">1e" << e << "</text>\n";
+        std::ostringstream label;
+        label << "1e" << e;
+        svg.line(x, T, x, H - B, {{"stroke", "#ddd"}}).text(x - 10, H - B + 15, label.str());
     }
     const double yStep = logY ? 1 : (y1 - y0) / 5;
     for (double e = y0; e <= y1 + 1e-9; e += yStep) {
         const double y = T + (1 - (e - y0) / (y1 - y0)) * (H - T - B);
-        svg << "<line x1=\"" << L << "\" y1=\"" << y << "\" x2=\"" << W - 250 << "\" y2=\"" << y << "\" stroke=\"#ddd\"/><text x=\"" << 8 << "\" y=\"" << y + 4
-            << "\">" << (logY ? "1e" + std::to_string(int(e)) : std::to_string(int(std::round(e)))) << "</text>\n";
+        svg.line(L, y, W - 250, y, {{"stroke", "#ddd"}}).text(8, y + 4, logY ? "1e" + std::to_string(int(e)) : std::to_string(int(std::round(e))));
     }
-    svg << "<text x=\"" << (W - 250) / 2 << "\" y=\"" << H - 12 << "\">" << xLabel << "</text><text x=\"8\" y=\"" << T - 8 << "\">" << yLabel << "</text>\n";
+    svg.text((W - 250) / 2, H - 12, xLabel).text(8, T - 8, yLabel);
     int row = 0;
     for (const Series& s : series) {
-        svg << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"2\" points=\"";
-        for (auto [x, y] : s.points) svg << px(x) << ',' << py(y) << ' ';
-        svg << "\"/>\n";
-        for (auto [x, y] : s.points) svg << "<circle cx=\"" << px(x) << "\" cy=\"" << py(y) << "\" r=\"2.5\" fill=\"" << s.colour << "\"/>\n";
-        svg << "<rect x=\"" << W - 240 << "\" y=\"" << T + row * 18 << "\" width=\"12\" height=\"4\" fill=\"" << s.colour << "\"/><text x=\"" << W - 224 << "\" y=\""
-            << T + row * 18 + 6 << "\">" << s.name << "</text>\n";
+        std::vector<std::pair<double, double>> points;
+        for (auto [x, y] : s.points) points.push_back({px(x), py(y)});
+        svg.polyline(points, {{"fill", "none"}, {"stroke", s.colour}, {"stroke-width", 2}});
+        for (auto [x, y] : points) svg.circle(x, y, 2.5, {{"fill", s.colour}});
+        svg.rect(W - 240, T + row * 18, 12, 4, {{"fill", s.colour}}).text(W - 224, T + row * 18 + 6, s.name);
         ++row;
     }
-    svg << "</svg>\n";
-    return svg.str();
+    return svg.document(W, H, {{"font-family", "sans-serif"}, {"font-size", 11}});
 }
 
 }  // namespace

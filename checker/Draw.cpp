@@ -7,6 +7,8 @@
 
 #include "checker/Draw.h"
 
+#include "rules/Svg.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -77,23 +79,6 @@ std::vector<std::string> wrap(const std::string& text, std::size_t width) {
     }
     if (!line.empty() || lines.empty()) lines.push_back(line);
     return lines;
-}
-
-std::string xml(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '&')
-            out += "&amp;";
-        else if (c == '<')
-            out += "&lt;";
-        else if (c == '>')
-            out += "&gt;";
-        else if (c == '"')
-            out += "&quot;";
-        else
-            out += c;
-    }
-    return out;
 }
 
 } // namespace
@@ -242,6 +227,32 @@ const char* const kPointerColour[] = {"#111111", "#6a1b9a", "#00695c", "#5d4037"
 const char* const kPointerDash[] = {"", "5,2", "2,2", "6,2,2,2"};
 const char* const kInputColour[] = {"#1b5e20", "#0d47a1", "#880e4f", "#e65100",
                                     "#006064", "#4a148c", "#827717", "#263238"};
+// The outlines of changed, context and other cells.
+const rules::SvgAttrs kChangedPen{{"stroke", "#d62728"}, {"stroke-width", 3}};
+const rules::SvgAttrs kContextPen{{"stroke", "#ff7f0e"}, {"stroke-width", 2.5}, {"stroke-dasharray", "4,2"}};
+const rules::SvgAttrs kCellPen{{"stroke", "#999"}, {"stroke-width", 0.8}};
+
+/// The pen of pointer field j's arrows.
+rules::SvgAttrs pointerPen(std::size_t j) {
+    rules::SvgAttrs pen{{"stroke", kPointerColour[j % 4]}, {"stroke-width", 1.8}};
+    if (*kPointerDash[j % 4]) pen.push_back({"stroke-dasharray", kPointerDash[j % 4]});
+    pen.push_back({"marker-end", "url(#head" + std::to_string(j % 4) + ")"});
+    return pen;
+}
+
+std::string translate(double x, double y) {
+    std::ostringstream s;
+    s << "translate(" << x << "," << y << ")";
+    return s.str();
+}
+
+/// Path data of an x of half-width r centred on (cx, cy).
+std::string cross(double cx, double cy, double r) {
+    std::ostringstream s;
+    s << "M" << cx - r << "," << cy - r << " L" << cx + r << "," << cy + r << " M" << cx + r << "," << cy - r
+      << " L" << cx - r << "," << cy + r;
+    return s.str();
+}
 
 std::uint32_t fnv(const std::string& s) {
     std::uint32_t h = 2166136261u;
@@ -277,18 +288,16 @@ std::string cellText(const rules::System& s, const std::vector<int>& fields) {
 
 /// A left-to-right flow of legend items that wraps at the picture's width.
 struct Flow {
-    std::ostringstream& out;
+    rules::Svg& out;
     double x0, width, x, y;
     void item(double w, const std::function<void(double x, double y)>& draw) {
         if (x > x0 && x + w > x0 + width) x = x0, y += 20;
         draw(x, y);
         x += w + 14;
     }
-    void text(const std::string& s, const std::string& attrs = "") {
-        item(6.2 * static_cast<double>(s.size()), [&](double px, double py) {
-            out << "<text x=\"" << px << "\" y=\"" << py + 11 << "\"" << attrs << ">" << xml(s)
-                << "</text>\n";
-        });
+    void text(const std::string& s, const rules::SvgAttrs& attrs = {}) {
+        item(6.2 * static_cast<double>(s.size()),
+             [&](double px, double py) { out.text(px, py + 11, s, attrs); });
     }
 };
 
@@ -404,14 +413,16 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
     const double titleH = 14 + 18.0 * static_cast<double>(titleLines.size());
     const double frameH = 13.0 * static_cast<double>(frameTitleLines) + 8 + regionH + 18;
 
-    std::ostringstream body;
+    rules::Svg body;
+    for (std::size_t l = 0; l < titleLines.size(); ++l)
+        body.text(10, 22 + 18 * static_cast<double>(l), titleLines[l],
+                  {{"font-size", 14}, {"font-weight", "bold"}});
     for (int k = 0; k < steps; ++k) {
         const double ox = 10 + (k % perRow) * frameW, oy = titleH + 12 + (k / perRow) * frameH;
-        body << "<g transform=\"translate(" << ox << "," << oy << ")\">\n";
+        body.open("g", {{"transform", translate(ox, oy)}});
         for (std::size_t l = 0; l < frameTitles[k].size(); ++l)
-            body << "<text x=\"0\" y=\"" << 13 * l << "\">" << xml(frameTitles[k][l]) << "</text>\n";
-        body << "<g transform=\"translate(0," << 13.0 * static_cast<double>(frameTitleLines - 1) + 8
-             << ")\">\n";
+            body.text(0, 13.0 * static_cast<double>(l), frameTitles[k][l]);
+        body.open("g", {{"transform", translate(0, 13.0 * static_cast<double>(frameTitleLines - 1) + 8)}});
         const auto changed = changedCells(t, k);
         std::vector<int> context;
         if (t.steps[k].placed >= 0) {
@@ -420,11 +431,6 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
                 if (std::find(changed.begin(), changed.end(), p.cells[c]) == changed.end())
                     context.push_back(p.cells[c]);
         }
-        auto polygon = [&](const std::vector<std::pair<double, double>>& poly) {
-            std::ostringstream pts;
-            for (const auto& [x, y] : poly) pts << x << "," << y << " ";
-            return "<polygon points=\"" + pts.str() + "\"";
-        };
         // Cells: fill by the first enum field, the text of every field, the outline for changed and context
         // cells.
         for (int i = 0; i < r.size(); ++i) {
@@ -436,11 +442,10 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
                 colour = fill >= 0 && alphabet.fields(v)[fill] != rules::kAbsent
                              ? valueColour(system.fields[fill], alphabet.fields(v)[fill])
                              : "#8d8d8d";
-            const std::string stroke =
-                isChanged   ? "stroke=\"#d62728\" stroke-width=\"3\""
-                : isContext ? "stroke=\"#ff7f0e\" stroke-width=\"2.5\" stroke-dasharray=\"4,2\""
-                            : "stroke=\"#999\" stroke-width=\"0.8\"";
-            body << polygon(corners(i, hex ? 0.5 : 1)) << " fill=\"" << colour << "\" " << stroke << "/>\n";
+            rules::SvgAttrs attrs{{"fill", colour}};
+            const rules::SvgAttrs& stroke = isChanged ? kChangedPen : isContext ? kContextPen : kCellPen;
+            attrs.insert(attrs.end(), stroke.begin(), stroke.end());
+            body.polygon(corners(i, hex ? 0.5 : 1), attrs);
         }
         // Inputs: each input's cells outlined (inset, one colour each), its empty cells hatched.
         for (std::size_t n = 0; n < inputs.size(); ++n) {
@@ -448,8 +453,8 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
             for (int i = 0; i < r.size(); ++i) {
                 if (!((e.inputs()[i] >> n) & 1u)) continue;
                 if (!t.steps[k].cells[i])
-                    body << polygon(corners(i, hex ? 0.5 : 1)) << " fill=\"url(#hatch" << n
-                         << ")\" stroke=\"none\"/>\n";
+                    body.polygon(corners(i, hex ? 0.5 : 1),
+                                 {{"fill", "url(#hatch" + std::to_string(n) + ")"}, {"stroke", "none"}});
                 const auto poly = corners(i, inset);
                 for (int d = 0; d < lattice.degree(); ++d) {
                     if (lattice.direction(d).z != 0) continue;
@@ -461,18 +466,16 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
                     // A white casing under the line keeps it visible on a dark fill.
                     for (const auto& [pen, penWidth] :
                          {std::pair<const char*, double>{"#ffffff", 3.6}, {kInputColour[n % 8], 2.0}})
-                        body << "<line x1=\"" << p.first << "\" y1=\"" << p.second << "\" x2=\"" << q.first
-                             << "\" y2=\"" << q.second << "\" stroke=\"" << pen << "\" stroke-width=\""
-                             << penWidth << "\" stroke-linecap=\"round\"/>\n";
+                        body.line(p.first, p.second, q.first, q.second,
+                                  {{"stroke", pen}, {"stroke-width", penWidth}, {"stroke-linecap", "round"}});
                 }
             }
         }
         if (k + 1 == steps)
             for (int i : t.marked) {
                 auto [cx, cy] = centre(r.cell(i));
-                body << "<path d=\"M" << cx - 8 << "," << cy - 8 << " L" << cx + 8 << "," << cy + 8 << " M"
-                     << cx + 8 << "," << cy - 8 << " L" << cx - 8 << "," << cy + 8
-                     << "\" stroke=\"#d62728\" stroke-width=\"3\" stroke-opacity=\"0.75\"/>\n";
+                body.path(cross(cx, cy, 8),
+                          {{"stroke", "#d62728"}, {"stroke-width", 3}, {"stroke-opacity", 0.75}});
             }
         // Pointers above the outlines.
         for (int i = 0; i < r.size(); ++i) {
@@ -488,15 +491,11 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
                 if (dv.z != 0) {
                     // Out of the slice: a dot in a circle toward +z, a cross toward -z (seen from -z).
                     const double px = cx + s * 0.3, py = cy - s * 0.3 + 7 * static_cast<double>(j), rad = 3.5;
-                    body << "<circle cx=\"" << px << "\" cy=\"" << py << "\" r=\"" << rad
-                         << "\" fill=\"white\" stroke=\"" << pen << "\" stroke-width=\"1.2\"/>\n";
+                    body.circle(px, py, rad, {{"fill", "white"}, {"stroke", pen}, {"stroke-width", 1.2}});
                     if (dv.z > 0)
-                        body << "<circle cx=\"" << px << "\" cy=\"" << py << "\" r=\"1.2\" fill=\"" << pen
-                             << "\"/>\n";
+                        body.circle(px, py, 1.2, {{"fill", pen}});
                     else
-                        body << "<path d=\"M" << px - 2.2 << "," << py - 2.2 << " L" << px + 2.2 << ","
-                             << py + 2.2 << " M" << px + 2.2 << "," << py - 2.2 << " L" << px - 2.2 << ","
-                             << py + 2.2 << "\" stroke=\"" << pen << "\" stroke-width=\"1.2\"/>\n";
+                        body.path(cross(px, py, 2.2), {{"stroke", pen}, {"stroke-width", 1.2}});
                     continue;
                 }
                 auto [tx, ty] = centre(r.cell(i) + dv);
@@ -506,12 +505,7 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
                 const double shift =
                     (static_cast<double>(j) - (static_cast<double>(dirFields.size()) - 1) / 2) * 5 - 2.5;
                 const double nx = -dy / len * shift, ny = dx / len * shift;
-                body << "<line x1=\"" << cx + nx << "\" y1=\"" << cy + ny << "\" x2=\"" << cx + dx * 0.6 + nx
-                     << "\" y2=\"" << cy + dy * 0.6 + ny << "\" stroke=\"" << pen << "\" stroke-width=\"1.8\""
-                     << (*kPointerDash[j % 4]
-                             ? std::string(" stroke-dasharray=\"") + kPointerDash[j % 4] + "\""
-                             : "")
-                     << " marker-end=\"url(#head" << j % 4 << ")\"/>\n";
+                body.line(cx + nx, cy + ny, cx + dx * 0.6 + nx, cy + dy * 0.6 + ny, pointerPen(j));
             }
         }
         // Texts last, with a halo of the fill colour, so an arrow under a text leaves it readable.
@@ -525,37 +519,38 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
                                            : "#8d8d8d";
             const std::string text = cellText(system, fields);
             if (!text.empty())
-                body << "<text x=\"" << cx << "\" y=\"" << cy + 3.5
-                     << "\" text-anchor=\"middle\" font-size=\"10\" fill=\""
-                     << (light(colour) ? "#111" : "#fff") << "\" stroke=\"" << colour
-                     << "\" stroke-width=\"2.5\" paint-order=\"stroke\">" << xml(text) << "</text>\n";
+                body.text(cx, cy + 3.5, text,
+                          {{"text-anchor", "middle"},
+                           {"font-size", 10},
+                           {"fill", light(colour) ? "#111" : "#fff"},
+                           {"stroke", colour},
+                           {"stroke-width", 2.5},
+                           {"paint-order", "stroke"}});
         }
         if (slices)
             for (int z = 0; z < ext.z; ++z)
-                body << "<text x=\"" << z * (ext.x + 1) * s << "\" y=\"" << ext.y * s + 13
-                     << "\">z=" << lo.z + z << "</text>\n";
-        body << "</g></g>\n";
+                body.text(z * (ext.x + 1) * s, ext.y * s + 13, "z=" + std::to_string(lo.z + z));
+        body.close("g").close("g");
     }
 
     // The legend: what the outlines mean, every value shown by field, every pointer field and input.
-    std::ostringstream legend;
+    rules::Svg& legend = body;
     const double legendY = titleH + 12 + rows * frameH;
     Flow flow{legend, 10, width - 20, 10, legendY};
-    auto swatch = [&](const std::string& attrs, const std::string& label) {
-        flow.item(18 + 6.2 * static_cast<double>(label.size()), [&](double x, double y) {
-            legend << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"14\" height=\"14\" " << attrs
-                   << "/><text x=\"" << x + 18 << "\" y=\"" << y + 11 << "\">" << xml(label) << "</text>\n";
-        });
+    auto swatch = [&](rules::SvgAttrs attrs, const std::string& label) {
+        flow.item(18 + 6.2 * static_cast<double>(label.size()),
+                  [&](double x, double y) { legend.legend(x, y, label, attrs); });
     };
-    swatch("fill=\"white\" stroke=\"#d62728\" stroke-width=\"3\"", "changed");
-    swatch("fill=\"white\" stroke=\"#ff7f0e\" stroke-width=\"2.5\" stroke-dasharray=\"4,2\"",
-           "context / blocking");
+    auto penned = [](rules::SvgAttrs attrs, const rules::SvgAttrs& pen) {
+        attrs.insert(attrs.end(), pen.begin(), pen.end());
+        return attrs;
+    };
+    swatch(penned({{"fill", "white"}}, kChangedPen), "changed");
+    swatch(penned({{"fill", "white"}}, kContextPen), "context / blocking");
     if (!t.marked.empty())
         flow.item(80, [&](double x, double y) {
-            legend << "<path d=\"M" << x + 1 << "," << y + 1 << " L" << x + 13 << "," << y + 13 << " M"
-                   << x + 13 << "," << y + 1 << " L" << x + 1 << "," << y + 13
-                   << "\" stroke=\"#d62728\" stroke-width=\"3\"/><text x=\"" << x + 18 << "\" y=\"" << y + 11
-                   << "\">marked</text>\n";
+            legend.path(cross(x + 7, y + 7, 6), {{"stroke", "#d62728"}, {"stroke-width", 3}})
+                .text(x + 18, y + 11, "marked");
         });
     flow.x = flow.x0, flow.y += 20;
     for (std::size_t f = 0; f < system.fields.size(); ++f) {
@@ -567,11 +562,11 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
         switch (field.kind) {
         case FieldKind::Enum: {
             flow.text(field.name + (static_cast<int>(f) == fill ? " (fill, text):" : " (text):"),
-                      " font-weight=\"bold\"");
+                      {{"font-weight", "bold"}});
             for (int x : values) {
                 if (static_cast<int>(f) == fill) {
                     const std::string c = valueColour(field, x);
-                    swatch("fill=\"" + c + "\"", field.values[x]);
+                    swatch({{"fill", c}}, field.values[x]);
                 } else {
                     flow.text(field.values[x]);
                 }
@@ -581,21 +576,14 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
         case FieldKind::Int: {
             std::string list;
             for (int x : values) list += (list.empty() ? "" : ", ") + std::to_string(x);
-            flow.text(field.name + " (text):", " font-weight=\"bold\"");
+            flow.text(field.name + " (text):", {{"font-weight", "bold"}});
             flow.text(list);
             break;
         }
         case FieldKind::Dir: {
             const std::size_t j =
                 std::find(dirFields.begin(), dirFields.end(), static_cast<int>(f)) - dirFields.begin();
-            flow.item(36, [&](double x, double y) {
-                legend << "<line x1=\"" << x << "\" y1=\"" << y + 7 << "\" x2=\"" << x + 30 << "\" y2=\""
-                       << y + 7 << "\" stroke=\"" << kPointerColour[j % 4] << "\" stroke-width=\"1.8\""
-                       << (*kPointerDash[j % 4]
-                               ? std::string(" stroke-dasharray=\"") + kPointerDash[j % 4] + "\""
-                               : "")
-                       << " marker-end=\"url(#head" << j % 4 << ")\"/>\n";
-            });
+            flow.item(36, [&](double x, double y) { legend.line(x, y + 7, x + 30, y + 7, pointerPen(j)); });
             std::string list;
             for (int x : values)
                 list += (list.empty() ? "" : ", ") +
@@ -611,32 +599,37 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
         for (std::uint32_t bits : e.inputs()) any = any || ((bits >> n) & 1u);
         const std::string label = "input " + inputs[n] + (any ? "" : " (holds in no cell)");
         flow.item(18 + 6.2 * static_cast<double>(label.size()), [&](double x, double y) {
-            legend << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"14\" height=\"14\" fill=\"url(#hatch"
-                   << n << ")\" stroke=\"" << kInputColour[n % 8] << "\" stroke-width=\"2\"/><text x=\""
-                   << x + 18 << "\" y=\"" << y + 11 << "\">" << xml(label) << "</text>\n";
+            legend.legend(x, y, label,
+                          {{"fill", "url(#hatch" + std::to_string(n) + ")"},
+                           {"stroke", kInputColour[n % 8]},
+                           {"stroke-width", 2}});
         });
     }
     const double height = flow.y + (inputs.empty() ? 0 : 20) + 10;
 
-    std::ostringstream out;
-    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-        << "\" font-family=\"sans-serif\" font-size=\"11\">\n<defs>\n";
-    for (int j = 0; j < 4; ++j)
-        out << "<marker id=\"head" << j
-            << "\" viewBox=\"0 0 8 8\" refX=\"7\" refY=\"4\" markerWidth=\"7\" markerHeight=\"7\" "
-               "markerUnits=\"userSpaceOnUse\" orient=\"auto\">"
-            << "<path d=\"M0,0 L8,4 L0,8 z\" fill=\"" << kPointerColour[j] << "\"/></marker>\n";
-    for (std::size_t n = 0; n < inputs.size(); ++n)
-        out << "<pattern id=\"hatch" << n
-            << "\" patternUnits=\"userSpaceOnUse\" width=\"6\" height=\"6\" patternTransform=\"rotate("
-            << (n % 2 ? -45 : 45) << ")\"><line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"6\" stroke=\""
-            << kInputColour[n % 8] << "\" stroke-width=\"1.5\" stroke-opacity=\"0.45\"/></pattern>\n";
-    out << "</defs>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    for (std::size_t l = 0; l < titleLines.size(); ++l)
-        out << "<text x=\"10\" y=\"" << 22 + 18 * l << "\" font-size=\"14\" font-weight=\"bold\">"
-            << xml(titleLines[l]) << "</text>\n";
-    out << body.str() << legend.str() << "</svg>\n";
-    return out.str();
+    rules::Svg defs;
+    for (int j = 0; j < 4; ++j) {
+        defs.open("marker", {{"id", "head" + std::to_string(j)},
+                             {"viewBox", "0 0 8 8"},
+                             {"refX", 7},
+                             {"refY", 4},
+                             {"markerWidth", 7},
+                             {"markerHeight", 7},
+                             {"markerUnits", "userSpaceOnUse"},
+                             {"orient", "auto"}});
+        defs.path("M0,0 L8,4 L0,8 z", {{"fill", kPointerColour[j]}}).close("marker");
+    }
+    for (std::size_t n = 0; n < inputs.size(); ++n) {
+        defs.open("pattern", {{"id", "hatch" + std::to_string(n)},
+                              {"patternUnits", "userSpaceOnUse"},
+                              {"width", 6},
+                              {"height", 6},
+                              {"patternTransform", std::string("rotate(") + (n % 2 ? "-45" : "45") + ")"}});
+        defs.line(0, 0, 0, 6,
+                  {{"stroke", kInputColour[n % 8]}, {"stroke-width", 1.5}, {"stroke-opacity", 0.45}})
+            .close("pattern");
+    }
+    return body.document(width, height, {{"font-family", "sans-serif"}, {"font-size", 11}}, &defs);
 }
 
 } // namespace holon::checker

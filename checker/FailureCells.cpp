@@ -4,6 +4,8 @@
 
 #include "checker/FailureCells.h"
 
+#include "rules/Components.h"
+
 #include <algorithm>
 
 namespace holon::checker {
@@ -34,21 +36,13 @@ void collect(const rules::Engine& engine, const Expr& e, const rules::CellValue*
     case Expr::Kind::Connected: {
         if (e.around != -1) break;
         // The parts of the T cells; every part but the largest is cut off.
+        const auto member = [&](std::int64_t i) { return engine.cellMatches(e.pred, static_cast<int>(i), cells[i]); };
         std::vector<int> part(n, -1), sizes;
-        for (int s = 0; s < n; ++s) {
-            if (part[s] >= 0 || !engine.cellMatches(e.pred, s, cells[s])) continue;
-            const int id = static_cast<int>(sizes.size());
-            sizes.push_back(0);
-            std::vector<int> stack{s};
-            part[s] = id;
-            while (!stack.empty()) {
-                const int i = stack.back();
-                stack.pop_back();
-                ++sizes[id];
-                for (int d = 0; d < region.lattice().degree(); ++d)
-                    if (const int j = region.neighbour(i, d); j >= 0 && part[j] < 0 && engine.cellMatches(e.pred, j, cells[j])) part[j] = id, stack.push_back(j);
-            }
-        }
+        rules::Flood flood;
+        rules::components(flood, n, rules::verticesWhere(n, member), rules::regionEdges(region, member), [&](std::int64_t i, int k) {
+            if (k == static_cast<int>(sizes.size())) sizes.push_back(0);
+            part[i] = k, ++sizes[k];
+        });
         const int largest = static_cast<int>(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
         where(e.pred, [&](int i) { return part[i] != largest; });
         break;

@@ -9,6 +9,7 @@
 #include "rules/Printer.h"
 
 #include "rules/ConfigIo.h"
+#include "rules/ItfWriter.h"
 
 #include <algorithm>
 
@@ -39,26 +40,19 @@ Trace traceAlong(const Explorer& ex, const std::vector<StateId>& states) {
     return t;
 }
 
-namespace {
-
-nlohmann::json position(const rules::Region& region, int cell) { return rules::pointJson(region.lattice(), region.cell(cell)); }
-
-}  // namespace
-
 nlohmann::json toItf(const Trace& trace, const rules::Engine& engine, const std::string& source) {
     const rules::Region& region = engine.region();
     const rules::Model& model = engine.model();
     const rules::System& system = model.system();
-    // Inputs are constant along a trace; ITF wants every variable in every state, so each state
-    // carries them: {"target": {"#set": [{"#tup": [x, y]}, ...]}}.
+    rules::ItfWriter itf(model, {source, system.name, region.spec(), trace.property, trace.description}, !system.inputs.empty());
+    // Inputs are constant along a trace: {"target": {"#set": [{"#tup": [x, y]}, ...]}}.
     nlohmann::json inputs = nlohmann::json::object();
     for (std::size_t k = 0; k < system.inputs.size(); ++k) {
         nlohmann::json cells = nlohmann::json::array();
         for (int i = 0; i < region.size(); ++i)
-            if ((engine.inputs()[i] >> k) & 1u) cells.push_back({{"#tup", position(region, i)}});
+            if ((engine.inputs()[i] >> k) & 1u) cells.push_back(itf.tuple(region.cell(i)));
         inputs[system.inputs[k]] = {{"#set", cells}};
     }
-    nlohmann::json states = nlohmann::json::array();
     for (std::size_t k = 0; k < trace.steps.size(); ++k) {
         const auto& step = trace.steps[k];
         nlohmann::json meta{{"index", k}};
@@ -66,30 +60,18 @@ nlohmann::json toItf(const Trace& trace, const rules::Engine& engine, const std:
             const auto& p = engine.instances()[step.placed];
             meta["rule"] = model.rules()[p.rule].name;
             nlohmann::json cells = nlohmann::json::array();
-            for (int c = 0; c < p.size; ++c) cells.push_back(position(region, p.cells[c]));
+            for (int c = 0; c < p.size; ++c) cells.push_back(rules::pointJson(region.lattice(), region.cell(p.cells[c])));
             meta["cells"] = cells;
         }
-        nlohmann::json map = nlohmann::json::array();
-        for (int i = 0; i < region.size(); ++i) {
-            if (!step.cells[i]) continue;
-            map.push_back({{{"#tup", position(region, i)}}, rules::stateFields(model, step.cells[i])});
-        }
-        nlohmann::json state{{"#meta", meta}, {"cells", {{"#map", map}}}};
-        if (!system.inputs.empty()) state["inputs"] = inputs;
-        states.push_back(state);
+        itf.state(
+            meta,
+            [&](auto&& f) {
+                for (int i = 0; i < region.size(); ++i)
+                    if (step.cells[i]) f(region.cell(i), step.cells[i]);
+            },
+            inputs);
     }
-    nlohmann::json itf{{"#meta",
-                        {{"format", "ITF"},
-                         {"format-description", "https://apalache-mc.org/docs/adr/015adr-trace.html"},
-                         {"source", source},
-                         {"system", system.name},
-                         {"region", region.spec()},
-                         {"property", trace.property},
-                         {"description", trace.description}}},
-                       {"vars", system.inputs.empty() ? nlohmann::json{"cells"} : nlohmann::json{"cells", "inputs"}},
-                       {"states", states}};
-    if (trace.loop) itf["loop"] = *trace.loop;
-    return itf;
+    return itf.json(trace.loop);
 }
 
 bool replay(const Trace& trace, const rules::Engine& engine, const rules::Interpreter& in, std::string* why) {

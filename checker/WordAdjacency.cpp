@@ -2,6 +2,8 @@
 
 #include "checker/WordAdjacency.h"
 
+#include "rules/Components.h"
+
 #include <algorithm>
 
 namespace holon::checker {
@@ -59,25 +61,9 @@ std::uint64_t WordAdjacency::cutCells(std::uint64_t set) const {
 }
 
 bool WordAdjacency::connected(std::uint64_t m) const {
-    if (!m) return true;
-    std::uint64_t reached = m & (~m + 1), frontier = reached;
-    if (!shifts_.empty()) {
-        // Grow the reached set a layer at a time; a cell with no neighbour in m fails at once.
-        if ((m & (m - 1)) && (m & ~neighboursOf(m))) return false;
-        while (frontier) {
-            frontier = neighboursOf(frontier) & m & ~reached;
-            reached |= frontier;
-        }
-        return reached == m;
-    }
-    while (frontier) {
-        const int i = std::countr_zero(frontier);
-        frontier &= frontier - 1;
-        const std::uint64_t add = neighbourBits_[i] & m & ~reached;
-        reached |= add;
-        frontier |= add;
-    }
-    return reached == m;
+    // By shifts, a cell with no neighbour in m fails at once.
+    if (!shifts_.empty() && (m & (m - 1)) && (m & ~neighboursOf(m))) return false;
+    return rules::connectedWord(m, [this](std::uint64_t r) { return around(r); });
 }
 
 bool WordAdjacency::targetsJoined(std::uint64_t now, std::uint64_t targets) const {

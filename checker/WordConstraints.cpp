@@ -7,6 +7,8 @@
 
 #include "checker/WordConstraints.h"
 
+#include "rules/Components.h"
+
 #include <algorithm>
 #include <bit>
 #include <functional>
@@ -275,14 +277,7 @@ bool WordConstraints::stillConnected(const LegalBefore& legal, int w, std::uint6
         if (!(removed & cutsOf(legal, w))) kept = before & ~removed;
         else if (!added) return false;
     }
-    if (kept) {
-        std::uint64_t reached = kept, frontier = adjacency.around(kept) & added;
-        while (frontier) {
-            reached |= frontier;
-            frontier = adjacency.around(frontier) & added & ~reached;
-        }
-        return !(added & ~reached);
-    }
+    if (kept) return !(added & ~rules::reachedWithin(kept, kept | added, [&](std::uint64_t r) { return adjacency.around(r); }));
     // Every component of `now` holds a neighbour of a removed cell (the components of before
     // minus the removed cells each touch one, before being connected) or an added cell.
     return adjacency.targetsJoined(now, (adjacency.around(removed) & now) | added);

@@ -11,6 +11,7 @@
 #include "rules/Error.h"
 #include "rules/Limits.h"
 #include "rules/OutputFile.h"
+#include "rules/Svg.h"
 
 #include <nlohmann/json.hpp>
 
@@ -52,33 +53,32 @@ Stat stat(const std::vector<planner::hex::SculptResult>& runs, double (*field)(c
 
 /// The mean over repetitions of each metric against time, as seed 003 Figs. 9, 11 and 12.
 std::string seriesSvg(const std::vector<planner::hex::SculptResult>& runs, int steps) {
-    if (steps == 0) return "<svg xmlns='http://www.w3.org/2000/svg' width='1' height='1'/>\n";
+    if (steps == 0) return rules::Svg().document(1, 1);
     const double w = 640, h = 320, left = 40, bottom = 20;
-    std::ostringstream svg;
-    svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << w + left + 10 << "' height='" << h + bottom + 10 << "' font-size='11'>\n"
-        << "<rect width='100%' height='100%' fill='white'/>\n";
-    for (int pct = 0; pct <= 100; pct += 20)
-        svg << "<text x='2' y='" << 5 + h * (1 - pct / 100.0) + 4 << "'>" << pct << "%</text><line x1='" << left << "' x2='" << left + w << "' y1='"
-            << 5 + h * (1 - pct / 100.0) << "' y2='" << 5 + h * (1 - pct / 100.0) << "' stroke='#ddd'/>\n";
-    svg << "<text x='" << left + w - 80 << "' y='" << h + bottom + 5 << "'>" << steps << " timesteps</text>\n";
+    rules::Svg svg;
+    for (int pct = 0; pct <= 100; pct += 20) {
+        svg.text(2, 5 + h * (1 - pct / 100.0) + 4, std::to_string(pct) + "%");
+        svg.line(left, 5 + h * (1 - pct / 100.0), left + w, 5 + h * (1 - pct / 100.0), {{"stroke", "#ddd"}});
+    }
+    svg.text(left + w - 80, h + bottom + 5, std::to_string(steps) + " timesteps");
     const struct { const char* name; const char* colour; float planner::hex::SculptSample::*field; } metrics[] = {
         {"completeness", "#1f6fd0", &planner::hex::SculptSample::completeness},
         {"stability", "#2a9d3a", &planner::hex::SculptSample::stability},
         {"compliance", "#111", &planner::hex::SculptSample::compliance}};
     int row = 0;
     for (const auto& m : metrics) {
-        svg << "<polyline fill='none' stroke='" << m.colour << "' points='";
+        std::vector<std::pair<double, double>> points;
         const int stride = std::max(1, steps / 640);
         for (int t = 0; t < steps; t += stride) {
             double mean = 0;
             for (const auto& r : runs) mean += r.series[t].*m.field;
             mean /= runs.size();
-            svg << left + w * t / steps << ',' << 5 + h * (1 - mean) << ' ';
+            points.push_back({left + w * t / steps, 5 + h * (1 - mean)});
         }
-        svg << "'/>\n<text x='" << left + 10 << "' y='" << h - 40 + 14 * row++ << "' fill='" << m.colour << "'>" << m.name << "</text>\n";
+        svg.polyline(points, {{"fill", "none"}, {"stroke", m.colour}});
+        svg.text(left + 10, h - 40 + 14 * row++, m.name, {{"fill", m.colour}});
     }
-    svg << "</svg>\n";
-    return svg.str();
+    return svg.document(w + left + 10, h + bottom + 10, {{"font-size", 11}});
 }
 
 /// series.svg and series.csv; a file that cannot be written is added to `errors`.

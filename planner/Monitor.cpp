@@ -19,6 +19,7 @@
 #include "planner/Monitor.h"
 
 #include "rules/ConfigIo.h"
+#include "rules/ItfWriter.h"
 
 #include <algorithm>
 #include <queue>
@@ -40,7 +41,7 @@ Monitor::Monitor(const Problem& problem, const Execution& execution) : problem_(
             if (o != 0 && std::find(window_.begin(), window_.end(), o) == window_.end()) window_.push_back(o);
         }
     if (window_.size() > 64) window_.clear();  // no lattice holon knows has such a window; use the searches
-    windowLinks_.assign(window_.size(), {});
+    windowLinks_.assign(window_.size(), 0);
     for (std::int64_t o : window_) {
         bool neighbour = false;
         for (int d = 0; d < degree; ++d) neighbour |= board.step(d) == o;
@@ -49,7 +50,7 @@ Monitor::Monitor(const Problem& problem, const Execution& execution) : problem_(
     for (std::size_t a = 0; a < window_.size(); ++a)
         for (std::size_t b = 0; b < window_.size(); ++b)
             for (int d = 0; d < degree; ++d)
-                if (window_[a] + board.step(d) == window_[b]) windowLinks_[a].push_back(static_cast<int>(b));
+                if (window_[a] + board.step(d) == window_[b]) windowLinks_[a] |= std::uint64_t{1} << b;
     label_.assign(execution.cells().size(), 0);
     if (!connected()) violation_ = "the start is not connected";
 }
@@ -63,25 +64,10 @@ void Monitor::fired(std::int64_t anchor, int shape, const BoxEngine::Value* old)
 bool Monitor::connected() const {
     const Board& board = *problem_->board;
     const auto& cells = execution_->cells();
-    std::vector<char> seen(cells.size(), 0);
-    std::int64_t total = 0, start = -1;
-    for (std::size_t i = 0; i < cells.size(); ++i)
-        if (cells[i]) ++total, start = static_cast<std::int64_t>(i);
-    if (total == 0) return true;
-    std::vector<std::int64_t> stack{start};
-    seen[start] = 1;
-    std::int64_t reached = 0;
-    const int degree = board.lattice().degree();
-    while (!stack.empty()) {
-        const std::int64_t i = stack.back();
-        stack.pop_back();
-        ++reached;
-        for (int d = 0; d < degree; ++d) {
-            const std::int64_t j = i + board.step(d);
-            if (cells[j] && !seen[j]) seen[j] = 1, stack.push_back(j);
-        }
-    }
-    return reached == total;
+    const auto occupied = [&](std::int64_t j) { return cells[j] != 0; };
+    rules::Flood flood;
+    return rules::connected(flood, cells.size(), rules::verticesWhere(static_cast<std::int64_t>(cells.size()), occupied),
+                            rules::offsetEdges(board.lattice().degree(), [&](int d) { return board.step(d); }, occupied));
 }
 
 void Monitor::checkFromScratch() {
@@ -161,27 +147,18 @@ bool Monitor::oneComponent(const std::vector<std::int64_t>& sources) {
 
 bool Monitor::linkedNearby(std::int64_t cell) const {
     const auto& cells = execution_->cells();
-    std::uint64_t occupied = 0, reached = 0;  // bit k: window cell k
-    int first = -1;
+    std::uint64_t occupied = 0, neighbours = 0;  // bit k: window cell k
     const auto size = static_cast<std::int64_t>(cells.size());
     for (std::size_t k = 0; k < window_.size(); ++k) {
         // Two steps can leave the board's padding (one cell): beyond it is empty.
         const std::int64_t j = cell + window_[k];
         if (j >= 0 && j < size && cells[j]) occupied |= std::uint64_t{1} << k;
     }
-    int stack[64], top = 0;
-    for (std::size_t k = 0; k < window_.size() && first < 0; ++k)
-        if (windowNeighbour_[k] && (occupied >> k & 1)) first = static_cast<int>(k);
-    if (first < 0) return true;
-    reached = std::uint64_t{1} << first, stack[top++] = first;
-    while (top > 0) {
-        const int k = stack[--top];
-        for (int m : windowLinks_[k])
-            if ((occupied >> m & 1) && !(reached >> m & 1)) reached |= std::uint64_t{1} << m, stack[top++] = m;
-    }
     for (std::size_t k = 0; k < window_.size(); ++k)
-        if (windowNeighbour_[k] && (occupied >> k & 1) && !(reached >> k & 1)) return false;
-    return true;
+        if (windowNeighbour_[k]) neighbours |= std::uint64_t{1} << k;
+    const std::uint64_t ends = occupied & neighbours;
+    if (!ends) return true;
+    return !(ends & ~rules::reachedWithin(ends & (~ends + 1), occupied, rules::aroundByTable(windowLinks_.data())));
 }
 
 bool Monitor::changesKeepConnected() {
@@ -222,24 +199,24 @@ bool Monitor::changesKeepConnected() {
     for (std::int64_t c : emptied) stamp_[c] = mark;
     for (std::int64_t c : filled) stamp_[c] = mark;
     auto arounds = [&](const std::vector<std::int64_t>& set, bool filledSet) {
-        const std::uint32_t done = freshEpoch();
         std::vector<std::pair<std::int64_t, std::vector<std::int64_t>>> out;  // (the cell of a one-cell cluster or -1, around)
-        std::vector<std::int64_t> cluster;
-        for (std::int64_t c0 : set) {
-            if (stamp_[c0] == done) continue;
-            cluster.assign(1, c0);
-            std::vector<std::int64_t> around;
-            stamp_[c0] = done;
-            for (std::size_t k = 0; k < cluster.size(); ++k)
-                for (int d = 0; d < degree; ++d) {
-                    const std::int64_t j = cluster[k] + board.step(d);
-                    if (stamp_[j] == done) continue;
-                    const bool inSet = stamp_[j] == mark && (cells[j] != 0) == filledSet;
-                    if (inSet) stamp_[j] = done, cluster.push_back(j);
-                    else if (cells[j] && !(filledSet && stamp_[j] == mark)) around.push_back(j);
-                }
-            out.push_back({cluster.size() == 1 ? c0 : -1, std::move(around)});
-        }
+        const auto edges = [&](std::int64_t i, auto&& step) {
+            for (int d = 0; d < degree; ++d) {
+                const std::int64_t j = i + board.step(d);
+                if (stamp_[j] == mark && (cells[j] != 0) == filledSet) step(j);
+                else if (cells[j] && !(filledSet && stamp_[j] == mark)) out.back().second.push_back(j);
+            }
+        };
+        rules::components(
+            flood_, cells.size(),
+            [&](auto&& f) {
+                for (std::int64_t c : set) f(c);
+            },
+            edges,
+            [&](std::int64_t c, int k) {
+                if (k == static_cast<int>(out.size())) out.push_back({c, {}});
+                else out.back().first = -1;
+            });
         return out;
     };
     const auto aroundEmptied = arounds(emptied, false);
@@ -301,11 +278,12 @@ void Monitor::writeTrace(const rules::OutputFile& file) const {
         at -= steps.size();
         for (std::size_t k = 0; k < steps.size(); ++k) earlier[lastFired_[f].first + steps[k]] = before_[at + k];
     }
+    rules::ItfWriter itf(model, {model.system().sourceName, model.system().name, "", "monitor", violation_}, false);
     auto state = [&](const std::vector<BoxEngine::Value>& cells, nlohmann::json meta) {
-        nlohmann::json map = nlohmann::json::array();
-        for (std::size_t i = 0; i < cells.size(); ++i)
-            if (cells[i]) map.push_back({{{"#tup", rules::pointJson(lattice, board.point(static_cast<std::int64_t>(i)))}}, rules::stateFields(model, cells[i])});
-        return nlohmann::json{{"#meta", meta}, {"cells", {{"#map", map}}}};
+        itf.state(std::move(meta), [&](auto&& f) {
+            for (std::size_t i = 0; i < cells.size(); ++i)
+                if (cells[i]) f(board.point(static_cast<std::int64_t>(i)), cells[i]);
+        });
     };
     nlohmann::json fired = nlohmann::json::array();
     for (const auto& [anchor, shape] : lastFired_) {
@@ -313,12 +291,9 @@ void Monitor::writeTrace(const rules::OutputFile& file) const {
         for (std::int64_t s : problem_->engine->cellSteps(shape)) cells.push_back(rules::pointJson(lattice, board.point(anchor + s)));
         fired.push_back({{"rule", model.rules()[problem_->engine->ruleOf(shape)].name}, {"cells", cells}});
     }
-    nlohmann::json itf{{"#meta", {{"format", "ITF"}, {"format-description", "https://apalache-mc.org/docs/adr/015adr-trace.html"},
-                                  {"source", model.system().sourceName}, {"system", model.system().name}, {"property", "monitor"},
-                                  {"description", violation_}}},
-                       {"vars", {"cells"}},
-                       {"states", {state(earlier, {{"index", 0}}), state(execution_->cells(), {{"index", 1}, {"fired", fired}})}}};
-    file.write(itf.dump(1) + '\n');
+    state(earlier, {{"index", 0}});
+    state(execution_->cells(), {{"index", 1}, {"fired", fired}});
+    file.write(itf.json().dump(1) + '\n');
 }
 
 }  // namespace holon::planner

@@ -7,6 +7,7 @@
 // rounds 1, 4, 16, 64, ... and at the end, so a write the engine did not report cannot hide.
 
 #include "planner/Execution.h"
+#include "rules/Components.h"
 #include "rules/OutputFile.h"
 
 #include <string>
@@ -45,6 +46,7 @@ private:
     // Scratch for the incremental check, board-sized, reused: a cell's stamp says it was seen by
     // the current check; its label, which search reached it.
     std::vector<std::uint32_t> stamp_;
+    rules::Flood flood_;  // the clusters of changed cells
     std::vector<std::int32_t> label_;
     std::uint32_t epoch_ = 0;
     std::int64_t occupied_ = 0;
@@ -56,7 +58,7 @@ private:
     // neighbour links among them: where an emptied cell's neighbours usually meet again.
     std::vector<std::int64_t> window_;
     std::vector<bool> windowNeighbour_;
-    std::vector<std::vector<int>> windowLinks_;
+    std::vector<std::uint64_t> windowLinks_;  // per window cell, its neighbours in the window as a word
 };
 
 }  // namespace holon::planner

@@ -6,6 +6,7 @@
 
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
+#include "rules/Svg.h"
 
 #include <nlohmann/json.hpp>
 
@@ -150,10 +151,8 @@ std::string drawBoard(const Problem& problem, const std::vector<BoxEngine::Value
     const double px = std::clamp(600.0 / (double(std::max(ext.x, ext.y)) / sample * slices), 2.0, 24.0);
     const int w = (ext.x + sample - 1) / sample, h = (ext.y + sample - 1) / sample;
     const double gap = is3d ? px * 2 : 0;
-    std::ostringstream svg;
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << (w * px + gap) * slices + 10 << "\" height=\"" << h * px + 30 << "\">\n"
-        << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"5\" y=\"16\" font-family=\"sans-serif\" font-size=\"13\">" << title
-        << "</text>\n";
+    rules::Svg svg;
+    svg.text(5, 16, title, {{"font-family", "sans-serif"}, {"font-size", 13}});
     const int inTarget = problem.tables->comboIndex(1u << schema.target);
     for (int s = 0; s < slices; ++s) {
         const int z = is3d ? s * ext.z / slices : 0;
@@ -165,21 +164,18 @@ std::string drawBoard(const Problem& problem, const std::vector<BoxEngine::Value
                 const bool target = problem.engine->combo(i) == inTarget;
                 const BoxEngine::Value v = cells[i];
                 if (!v) {
-                    if (target) svg << "<rect x=\"" << cx << "\" y=\"" << cy << "\" width=\"" << px << "\" height=\"" << px << "\" fill=\"#e8eef6\"/>\n";
+                    if (target) svg.rect(cx, cy, px, px, {{"fill", "#e8eef6"}});
                     continue;
                 }
                 const auto& f = alphabet.fields(v);
                 const int label = f[schema.label];
                 const char* fill = label == schema.final ? "#3d6fb0" : label == schema.path ? "#222222" : "#ffffff";
-                svg << "<rect x=\"" << cx << "\" y=\"" << cy << "\" width=\"" << px << "\" height=\"" << px << "\" fill=\"" << fill
-                    << "\" stroke=\"#888\" stroke-width=\"" << (px > 4 ? 0.5 : 0) << "\"/>\n";
-                if (schema.resource >= 0 && f[schema.resource] != schema.full && px >= 4)
-                    svg << "<circle cx=\"" << cx + px / 2 << "\" cy=\"" << cy + px / 2 << "\" r=\"" << px / 4 << "\" fill=\"#e07020\"/>\n";
+                svg.rect(cx, cy, px, px, {{"fill", fill}, {"stroke", "#888"}, {"stroke-width", px > 4 ? 0.5 : 0}});
+                if (schema.resource >= 0 && f[schema.resource] != schema.full && px >= 4) svg.circle(cx + px / 2, cy + px / 2, px / 4, {{"fill", "#e07020"}});
             }
-        if (is3d) svg << "<text x=\"" << ox << "\" y=\"" << oy + h * px + 0 << "\" font-size=\"10\" font-family=\"sans-serif\">z=" << z + board.lower().z << "</text>\n";
+        if (is3d) svg.text(ox, oy + h * px, "z=" + std::to_string(z + board.lower().z), {{"font-size", 10}, {"font-family", "sans-serif"}});
     }
-    svg << "</svg>\n";
-    return svg.str();
+    return svg.document((w * px + gap) * slices + 10, h * px + 30);
 }
 
 }  // namespace holon::planner

@@ -4,6 +4,7 @@
 
 #include "planner/Shape.h"
 
+#include "rules/Components.h"
 #include "rules/Error.h"
 #include "rules/Limits.h"
 #include "rules/Parser.h"
@@ -291,26 +292,21 @@ std::vector<std::vector<Vec>> components(const std::vector<Vec>& cells, int dime
     }
     const long w = hi.x - lo.x + 3, h = hi.y - lo.y + 3, d = hi.z - lo.z + 3;
     auto index = [&](Vec c) { return ((c.z - lo.z + 1) * h + (c.y - lo.y + 1)) * w + (c.x - lo.x + 1); };
-    std::vector<std::int32_t> mark(static_cast<std::size_t>(w * h * d), -1);  // -1 absent, -2 unvisited, else component
-    for (Vec c : cells) mark[index(c)] = -2;
+    std::vector<char> in(static_cast<std::size_t>(w * h * d), 0);
+    for (Vec c : cells) in[index(c)] = 1;
     const long steps[6] = {1, -1, w, -w, w * h, -w * h};
-    const int degree = dimension == 3 ? 6 : 4;
-    std::vector<long> stack;
-    for (Vec c : cells) {
-        if (mark[index(c)] != -2) continue;
-        const int id = static_cast<int>(out.size());
-        out.emplace_back();
-        stack.assign(1, index(c));
-        mark[index(c)] = id;
-        while (!stack.empty()) {
-            const long i = stack.back();
-            stack.pop_back();
-            out[id].push_back({static_cast<int>(i % w) + lo.x - 1, static_cast<int>(i / w % h) + lo.y - 1, static_cast<int>(i / (w * h)) + lo.z - 1});
-            for (int k = 0; k < degree; ++k)
-                if (mark[i + steps[k]] == -2) mark[i + steps[k]] = id, stack.push_back(i + steps[k]);
-        }
-        std::sort(out[id].begin(), out[id].end());
-    }
+    rules::Flood flood;
+    rules::components(
+        flood, in.size(),
+        [&](auto&& f) {
+            for (Vec c : cells) f(index(c));
+        },
+        rules::offsetEdges(dimension == 3 ? 6 : 4, [&](int k) { return steps[k]; }, [&](std::int64_t j) { return in[j] != 0; }),
+        [&](std::int64_t i, int k) {
+            if (k == static_cast<int>(out.size())) out.emplace_back();
+            out[k].push_back({static_cast<int>(i % w) + lo.x - 1, static_cast<int>(i / w % h) + lo.y - 1, static_cast<int>(i / (w * h)) + lo.z - 1});
+        });
+    for (auto& part : out) std::sort(part.begin(), part.end());
     return out;
 }
 

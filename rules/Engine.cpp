@@ -10,6 +10,8 @@
 
 #include "rules/Engine.h"
 
+#include "rules/Components.h"
+
 #include "rules/Error.h"
 #include "rules/Printer.h"
 
@@ -168,26 +170,15 @@ int Engine::countCells(const Expr& e, const CellValue* cells, bool withCellGuard
 
 bool Engine::reachesAlongAdjacency(const Mask& from, const Mask& to, const CellValue* cells) const {
     // Marks `from` cells outward from the `to` cells, then looks for an unmarked one.
-    thread_local std::vector<std::int32_t> stack;
-    thread_local std::vector<char> found;
-    const int n = region_->size(), degree = model_->lattice().degree();
-    found.assign(n, 0);
-    stack.clear();
-    auto spread = [&](int i) {
-        for (int d = 0; d < degree; ++d) {
-            const int j = region_->neighbour(i, d);
-            if (j >= 0 && !found[j] && test(from, combo_[j], cells[j])) found[j] = 1, stack.push_back(j);
-        }
-    };
+    thread_local Flood flood;
+    const int n = region_->size();
+    const auto edges = regionEdges(*region_, [&](std::int64_t j) { return test(from, combo_[j], cells[j]); });
+    flood.begin(n);
     for (int i = 0; i < n; ++i)
-        if (test(to, combo_[i], cells[i])) spread(i);
-    while (!stack.empty()) {
-        const int i = stack.back();
-        stack.pop_back();
-        spread(i);
-    }
+        if (test(to, combo_[i], cells[i])) edges(i, [&](std::int64_t j) { flood.add(j); });
+    flood.spread(edges);
     for (int i = 0; i < n; ++i)
-        if (!found[i] && test(from, combo_[i], cells[i])) return false;
+        if (!flood.seen(i) && test(from, combo_[i], cells[i])) return false;
     return true;
 }
 
@@ -230,34 +221,9 @@ bool Engine::reachesAlongField(const Expr& e, const CellValue* cells) const {
 }
 
 bool Engine::connected(const Mask& m, const CellValue* cells) const {
-    thread_local std::vector<std::int32_t> stack;
-    thread_local std::vector<std::uint32_t> seen;
-    thread_local std::uint32_t stamp = 0;
-    const int n = region_->size();
-    if (static_cast<int>(seen.size()) < n) seen.assign(n, 0), stamp = 0;
-    if (++stamp == 0) std::fill(seen.begin(), seen.end(), 0), stamp = 1;
-    int total = 0, start = -1;
-    for (int i = 0; i < n; ++i)
-        if (test(m, combo_[i], cells[i])) {
-            ++total;
-            if (start < 0) start = i;
-        }
-    if (total == 0) return true;
-    stack.clear();
-    stack.push_back(start);
-    seen[start] = stamp;
-    int reached = 0;
-    const int degree = model_->lattice().degree();
-    while (!stack.empty()) {
-        const int i = stack.back();
-        stack.pop_back();
-        ++reached;
-        for (int d = 0; d < degree; ++d) {
-            const int j = region_->neighbour(i, d);
-            if (j >= 0 && seen[j] != stamp && test(m, combo_[j], cells[j])) seen[j] = stamp, stack.push_back(j);
-        }
-    }
-    return reached == total;
+    thread_local Flood flood;
+    const auto member = [&](std::int64_t i) { return test(m, combo_[i], cells[i]); };
+    return rules::connected(flood, region_->size(), verticesWhere(region_->size(), member), regionEdges(*region_, member));
 }
 
 bool Engine::legal(const CellValue* cells) const {

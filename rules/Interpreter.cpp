@@ -7,8 +7,9 @@
 
 #include "rules/Interpreter.h"
 
+#include "rules/Components.h"
+
 #include <algorithm>
-#include <deque>
 
 namespace holon::rules {
 
@@ -189,11 +190,11 @@ bool Interpreter::holdsAt(const Expr& e, const Configuration& c, const Placement
         std::vector<Vec> members;
         for (Vec d : lattice.directions())
             if (matchesPredicate(e.pred, valueAt(centre + d, c), context(centre + d, c, at))) members.push_back(centre + d);
-        std::vector<Vec> reached(members.begin(), members.begin() + (members.empty() ? 0 : 1));
-        for (std::size_t k = 0; k < reached.size(); ++k)
-            for (Vec m : members)
-                if (lattice.adjacent(reached[k], m) && std::find(reached.begin(), reached.end(), m) == reached.end()) reached.push_back(m);
-        return reached.size() == members.size();
+        std::vector<std::uint64_t> adjacent(members.size(), 0);  // members.size() <= degree <= 12
+        for (std::size_t a = 0; a < members.size(); ++a)
+            for (std::size_t b = 0; b < members.size(); ++b)
+                if (lattice.adjacent(members[a], members[b])) adjacent[a] |= std::uint64_t{1} << b;
+        return connectedWord((std::uint64_t{1} << members.size()) - 1, aroundByTable(adjacent.data()));
     }
     case Expr::Kind::Reaches: return reaches(e, c);
     case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Add: case Expr::Kind::Sub: case Expr::Kind::Neg:
@@ -220,27 +221,11 @@ Rational Interpreter::numberAt(const Expr& e, const Configuration& c, const Plac
 }
 
 bool Interpreter::connected(const CellPredicate& pred, const Configuration& c) const {
-    std::vector<char> member(region_->size(), 0), seen(region_->size(), 0);
-    int start = -1, total = 0;
-    for (int i = 0; i < region_->size(); ++i)
-        if (matchesPredicate(pred, c.cells[i], context(region_->cell(i), c, nullptr))) {
-            member[i] = 1, ++total;
-            if (start < 0) start = i;
-        }
-    if (total == 0) return true;
-    std::deque<int> queue{start};
-    seen[start] = 1;
-    int reached = 0;
-    while (!queue.empty()) {
-        const int i = queue.front();
-        queue.pop_front();
-        ++reached;
-        for (int d = 0; d < model_->lattice().degree(); ++d) {
-            const int j = region_->neighbour(i, d);
-            if (j >= 0 && member[j] && !seen[j]) seen[j] = 1, queue.push_back(j);
-        }
-    }
-    return reached == total;
+    std::vector<char> member(region_->size(), 0);
+    for (int i = 0; i < region_->size(); ++i) member[i] = matchesPredicate(pred, c.cells[i], context(region_->cell(i), c, nullptr));
+    const auto isMember = [&](std::int64_t i) { return member[i] != 0; };
+    Flood flood;
+    return rules::connected(flood, member.size(), verticesWhere(region_->size(), isMember), regionEdges(*region_, isMember));
 }
 
 bool Interpreter::reaches(const Expr& e, const Configuration& c) const {
@@ -253,21 +238,14 @@ bool Interpreter::reaches(const Expr& e, const Configuration& c) const {
     if (e.field < 0) {
         // Along lattice adjacency: search backwards from the targets through pred cells; every
         // pred cell must be found.
-        std::vector<char> good(n, 0);
-        std::deque<int> queue;
-        auto reach = [&](int i) {
-            for (int d = 0; d < model_->lattice().degree(); ++d)
-                if (const int j = region_->neighbour(i, d); j >= 0 && !good[j] && isPred(j)) good[j] = 1, queue.push_back(j);
-        };
+        Flood flood;
+        flood.begin(n);
+        const auto edges = regionEdges(*region_, isPred);
         for (int i = 0; i < n; ++i)
-            if (isTarget(i)) reach(i);
-        while (!queue.empty()) {
-            const int i = queue.front();
-            queue.pop_front();
-            reach(i);
-        }
+            if (isTarget(i)) edges(i, [&](std::int64_t j) { flood.add(j); });
+        flood.spread(edges);
         for (int i = 0; i < n; ++i)
-            if (isPred(i) && !good[i]) return false;
+            if (isPred(i) && !flood.seen(i)) return false;
         return true;
     }
     for (int start = 0; start < n; ++start) {

@@ -5,6 +5,7 @@
 // Engine places these tables on a region; the planner places them on a padded box by index
 // arithmetic. Both therefore run exactly the same compiled rules.
 
+#include "rules/Components.h"
 #include "rules/Limits.h"
 #include "rules/Model.h"
 
@@ -67,16 +68,7 @@ public:
     std::pair<std::uint64_t, std::uint64_t> acceptedStates(const std::vector<std::uint64_t>& bits) const;
     /// Whether a set of lattice directions (bit d for direction d) is connected when two
     /// directions are joined if their neighbour cells are adjacent (`connected nbr` guards).
-    bool directionsConnected(std::uint32_t set) const {
-        std::uint32_t reached = set & (~set + 1), frontier = reached;
-        while (frontier) {
-            const int d = std::countr_zero(frontier);
-            frontier &= frontier - 1;
-            const std::uint32_t add = directionNeighbours_[d] & set & ~reached;
-            reached |= add, frontier |= add;
-        }
-        return reached == set;
-    }
+    bool directionsConnected(std::uint32_t set) const { return connectedWord(set, aroundByTable(directionNeighbours_.data())); }
     bool guardAccepts(const GuardNode& node, int site, int combo, CellValue v) const { return bit(node.perSite[site], combo, v); }
     Mask compilePredicate(const CellPredicate& pred, const std::vector<Vec>* pattern, Vec position) const;
     /// A quantifier's cell guard (`all(H: no nbr _)`): a guard of a one-cell pattern.

@@ -19,6 +19,7 @@
 
 #include "planner/hex/HexArray.h"
 #include "planner/hex/PivotRules.h"
+#include "rules/Components.h"
 #include "rules/Error.h"
 
 #include <algorithm>
@@ -54,21 +55,17 @@ public:
         return false;
     }
     bool connected() const {
-        std::vector<std::uint8_t> seen(cells_.size(), 0);
-        std::vector<Vec> stack;
-        std::size_t total = 0, reached = 0;
-        rules_->board().forEachInside([&](std::int64_t i, Vec p) {
-            if (!cells_[i]) return;
-            ++total;
-            if (stack.empty() && !reached) stack.push_back(p), seen[i] = 1;
-        });
-        while (!stack.empty()) {
-            const Vec c = stack.back();
-            stack.pop_back(), ++reached;
-            for (Vec d : hex().directions())
-                if (filled(c + d) && !seen[index(c + d)]) seen[index(c + d)] = 1, stack.push_back(c + d);
-        }
-        return reached == total;
+        const planner::Board& board = rules_->board();
+        const auto disk = [&](std::int64_t i) { return filled(board.point(i)); };
+        rules::Flood flood;
+        return rules::connected(
+            flood, cells_.size(),
+            [&](auto&& f) {
+                board.forEachInside([&](std::int64_t i, Vec) {
+                    if (cells_[i]) f(i);
+                });
+            },
+            rules::offsetEdges(6, [&](int d) { return board.step(d); }, disk));
     }
     /// A shortest pivot path for the disk at `from` (lifted) to the reachable cell with the least
     /// rank (ranks below 0 are not goals); empty if none.

@@ -11,10 +11,11 @@
 
 #include "planner/hex/DiskMetamodules.h"
 
+#include "rules/Components.h"
 #include "rules/Error.h"
+#include "rules/Svg.h"
 
 #include <algorithm>
-#include <deque>
 #include <map>
 #include <sstream>
 
@@ -143,48 +144,37 @@ std::string replayDiskMoves(const std::vector<Vec>& start, const std::vector<Dis
     // around it they touch in turn; otherwise a breadth-first search from one of them, which stops
     // once it has met them all (in a connected ensemble the others are near).
     const std::vector<Vec>& neighbours = rules::Lattice::get(rules::LatticeKind::Hex2D).directions();  // counterclockwise
-    std::vector<std::uint32_t> seen(grid.size(), 0);
-    std::uint32_t epoch = 0;
+    std::vector<std::int64_t> offsets;
+    for (Vec d : neighbours) offsets.push_back(static_cast<std::int64_t>(d.y) * width + d.x);
+    const auto edges = rules::offsetEdges(6, [&](int d) { return offsets[d]; }, [&](std::int64_t i) { return grid[i] != 0; });
+    rules::Flood flood;
     const auto rejoined = [&](Vec gone) {
-        std::vector<Vec> ends;
+        std::vector<std::int64_t> ends;
         int arcs = 0;
         for (int d = 0; d < 6; ++d) {
             const bool here = has(gone + neighbours[d]), before = has(gone + neighbours[(d + 5) % 6]);
-            if (here) ends.push_back(gone + neighbours[d]);
+            if (here) ends.push_back(static_cast<std::int64_t>(index(gone + neighbours[d])));
             arcs += here && !before;
         }
         if (arcs <= 1) return true;
-        ++epoch;
-        std::deque<Vec> queue{ends[0]};
-        seen[index(ends[0])] = epoch;
-        std::size_t found = 1;
-        while (!queue.empty() && found < ends.size()) {
-            const Vec c = queue.front();
-            queue.pop_front();
-            for (Vec d : neighbours) {
-                const Vec n = c + d;
-                if (!has(n) || seen[index(n)] == epoch) continue;
-                seen[index(n)] = epoch, queue.push_back(n);
-                found += std::find(ends.begin(), ends.end(), n) != ends.end();
-            }
-        }
+        flood.begin(grid.size());
+        flood.add(ends[0]);
+        std::size_t found = 0;
+        flood.spread(edges, [&](std::int64_t c) {
+            found += std::find(ends.begin(), ends.end(), c) != ends.end();
+            return found < ends.size();
+        });
         return found == ends.size();
     };
     // The start is one connected set; then each move keeps it so if the disks next to the one
     // that leaves still reach each other (any path through it can go round).
-    if (!start.empty()) {
-        ++epoch;
-        std::vector<Vec> stack{start[0]};
-        seen[index(start[0])] = epoch;
-        std::size_t reached = 0;
-        while (!stack.empty()) {
-            const Vec c = stack.back();
-            stack.pop_back(), ++reached;
-            for (Vec d : neighbours)
-                if (has(c + d) && seen[index(c + d)] != epoch) seen[index(c + d)] = epoch, stack.push_back(c + d);
-        }
-        if (reached != start.size()) return "the start's disks are not connected";
-    }
+    const bool joined = rules::connected(
+        flood, grid.size(),
+        [&](auto&& f) {
+            for (Vec v : start) f(static_cast<std::int64_t>(index(v)));
+        },
+        edges);
+    if (!joined) return "the start's disks are not connected";
     for (std::size_t k = 0; k < moves.size(); ++k) {
         const DiskMove& m = moves[k];
         const std::string where = "move " + std::to_string(k + 1) + " (" + m.rule + "): ";
@@ -214,19 +204,16 @@ std::string disksSvg(const std::vector<std::pair<std::string, std::vector<Vec>>>
         }
     if (minX > maxX) minX = maxX = minY = maxY = 0;
     const double panelWidth = (maxX - minX + 3) * kScale, height = (maxY - minY + 3) * kScale + 20;
-    std::ostringstream svg;
-    svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << panelWidth * panels.size() << "' height='" << height << "'>\n"
-        << "<rect width='100%' height='100%' fill='white'/>\n";
+    rules::Svg svg;
     for (std::size_t p = 0; p < panels.size(); ++p) {
         const double left = panelWidth * p;
-        svg << "<text x='" << left + 6 << "' y='16' font-family='sans-serif' font-size='13'>" << panels[p].first << "</text>\n";
+        svg.text(left + 6, 16, panels[p].first, {{"font-family", "sans-serif"}, {"font-size", 13}});
         for (Vec v : panels[p].second) {
             const double x = left + (v.x + 0.5 * v.y - minX + 1.5) * kScale, y = height - (kRow * v.y - minY + 1.5) * kScale;
-            svg << "<circle cx='" << x << "' cy='" << y << "' r='" << 0.48 * kScale << "' fill='#7a9' stroke='#354'/>\n";
+            svg.circle(x, y, 0.48 * kScale, {{"fill", "#7a9"}, {"stroke", "#354"}});
         }
     }
-    svg << "</svg>\n";
-    return svg.str();
+    return svg.document(panelWidth * panels.size(), height);
 }
 
 std::string sequenceSvg(const DiskDesign& design, int receiverLevel, int frames) {
@@ -242,9 +229,7 @@ std::string sequenceSvg(const DiskDesign& design, int receiverLevel, int frames)
     const double panelWidth = (2.5 * s + 2) * kScale, panelHeight = (kRow * s + 2) * kScale + 24;
     frames = std::max(2, frames);
     const int rows = (frames + kColumns - 1) / kColumns;
-    std::ostringstream svg;
-    svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << panelWidth * std::min(frames, kColumns) << "' height='" << panelHeight * rows
-        << "' font-family='sans-serif' font-size='13'>\n<rect width='100%' height='100%' fill='white'/>\n";
+    rules::Svg svg;
     std::size_t done = 0;
     for (int f = 0; f < frames; ++f) {
         const std::size_t until = moves.size() * f / (frames - 1);
@@ -254,14 +239,13 @@ std::string sequenceSvg(const DiskDesign& design, int receiverLevel, int frames)
             colour.insert(std::move(node));
         }
         const double left = panelWidth * (f % kColumns), top = panelHeight * (f / kColumns);
-        svg << "<text x='" << left + 6 << "' y='" << top + 16 << "'>move " << done << " of " << moves.size() << "</text>\n";
+        svg.text(left + 6, top + 16, "move " + std::to_string(done) + " of " + std::to_string(moves.size()));
         for (const auto& [cell, fill] : colour) {
             const double x = left + (cell.first + 0.5 * cell.second + 1) * kScale, y = top + panelHeight - (kRow * cell.second + 1) * kScale;
-            svg << "<circle cx='" << x << "' cy='" << y << "' r='" << 0.47 * kScale << "' fill='" << fill << "'/>\n";
+            svg.circle(x, y, 0.47 * kScale, {{"fill", fill}});
         }
     }
-    svg << "</svg>\n";
-    return svg.str();
+    return svg.document(panelWidth * std::min(frames, kColumns), panelHeight * rows, {{"font-family", "sans-serif"}, {"font-size", 13}});
 }
 
 }  // namespace holon::planner::hex

@@ -6,6 +6,7 @@
 
 #include "planner/hex/HexShapes.h"
 
+#include "rules/Components.h"
 #include "rules/Error.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
@@ -58,24 +59,15 @@ std::vector<std::uint8_t> readPicture(const HexArray& array, const std::string& 
 }  // namespace
 
 bool connected(const HexArray& array, const std::vector<std::uint8_t>& shape) {
-    std::vector<std::uint8_t> seen(shape.size(), 0);
-    std::vector<std::int64_t> stack;
-    std::int64_t total = 0, reached = 0;
-    for (std::int64_t i : array.points())
-        if (shape[i]) {
-            ++total;
-            if (stack.empty() && !reached) stack.push_back(i), seen[i] = 1;
-            while (!stack.empty()) {
-                const std::int64_t c = stack.back();
-                stack.pop_back();
-                ++reached;
-                for (int d = 0; d < 6; ++d) {
-                    const std::int64_t m = c + array.step(d);
-                    if (shape[m] && !seen[m]) seen[m] = 1, stack.push_back(m);
-                }
-            }
-        }
-    return reached == total;
+    const auto inShape = [&](std::int64_t i) { return shape[i] != 0; };
+    rules::Flood flood;
+    return rules::connected(
+        flood, shape.size(),
+        [&](auto&& f) {
+            for (std::int64_t i : array.points())
+                if (shape[i]) f(i);
+        },
+        rules::offsetEdges(6, [&](int d) { return array.step(d); }, inShape));
 }
 
 std::vector<std::uint8_t> sculptShape(const HexArray& array, const std::string& spec, const std::string& role) {

@@ -7,6 +7,8 @@
 
 #include "planner/hex/HoleSculptor.h"
 
+#include "rules/Components.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -460,24 +462,20 @@ double HoleSculptor::compliance() const {
 }
 
 std::int64_t HoleSculptor::islands() const {
-    std::vector<std::uint8_t> seen(cells_.size(), 0);
-    std::int64_t largest = 0;
-    std::vector<std::int64_t> stack;
-    for (std::int64_t s : array_->points()) {
-        if (!filled(s) || seen[s]) continue;
-        std::int64_t mods = 0;
-        stack.push_back(s), seen[s] = 1;
-        while (!stack.empty()) {
-            const std::int64_t c = stack.back();
-            stack.pop_back();
-            mods += module(c);
-            for (int d = 0; d < 6; ++d) {
-                const std::int64_t m = c + array_->step(d);
-                if (!seen[m] && filled(m)) seen[m] = 1, stack.push_back(m);
-            }
-        }
-        largest = std::max(largest, mods);
-    }
+    std::vector<std::int64_t> mods;  // per island
+    rules::Flood flood;
+    rules::components(
+        flood, cells_.size(),
+        [&](auto&& f) {
+            for (std::int64_t s : array_->points())
+                if (filled(s)) f(s);
+        },
+        rules::offsetEdges(6, [&](int d) { return array_->step(d); }, [&](std::int64_t m) { return filled(m); }),
+        [&](std::int64_t c, int k) {
+            if (k == static_cast<int>(mods.size())) mods.push_back(0);
+            mods[k] += module(c);
+        });
+    const std::int64_t largest = mods.empty() ? 0 : *std::max_element(mods.begin(), mods.end());
     return modules_ - largest;
 }
 

@@ -5,6 +5,7 @@
 #include "planner/hex/SculptRun.h"
 
 #include "planner/hex/HexShapes.h"
+#include "rules/Svg.h"
 
 #include <algorithm>
 #include <chrono>
@@ -52,17 +53,12 @@ SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const 
 std::string sculptSvg(const HoleSculptor& sculptor) {
     const HexArray& array = sculptor.array();
     const double scale = std::max(1.0, 800.0 / array.n()), r = 0.5 * scale;
-    std::ostringstream svg;
-    svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << (array.frameWidth() + 1) * scale << "' height='" << (array.frameHeight() + 1) * scale
-        << "'>\n<rect width='100%' height='100%' fill='white'/>\n";
+    rules::Svg svg;
     for (std::int64_t i : array.points()) {
         const char* fill = sculptor.module(i) ? (sculptor.target()[i] ? "#888" : "#222") : sculptor.holeCell(i) ? "#cde" : sculptor.target()[i] ? "#e44" : nullptr;
-        if (!fill) continue;
-        svg << "<circle cx='" << (array.frameX(i) + 0.5) * scale << "' cy='" << (array.frameHeight() - array.frameY(i) + 0.5) * scale << "' r='" << r
-            << "' fill='" << fill << "'/>\n";
+        if (fill) svg.circle((array.frameX(i) + 0.5) * scale, (array.frameHeight() - array.frameY(i) + 0.5) * scale, r, {{"fill", fill}});
     }
-    svg << "</svg>\n";
-    return svg.str();
+    return svg.document((array.frameWidth() + 1) * scale, (array.frameHeight() + 1) * scale);
 }
 
 }  // namespace holon::planner::hex
