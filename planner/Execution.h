@@ -81,6 +81,7 @@ private:
     bool asyncStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
     bool adversarialStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
     bool syncRound(const RunObserver& observer, std::vector<std::int64_t>& changed);
+    void pipeline(const RunObserver& observer, std::vector<std::int64_t>& changed, std::vector<std::int64_t>& givers);
     const Problem* problem_;
     Allocator* allocator_;
     RunOptions options_;
@@ -100,6 +101,7 @@ private:
     std::vector<std::uint32_t> stamp_;
     std::uint32_t clock_ = 0;
     std::vector<std::int64_t> anchors_;
+    std::vector<std::pair<int, std::int64_t>> pipelined_;  // transfer shapes that may chain, and the step of each of their cells
     std::int64_t offGoal_ = 0;  // cells not as the goal wants them
     RunStats stats_;
 };
