@@ -10,8 +10,10 @@
 // summed); "wall s" covers laying out the problem, compiling the rules and running (not the
 // transfer bound), "cpu s" the process's CPU time for the same (what counts on a shared machine);
 // B/mm is the peak resident memory per metamodule of the start.
-// Usage: plan_bench [--runs N] [--max-k K] [--cap-gib G] [--with-1e7] [--only NAME]
-//        plan_bench --case RULES FROM TO SCALE ALLOCATOR
+// A run stops at --timeout seconds of wall time (default 60, the target) and is then printed
+// NOT COMPLETE with the rounds it made.
+// Usage: plan_bench [--runs N] [--max-k K] [--cap-gib G] [--timeout S] [--with-1e7] [--only PREFIX]
+//        plan_bench --case RULES FROM TO SCALE ALLOCATOR TIMEOUT
 
 #include "PlanSupport.h"
 
@@ -32,9 +34,13 @@ struct Case {
     int scale = 1;
 };
 
-void runCase(const Case& c) {
+void runCase(const Case& c, double timeout) {
     const auto start = std::chrono::steady_clock::now();
-    auto r = bench::runPlan(c.rules, c.from, c.to, c.scale, c.allocator, planner::Scheduler::Sync, 1, {}, false);
+    auto r = bench::layoutPlan(c.rules, c.from, c.to, c.scale, 1);
+    auto allocator = planner::makeAllocator(c.allocator, r->problem, 1);
+    planner::RunOptions options;
+    options.timeoutSeconds = timeout;
+    r->stats = planner::Execution(r->problem, *allocator, options).run();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
@@ -55,22 +61,24 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
     int runs = 3, maxK = 31;
-    double capGiB = 12;
+    double capGiB = 12, timeout = 60;
     bool with1e7 = false;
     std::string only;
     for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
-        if (flag == "--case" && i + 5 < argc) {
-            runCase({"", argv[i + 1], argv[i + 2], argv[i + 3], argv[i + 5], std::atoi(argv[i + 4])});
+        if (flag == "--case" && i + 6 < argc) {
+            runCase({"", argv[i + 1], argv[i + 2], argv[i + 3], argv[i + 5], std::atoi(argv[i + 4])}, std::atof(argv[i + 6]));
             return 0;
         }
         if (flag == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
         else if (flag == "--max-k" && i + 1 < argc) maxK = std::atoi(argv[++i]);
         else if (flag == "--cap-gib" && i + 1 < argc) capGiB = std::atof(argv[++i]);
+        else if (flag == "--timeout" && i + 1 < argc) timeout = std::atof(argv[++i]);
         else if (flag == "--only" && i + 1 < argc) only = argv[++i];
         else if (flag == "--with-1e7") with1e7 = true;
         else {
-            std::fprintf(stderr, "usage: plan_bench [--runs N] [--max-k K] [--cap-gib G] [--with-1e7] [--only NAME]\n       plan_bench --case RULES FROM TO SCALE ALLOCATOR\n");
+            std::fprintf(stderr, "usage: plan_bench [--runs N] [--max-k K] [--cap-gib G] [--timeout S] [--with-1e7] [--only NAME]\n"
+                                 "       plan_bench --case RULES FROM TO SCALE ALLOCATOR TIMEOUT\n");
             return 2;
         }
     }
@@ -88,13 +96,13 @@ int main(int argc, char** argv) {
     std::printf("%-10s %-22s %10s %8s %8s %11s %9s %9s %10s %8s\n", "case", "system / allocator", "metamod.", "rounds", "rounds/D", "transfers", "wall s", "cpu s", "peak MiB",
                 "B/mm");
     for (const Case& c : cases) {
-        if (!only.empty() && c.name != only) continue;
+        if (c.name.rfind(only, 0) != 0) continue;  // --only: a prefix of the case names
         std::vector<double> wall, cpu, mib, bpm, rounds;
         long long meta = 0, transfers = 0, diameter = 1;
         int complete = 1, ok = 1;
         for (int k = 0; k < runs && ok; ++k) {
             const std::string cmd = "ulimit -v " + std::to_string((long long)(capGiB * 1024 * 1024)) + "; '" + argv[0] + "' --case " + c.rules + " " + c.from + " " + c.to + " " +
-                                    std::to_string(c.scale) + " " + c.allocator;
+                                    std::to_string(c.scale) + " " + c.allocator + " " + std::to_string(timeout);
             FILE* p = popen(cmd.c_str(), "r");
             int done = 0;
             double w = 0, u = 0, m = 0, b = 0;
