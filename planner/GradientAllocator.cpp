@@ -44,6 +44,15 @@ public:
         for (int sh = 0; sh < engine.shapeCount(); ++sh)
             if (engine.kind(sh) == ShapeKind::Motion) motions_.push_back(sh);
         needC_.assign(problem.cells.size(), kFar), needD_.assign(problem.cells.size(), kFar);
+        const rules::RuleTables& tables = *problem.tables;
+        alphabet_ = static_cast<std::size_t>(tables.alphabet());
+        accepting_.resize(static_cast<std::size_t>(tables.comboCount()) * alphabet_);
+        for (int c = 0; c < tables.comboCount(); ++c)
+            for (std::size_t v = 0; v < alphabet_; ++v)
+                for (int sh : motions_)
+                    for (std::size_t k = 0; k < engine.cellSteps(sh).size(); ++k)
+                        if (tables.test(tables.shape(sh).lhs[k], c, static_cast<rules::CellValue>(v)))
+                            accepting_[static_cast<std::size_t>(c) * alphabet_ + v].push_back({sh, engine.cellSteps(sh)[k]});
         // What a change at a cell can affect at once: the demand of every cell in a motion
         // instance that reads it, and the field values of its neighbours.
         const Board& board = *problem.board;
@@ -141,18 +150,25 @@ private:
     bool wouldEnable(const Execution& ex, const BoxEngine& engine, std::int64_t i, BoxEngine::Value instead) const {
         const BoxEngine::Value v = ex.cells()[i];
         if (!instead || instead == v) return false;
-        for (int sh : motions_)
-            for (std::int64_t step : engine.cellSteps(sh)) {
-                const std::int64_t anchor = i - step;
-                if (engine.combo(anchor) == BoxEngine::kOutside || ex.enabled(anchor, sh)) continue;
-                if (engine.matches(ex.cells().data(), anchor, sh, i, instead)) return true;
-            }
+        const std::uint8_t combo = engine.combo(i);
+        if (combo == BoxEngine::kOutside) return false;
+        // Only the motion cells whose test the new state passes: most instances around a cell fail
+        // there, and the fields ask this of every cell near a change.
+        for (const auto& [sh, step] : accepting_[static_cast<std::size_t>(combo) * alphabet_ + instead]) {
+            const std::int64_t anchor = i - step;
+            if (engine.combo(anchor) == BoxEngine::kOutside || ex.enabled(anchor, sh)) continue;
+            if (engine.matches(ex.cells().data(), anchor, sh, i, instead)) return true;
+        }
         return false;
     }
 
     const Problem* problem_;
     std::vector<BoxEngine::Value> heavier_, lighter_;
     std::vector<int> motions_;
+    // Per input combination and state: the motion shapes and steps to their anchor from a pattern
+    // cell whose test that state passes.
+    std::vector<std::vector<std::pair<int, std::int64_t>>> accepting_;
+    std::size_t alphabet_ = 0;
     // mark_ bits: the cell is in dirty_ (its value is recomputed), its demand is recomputed too.
     static constexpr char kValue = 1, kDemand = 3;
     // demand_ bits: a creation or deletion waits for this cell to be heavier / lighter.
