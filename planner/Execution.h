@@ -2,7 +2,8 @@
 // Running a planning problem: the set of enabled rule instances kept exactly up to date as cells
 // change, and the schedulers that choose from it — asynchronous (one instance at a time, uniformly
 // at random: the semantics the proofs speak about), synchronous rounds (a maximal set of
-// non-interfering instances fires together) and an adversarial one for tests.
+// non-interfering instances fires together, then transfers pipelined behind them) and an
+// adversarial one for tests.
 
 #include "planner/Allocator.h"
 #include "planner/Problem.h"
