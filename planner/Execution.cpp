@@ -8,7 +8,10 @@
 // instances therefore neither disable nor alter each other, so firing them together gives the
 // same configuration as firing them one after another in any order: a round is an interleaving,
 // and everything proved about the asynchronous semantics holds for it. Each round is maximal: an
-// enabled instance left out conflicts with one that was kept.
+// enabled instance left out conflicts with one that was kept. Then transfers are pipelined: a cell
+// that handed its resource on takes the next one from behind (pipeline), so a queue of resources
+// moves one hop per round as a whole; these are fired one after another, each enabled when it
+// fires, so the round is still an interleaving.
 
 #include "planner/Execution.h"
 
@@ -46,6 +49,10 @@ Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions op
     bits_.assign(2 * n * static_cast<std::size_t>(words_), 0);
     stamp_.assign(n, 0), marks_.assign(n, {});
     const BoxEngine& engine = *problem.engine;
+    // Transfers between two cells that read nothing else can be chained within a round (pipeline).
+    for (int sh = 0; sh < shapes_; ++sh)
+        if (engine.kind(sh) == ShapeKind::Transfer && engine.cellSteps(sh).size() == 2 && engine.readSteps(sh).size() == 2)
+            for (std::int64_t step : engine.cellSteps(sh)) pipelined_.push_back({sh, step});
     for (std::int64_t a = 0; a < static_cast<std::int64_t>(n); ++a) {
         offGoal_ += !atGoal(a, cells_[a]);
         if (engine.combo(a) != BoxEngine::kOutside && cells_[a] != 0) recheck(a);
@@ -188,11 +195,44 @@ bool Execution::syncRound(const RunObserver& observer, std::vector<std::int64_t>
     random_.shuffle(transferList_);
     for (std::uint64_t key : transferList_)
         if (allocator_->wants(*this, anchorOf(key), shapeOf(key)) && takeIfFree(anchorOf(key), shapeOf(key))) chosen.push_back(key);
+    std::vector<std::int64_t> givers;
     for (std::size_t k = 0; k < chosen.size(); ++k) {
         if (k + kAhead < chosen.size()) prefetchAnchor(anchorOf(chosen[k + kAhead]));
-        fire(anchorOf(chosen[k]), shapeOf(chosen[k]), observer, changed);
+        const int shape = shapeOf(chosen[k]);
+        if (engine().kind(shape) == ShapeKind::Transfer) givers.push_back(transferEnds(*this, anchorOf(chosen[k]), shape).first);
+        fire(anchorOf(chosen[k]), shape, observer, changed);
     }
+    pipeline(observer, changed, givers);
     return !chosen.empty();
+}
+
+void Execution::pipeline(const RunObserver& observer, std::vector<std::int64_t>& changed, std::vector<std::int64_t>& givers) {
+    // A cell that handed its resource on this round takes the next one from a neighbour that has
+    // not acted yet, which then takes from its own neighbour, and so on: a queue of resources
+    // advances as a whole, one hop each, like a bucket brigade, instead of one resource every
+    // other round. Each transfer is tested against the cells as they are when it fires, so the
+    // round stays an interleaving; a cell takes part in at most one transfer as giver and one as
+    // taker, so no resource moves twice in a round.
+    if (pipelined_.empty()) return;
+    const std::uint32_t round = static_cast<std::uint32_t>(stats_.rounds);
+    const BoxEngine& engine = this->engine();
+    for (std::size_t k = 0; k < givers.size(); ++k) {
+        const std::int64_t taker = givers[k];
+        if (taker < 0) continue;
+        const int first = static_cast<int>(random_.below(pipelined_.size()));
+        for (std::size_t t = 0; t < pipelined_.size(); ++t) {
+            const auto [shape, step] = pipelined_[(t + static_cast<std::size_t>(first)) % pipelined_.size()];
+            const std::int64_t anchor = taker - step;
+            if (!engine.matches(cells_.data(), anchor, shape)) continue;
+            const auto [from, to] = transferEnds(*this, anchor, shape);
+            if (to != taker || marks_[from].read == round || marks_[from].write == round) continue;
+            if (!allocator_->wants(*this, anchor, shape)) continue;
+            marks_[from].read = marks_[from].write = round;
+            fire(anchor, shape, observer, changed);
+            givers.push_back(from);
+            break;
+        }
+    }
 }
 
 bool Execution::atGoal(std::int64_t cell, BoxEngine::Value v) const {

@@ -2,7 +2,8 @@
 // Running a planning problem: the set of enabled rule instances kept exactly up to date as cells
 // change, and the schedulers that choose from it — asynchronous (one instance at a time, uniformly
 // at random: the semantics the proofs speak about), synchronous rounds (a maximal set of
-// non-interfering instances fires together) and an adversarial one for tests.
+// non-interfering instances fires together, then transfers pipelined behind them) and an
+// adversarial one for tests.
 
 #include "planner/Allocator.h"
 #include "planner/Problem.h"
@@ -81,6 +82,7 @@ private:
     bool asyncStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
     bool adversarialStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
     bool syncRound(const RunObserver& observer, std::vector<std::int64_t>& changed);
+    void pipeline(const RunObserver& observer, std::vector<std::int64_t>& changed, std::vector<std::int64_t>& givers);
     const Problem* problem_;
     Allocator* allocator_;
     RunOptions options_;
@@ -100,6 +102,7 @@ private:
     std::vector<std::uint32_t> stamp_;
     std::uint32_t clock_ = 0;
     std::vector<std::int64_t> anchors_;
+    std::vector<std::pair<int, std::int64_t>> pipelined_;  // transfer shapes that may chain, and the step of each of their cells
     std::int64_t offGoal_ = 0;  // cells not as the goal wants them
     RunStats stats_;
 };

@@ -15,6 +15,7 @@
 #include "planner/Execution.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace holon::planner {
 
@@ -43,7 +44,27 @@ public:
         for (int sh = 0; sh < engine.shapeCount(); ++sh)
             if (engine.kind(sh) == ShapeKind::Motion) motions_.push_back(sh);
         needC_.assign(problem.cells.size(), kFar), needD_.assign(problem.cells.size(), kFar);
-        occupied_ = static_cast<std::int64_t>(problem.start.cells.size());
+        const rules::RuleTables& tables = *problem.tables;
+        alphabet_ = static_cast<std::size_t>(tables.alphabet());
+        accepting_.resize(static_cast<std::size_t>(tables.comboCount()) * alphabet_);
+        for (int c = 0; c < tables.comboCount(); ++c)
+            for (std::size_t v = 0; v < alphabet_; ++v)
+                for (int sh : motions_)
+                    for (std::size_t k = 0; k < engine.cellSteps(sh).size(); ++k)
+                        if (tables.test(tables.shape(sh).lhs[k], c, static_cast<rules::CellValue>(v)))
+                            accepting_[static_cast<std::size_t>(c) * alphabet_ + v].push_back({sh, engine.cellSteps(sh)[k]});
+        // What a change at a cell can affect at once: the demand of every cell in a motion
+        // instance that reads it, and the field values of its neighbours.
+        const Board& board = *problem.board;
+        for (int sh : motions_)
+            for (std::int64_t step : engine.cellSteps(sh))
+                for (std::int64_t r : engine.readSteps(sh)) around_.push_back(step - r);
+        for (int d = 0; d < board.lattice().degree(); ++d) around_.push_back(board.step(d));
+        around_.push_back(0);
+        std::sort(around_.begin(), around_.end());
+        around_.erase(std::unique(around_.begin(), around_.end()), around_.end());
+        // The first round sees every cell change from empty.
+        seen_.assign(problem.cells.size(), 0), mark_.assign(problem.cells.size(), 0), demand_.assign(problem.cells.size(), 0);
     }
     std::string name() const override { return "gradient"; }
 
@@ -52,28 +73,51 @@ public:
         const BoxEngine& engine = ex.engine();
         const Board& board = *problem_->board;
         const int degree = board.lattice().degree();
+        // Only the metamodules whose inputs changed recompute: a cell whose own neighbourhood and
+        // whose neighbours' values are as they were would compute the value it holds. So a round
+        // costs what changed in it, not the board (a full pass per round made 10^6 metamodules
+        // take hours), and the fields evolve as if every metamodule recomputed (up to the cap
+        // below, which a cell sees anew only when it recomputes).
+        const std::size_t n = cells.size();
+        const auto* now = reinterpret_cast<const unsigned char*>(cells.data());
+        for (std::size_t w = 0; w < n; w += 8) {
+            const std::size_t len = std::min<std::size_t>(8, n - w);
+            if (std::memcmp(now + w, seen_.data() + w, len) == 0) continue;
+            for (std::size_t x = w; x < w + len; ++x) {
+                if (cells[x] == seen_[x]) continue;
+                occupied_ += (cells[x] != 0) - (seen_[x] != 0);
+                seen_[x] = cells[x];
+                for (std::int64_t d : around_) dirty(static_cast<std::int64_t>(x) + d, kDemand);
+            }
+        }
         // No path is longer than the ensemble: capping there stops a field cut off from every
         // demand from counting up to kFar one round at a time (distance-vector count-to-infinity).
         const std::uint32_t far = static_cast<std::uint32_t>(std::min<std::int64_t>(kFar, 2 * occupied_ + 2));
-        std::vector<std::uint32_t> nextC(cells.size(), kFar), nextD(cells.size(), kFar);
-        bool moved = false;
-        occupied_ = 0;
-        for (std::size_t x = 0; x < cells.size(); ++x) {
-            const BoxEngine::Value v = cells[x];
-            if (!v) continue;
-            ++occupied_;
-            const auto i = static_cast<std::int64_t>(x);
-            std::uint32_t bestC = kFar, bestD = kFar;
-            for (int d = 0; d < degree; ++d) {
-                const std::int64_t j = i + board.step(d);
-                if (!cells[j]) continue;
-                bestC = std::min(bestC, needC_[j]), bestD = std::min(bestD, needD_[j]);
+        updates_.clear();
+        for (std::int64_t i : dirty_) {
+            const BoxEngine::Value v = cells[i];
+            if (mark_[i] & kDemand)
+                demand_[i] = static_cast<char>((v && wouldEnable(ex, engine, i, heavier_[v]) ? kNeedsC : 0) | (v && wouldEnable(ex, engine, i, lighter_[v]) ? kNeedsD : 0));
+            mark_[i] = 0;
+            std::uint32_t c = kFar, dd = kFar;
+            if (v) {
+                std::uint32_t bestC = kFar, bestD = kFar;
+                for (int d = 0; d < degree; ++d) {
+                    const std::int64_t j = i + board.step(d);
+                    if (!cells[j]) continue;
+                    bestC = std::min(bestC, needC_[j]), bestD = std::min(bestD, needD_[j]);
+                }
+                c = demand_[i] & kNeedsC ? 0 : bestC + 1 >= far ? kFar : bestC + 1;
+                dd = demand_[i] & kNeedsD ? 0 : bestD + 1 >= far ? kFar : bestD + 1;
             }
-            nextC[x] = wouldEnable(ex, engine, i, heavier_[v]) ? 0 : bestC + 1 >= far ? kFar : bestC + 1;
-            nextD[x] = wouldEnable(ex, engine, i, lighter_[v]) ? 0 : bestD + 1 >= far ? kFar : bestD + 1;
-            moved = moved || nextC[x] != needC_[x] || nextD[x] != needD_[x];
+            if (c != needC_[i] || dd != needD_[i]) updates_.push_back({i, c, dd});
         }
-        needC_.swap(nextC), needD_.swap(nextD);
+        dirty_.clear();
+        for (const Update& u : updates_) {
+            needC_[u.cell] = u.c, needD_[u.cell] = u.d;
+            for (int d = 0; d < degree; ++d) dirty(u.cell + board.step(d), kValue);
+        }
+        bool moved = !updates_.empty();
         // A round in which nothing fired although the fields had settled: the fields see no way
         // forward (a destroyer may need a D that only a detour brings), so the paper's randomizer
         // moves resources until the next creation or deletion.
@@ -106,19 +150,43 @@ private:
     bool wouldEnable(const Execution& ex, const BoxEngine& engine, std::int64_t i, BoxEngine::Value instead) const {
         const BoxEngine::Value v = ex.cells()[i];
         if (!instead || instead == v) return false;
-        for (int sh : motions_)
-            for (std::int64_t step : engine.cellSteps(sh)) {
-                const std::int64_t anchor = i - step;
-                if (engine.combo(anchor) == BoxEngine::kOutside || ex.enabled(anchor, sh)) continue;
-                if (engine.matches(ex.cells().data(), anchor, sh, i, instead)) return true;
-            }
+        const std::uint8_t combo = engine.combo(i);
+        if (combo == BoxEngine::kOutside) return false;
+        // Only the motion cells whose test the new state passes: most instances around a cell fail
+        // there, and the fields ask this of every cell near a change.
+        for (const auto& [sh, step] : accepting_[static_cast<std::size_t>(combo) * alphabet_ + instead]) {
+            const std::int64_t anchor = i - step;
+            if (engine.combo(anchor) == BoxEngine::kOutside || ex.enabled(anchor, sh)) continue;
+            if (engine.matches(ex.cells().data(), anchor, sh, i, instead)) return true;
+        }
         return false;
     }
 
     const Problem* problem_;
     std::vector<BoxEngine::Value> heavier_, lighter_;
     std::vector<int> motions_;
+    // Per input combination and state: the motion shapes and steps to their anchor from a pattern
+    // cell whose test that state passes.
+    std::vector<std::vector<std::pair<int, std::int64_t>>> accepting_;
+    std::size_t alphabet_ = 0;
+    // mark_ bits: the cell is in dirty_ (its value is recomputed), its demand is recomputed too.
+    static constexpr char kValue = 1, kDemand = 3;
+    // demand_ bits: a creation or deletion waits for this cell to be heavier / lighter.
+    static constexpr char kNeedsC = 1, kNeedsD = 2;
+    void dirty(std::int64_t i, char how) {
+        if (problem_->engine->combo(i) == BoxEngine::kOutside) return;
+        if (!mark_[i]) dirty_.push_back(i);
+        mark_[i] |= how;
+    }
+    struct Update {
+        std::int64_t cell;
+        std::uint32_t c, d;
+    };
     std::vector<std::uint32_t> needC_, needD_;
+    std::vector<BoxEngine::Value> seen_;  // the cells as of the previous update
+    std::vector<char> mark_, demand_;
+    std::vector<std::int64_t> dirty_, around_;
+    std::vector<Update> updates_;
     std::int64_t occupied_ = 0;
     std::int64_t stepsAtUpdate_ = -1, motionsAtUpdate_ = 0;
     bool anyTransfer_ = false;
