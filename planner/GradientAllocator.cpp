@@ -2,16 +2,14 @@
 // one that sends "the D to regions of anticipated deletion and the C to regions of anticipated
 // creation"; §V blames the random one's slow diffusion for general_1's long deletion phase).
 //
-// Every metamodule learns, from its own cells only, whether it is a demand: a creation or deletion
-// instance it takes part in would fire if its resource were heavier (it needs a C) or lighter (it
-// needs a D). Demands seed two hop-count fields, relaxed by one message exchange between lattice
+// Every metamodule learns, from its own cells only, whether it is a demand (DemandProbe: a creation
+// or deletion instance it takes part in would fire if its resource were heavier or lighter). Demands seed two hop-count fields, relaxed by one message exchange between lattice
 // neighbours per round (distance-vector routing, as in the hormone/gradient fields of the modular
 // robotics literature). A transfer fires only when it moves the heavy resource down the "needs C"
 // field or the light one down the "needs D" field, i.e. when it lowers their sum.
-// Which resource is heavy or light, and which rules create or delete, is read off the compiled
-// rule tables: nothing here names a rule of a particular system.
 
 #include "planner/Allocator.h"
+#include "planner/DemandProbe.h"
 #include "planner/Execution.h"
 
 #include <algorithm>
@@ -27,21 +25,7 @@ constexpr std::uint32_t kFar = 1u << 30;
 
 class GradientAllocator final : public Allocator {
 public:
-    GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), fallback_(randomAllocator(seed)) {
-        const rules::Alphabet& alphabet = problem.model->alphabet();
-        const PlannerSchema& s = problem.schema;
-        heavier_.assign(static_cast<std::size_t>(alphabet.size()), 0);
-        lighter_.assign(static_cast<std::size_t>(alphabet.size()), 0);
-        for (int v = 1; v < alphabet.size() && s.resource >= 0; ++v) {
-            std::vector<int> f = alphabet.fields(static_cast<rules::CellValue>(v));
-            f[s.resource] = s.creator;
-            heavier_[v] = static_cast<BoxEngine::Value>(std::max(0, alphabet.find(f)));
-            f[s.resource] = s.full;
-            lighter_[v] = static_cast<BoxEngine::Value>(std::max(0, alphabet.find(f)));
-        }
-        const BoxEngine& engine = *problem.engine;
-        for (int sh = 0; sh < engine.shapeCount(); ++sh)
-            if (engine.kind(sh) == ShapeKind::Motion) motions_.push_back(sh);
+    GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), fallback_(randomAllocator(seed)) {
         needC_.assign(problem.cells.size(), kFar), needD_.assign(problem.cells.size(), kFar);
         occupied_ = static_cast<std::int64_t>(problem.start.cells.size());
     }
@@ -49,7 +33,6 @@ public:
 
     bool update(const Execution& ex) override {
         const auto& cells = ex.cells();
-        const BoxEngine& engine = ex.engine();
         const Board& board = *problem_->board;
         const int degree = board.lattice().degree();
         // No path is longer than the ensemble: capping there stops a field cut off from every
@@ -59,8 +42,7 @@ public:
         bool moved = false;
         occupied_ = 0;
         for (std::size_t x = 0; x < cells.size(); ++x) {
-            const BoxEngine::Value v = cells[x];
-            if (!v) continue;
+            if (!cells[x]) continue;
             ++occupied_;
             const auto i = static_cast<std::int64_t>(x);
             std::uint32_t bestC = kFar, bestD = kFar;
@@ -69,8 +51,8 @@ public:
                 if (!cells[j]) continue;
                 bestC = std::min(bestC, needC_[j]), bestD = std::min(bestD, needD_[j]);
             }
-            nextC[x] = wouldEnable(ex, engine, i, heavier_[v]) ? 0 : bestC + 1 >= far ? kFar : bestC + 1;
-            nextD[x] = wouldEnable(ex, engine, i, lighter_[v]) ? 0 : bestD + 1 >= far ? kFar : bestD + 1;
+            nextC[x] = probe_.needsHeavier(ex, i) ? 0 : bestC + 1 >= far ? kFar : bestC + 1;
+            nextD[x] = probe_.needsLighter(ex, i) ? 0 : bestD + 1 >= far ? kFar : bestD + 1;
             moved = moved || nextC[x] != needC_[x] || nextD[x] != needD_[x];
         }
         needC_.swap(nextC), needD_.swap(nextD);
@@ -101,23 +83,8 @@ public:
     }
 
 private:
-    /// Whether a motion instance that cell i takes part in is disabled now but would be enabled
-    /// with i in state `instead`.
-    bool wouldEnable(const Execution& ex, const BoxEngine& engine, std::int64_t i, BoxEngine::Value instead) const {
-        const BoxEngine::Value v = ex.cells()[i];
-        if (!instead || instead == v) return false;
-        for (int sh : motions_)
-            for (std::int64_t step : engine.cellSteps(sh)) {
-                const std::int64_t anchor = i - step;
-                if (engine.combo(anchor) == BoxEngine::kOutside || ex.enabled(anchor, sh)) continue;
-                if (engine.matches(ex.cells().data(), anchor, sh, i, instead)) return true;
-            }
-        return false;
-    }
-
     const Problem* problem_;
-    std::vector<BoxEngine::Value> heavier_, lighter_;
-    std::vector<int> motions_;
+    DemandProbe probe_;
     std::vector<std::uint32_t> needC_, needD_;
     std::int64_t occupied_ = 0;
     std::int64_t stepsAtUpdate_ = -1, motionsAtUpdate_ = 0;
