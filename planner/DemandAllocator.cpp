@@ -13,12 +13,16 @@
 //          with every C drawn to every creation, most of them chased creations others served);
 //   sink   hop count to a place a C may go: a creation, or a final metamodule holding a D (never
 //          a P one: it may yet be deleted, and the C swapped back and forth with its neighbour);
-//   push   set on a C that must leave (it lies outside the target, or a deletion waits for it
-//          to be a D) and on a target C that such a C reaches by climbing down `sink` through C's.
-// A claimed C moves down needC. Otherwise a C outside the target moves down `sink`, and one
-// inside it rests unless it is pushed (down `sink` within the target, making room at the front of
-// a queue of C's). Messages are cheap beside motions, so the fields are exchanged until they
-// settle each round (a breadth-first search computes that fixpoint); rounds count motions only.
+//   route  each unclaimed C that must leave (it lies outside the target, or a deletion waits for
+//          it to be a D) is matched to the nearest final D no nearer such C took; every cell on
+//          the path between them learns the next cell towards that D.
+// A claimed C moves down needC. Otherwise a C outside the target moves down `sink`, and one inside
+// it rests unless it lies on a route: then it steps along the route within the target, and the D
+// comes back towards the C that must leave, one C of the queue between them at a time. (Marking
+// the C's on a path without matching moved one D at a time along each queue; with the match, each
+// C that must leave brings its own D, and they travel together: 2D rounds p90 19.2 -> 16.2.)
+// Messages are cheap beside motions, so the fields are exchanged until they settle each round
+// (a breadth-first search computes that fixpoint); rounds count motions only.
 // When nothing fires and the fields have settled, the paper's randomizer moves resources until
 // the next creation or deletion, as in the gradient allocator.
 
@@ -38,9 +42,9 @@ namespace {
 constexpr std::uint32_t kFar = 1u << 30;
 // How many C's a creation claims: fewer make fewer transfers and more rounds (shape bench,
 // general1, 2D median/p90/worst transfers over the bound and rounds over the intermediate
-// planner's: 4 claims 1.47/4.74/7.70 and 12.2/30.0/54.6; 8: 1.49/4.60/8.70 and 9.2/26.1/79.6; 16:
-// 1.53/5.75/12.0 and 6.9/19.2/50.7; 32: 1.58/7.45/14.4 and 5.8/16.5/37.9; all: 1.70/9.73/14.6 and
-// 5.6/17.8/32.6). 16 is the fewest at which every figure beats the gradient allocator's.
+// planner's: 4 claims 1.40/4.30/7.77 and 12.5/28.5/60.0; 8: 1.43/4.61/8.67 and 8.1/21.5/54.3; 16:
+// 1.47/5.72/11.9 and 6.8/16.2/44.1; 32: 1.56/7.17/14.4 and 5.9/15.5/40.5; all: 1.68/9.71/14.4 and
+// 5.5/14.8/37.0). 16 is the fewest at which every figure beats the gradient allocator's.
 constexpr int kClaims = 16;
 
 class DemandAllocator final : public Allocator {
@@ -49,24 +53,24 @@ public:
         const Board& board = *problem.board;
         inTarget_.assign(static_cast<std::size_t>(board.size()), 0);
         for (Vec v : problem.target.cells) inTarget_[board.index(v)] = 1;
-        needC_.assign(problem.cells.size(), kFar), sink_.assign(problem.cells.size(), kFar), push_.assign(problem.cells.size(), 0), claimed_.assign(problem.cells.size(), 0);
+        needC_.assign(problem.cells.size(), kFar), sink_.assign(problem.cells.size(), kFar), claimed_.assign(problem.cells.size(), 0), route_.assign(problem.cells.size(), -1);
     }
     std::string name() const override { return "demand"; }
 
     bool update(const Execution& ex) override {
         const auto& cells = ex.cells();
-        std::vector<std::int64_t> creations, sinks, pushed;
+        std::vector<std::int64_t> creations, sinks, leaving;
         for (std::size_t x = 0; x < cells.size(); ++x) {
             const BoxEngine::Value v = cells[x];
             if (!v) continue;
             const auto i = static_cast<std::int64_t>(x);
             if (probe_.needsHeavier(ex, i)) creations.push_back(i), sinks.push_back(i);
             else if (probe_.final(v) && probe_.light(v)) sinks.push_back(i);
-            if (probe_.heavy(v) && (!inTarget_[x] || probe_.needsLighter(ex, i))) pushed.push_back(i);
+            if (probe_.heavy(v) && (!inTarget_[x] || probe_.needsLighter(ex, i))) leaving.push_back(i);
         }
         bool moved = claim(cells, creations);
         moved = spread(cells, sinks, sink_) || moved;
-        moved = climb(cells, pushed) || moved;
+        moved = route(cells, leaving) || moved;
         // A round in which nothing fired although the fields had settled: they see no way
         // forward, so the paper's randomizer moves resources until the next creation or deletion.
         const RunStats& st = ex.stats();
@@ -84,9 +88,9 @@ public:
         if (from < 0) return false;
         if (!inTarget_[from]) return (claimed_[from] && needC_[to] < needC_[from]) || sink_[to] < sink_[from];
         if (claimed_[from] && needC_[to] < needC_[from]) return true;
-        // A pushed C makes room in the target; back in the region to delete it would only have to
-        // leave again (and swapped back and forth with the one that pushed it).
-        return push_[from] && inTarget_[to] && sink_[to] < sink_[from];
+        // A C on a route makes room in the target; back in the region to delete it would only have
+        // to leave again (and swapped back and forth with the C it made room for).
+        return route_[from] == to && inTarget_[to];
     }
 
 private:
@@ -126,18 +130,26 @@ private:
         return changed;
     }
 
-    /// Marks the C's that must leave and the target C's they reach climbing down `sink`.
-    bool climb(const std::vector<BoxEngine::Value>& cells, const std::vector<std::int64_t>& pushed) {
-        std::vector<char> next(cells.size(), 0);
+    /// Matches each C that must leave to the nearest final D no nearer one took and marks, on
+    /// every cell of the path between them, the next cell towards the D (route_).
+    bool route(const std::vector<BoxEngine::Value>& cells, const std::vector<std::int64_t>& leaving) {
+        std::vector<std::int64_t> parent(cells.size(), -2), next(cells.size(), -1);
+        std::vector<char> done(leaving.size(), 0);
+        owner_.assign(cells.size(), -1);
         queue_.clear();
-        for (std::int64_t i : pushed) next[i] = 1, queue_.push_back(i);
+        for (std::size_t s = 0; s < leaving.size(); ++s)
+            if (!claimed_[leaving[s]]) parent[leaving[s]] = -1, owner_[leaving[s]] = static_cast<std::int32_t>(s), queue_.push_back(leaving[s]);
         forEachReached(cells, [&](std::int64_t i, std::int64_t j) {
-            if (next[j] || !inTarget_[j] || !probe_.heavy(cells[j]) || sink_[j] >= sink_[i]) return false;
-            next[j] = 1;
-            return true;
+            const std::int32_t s = owner_[i];
+            if (parent[j] != -2 || done[s]) return false;
+            parent[j] = i, owner_[j] = s;
+            if (!probe_.final(cells[j]) || !probe_.light(cells[j])) return true;
+            done[s] = 1;
+            for (std::int64_t k = j; parent[k] >= 0; k = parent[k]) next[parent[k]] = k;
+            return false;
         });
-        const bool changed = next != push_;
-        push_.swap(next);
+        const bool changed = next != route_;
+        route_.swap(next);
         return changed;
     }
 
@@ -156,8 +168,9 @@ private:
 
     const Problem* problem_;
     DemandProbe probe_;
-    std::vector<char> inTarget_, push_, claimed_;
+    std::vector<char> inTarget_, claimed_;
     std::vector<std::int32_t> owner_;
+    std::vector<std::int64_t> route_;
     std::vector<std::uint32_t> needC_, sink_, next_;
     std::vector<std::int64_t> queue_;
     std::int64_t stepsAtUpdate_ = -1, motionsAtUpdate_ = 0;
