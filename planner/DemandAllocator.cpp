@@ -29,13 +29,13 @@
 #include "planner/Allocator.h"
 #include "planner/DemandProbe.h"
 #include "planner/Execution.h"
+#include "planner/StallFallback.h"
 
 #include <algorithm>
 
 namespace holon::planner {
 
 std::unique_ptr<Allocator> demandAllocator(const Problem& problem, std::uint64_t seed);
-std::unique_ptr<Allocator> randomAllocator(std::uint64_t seed);
 
 namespace {
 
@@ -49,7 +49,7 @@ constexpr int kClaims = 16;
 
 class DemandAllocator final : public Allocator {
 public:
-    DemandAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), fallback_(randomAllocator(seed)) {
+    DemandAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), stall_(seed) {
         const Board& board = *problem.board;
         inTarget_.assign(static_cast<std::size_t>(board.size()), 0);
         for (Vec v : problem.target.cells) inTarget_[board.index(v)] = 1;
@@ -71,19 +71,11 @@ public:
         bool moved = claim(cells, creations);
         moved = spread(cells, sinks, sink_) || moved;
         moved = route(cells, leaving) || moved;
-        // A round in which nothing fired although the fields had settled: they see no way
-        // forward, so the paper's randomizer moves resources until the next creation or deletion.
-        const RunStats& st = ex.stats();
-        const std::int64_t motions = st.creations + st.deletions;
-        if (motions != motionsAtUpdate_) anyTransfer_ = false;
-        if (st.steps == stepsAtUpdate_ && !moved && !anyTransfer_) anyTransfer_ = moved = true;
-        else if (anyTransfer_) moved = fallback_->update(ex) || moved;
-        stepsAtUpdate_ = st.steps, motionsAtUpdate_ = motions;
-        return moved;
+        return stall_.update(ex, moved);
     }
 
     bool wants(const Execution& ex, std::int64_t anchor, int shape) const override {
-        if (anyTransfer_) return fallback_->wants(ex, anchor, shape);
+        if (stall_.active()) return stall_.wants(ex, anchor, shape);
         const auto [from, to] = transferEnds(ex, anchor, shape);  // `from` holds the C
         if (from < 0) return false;
         if (!inTarget_[from]) return (claimed_[from] && needC_[to] < needC_[from]) || sink_[to] < sink_[from];
@@ -173,9 +165,7 @@ private:
     std::vector<std::int64_t> route_;
     std::vector<std::uint32_t> needC_, sink_, next_;
     std::vector<std::int64_t> queue_;
-    std::int64_t stepsAtUpdate_ = -1, motionsAtUpdate_ = 0;
-    bool anyTransfer_ = false;
-    std::unique_ptr<Allocator> fallback_;
+    StallFallback stall_;
 };
 
 }  // namespace

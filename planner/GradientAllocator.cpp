@@ -11,13 +11,13 @@
 #include "planner/Allocator.h"
 #include "planner/DemandProbe.h"
 #include "planner/Execution.h"
+#include "planner/StallFallback.h"
 
 #include <algorithm>
 
 namespace holon::planner {
 
 std::unique_ptr<Allocator> gradientAllocator(const Problem& problem, std::uint64_t seed);
-std::unique_ptr<Allocator> randomAllocator(std::uint64_t seed);
 
 namespace {
 
@@ -25,7 +25,7 @@ constexpr std::uint32_t kFar = 1u << 30;
 
 class GradientAllocator final : public Allocator {
 public:
-    GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), fallback_(randomAllocator(seed)) {
+    GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), stall_(seed) {
         needC_.assign(problem.cells.size(), kFar), needD_.assign(problem.cells.size(), kFar);
         occupied_ = static_cast<std::int64_t>(problem.start.cells.size());
     }
@@ -56,20 +56,11 @@ public:
             moved = moved || nextC[x] != needC_[x] || nextD[x] != needD_[x];
         }
         needC_.swap(nextC), needD_.swap(nextD);
-        // A round in which nothing fired although the fields had settled: the fields see no way
-        // forward (a destroyer may need a D that only a detour brings), so the paper's randomizer
-        // moves resources until the next creation or deletion.
-        const RunStats& st = ex.stats();
-        const std::int64_t motions = st.creations + st.deletions;
-        if (motions != motionsAtUpdate_) anyTransfer_ = false;
-        if (st.steps == stepsAtUpdate_ && !moved && !anyTransfer_) anyTransfer_ = moved = true;
-        else if (anyTransfer_) moved = fallback_->update(ex) || moved;
-        stepsAtUpdate_ = st.steps, motionsAtUpdate_ = motions;
-        return moved;
+        return stall_.update(ex, moved);
     }
 
     bool wants(const Execution& ex, std::int64_t anchor, int shape) const override {
-        if (anyTransfer_) return fallback_->wants(ex, anchor, shape);
+        if (stall_.active()) return stall_.wants(ex, anchor, shape);
         // The cell that loses mass gives its heavy resource to the one that gains it.
         const auto [from, to] = transferEnds(ex, anchor, shape);
         if (from < 0) return false;
@@ -87,9 +78,7 @@ private:
     DemandProbe probe_;
     std::vector<std::uint32_t> needC_, needD_;
     std::int64_t occupied_ = 0;
-    std::int64_t stepsAtUpdate_ = -1, motionsAtUpdate_ = 0;
-    bool anyTransfer_ = false;
-    std::unique_ptr<Allocator> fallback_;
+    StallFallback stall_;
 };
 
 }  // namespace
