@@ -1,6 +1,6 @@
 // The demand allocator against the transport bound and the intermediate planner on seeded shape
 // bench problems (issue 28), the small ones of bench.shape_short's generator: starts heavier than
-// the target, where the gradient allocator paid 4 to 14 times the bound, and a lighter one. A
+// the target, where the gradient allocator paid 3.7 to 14 times the bound, and a lighter one. A
 // bound on the ratio, not a count: the test holds for any draw as good as these, and it checks
 // that the problems still tell the allocators apart (the gradient allocator breaks the bound on
 // at least one), so a generator that drew only easy problems would fail it too.
