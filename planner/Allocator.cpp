@@ -10,6 +10,7 @@ namespace holon::planner {
 std::unique_ptr<Allocator> randomAllocator(std::uint64_t seed);
 std::unique_ptr<Allocator> gradientAllocator(const Problem& problem, std::uint64_t seed);
 std::unique_ptr<Allocator> optimalAllocator(const Problem& problem, std::uint64_t seed);
+std::unique_ptr<Allocator> demandAllocator(const Problem& problem, std::uint64_t seed);
 
 std::pair<std::int64_t, std::int64_t> transferEnds(const Execution& ex, std::int64_t anchor, int shape) {
     const BoxEngine& engine = ex.engine();
@@ -31,7 +32,8 @@ std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem&
     if (name == "random") return randomAllocator(seed);
     if (name == "gradient") return gradientAllocator(problem, seed);
     if (name == "optimal") return optimalAllocator(problem, seed);
-    throw InputError("--allocator '" + name + "': choose random, gradient or optimal");
+    if (name == "demand") return demandAllocator(problem, seed);
+    throw InputError("--allocator '" + name + "': choose random, gradient, demand or optimal");
 }
 
 }  // namespace holon::planner

@@ -1,0 +1,54 @@
+// A metamodule's view of the resource demand around it (see DemandProbe.h): the state it would
+// be in one resource heavier or lighter, and the motion instances that change would enable.
+
+#include "planner/DemandProbe.h"
+#include "planner/Execution.h"
+
+#include <algorithm>
+
+namespace holon::planner {
+
+DemandProbe::DemandProbe(const Problem& problem) {
+    const rules::Alphabet& alphabet = problem.model->alphabet();
+    const PlannerSchema& s = problem.schema;
+    const auto size = static_cast<std::size_t>(alphabet.size());
+    heavier_.assign(size, 0), lighter_.assign(size, 0), heavy_.assign(size, 0), light_.assign(size, 0), final_.assign(size, 0);
+    for (int v = 1; v < alphabet.size() && s.resource >= 0; ++v) {
+        std::vector<int> f = alphabet.fields(static_cast<rules::CellValue>(v));
+        heavy_[v] = f[s.resource] == s.creator, light_[v] = f[s.resource] == s.full, final_[v] = f[s.label] == s.final;
+        f[s.resource] = s.creator;
+        heavier_[v] = static_cast<BoxEngine::Value>(std::max(0, alphabet.find(f)));
+        f[s.resource] = s.full;
+        lighter_[v] = static_cast<BoxEngine::Value>(std::max(0, alphabet.find(f)));
+    }
+    const BoxEngine& engine = *problem.engine;
+    const rules::RuleTables& tables = *problem.tables;
+    alphabet_ = static_cast<std::size_t>(tables.alphabet());
+    accepting_.resize(static_cast<std::size_t>(tables.comboCount()) * alphabet_);
+    for (int sh = 0; sh < engine.shapeCount(); ++sh)
+        if (engine.kind(sh) == ShapeKind::Motion)
+            for (int c = 0; c < tables.comboCount(); ++c)
+                for (std::size_t v = 0; v < alphabet_; ++v)
+                    for (std::size_t k = 0; k < engine.cellSteps(sh).size(); ++k)
+                        if (tables.test(tables.shape(sh).lhs[k], c, static_cast<rules::CellValue>(v)))
+                            accepting_[static_cast<std::size_t>(c) * alphabet_ + v].push_back({sh, engine.cellSteps(sh)[k]});
+}
+
+bool DemandProbe::needsHeavier(const Execution& ex, std::int64_t i) const { return wouldEnable(ex, i, heavier_[ex.cells()[i]]); }
+bool DemandProbe::needsLighter(const Execution& ex, std::int64_t i) const { return wouldEnable(ex, i, lighter_[ex.cells()[i]]); }
+
+bool DemandProbe::wouldEnable(const Execution& ex, std::int64_t i, BoxEngine::Value instead) const {
+    const BoxEngine::Value v = ex.cells()[i];
+    if (!instead || instead == v) return false;
+    const BoxEngine& engine = ex.engine();
+    const std::uint8_t combo = engine.combo(i);
+    if (combo == BoxEngine::kOutside) return false;
+    for (const auto& [sh, step] : accepting_[static_cast<std::size_t>(combo) * alphabet_ + instead]) {
+        const std::int64_t anchor = i - step;
+        if (engine.combo(anchor) == BoxEngine::kOutside || ex.enabled(anchor, sh)) continue;
+        if (engine.matches(ex.cells().data(), anchor, sh, i, instead)) return true;
+    }
+    return false;
+}
+
+}  // namespace holon::planner

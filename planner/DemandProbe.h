@@ -1,0 +1,40 @@
+#pragma once
+// What a metamodule can tell from its own cells about the resources the planner asks for (seed
+// 000 §IV-B): whether a creation or deletion it takes part in waits for it to be heavier (it needs
+// a C) or lighter (it needs a D). Shared by the allocators that route resources to those demands.
+// Which resource is heavy or light, and which rules create or delete, is read off the compiled
+// rule tables: nothing here names a rule of a particular system.
+
+#include "planner/Problem.h"
+
+#include <vector>
+
+namespace holon::planner {
+
+class Execution;
+
+class DemandProbe {
+public:
+    explicit DemandProbe(const Problem& problem);
+    /// Whether cell i holds a resource and a motion instance it takes part in is disabled now but
+    /// would be enabled with i one creator heavier (a C) or one destroyer lighter (a D).
+    bool needsHeavier(const Execution& ex, std::int64_t i) const;
+    bool needsLighter(const Execution& ex, std::int64_t i) const;
+    /// Whether a value's resource is the creator (C) or the full one (D); whether it is labelled F
+    /// (final: it stays to the end).
+    bool heavy(BoxEngine::Value v) const { return heavy_[v] != 0; }
+    bool light(BoxEngine::Value v) const { return light_[v] != 0; }
+    bool final(BoxEngine::Value v) const { return final_[v] != 0; }
+
+private:
+    bool wouldEnable(const Execution& ex, std::int64_t i, BoxEngine::Value instead) const;
+    std::vector<BoxEngine::Value> heavier_, lighter_;
+    std::vector<char> heavy_, light_, final_;
+    // Per input combination and state: the motion shapes and steps to their anchor from a pattern
+    // cell whose test that state passes (most instances around a cell fail there, and the fields
+    // ask this of every cell near a change).
+    std::vector<std::vector<std::pair<int, std::int64_t>>> accepting_;
+    std::size_t alphabet_ = 0;
+};
+
+}  // namespace holon::planner
