@@ -18,7 +18,7 @@ rules::System broken(const std::string& stem) {
 }
 }  // namespace
 
-TEST_CASE("pixel and intermediate are holonomic; the hex pivot is not (seed 000 Fig. 2)") {
+TEST_CASE("pixel and intermediate are holonomic, the hex pivot is not (seed 000 Fig. 2)") {
     for (const char* spec : {"square:3x3", "hex:r1", "cubic:2x2x2"}) {
         CAPTURE(spec);
         CHECK(test::checkAll(rules::librarySystem("pixel"), spec).property("holonomy").verdict == Verdict::Holds);

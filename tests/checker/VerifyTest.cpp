@@ -202,7 +202,7 @@ invariant joined: reaches(U, nbr, F)
     }
 }
 
-TEST_CASE("Safety's `connected` follows from the tree conjuncts before it; the others need a query per step") {
+TEST_CASE("Safety's `connected` follows from the tree conjuncts before it, the others need a query per step") {
     test::World w = test::World::library("planner_intermediate", "square:3x3");
     const auto report = prove(w, {"safety"});
     const auto& s = result(report, "safety");

@@ -87,7 +87,7 @@ TEST_CASE("a transfer exchanges resources and the stages of a general_n creation
     }
 }
 
-TEST_CASE("every allocator completes every general system, never below the transport bound; optimal beats random") {
+TEST_CASE("every allocator completes every general system, never below the transport bound, optimal beats random") {
     for (const char* stem : {"planner_general1", "planner_general2", "planner_general3", "planner_general_lock2", "planner_general_lock3"})
         for (int dimension : {2, 3}) {
             PlannerSystem sys(stem, dimension);

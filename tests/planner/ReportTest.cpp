@@ -46,7 +46,7 @@ TEST_CASE("an interrupt stops the run at the next round boundary") {
     CHECK_FALSE(stats.complete);
 }
 
-TEST_CASE("an interrupted plan's files are whole and the summary says so; an abandoned one leaves none") {
+TEST_CASE("an interrupted plan's files are whole and the summary says so, an abandoned one leaves none") {
     const fs::path dir = fs::temp_directory_path() / "holon_report_test";
     fs::remove_all(dir);
     fs::create_directories(dir);

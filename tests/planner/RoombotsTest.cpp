@@ -75,7 +75,7 @@ TEST_CASE("a stance read from the head is the same pose: reversed() and the head
     }
 }
 
-TEST_CASE("a sweep covers where the motion starts and ends; standing still sweeps only the body") {
+TEST_CASE("a sweep covers where the motion starts and ends, standing still sweeps only the body") {
     const Metamodule m(Coupling::SRZ);
     const Joints zero{};
     CHECK(m.sweep(zero, zero, 0, 48, 0.45).size() == 4);

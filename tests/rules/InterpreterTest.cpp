@@ -99,7 +99,7 @@ invariant joined: connected
     CHECK_FALSE(holds("joined", c));
 }
 
-TEST_CASE("reaches(A, nbr, B): every A cell has a path through A cells to a B cell; the engine agrees") {
+TEST_CASE("reaches(A, nbr, B): every A cell has a path through A cells to a B cell, the engine agrees") {
     World w(test::parse(R"(system t
 field label: U | P | F
 field parent: dir if P
@@ -155,7 +155,7 @@ invariant lonely: count(U: no nbr #) == 1 and some(F: count nbr U == 2) and no(P
     CHECK_FALSE(holds("lonely", c));  // now the P stands alone, and the F has one U
 }
 
-TEST_CASE("a copy term moves a module with its fields; blocking cells must be occupied") {
+TEST_CASE("a copy term moves a module with its fields, blocking cells must be occupied") {
     rules::System s = test::parse(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/../examples/rules/sliding_cube.holon"));
     CHECK(rules::printSystem(test::parse(rules::printSystem(s))) == rules::printSystem(s));
     World w(s, "square:3x3");
