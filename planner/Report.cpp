@@ -4,6 +4,8 @@
 
 #include "planner/Report.h"
 
+#include "planner/Diagnosis.h"
+
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 
@@ -54,6 +56,12 @@ void Report::fired(std::int64_t anchor, int shape, const BoxEngine::Value*) {
     plan_->stream() << nlohmann::json{{"round", lastRound_ + 1}, {"rule", model.rules()[engine.ruleOf(shape)].name}, {"cells", cells}, {"after", states}}.dump() << '\n';
 }
 
+void Report::lost(std::int64_t cell) {
+    if (plan_)
+        plan_->stream() << nlohmann::json{{"round", lastRound_}, {"fault", "lose"}, {"cells", {rules::pointJson(problem_->model->lattice(), problem_->board->point(cell))}}}.dump()
+                        << '\n';
+}
+
 void Report::roundEnd(const RunStats& stats) {
     lastRound_ = stats.rounds;
     const double created = fraction(stats.creations, problem_->toCreate), deleted = fraction(stats.deletions, problem_->toDelete);
@@ -81,9 +89,12 @@ void Report::finish(const RunStats& stats, std::int64_t transferLowerBound) {
     if (!stats.complete) attempt([&] { rules::OutputFile(options_.outOption, options_.outDir + "/end.json").write(configurationJson(*problem_, execution_->cells()).dump() + '\n'); });
     const auto [short_, shortCount] = cellsShortOfGoal(*execution_, 20);
     nlohmann::json unfinished = nlohmann::json::array();
+    std::optional<BoardConfiguration> board;
+    if (!short_.empty()) board.emplace(*problem_, execution_->cells());
     for (std::int64_t i : short_) {
         nlohmann::json cell = rules::stateFields(*problem_->model, execution_->cells()[i]);
         cell["at"] = rules::pointJson(problem_->model->lattice(), problem_->board->point(i));
+        cell["waits_on"] = waitingOn(*problem_, *board, i);
         unfinished.push_back(cell);
     }
     nlohmann::json summary = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions},
@@ -91,6 +102,7 @@ void Report::finish(const RunStats& stats, std::int64_t transferLowerBound) {
                               {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete},
                               {"stopped", stats.stopped}, {"interrupted", stats.stopped == "interrupted"},
                               {"cells_short_of_goal", shortCount}, {"short_of_goal", unfinished}};
+    summary.update(extra_);
     attempt([&] { rules::OutputFile(options_.outOption, options_.outDir + "/summary.json").write(summary.dump(2) + '\n'); });
 }
 
@@ -106,23 +118,34 @@ void Report::attempt(const std::function<void()>& write) {
     }
 }
 
-nlohmann::json configurationJson(const Problem& problem, const std::vector<BoxEngine::Value>& cells) {
-    const Board& board = *problem.board;
-    const rules::Lattice& lattice = board.lattice();
-    const Vec lower = board.lower(), extent = board.extent();
-    const Vec shift{std::max(0, -lower.x), std::max(0, -lower.y), std::max(0, -lower.z)};
-    const Vec size = lower + extent + shift;
-    const rules::Region region = rules::Region::box(lattice, {size.x, size.y, lattice.dimension() == 3 ? size.z : 1});
-    const rules::Interpreter in(*problem.model, region);
-    rules::Configuration c = in.empty();
-    board.forEachInside([&](std::int64_t i, Vec p) {
-        const int at = region.indexOf(p + shift);
-        c.cells[at] = cells[i];
+namespace {
+
+Vec shiftOf(const Board& board) {
+    const Vec lower = board.lower();
+    return {std::max(0, -lower.x), std::max(0, -lower.y), std::max(0, -lower.z)};
+}
+
+rules::Region regionOf(const Board& board) {
+    const Vec size = board.lower() + board.extent() + shiftOf(board);
+    return rules::Region::box(board.lattice(), {size.x, size.y, board.lattice().dimension() == 3 ? size.z : 1});
+}
+
+}  // namespace
+
+BoardConfiguration::BoardConfiguration(const Problem& problem, const std::vector<BoxEngine::Value>& cells)
+    : shift_(shiftOf(*problem.board)), region_(regionOf(*problem.board)), interpreter_(*problem.model, region_), configuration_(interpreter_.empty()) {
+    problem.board->forEachInside([&](std::int64_t i, Vec p) {
+        const int at = region_.indexOf(p + shift_);
+        configuration_.cells[at] = cells[i];
         const std::uint8_t combo = problem.engine->combo(i);
-        if (combo != BoxEngine::kOutside) c.inputs[at] = problem.tables->comboInputs(combo);
+        if (combo != BoxEngine::kOutside) configuration_.inputs[at] = problem.tables->comboInputs(combo);
     });
-    nlohmann::json j = rules::configToJson(in, c);
-    if (shift != Vec{}) j["offset"] = rules::pointJson(lattice, shift);
+}
+
+nlohmann::json configurationJson(const Problem& problem, const std::vector<BoxEngine::Value>& cells) {
+    const BoardConfiguration board(problem, cells);
+    nlohmann::json j = rules::configToJson(board.interpreter(), board.configuration());
+    if (board.shift() != Vec{}) j["offset"] = rules::pointJson(problem.board->lattice(), board.shift());
     return j;
 }
 

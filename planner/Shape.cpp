@@ -314,4 +314,8 @@ std::vector<std::vector<Vec>> components(const std::vector<Vec>& cells, int dime
     return out;
 }
 
+std::string showCell(Vec v, int dimension) {
+    return "(" + std::to_string(v.x) + "," + std::to_string(v.y) + (dimension == 3 ? "," + std::to_string(v.z) : "") + ")";
+}
+
 }  // namespace holon::planner
