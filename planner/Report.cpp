@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -167,40 +168,71 @@ std::string drawBoard(const Problem& problem, const std::vector<BoxEngine::Value
     const PlannerSchema& schema = problem.schema;
     const bool is3d = board.lattice().dimension() == 3;
     const Vec ext = board.extent();
-    const int slices = is3d ? std::min(ext.z, 12) : 1;
-    // Large boards are sampled: at most ~600 cells across per slice.
-    const int sample = std::max(1, std::max(ext.x, ext.y) * slices / 600 + 1);
-    const double px = std::clamp(600.0 / (double(std::max(ext.x, ext.y)) / sample * slices), 2.0, 24.0);
+    // Every layer of a 3D board, in rows of at most 8 slices; as in the checker's pictures
+    // (checker/Draw.h, rules/ConfigIo.h) x runs right and y down the page, so a shape drawn as
+    // ASCII art appears as drawn. Large boards are sampled in x and y (never in z) to keep the
+    // picture near 250,000 cells and 1200 pixels across.
+    const int layers = is3d ? ext.z : 1, columns = std::min(layers, 8), rows = (layers + columns - 1) / columns;
+    const double cellsShown = double(ext.x) * ext.y * layers;
+    const int sample = std::max(1, static_cast<int>(std::ceil(std::sqrt(cellsShown / 250000.0))));
     const int w = (ext.x + sample - 1) / sample, h = (ext.y + sample - 1) / sample;
-    const double gap = is3d ? px * 2 : 0;
+    const double px = std::clamp(1200.0 / (double(std::max(w, h)) * columns), 2.0, 24.0);
+    const double gapX = is3d ? std::max(px * 2, 12.0) : 0, gapY = is3d ? 16 : 0;
+    const double width = (w * px + gapX) * columns + 10, top = 25, legendTop = top + rows * (h * px + gapY) + 10;
     std::ostringstream svg;
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << (w * px + gap) * slices + 10 << "\" height=\"" << h * px + 30 << "\">\n"
+    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << std::max(width, 560.0) << "\" height=\"" << legendTop + 40 << "\">\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"5\" y=\"16\" font-family=\"sans-serif\" font-size=\"13\">" << title
-        << "</text>\n";
+        << (sample > 1 ? " (every " + std::to_string(sample) + "th cell in x and y)" : std::string()) << "</text>\n";
     const int inTarget = problem.tables->comboIndex(1u << schema.target);
-    for (int s = 0; s < slices; ++s) {
-        const int z = is3d ? s * ext.z / slices : 0;
-        const double ox = 5 + s * (w * px + gap), oy = 25;
+    const auto square = [&](double x, double y, const char* fill, bool outline) {
+        svg << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"" << px << "\" height=\"" << px << "\" fill=\"" << fill << "\"";
+        if (outline) svg << " stroke=\"#888\" stroke-width=\"" << (px > 4 ? 0.5 : 0) << "\"";
+        svg << "/>\n";
+    };
+    constexpr const char* kU = "#ffffff", *kP = "#222222", *kF = "#3d6fb0", *kTarget = "#e8eef6", *kCreator = "#e07020";
+    for (int s = 0; s < layers; ++s) {
+        const int z = s;
+        const double ox = 5 + (s % columns) * (w * px + gapX), oy = top + (s / columns) * (h * px + gapY) + (is3d ? 12 : 0);
+        if (is3d) svg << "<text x=\"" << ox << "\" y=\"" << oy - 3 << "\" font-size=\"10\" font-family=\"sans-serif\">z=" << z + board.lower().z << "</text>\n";
         for (int y = 0; y < ext.y; y += sample)
             for (int x = 0; x < ext.x; x += sample) {
                 const std::int64_t i = board.index(board.lower() + Vec{x, y, z});
-                const double cx = ox + (x / sample) * px, cy = oy + (h - 1 - y / sample) * px;
-                const bool target = problem.engine->combo(i) == inTarget;
+                const double cx = ox + (x / sample) * px, cy = oy + (y / sample) * px;
                 const BoxEngine::Value v = cells[i];
                 if (!v) {
-                    if (target) svg << "<rect x=\"" << cx << "\" y=\"" << cy << "\" width=\"" << px << "\" height=\"" << px << "\" fill=\"#e8eef6\"/>\n";
+                    if (problem.engine->combo(i) == inTarget) square(cx, cy, kTarget, false);
                     continue;
                 }
                 const auto& f = alphabet.fields(v);
                 const int label = f[schema.label];
-                const char* fill = label == schema.final ? "#3d6fb0" : label == schema.path ? "#222222" : "#ffffff";
-                svg << "<rect x=\"" << cx << "\" y=\"" << cy << "\" width=\"" << px << "\" height=\"" << px << "\" fill=\"" << fill
-                    << "\" stroke=\"#888\" stroke-width=\"" << (px > 4 ? 0.5 : 0) << "\"/>\n";
+                square(cx, cy, label == schema.final ? kF : label == schema.path ? kP : kU, true);
                 if (schema.resource >= 0 && f[schema.resource] != schema.full && px >= 4)
-                    svg << "<circle cx=\"" << cx + px / 2 << "\" cy=\"" << cy + px / 2 << "\" r=\"" << px / 4 << "\" fill=\"#e07020\"/>\n";
+                    svg << "<circle cx=\"" << cx + px / 2 << "\" cy=\"" << cy + px / 2 << "\" r=\"" << px / 4 << "\" fill=\"" << kCreator << "\"/>\n";
             }
-        if (is3d) svg << "<text x=\"" << ox << "\" y=\"" << oy + h * px + 0 << "\" font-size=\"10\" font-family=\"sans-serif\">z=" << z + board.lower().z << "</text>\n";
     }
+    // The legend: what each colour means, and the axes.
+    const rules::Field& labels = problem.model->system().fields[static_cast<std::size_t>(schema.label)];
+    struct Key {
+        const char* fill;
+        std::string text;
+        bool dot;
+    };
+    std::vector<Key> keys = {{kU, labels.values[static_cast<std::size_t>(schema.unknown)] + " (undecided)", false},
+                             {kP, labels.values[static_cast<std::size_t>(schema.path)] + " (path: to be deleted)", false},
+                             {kF, labels.values[static_cast<std::size_t>(schema.final)] + " (final)", false},
+                             {kTarget, "empty target cell", false}};
+    if (schema.resource >= 0) keys.push_back({kCreator, "dot: creator resource", true});
+    double lx = 5;
+    for (const auto& [fill, text, dot] : keys) {
+        if (dot)
+            svg << "<circle cx=\"" << lx + 6 << "\" cy=\"" << legendTop + 6 << "\" r=\"4\" fill=\"" << fill << "\"/>\n";
+        else
+            svg << "<rect x=\"" << lx << "\" y=\"" << legendTop << "\" width=\"12\" height=\"12\" fill=\"" << fill << "\" stroke=\"#888\" stroke-width=\"0.5\"/>\n";
+        svg << "<text x=\"" << lx + 16 << "\" y=\"" << legendTop + 10 << "\" font-size=\"11\" font-family=\"sans-serif\">" << text << "</text>\n";
+        lx += 22 + 6.2 * static_cast<double>(text.size());
+    }
+    svg << "<text x=\"5\" y=\"" << legendTop + 30 << "\" font-size=\"11\" font-family=\"sans-serif\">x to the right, y down the page from ("
+        << board.lower().x << "," << board.lower().y << ") at the top left" << (is3d ? "; one picture per layer z" : "") << "</text>\n";
     svg << "</svg>\n";
     return svg.str();
 }

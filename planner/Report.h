@@ -91,7 +91,8 @@ nlohmann::json configurationJson(const Problem& problem, const std::vector<BoxEn
 /// many there are in all: where a run that stopped short is stuck.
 std::pair<std::vector<std::int64_t>, std::int64_t> cellsShortOfGoal(const Execution& execution, std::size_t limit);
 
-/// An SVG picture of a configuration: 2D boards directly, 3D boards as a row of z-slices.
+/// An SVG picture of a configuration with a legend, oriented as the checker's pictures (y down the
+/// page): 2D boards directly, 3D boards as every z slice, in rows of up to eight.
 std::string drawBoard(const Problem& problem, const std::vector<BoxEngine::Value>& cells, const std::string& title);
 
 }  // namespace holon::planner

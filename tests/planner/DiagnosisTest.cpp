@@ -51,4 +51,22 @@ TEST_CASE("an empty target cell away from F waits on create, whose neighbour is 
     CHECK(why.find("is empty, the rule needs F") != std::string::npos);
 }
 
+TEST_CASE("snapshots: a legend, every layer, y down the page") {
+    const PlannerSystem flat("planner_general1", 2);
+    const planner::Problem p = planner::makeProblem(*flat.model, planner::parseShape("box:3x3"), planner::parseShape("box:3x3"), planner::Vec{0, 0, 0}, 1);
+    const std::string svg = planner::drawBoard(p, p.cells, "start");
+    for (const char* key : {"U (undecided)", "P (path: to be deleted)", "F (final)", "empty target cell", "dot: creator resource", "y down the page"})
+        CHECK(svg.find(key) != std::string::npos);
+    // The seed at y = 0 is the one F cell, drawn in the top row as in the checker's pictures.
+    const std::size_t f = svg.find("fill=\"#3d6fb0\" stroke");
+    REQUIRE(f != std::string::npos);
+    const std::size_t rect = svg.rfind("<rect", f);
+    CHECK(svg.substr(rect, f - rect).find(" y=\"25\"") != std::string::npos);
+
+    const PlannerSystem deep("planner_intermediate", 3);
+    const planner::Problem q = planner::makeProblem(*deep.model, planner::parseShape("box:2x2x14"), planner::parseShape("box:2x2x14"), std::nullopt, 1);
+    const std::string layers = planner::drawBoard(q, q.cells, "start");
+    for (int z = 0; z < 14; ++z) CHECK(layers.find(">z=" + std::to_string(z) + "<") != std::string::npos);
+}
+
 }  // namespace holon::test
