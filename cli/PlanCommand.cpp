@@ -8,6 +8,8 @@
 #include "cli/Inputs.h"
 #include "cli/WriteErrors.h"
 #include "planner/Execution.h"
+#include "planner/Diagnosis.h"
+#include "planner/Faults.h"
 #include "planner/Monitor.h"
 #include "planner/Report.h"
 #include "planner/hex/DiskMetamodules.h"
@@ -35,22 +37,23 @@ namespace holon::cli {
 namespace {
 
 /// Where a run that stopped short is stuck: how many cells the goal does not accept yet, and the
-/// first few with their states.
+/// first few with their states and the rule each waits on.
 void printShortOfGoal(const planner::Problem& problem, const planner::Execution& execution) {
     const auto [cells, count] = planner::cellsShortOfGoal(execution, 5);
     if (count == 0) return;
-    std::cout << "  " << count << (count == 1 ? " cell is" : " cells are") << " short of the goal:";
-    for (std::int64_t i : cells) {
-        const rules::Vec p = problem.board->point(i);
-        std::cout << " (" << p.x << "," << p.y << (problem.board->lattice().dimension() == 3 ? "," + std::to_string(p.z) : "") << ") "
-                  << rules::stateFields(*problem.model, execution.cells()[i]).dump() << ';';
-    }
-    std::cout << (count > 5 ? " ...\n" : "\n");
+    std::cout << "  " << count << (count == 1 ? " cell is" : " cells are") << " short of the goal" << (count > 5 ? ", the first 5:\n" : ":\n");
+    const planner::BoardConfiguration board(problem, execution.cells());
+    for (std::int64_t i : cells)
+        std::cout << "    " << planner::showCell(problem.board->point(i), problem.board->lattice().dimension()) << ' '
+                  << rules::stateFields(*problem.model, execution.cells()[i]).dump() << ' ' << planner::waitingOn(problem, board, i) << '\n';
 }
 
 struct PlanArgs {
     std::string rules = "planner_intermediate", from, to, allocator = "random", scheduler = "sync", out, planOut, seedCell, traceOut, hexDisks;
-    std::vector<std::string> noWarnings;
+    std::vector<std::string> noWarnings, lose, loseRandom;
+    std::int64_t delay = 0;
+    double drop = 0;
+    std::optional<std::uint64_t> faultSeed;
     int scale = 1;
     std::uint64_t seed = 1;
     std::int64_t maxSteps = 0, maxRounds = 0;
@@ -121,6 +124,23 @@ bool writeDisks(const std::string& dir, const planner::hex::DiskMetamodules& dis
     return fault.empty();
 }
 
+/// --drop P: a probability strictly between 0 and 1 (0 injects nothing; 1 would never deliver a
+/// relabel, so no run could complete).
+CLI::Validator probabilityValidator() {
+    return CLI::Validator(
+        [](std::string& text) {
+            std::size_t used = 0;
+            double p = 0;
+            try {
+                p = std::stod(text, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            return used == text.size() && p > 0 && p < 1 ? std::string() : "'" + text + "' is not a probability strictly between 0 and 1 (1 would never deliver a relabel)";
+        },
+        "P");
+}
+
 /// A system fixed to a lattice plan does not run on: plan picks the lattice from the shapes
 /// (square2d for 2D, cubic3d for 3D), so the fix is the rule file or the shapes, not a region.
 void requirePlanLattice(const rules::System& system, const rules::Lattice& lattice) {
@@ -175,8 +195,17 @@ int run(const PlanArgs& a) {
     options.seed = a.seed, options.maxSteps = a.maxSteps, options.maxRounds = a.maxRounds;
     options.interrupt = rules::StopSignals::caught();
 
+    planner::FaultOptions faultOptions;
+    for (const std::string& text : a.lose) faultOptions.losses.push_back(planner::parseLoss("--lose", text, lattice.dimension(), true));
+    for (const std::string& text : a.loseRandom) faultOptions.losses.push_back(planner::parseLoss("--lose-random", text, lattice.dimension(), false));
+    faultOptions.delay = a.delay, faultOptions.drop = a.drop, faultOptions.seed = a.faultSeed.value_or(a.seed);
+    std::unique_ptr<planner::Faults> faults = faultOptions.any() ? std::make_unique<planner::Faults>(problem, faultOptions) : nullptr;
+    const planner::Execution* running = nullptr;  // the admit hook is called only while it runs
+    if (faults) options.admit = [&](std::int64_t anchor, int shape) { return faults->admit(*running, anchor, shape); };
+
     std::unique_ptr<planner::hex::DiskMetamodules> disks;
     if (!a.hexDisks.empty()) {
+        if (!faultOptions.losses.empty()) throw InputError("--hex-disks: a lost metamodule has no disk motion to realise; leave out --lose and --lose-random, or --hex-disks");
         if (problem.start.cells.size() + problem.target.cells.size() > kMaxDiskMetamodules)
             throw InputError("--hex-disks: at most " + std::to_string(kMaxDiskMetamodules) + " metamodules in start and target together (every disk move, about 2,300 a template, is written out and replayed); use a smaller --scale");
         disks = std::make_unique<planner::hex::DiskMetamodules>(problem);
@@ -186,6 +215,7 @@ int run(const PlanArgs& a) {
     during("preparing the run");
     if (budget.limited()) options.timeoutSeconds = std::max(budget.remaining(), 1e-6);
     planner::Execution execution(problem, *allocator, options);
+    running = &execution;
     planner::Report report(problem, execution, {a.out, a.planOut, "--out", "--plan-out", !a.quiet && isatty(STDERR_FILENO) != 0});
     std::unique_ptr<planner::Monitor> monitor = a.check ? std::make_unique<planner::Monitor>(problem, execution) : nullptr;
     bool disksFailed = false;
@@ -194,16 +224,26 @@ int run(const PlanArgs& a) {
         report.fired(anchor, shape, old);
         if (monitor) monitor->fired(anchor, shape, old);
         if (disks && !disksFailed) disksFailed = !disks->fired(anchor, shape, old, execution.cells());
+        if (faults) faults->fired(execution, anchor, shape, old);
     };
     observer.roundEnd = [&](const planner::RunStats& stats) {
         report.roundEnd(stats);
-        return !monitor || monitor->roundEnd(stats);
+        if (monitor && !monitor->roundEnd(stats)) return false;
+        if (faults)
+            faults->roundEnd(execution, [&](std::int64_t cell, planner::BoxEngine::Value old) {
+                report.lost(cell);
+                if (monitor) monitor->lost(cell, old);
+            });
+        return true;
     };
     const planner::RunStats stats = execution.run(observer);
-    if (monitor) monitor->finish(stats);
+    // After a loss that broke the lemmas' hypotheses the end is the fault's configuration, not the
+    // planner's: the monitor's last word is the round before it.
+    if (monitor && !(faults && !faults->broken().empty())) monitor->finish(stats);
     const bool interrupted = stats.stopped == "interrupted";
     // The transfer bound is a min-cost flow over the board: skipped once --timeout has passed.
     const std::int64_t lowerBound = budget.expired() ? -1 : planner::transferLowerBound(problem);
+    if (faults) report.addSummary("faults", faults->json());
     report.finish(stats, lowerBound);
     WriteErrors errors;
     for (const std::string& e : report.writeErrors()) errors.add(e);
@@ -214,6 +254,7 @@ int run(const PlanArgs& a) {
                             {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete},
                             {"relabels", stats.relabels}, {"evaluations", stats.evaluations}, {"stopped", stats.stopped},
                             {"system", system->name}, {"allocator", allocator->name()}, {"scheduler", a.scheduler}, {"seed", a.seed}};
+        if (faults) j["faults"] = faults->json();
         std::cout << j.dump(2) << '\n';
     } else {
         std::cout << "plan " << problem.start.name << " -> " << problem.target.name << " with " << system->name << " (" << a.scheduler
@@ -226,7 +267,9 @@ int run(const PlanArgs& a) {
                   << " rule evaluations, " << std::fixed << std::setprecision(3) << stats.seconds << " s\n  ";
         if (stats.complete) std::cout << "complete: the target is reached\n";
         else if (interrupted) std::cout << "NOT complete: interrupted by " << (*rules::StopSignals::caught() == SIGTERM ? "SIGTERM" : "SIGINT") << " after round " << stats.rounds << "\n";
+        else if (faults && !faults->broken().empty()) std::cout << "NOT complete: stopped by a fault: " << faults->broken() << '\n';
         else std::cout << "NOT complete: stopped by " << stats.stopped << '\n';
+        if (faults) std::cout << "  faults: " << faults->summary() << '\n';
         if (!stats.complete) printShortOfGoal(problem, execution);
         if (monitor) std::cout << "  monitor: " << monitor->summary() << '\n';
         if (!a.out.empty() && errors.empty())
@@ -274,6 +317,11 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--timeout", a->timeout, "stop after this many seconds, setup included (exit 3; default: no limit)")->check(secondsValidator());
     sub->add_option("--memory", a->memoryMiB, "memory bound in MiB, checked before the shapes and the board are made (default 16384)")->check(memoryValidator());
     sub->add_option("--trace-out", a->traceOut, "with --check: write the violating round as an ITF JSON trace (default DIR/violation.itf.json with --out)");
+    sub->add_option("--lose", a->lose, "fault: lose the metamodule at x,y[,z] after round ROUND (ROUND:x,y[,z]; repeatable); the run goes on when seed 000's lemmas still cover it, else stops and names what the loss broke (exit 1)");
+    sub->add_option("--lose-random", a->loseRandom, "fault: lose a metamodule drawn at random (--fault-seed) after round ROUND (repeatable)");
+    sub->add_option("--delay", a->delay, "fault: every state change reaches the neighbours 1 to D rounds later, drawn at random; an instance waits for the states it reads (1 to 10^6)")->check(CLI::Range(std::int64_t{1}, std::int64_t{1000000}));
+    sub->add_option("--drop", a->drop, "fault: each time a relabel would fire, its message is lost with probability P and sent again later (0 < P < 1)")->check(probabilityValidator());
+    sub->add_option("--fault-seed", a->faultSeed, "random seed of the faults: random losses, delays, drops (default: --seed)");
     sub->add_flag("--quiet", a->quiet, "no progress bar");
     sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
     return [a] { return withinMemory(a->memoryMiB, [&] { return run(*a); }); };

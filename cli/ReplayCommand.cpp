@@ -78,9 +78,19 @@ int run(const Args& a) {
     }
     const rules::Vec offset = start.contains("offset") ? pointOf(start["offset"], a.plan + ":1") : rules::Vec{};
 
-    std::int64_t steps = 0;
+    std::int64_t steps = 0, losses = 0;
     nlohmann::json step;
     while (next(step)) {
+        // A metamodule lost to an injected fault (plan --lose): not a step to judge, the cell empties.
+        if (step.contains("fault")) {
+            if (text(step, "fault") != "lose" || !step.contains("cells") || !step["cells"].is_array() || step["cells"].size() != 1)
+                throw InputError(where() + ": a fault must be {\"round\":R,\"fault\":\"lose\",\"cells\":[[x,y]]}");
+            const rules::Vec p = pointOf(step["cells"][0], where()) + offset;
+            if (!region.contains(p)) throw InputError(where() + ": cell " + step["cells"][0].dump() + " lies outside the plan's region " + region.spec());
+            now.cells[region.indexOf(p)] = 0;
+            ++losses;
+            continue;
+        }
         if (!step.contains("round") || !step["round"].is_number_integer() || !step.contains("rule") || !step["rule"].is_string() || !step.contains("cells") || !step["cells"].is_array() || !step.contains("after") ||
             !step["after"].is_array() || step["after"].size() != step["cells"].size())
             throw InputError(where() + ": a step must be {\"round\":R,\"rule\":NAME,\"cells\":[[x,y],...],\"after\":[{...},...]}, one state after per cell");
@@ -122,7 +132,8 @@ int run(const Args& a) {
         }
         ++steps;
     }
-    std::cout << "replay " << a.plan << ": all " << steps << " steps legal under " << system->name << "; the end is "
+    std::cout << "replay " << a.plan << ": all " << steps << " steps legal under " << system->name
+              << (losses ? " (with " + std::to_string(losses) + " injected " + (losses == 1 ? "loss" : "losses") + ")" : std::string()) << "; the end is "
               << (in.atGoal(now) ? "at the goal" : "NOT at the goal") << '\n';
     return kExitOk;
 }

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <optional>
 
 namespace holon::planner {
 
@@ -114,6 +115,20 @@ bool Execution::takeIfFree(std::int64_t anchor, int shape) {
     return true;
 }
 
+bool Execution::admitted(std::int64_t anchor, int shape) {
+    if (!options_.admit || options_.admit(anchor, shape)) return true;
+    deferred_ = true;
+    return false;
+}
+
+BoxEngine::Value Execution::lose(std::int64_t cell) {
+    const BoxEngine::Value old = cells_[cell];
+    cells_[cell] = 0;
+    offGoal_ += static_cast<int>(atGoal(cell, old)) - static_cast<int>(atGoal(cell, 0));
+    recheckAround({cell});
+    return old;
+}
+
 void Execution::fire(std::int64_t anchor, int shape, const RunObserver& observer, std::vector<std::int64_t>& changed) {
     BoxEngine::Value old[rules::RuleTables::kMaxCells];
     const BoxEngine& engine = this->engine();
@@ -154,14 +169,17 @@ bool Execution::asyncStep(const RunObserver& observer, std::vector<std::int64_t>
             continue;
         }
         if (!planner && !allocator_->wants(*this, anchorOf(key), shapeOf(key))) continue;
+        if (!admitted(anchorOf(key), shapeOf(key))) continue;
         fire(anchorOf(key), shapeOf(key), observer, changed);
         return true;
     }
     compact(plannerList_);
     compact(transferList_);
-    std::vector<std::uint64_t> candidates = plannerList_;
+    std::vector<std::uint64_t> candidates;
+    for (std::uint64_t key : plannerList_)
+        if (admitted(anchorOf(key), shapeOf(key))) candidates.push_back(key);
     for (std::uint64_t key : transferList_)
-        if (allocator_->wants(*this, anchorOf(key), shapeOf(key))) candidates.push_back(key);
+        if (allocator_->wants(*this, anchorOf(key), shapeOf(key)) && admitted(anchorOf(key), shapeOf(key))) candidates.push_back(key);
     if (candidates.empty()) return false;
     const std::uint64_t key = candidates[random_.below(candidates.size())];
     fire(anchorOf(key), shapeOf(key), observer, changed);
@@ -174,10 +192,12 @@ bool Execution::adversarialStep(const RunObserver& observer, std::vector<std::in
     // when no planner rule is enabled: an adversary that also picked the transfers could swap one
     // pair back and forth forever, the "purposely malicious resource allocator" of §IV-B.
     compact(plannerList_);
-    if (!plannerList_.empty()) {
-        auto rank = [&](std::uint64_t k) { return std::pair(engine().ruleOf(shapeOf(k)), k); };
-        const std::uint64_t worst = *std::max_element(plannerList_.begin(), plannerList_.end(), [&](auto a, auto b) { return rank(a) < rank(b); });
-        fire(anchorOf(worst), shapeOf(worst), observer, changed);
+    auto rank = [&](std::uint64_t k) { return std::pair(engine().ruleOf(shapeOf(k)), k); };
+    std::optional<std::uint64_t> worst;
+    for (std::uint64_t key : plannerList_)
+        if ((!worst || rank(*worst) < rank(key)) && admitted(anchorOf(key), shapeOf(key))) worst = key;
+    if (worst) {
+        fire(anchorOf(*worst), shapeOf(*worst), observer, changed);
         return true;
     }
     return asyncStep(observer, changed);
@@ -189,12 +209,14 @@ bool Execution::syncRound(const RunObserver& observer, std::vector<std::int64_t>
     random_.shuffle(plannerList_);
     for (std::size_t k = 0; k < plannerList_.size(); ++k) {
         if (k + kAhead < plannerList_.size()) __builtin_prefetch(&marks_[anchorOf(plannerList_[k + kAhead])]);
-        if (takeIfFree(anchorOf(plannerList_[k]), shapeOf(plannerList_[k]))) chosen.push_back(plannerList_[k]);
+        if (admitted(anchorOf(plannerList_[k]), shapeOf(plannerList_[k])) && takeIfFree(anchorOf(plannerList_[k]), shapeOf(plannerList_[k])))
+            chosen.push_back(plannerList_[k]);
     }
     compact(transferList_);
     random_.shuffle(transferList_);
     for (std::uint64_t key : transferList_)
-        if (allocator_->wants(*this, anchorOf(key), shapeOf(key)) && takeIfFree(anchorOf(key), shapeOf(key))) chosen.push_back(key);
+        if (allocator_->wants(*this, anchorOf(key), shapeOf(key)) && admitted(anchorOf(key), shapeOf(key)) && takeIfFree(anchorOf(key), shapeOf(key)))
+            chosen.push_back(key);
     std::vector<std::int64_t> givers;
     for (std::size_t k = 0; k < chosen.size(); ++k) {
         if (k + kAhead < chosen.size()) prefetchAnchor(anchorOf(chosen[k + kAhead]));
@@ -259,6 +281,10 @@ RunStats Execution::run(const RunObserver& observer) {
             stats_.stopped = "interrupted";
             break;
         }
+        if (!halt_.empty()) {
+            stats_.stopped = halt_;
+            break;
+        }
         if (options_.maxRounds && stats_.rounds >= options_.maxRounds) {
             stats_.stopped = "max-rounds";
             break;
@@ -279,6 +305,7 @@ RunStats Execution::run(const RunObserver& observer) {
             break;
         }
         changed.clear();
+        deferred_ = false;
         bool allocatorMoved = false;
         bool fired;
         if (options_.scheduler == Scheduler::Sync) {
@@ -300,7 +327,10 @@ RunStats Execution::run(const RunObserver& observer) {
             sinceUpdate = 0;
             allocatorMoved = allocator_->update(*this);
         }
-        if (!fired && !allocatorMoved) {
+        // The fault model held back what could fire: time passes (async: the next step starts a
+        // new round, so delays expire).
+        if (!fired && deferred_ && options_.scheduler != Scheduler::Sync) sinceUpdate = updateEvery;
+        if (!fired && !allocatorMoved && !deferred_) {
             stats_.stopped = "stuck";
             break;
         }

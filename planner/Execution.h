@@ -32,6 +32,10 @@ struct RunOptions {
     /// Set (nonzero) asynchronously, by a signal handler: the run stops as "interrupted" at the
     /// next round (sync) or step (async) boundary, where every output is consistent. Null: never.
     const volatile std::sig_atomic_t* interrupt = nullptr;
+    /// A fault model's veto (planner/Faults.h): an instance it refuses waits for a later step or
+    /// round. A step or round in which refusals alone kept everything from firing is not stuck:
+    /// time passes. Empty: every instance is admitted.
+    std::function<bool(std::int64_t anchor, int shape)> admit;
 };
 
 struct RunStats {
@@ -41,7 +45,7 @@ struct RunStats {
     std::int64_t evaluations = 0;  // rule instances tested against the decision tables
     double seconds = 0;
     bool complete = false;  // the system's goal was reached
-    std::string stopped;    // why the run ended: "goal", "stuck", "no-progress", "max-steps", "max-rounds", "timeout", "monitor", "interrupted"
+    std::string stopped;    // why the run ended: "goal", "stuck", "no-progress", "max-steps", "max-rounds", "timeout", "monitor", "interrupted", "fault"
 };
 
 /// Hooks for output while a plan runs; every hook is optional.
@@ -66,6 +70,11 @@ public:
     }
     /// Whether a cell in state v satisfies the system's goal predicate (padding always does).
     bool atGoal(std::int64_t cell, BoxEngine::Value v) const;
+    /// A metamodule lost to a fault (planner/Faults.h), between steps or rounds: the cell becomes
+    /// empty and the enabled set follows. Returns the state it held.
+    BoxEngine::Value lose(std::int64_t cell);
+    /// Ends the run before the next step or round, with `why` as RunStats::stopped.
+    void halt(std::string why) { halt_ = std::move(why); }
 
 private:
     /// Where the enabled bit of an instance lives in bits_ (its listed bit is in the next word):
@@ -77,6 +86,7 @@ private:
     void prefetchAnchor(std::int64_t anchor) const;
     void recheckAround(const std::vector<std::int64_t>& changed);
     bool takeIfFree(std::int64_t anchor, int shape);
+    bool admitted(std::int64_t anchor, int shape);
     void fire(std::int64_t anchor, int shape, const RunObserver& observer, std::vector<std::int64_t>& changed);
     void compact(std::vector<std::uint64_t>& list);
     bool asyncStep(const RunObserver& observer, std::vector<std::int64_t>& changed);
@@ -104,6 +114,8 @@ private:
     std::vector<std::int64_t> anchors_;
     std::vector<std::pair<int, std::int64_t>> pipelined_;  // transfer shapes that may chain, and the step of each of their cells
     std::int64_t offGoal_ = 0;  // cells not as the goal wants them
+    bool deferred_ = false;     // options_.admit refused an instance in the current step or round
+    std::string halt_;
     RunStats stats_;
 };
 

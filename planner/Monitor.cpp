@@ -61,6 +61,12 @@ void Monitor::fired(std::int64_t anchor, int shape, const BoxEngine::Value* old)
     for (std::size_t k = 0; k < steps.size(); ++k) before_.push_back(old[k]);
 }
 
+void Monitor::lost(std::int64_t, BoxEngine::Value old) {
+    initialMass_ -= problem_->tables->massUnitsOf(old);
+    mass_ -= problem_->tables->massUnitsOf(old);
+    --occupied_;
+}
+
 bool Monitor::connected() const {
     const Board& board = *problem_->board;
     const auto& cells = execution_->cells();

@@ -18,6 +18,11 @@ class Monitor {
 public:
     Monitor(const Problem& problem, const Execution& execution);
     void fired(std::int64_t anchor, int shape, const BoxEngine::Value* old);
+    /// A metamodule lost to an injected fault (planner/Faults.h) between rounds: its mass leaves
+    /// the books. The fault model, not the monitor, judges whether the loss disconnected the
+    /// ensemble, and a run goes on only when it did not, so a disconnection the monitor sees is
+    /// always the planner's.
+    void lost(std::int64_t cell, BoxEngine::Value old);
     /// Checks the step or round that just ended; false once a property is violated.
     bool roundEnd(const RunStats& stats);
     /// The from-scratch check of the final configuration; false when a property is violated.

@@ -24,15 +24,11 @@ int valueIndex(const rules::Field& f, std::string_view name) {
     return it == f.values.end() ? -1 : static_cast<int>(it - f.values.begin());
 }
 
-std::string show(Vec v, int dimension) {
-    return "(" + std::to_string(v.x) + "," + std::to_string(v.y) + (dimension == 3 ? "," + std::to_string(v.z) : "") + ")";
-}
-
 void requireConnected(const Shape& s, const char* role) {
     const auto parts = components(s.cells, s.dimension);
     if (parts.size() <= 1) return;
     throw InputError(std::string(role) + " shape '" + s.name + "' is not connected: it has " + std::to_string(parts.size()) +
-                     " pieces, e.g. " + show(parts[0][0], s.dimension) + " and " + show(parts[1][0], s.dimension) +
+                     " pieces, e.g. " + showCell(parts[0][0], s.dimension) + " and " + showCell(parts[1][0], s.dimension) +
                      " are not joined; the planner keeps the ensemble connected, so join the pieces");
 }
 
@@ -111,7 +107,7 @@ Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::o
     if (both.empty()) throw InputError("start '" + start.name + "' and target '" + target.name + "' do not overlap; the planner grows the target from a seed in both");
     if (seed) {
         if (!std::binary_search(both.begin(), both.end(), *seed))
-            throw InputError("seed " + show(*seed, lattice.dimension()) + " is not in both start and target; choose a cell of their overlap");
+            throw InputError("seed " + showCell(*seed, lattice.dimension()) + " is not in both start and target; choose a cell of their overlap");
         p.seed = *seed;
     } else {
         // The overlap cell nearest the overlap's centre: the F tree then grows evenly.

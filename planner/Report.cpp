@@ -4,6 +4,8 @@
 
 #include "planner/Report.h"
 
+#include "planner/Diagnosis.h"
+
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Svg.h"
@@ -11,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -55,6 +58,12 @@ void Report::fired(std::int64_t anchor, int shape, const BoxEngine::Value*) {
     plan_->stream() << nlohmann::json{{"round", lastRound_ + 1}, {"rule", model.rules()[engine.ruleOf(shape)].name}, {"cells", cells}, {"after", states}}.dump() << '\n';
 }
 
+void Report::lost(std::int64_t cell) {
+    if (plan_)
+        plan_->stream() << nlohmann::json{{"round", lastRound_}, {"fault", "lose"}, {"cells", {rules::pointJson(problem_->model->lattice(), problem_->board->point(cell))}}}.dump()
+                        << '\n';
+}
+
 void Report::roundEnd(const RunStats& stats) {
     lastRound_ = stats.rounds;
     const double created = fraction(stats.creations, problem_->toCreate), deleted = fraction(stats.deletions, problem_->toDelete);
@@ -82,9 +91,12 @@ void Report::finish(const RunStats& stats, std::int64_t transferLowerBound) {
     if (!stats.complete) attempt([&] { rules::OutputFile(options_.outOption, options_.outDir + "/end.json").write(configurationJson(*problem_, execution_->cells()).dump() + '\n'); });
     const auto [short_, shortCount] = cellsShortOfGoal(*execution_, 20);
     nlohmann::json unfinished = nlohmann::json::array();
+    std::optional<BoardConfiguration> board;
+    if (!short_.empty()) board.emplace(*problem_, execution_->cells());
     for (std::int64_t i : short_) {
         nlohmann::json cell = rules::stateFields(*problem_->model, execution_->cells()[i]);
         cell["at"] = rules::pointJson(problem_->model->lattice(), problem_->board->point(i));
+        cell["waits_on"] = waitingOn(*problem_, *board, i);
         unfinished.push_back(cell);
     }
     nlohmann::json summary = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions},
@@ -92,6 +104,7 @@ void Report::finish(const RunStats& stats, std::int64_t transferLowerBound) {
                               {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete},
                               {"stopped", stats.stopped}, {"interrupted", stats.stopped == "interrupted"},
                               {"cells_short_of_goal", shortCount}, {"short_of_goal", unfinished}};
+    summary.update(extra_);
     attempt([&] { rules::OutputFile(options_.outOption, options_.outDir + "/summary.json").write(summary.dump(2) + '\n'); });
 }
 
@@ -107,23 +120,34 @@ void Report::attempt(const std::function<void()>& write) {
     }
 }
 
-nlohmann::json configurationJson(const Problem& problem, const std::vector<BoxEngine::Value>& cells) {
-    const Board& board = *problem.board;
-    const rules::Lattice& lattice = board.lattice();
-    const Vec lower = board.lower(), extent = board.extent();
-    const Vec shift{std::max(0, -lower.x), std::max(0, -lower.y), std::max(0, -lower.z)};
-    const Vec size = lower + extent + shift;
-    const rules::Region region = rules::Region::box(lattice, {size.x, size.y, lattice.dimension() == 3 ? size.z : 1});
-    const rules::Interpreter in(*problem.model, region);
-    rules::Configuration c = in.empty();
-    board.forEachInside([&](std::int64_t i, Vec p) {
-        const int at = region.indexOf(p + shift);
-        c.cells[at] = cells[i];
+namespace {
+
+Vec shiftOf(const Board& board) {
+    const Vec lower = board.lower();
+    return {std::max(0, -lower.x), std::max(0, -lower.y), std::max(0, -lower.z)};
+}
+
+rules::Region regionOf(const Board& board) {
+    const Vec size = board.lower() + board.extent() + shiftOf(board);
+    return rules::Region::box(board.lattice(), {size.x, size.y, board.lattice().dimension() == 3 ? size.z : 1});
+}
+
+}  // namespace
+
+BoardConfiguration::BoardConfiguration(const Problem& problem, const std::vector<BoxEngine::Value>& cells)
+    : shift_(shiftOf(*problem.board)), region_(regionOf(*problem.board)), interpreter_(*problem.model, region_), configuration_(interpreter_.empty()) {
+    problem.board->forEachInside([&](std::int64_t i, Vec p) {
+        const int at = region_.indexOf(p + shift_);
+        configuration_.cells[at] = cells[i];
         const std::uint8_t combo = problem.engine->combo(i);
-        if (combo != BoxEngine::kOutside) c.inputs[at] = problem.tables->comboInputs(combo);
+        if (combo != BoxEngine::kOutside) configuration_.inputs[at] = problem.tables->comboInputs(combo);
     });
-    nlohmann::json j = rules::configToJson(in, c);
-    if (shift != Vec{}) j["offset"] = rules::pointJson(lattice, shift);
+}
+
+nlohmann::json configurationJson(const Problem& problem, const std::vector<BoxEngine::Value>& cells) {
+    const BoardConfiguration board(problem, cells);
+    nlohmann::json j = rules::configToJson(board.interpreter(), board.configuration());
+    if (board.shift() != Vec{}) j["offset"] = rules::pointJson(problem.board->lattice(), board.shift());
     return j;
 }
 
@@ -145,37 +169,60 @@ std::string drawBoard(const Problem& problem, const std::vector<BoxEngine::Value
     const PlannerSchema& schema = problem.schema;
     const bool is3d = board.lattice().dimension() == 3;
     const Vec ext = board.extent();
-    const int slices = is3d ? std::min(ext.z, 12) : 1;
-    // Large boards are sampled: at most ~600 cells across per slice.
-    const int sample = std::max(1, std::max(ext.x, ext.y) * slices / 600 + 1);
-    const double px = std::clamp(600.0 / (double(std::max(ext.x, ext.y)) / sample * slices), 2.0, 24.0);
+    // Every layer of a 3D board, in rows of at most 8 slices; as in the checker's pictures
+    // (checker/Draw.h, rules/ConfigIo.h) x runs right and y down the page, so a shape drawn as
+    // ASCII art appears as drawn. Large boards are sampled in x and y (never in z) to keep the
+    // picture near 250,000 cells and 1200 pixels across.
+    const int layers = is3d ? ext.z : 1, columns = std::min(layers, 8), rows = (layers + columns - 1) / columns;
+    const double cellsShown = double(ext.x) * ext.y * layers;
+    const int sample = std::max(1, static_cast<int>(std::ceil(std::sqrt(cellsShown / 250000.0))));
     const int w = (ext.x + sample - 1) / sample, h = (ext.y + sample - 1) / sample;
-    const double gap = is3d ? px * 2 : 0;
+    const double px = std::clamp(1200.0 / (double(std::max(w, h)) * columns), 2.0, 24.0);
+    const double gapX = is3d ? std::max(px * 2, 12.0) : 0, gapY = is3d ? 16 : 0;
+    const double width = (w * px + gapX) * columns + 10, top = 25, legendTop = top + rows * (h * px + gapY) + 10;
+    const rules::SvgAttrs font = {{"font-family", "sans-serif"}, {"font-size", 11}};
     rules::Svg svg;
-    svg.text(5, 16, title, {{"font-family", "sans-serif"}, {"font-size", 13}});
+    svg.text(5, 16, title + (sample > 1 ? " (every " + std::to_string(sample) + "th cell in x and y)" : std::string()), {{"font-family", "sans-serif"}, {"font-size", 13}});
     const int inTarget = problem.tables->comboIndex(1u << schema.target);
-    for (int s = 0; s < slices; ++s) {
-        const int z = is3d ? s * ext.z / slices : 0;
-        const double ox = 5 + s * (w * px + gap), oy = 25;
+    constexpr const char *kU = "#ffffff", *kP = "#222222", *kF = "#3d6fb0", *kTarget = "#e8eef6", *kCreator = "#e07020";
+    const rules::SvgAttr outline("stroke", "#888"), outlineWidth("stroke-width", px > 4 ? 0.5 : 0);
+    for (int z = 0; z < layers; ++z) {
+        const double ox = 5 + (z % columns) * (w * px + gapX), oy = top + (z / columns) * (h * px + gapY) + (is3d ? 12 : 0);
+        if (is3d) svg.text(ox, oy - 3, "z=" + std::to_string(z + board.lower().z), {{"font-size", 10}, {"font-family", "sans-serif"}});
         for (int y = 0; y < ext.y; y += sample)
             for (int x = 0; x < ext.x; x += sample) {
                 const std::int64_t i = board.index(board.lower() + Vec{x, y, z});
-                const double cx = ox + (x / sample) * px, cy = oy + (h - 1 - y / sample) * px;
-                const bool target = problem.engine->combo(i) == inTarget;
+                const double cx = ox + (x / sample) * px, cy = oy + (y / sample) * px;
                 const BoxEngine::Value v = cells[i];
                 if (!v) {
-                    if (target) svg.rect(cx, cy, px, px, {{"fill", "#e8eef6"}});
+                    if (problem.engine->combo(i) == inTarget) svg.rect(cx, cy, px, px, {{"fill", kTarget}});
                     continue;
                 }
                 const auto& f = alphabet.fields(v);
                 const int label = f[schema.label];
-                const char* fill = label == schema.final ? "#3d6fb0" : label == schema.path ? "#222222" : "#ffffff";
-                svg.rect(cx, cy, px, px, {{"fill", fill}, {"stroke", "#888"}, {"stroke-width", px > 4 ? 0.5 : 0}});
-                if (schema.resource >= 0 && f[schema.resource] != schema.full && px >= 4) svg.circle(cx + px / 2, cy + px / 2, px / 4, {{"fill", "#e07020"}});
+                svg.rect(cx, cy, px, px, {{"fill", label == schema.final ? kF : label == schema.path ? kP : kU}, outline, outlineWidth});
+                if (schema.resource >= 0 && f[schema.resource] != schema.full && px >= 4) svg.circle(cx + px / 2, cy + px / 2, px / 4, {{"fill", kCreator}});
             }
-        if (is3d) svg.text(ox, oy + h * px, "z=" + std::to_string(z + board.lower().z), {{"font-size", 10}, {"font-family", "sans-serif"}});
     }
-    return svg.document((w * px + gap) * slices + 10, h * px + 30);
+    // The legend: what each colour means, and the axes.
+    const rules::Field& labels = problem.model->system().fields[static_cast<std::size_t>(schema.label)];
+    const std::pair<const char*, std::string> keys[] = {{kU, labels.values[static_cast<std::size_t>(schema.unknown)] + " (undecided)"},
+                                                       {kP, labels.values[static_cast<std::size_t>(schema.path)] + " (path: to be deleted)"},
+                                                       {kF, labels.values[static_cast<std::size_t>(schema.final)] + " (final)"},
+                                                       {kTarget, "empty target cell"}};
+    double lx = 5;
+    for (const auto& [fill, text] : keys) {
+        svg.legend(lx, legendTop, text, {{"fill", fill}, outline, {"stroke-width", 0.5}});
+        lx += 24 + 6.2 * static_cast<double>(text.size());
+    }
+    if (schema.resource >= 0) {
+        svg.circle(lx + 7, legendTop + 7, 4, {{"fill", kCreator}});
+        svg.text(lx + 18, legendTop + 11, "dot: creator resource", font);
+    }
+    svg.text(5, legendTop + 32, "x to the right, y down the page from (" + std::to_string(board.lower().x) + "," + std::to_string(board.lower().y) + ") at the top left" +
+                                    (is3d ? "; one picture per layer z" : ""),
+             font);
+    return svg.document(std::max(width, 560.0), legendTop + 42);
 }
 
 }  // namespace holon::planner

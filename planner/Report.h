@@ -6,6 +6,7 @@
 // is interrupted never leaves a half-written file.
 
 #include "planner/Execution.h"
+#include "rules/Interpreter.h"
 #include "rules/OutputFile.h"
 
 #include <nlohmann/json.hpp>
@@ -33,6 +34,10 @@ public:
     ~Report();
     void fired(std::int64_t anchor, int shape, const BoxEngine::Value* old);
     void roundEnd(const RunStats& stats);
+    /// A metamodule lost to an injected fault: a "fault" line in the plan (holon replay empties the cell).
+    void lost(std::int64_t cell);
+    /// An entry summary.json gets besides the run's figures (the faults injected).
+    void addSummary(const std::string& key, nlohmann::json value) { extra_[key] = std::move(value); }
     /// Writes the last snapshot and summary.json (with why the run stopped: "interrupted" for a
     /// signal) and commits the plan and the CSV as complete files.
     void finish(const RunStats& stats, std::int64_t transferLowerBound);
@@ -48,9 +53,32 @@ private:
     ReportOptions options_;
     std::optional<rules::OutputStream> plan_, csv_;
     std::vector<std::string> errors_;
+    nlohmann::json extra_ = nlohmann::json::object();
     std::int64_t lastRound_ = -1, lastStep_ = 0;
     int nextQuarter_ = 1;
     double lastBar_ = -1;
+};
+
+/// A configuration on the planner's board as the reference interpreter sees it: on the box region
+/// square:WxH or cubic:WxHxD that holds the board, target input included; boards reaching below 0
+/// are shifted by `shift` into the region. For what the interpreter judges (invariants after a
+/// fault, the rule a stuck cell waits on) and for configurationJson.
+class BoardConfiguration {
+public:
+    BoardConfiguration(const Problem& problem, const std::vector<BoxEngine::Value>& cells);
+    BoardConfiguration(const BoardConfiguration&) = delete;
+    BoardConfiguration& operator=(const BoardConfiguration&) = delete;
+    const rules::Interpreter& interpreter() const { return interpreter_; }
+    const rules::Configuration& configuration() const { return configuration_; }
+    /// The region position of a board point.
+    Vec position(Vec p) const { return p + shift_; }
+    Vec shift() const { return shift_; }
+
+private:
+    Vec shift_;
+    rules::Region region_;
+    rules::Interpreter interpreter_;
+    rules::Configuration configuration_;
 };
 
 /// A configuration on the planner's board, with the target input, as holon's canonical JSON
@@ -63,7 +91,8 @@ nlohmann::json configurationJson(const Problem& problem, const std::vector<BoxEn
 /// many there are in all: where a run that stopped short is stuck.
 std::pair<std::vector<std::int64_t>, std::int64_t> cellsShortOfGoal(const Execution& execution, std::size_t limit);
 
-/// An SVG picture of a configuration: 2D boards directly, 3D boards as a row of z-slices.
+/// An SVG picture of a configuration with a legend, oriented as the checker's pictures (y down the
+/// page): 2D boards directly, 3D boards as every z slice, in rows of up to eight.
 std::string drawBoard(const Problem& problem, const std::vector<BoxEngine::Value>& cells, const std::string& title);
 
 }  // namespace holon::planner

@@ -91,7 +91,8 @@ Shape box(std::string_view argument, std::string_view dims, std::size_t maxCells
     return s;
 }
 
-/// A T of width N: a bar N wide and ceil(N/3) thick on top of a centred stem ceil(N/3) wide and N tall.
+/// A T of width N: a bar N wide and ceil(N/3) thick on top of a centred stem ceil(N/3) wide and N
+/// tall; on top as the pictures show it, where y runs down the page (the bar at the smallest y).
 Shape tee(std::string_view argument, std::string_view size, std::size_t maxCells, std::uint64_t memoryBytes) {
     const int n = numbers(argument, size, ',', 1, 1)[0];
     const int t = (n + 2) / 3;
@@ -100,7 +101,7 @@ Shape tee(std::string_view argument, std::string_view size, std::size_t maxCells
     const int stem = (n - t) / 2;
     for (int x = 0; x < n; ++x)
         for (int y = 0; y < n + t; ++y)
-            if (y >= n || (x >= stem && x < stem + t)) s.cells.push_back({x, y, 0});
+            if (y < t || (x >= stem && x < stem + t)) s.cells.push_back({x, y, 0});
     return s;
 }
 
@@ -202,7 +203,8 @@ Shape fromAscii(std::string_view argument, const std::string& text) {
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < static_cast<int>(lines[r].size()); ++c) {
             const char ch = lines[r][c];
-            if (std::string_view("#XxOo@*1").find(ch) != std::string_view::npos) s.cells.push_back({c, rows - 1 - r, 0});
+            // Line r is row y = r, as in the checker's pictures (rules/ConfigIo.h): y runs down the page.
+            if (std::string_view("#XxOo@*1").find(ch) != std::string_view::npos) s.cells.push_back({c, r, 0});
             else if (std::string_view(". _0\t").find(ch) == std::string_view::npos)
                 bad(argument, "line " + std::to_string(r + 1) + ", column " + std::to_string(c + 1) + ": '" + std::string(1, ch) +
                                   "' is neither a cell ('#') nor empty ('.')");
@@ -308,6 +310,10 @@ std::vector<std::vector<Vec>> components(const std::vector<Vec>& cells, int dime
         });
     for (auto& part : out) std::sort(part.begin(), part.end());
     return out;
+}
+
+std::string showCell(Vec v, int dimension) {
+    return "(" + std::to_string(v.x) + "," + std::to_string(v.y) + (dimension == 3 ? "," + std::to_string(v.z) : "") + ")";
 }
 
 }  // namespace holon::planner

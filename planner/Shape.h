@@ -25,6 +25,9 @@ struct Shape {
 /// coordinate beyond +-kMaxCoordinate. `maxCells` bounds the scaled size (InputError);
 /// `memoryBytes` (--memory) bounds the memory the cells take (LimitError), both checked before
 /// the cells are made.
+/// A cell as people read it in messages: (x,y) for 2D shapes, (x,y,z) for 3D.
+std::string showCell(Vec v, int dimension);
+
 Shape parseShape(std::string_view argument, int scale = 1, std::uint64_t memoryBytes = UINT64_MAX, std::size_t maxCells = std::size_t{1} << 27);
 
 /// Every cell becomes a KxK (2D) or KxKxK (3D) block.

@@ -61,6 +61,40 @@ bool Interpreter::matches(const Configuration& c, const Instance& instance) cons
     return !rule.guard() || holdsAt(*rule.guard(), c, &at);
 }
 
+Blocked Interpreter::blocked(const Configuration& c, const Instance& instance) const {
+    const RuleShape& shape = model_->shapes()[instance.shape];
+    const DirectedRule& rule = model_->rules()[shape.rule];
+    Placement at;
+    for (Vec o : shape.offsets) at.positions.push_back(instance.anchor + o);
+    Blocked why;
+    for (std::size_t i = 0; i < at.positions.size(); ++i) {
+        const CellContext here = context(at.positions[i], c, &at);
+        bool ok = matchesTerm(rule.lhs()[i], valueAt(at.positions[i], c), here);
+        for (const Atom& a : rule.reversed ? rule.rhs()[i].atoms : std::vector<Atom>{}) {
+            CellTerm inputOnly;
+            inputOnly.atoms = {a};
+            ok = ok && (a.kind != Atom::Kind::Input || matchesTerm(inputOnly, valueAt(at.positions[i], c), here));
+        }
+        if (!ok) why.cells.push_back(static_cast<int>(i));
+    }
+    if (!rule.guard()) return why;
+    const std::vector<const Expr*> parts = conjuncts(*rule.guard());
+    for (std::size_t k = 0; k < parts.size() && why.conjunct < 0; ++k) {
+        const Expr& e = *parts[k];
+        if (holdsAt(e, c, &at)) continue;
+        why.conjunct = static_cast<int>(k);
+        if ((e.kind != Expr::Kind::No && e.kind != Expr::Kind::All) || (e.around < 0 && e.around != Expr::kOwnCells) || !e.kids.empty()) continue;
+        std::vector<Vec> around;
+        if (e.around >= 0)
+            for (Vec d : model_->lattice().directions()) around.push_back(at.positions[e.around] + d);
+        else
+            around = at.positions;
+        for (Vec p : around)
+            if (matchesPredicate(e.pred, valueAt(p, c), context(p, c, &at)) == (e.kind == Expr::Kind::No)) why.witnesses.push_back(p);
+    }
+    return why;
+}
+
 Configuration Interpreter::apply(const Configuration& c, const Instance& instance) const {
     const RuleShape& shape = model_->shapes()[instance.shape];
     const DirectedRule& rule = model_->rules()[shape.rule];

@@ -27,6 +27,15 @@ struct Instance {
     friend bool operator==(const Instance&, const Instance&) = default;
 };
 
+/// Why an instance is not enabled, for a person (the rule a stuck cell waits on).
+struct Blocked {
+    std::vector<int> cells;        // pattern cells whose state the left side rejects
+    int conjunct = -1;             // the first false conjunct of the guard (conjuncts(guard)), or -1
+    std::vector<Vec> witnesses;    // for a false neighbour or own-cells quantifier: the cells that make
+                                   // it false (`no nbr U`: the U neighbours; `all`: those that are not)
+    bool enabled() const { return cells.empty() && conjunct < 0; }
+};
+
 /// The top-level conjuncts of `e` (`a and (b and c)` gives a, b, c), left to right.
 std::vector<const Expr*> conjuncts(const Expr& e);
 
@@ -43,6 +52,8 @@ public:
     bool matches(const Configuration& c, const Instance& instance) const;
     /// The configuration after firing; requires matches(c, instance).
     Configuration apply(const Configuration& c, const Instance& instance) const;
+    /// What keeps an instance (every cell in the region) from matching; Blocked::enabled() when it matches.
+    Blocked blocked(const Configuration& c, const Instance& instance) const;
     /// matches, and the result satisfies every non-local constraint: the successor, or nothing.
     std::optional<Configuration> successor(const Configuration& c, const Instance& instance) const;
     /// Every instance with a successor, in a fixed order (shape, then anchor).

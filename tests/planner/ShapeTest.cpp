@@ -38,7 +38,10 @@ TEST_CASE("shape files: JSON, ASCII art and voxels") {
     std::ofstream(dir / "bad.txt") << "#?\n";
     const planner::Shape l = parseShape((dir / "l.txt").string());
     CHECK(l.cells.size() == 5);
-    CHECK(std::binary_search(l.cells.begin(), l.cells.end(), planner::Vec{0, 2, 0}));  // first line is the top row
+    // The first line is row y = 0, at the top as in the checker's pictures: y runs down the page.
+    CHECK(std::binary_search(l.cells.begin(), l.cells.end(), planner::Vec{0, 0, 0}));
+    CHECK(std::binary_search(l.cells.begin(), l.cells.end(), planner::Vec{2, 2, 0}));
+    CHECK_FALSE(std::binary_search(l.cells.begin(), l.cells.end(), planner::Vec{2, 0, 0}));
     CHECK(parseShape((dir / "c.json").string()).dimension == 3);
     CHECK(parseShape((dir / "v.xyz").string()).cells.size() == 2);
     CHECK_THROWS_WITH_AS(parseShape((dir / "bad.txt").string()), doctest::Contains("line 1, column 2"), InputError);
