@@ -7,7 +7,8 @@
 #   links ROOT           every relative link reaches a file, every #anchor a heading of its page
 #                        (GitHub's slugs), and docs/README.md lists every page under docs/
 #   options ROOT HOLON   every --option written after `holon SUBCOMMAND` is one the subcommand's
-#                        --help lists, so a renamed or removed option cannot stay documented
+#                        --help lists (the subcommands from `holon --help`), so a renamed or
+#                        removed option cannot stay documented
 # Pages are found by glob: a new page under docs/ is checked without being registered.
 import glob
 import os
@@ -153,10 +154,14 @@ def check_links(root):
     return not errors and count > 0
 
 
-SUBCOMMANDS = ('rules', 'check', 'verify', 'plan', 'replay', 'hex', 'roombots')
+def subcommands(holon):
+    """The subcommands `holon --help` lists, so that a new one is checked without being named here."""
+    r = subprocess.run([holon, '--help'], capture_output=True, text=True)
+    listed = r.stdout.split('Subcommands:', 1)[-1]
+    return tuple(re.findall(r'^  ([a-z]+)\s', listed, re.M))
 
 
-def commands(text):
+def commands(text, subs):
     """(line number, subcommand, options) of each `holon SUBCOMMAND ...` written in code."""
     spans = []
     for number, info, lines in fenced_blocks(text):
@@ -179,14 +184,17 @@ def commands(text):
         paragraph, start = [], None
     out = []
     for number, span in spans:
-        for m in re.finditer(r'(?:^|[\s/])holon\s+(%s)\b(.*?)(?=$|[;|]|&&)' % '|'.join(SUBCOMMANDS), span):
+        for m in re.finditer(r'(?:^|[\s/])holon\s+(%s)\b(.*?)(?=$|[;|]|&&)' % '|'.join(subs), span):
             out.append((number, m.group(1), re.findall(r'(?<![\w-])--[a-z][a-z0-9-]*', m.group(2))))
     return out
 
 
 def check_options(root, holon):
     helps, errors, count = {}, [], 0
-    for sub in SUBCOMMANDS:
+    subs = subcommands(holon)
+    if not subs:
+        errors.append(f'{holon} --help lists no subcommands')
+    for sub in subs:
         r = subprocess.run([holon, sub, '--help'], capture_output=True, text=True)
         if r.returncode != 0:
             errors.append(f'holon {sub} --help: exit {r.returncode}')
@@ -194,7 +202,7 @@ def check_options(root, holon):
     for page in pages(root):
         with open(page, encoding='utf-8') as f:
             text = f.read()
-        for number, sub, options in commands(text):
+        for number, sub, options in commands(text, subs):
             for option in options:
                 count += 1
                 if option not in helps[sub]:
