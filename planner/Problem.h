@@ -45,7 +45,7 @@ struct Problem {
 /// enabled instance at most, the allocator's and monitor's few bytes and, for a system with
 /// resources, the transport problem of the transfer bound (planner/Transport.h: a node and
 /// degree + 2 arcs per cell, with the network simplex's arrays). An upper bound: 1.3 to 4 times
-/// the peak measured on boards of 10^6 cells (README, "Exit codes and limits").
+/// the peak measured on boards of 10^6 cells (docs/cli.md, "Exit codes and limits").
 constexpr std::uint64_t planBytesPerCell(int shapes, int degree, bool resources) {
     const std::uint64_t words = (static_cast<std::uint64_t>(shapes) + 63) / 64;
     const std::uint64_t run = 6 + 1 + 16 * words + 8 + 4 + 8 * static_cast<std::uint64_t>(shapes) + 16;

@@ -17,7 +17,7 @@ struct Token {
     bool is(std::string_view t) const { return (kind == Kind::Punct || kind == Kind::Ident) && text == t; }
 };
 
-/// The words that start a declaration, in the order the README lists them.
+/// The words that start a declaration, in the order docs/language.md lists them.
 const std::vector<std::string>& declarationKeywords();
 
 std::vector<Token> tokenize(std::string_view source, Diagnostics& diagnostics);

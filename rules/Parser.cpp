@@ -1,4 +1,4 @@
-// Recursive-descent parser for the .holon rule language (grammar in README.md, "The rule language").
+// Recursive-descent parser for the .holon rule language (grammar in docs/language.md).
 // Names are resolved as they are parsed (a name must be declared before it is used), so the IR it
 // produces is complete. Errors abort only the current declaration: the parser skips to the next line
 // and goes on, so one run reports every mistake in the file (Souffle's discipline). Semantic checks

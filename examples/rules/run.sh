@@ -3,7 +3,7 @@
 # with mistakes. Needs a build (bash scripts/build).
 set -u
 cd "$(dirname "$0")/../.."
-holon=./build/cli/holon
+holon=${HOLON:-./build/cli/holon}
 echo "== The standard library (rules/library), instances on square2d (hex2d for hex systems) under each system's symmetry"
 printf '%-22s %-8s %-22s %6s %6s  %s\n' system lattice symmetry states rules instances
 for f in rules/library/*.holon examples/rules/sliding_cube.holon; do

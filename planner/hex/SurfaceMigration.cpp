@@ -6,7 +6,7 @@
 // thick outside the target that neither holes nor column collapse can clear, and creation cannot
 // fill the last row of target points along the target's edge; migration moves modules from the one
 // to the other.
-// Three things make it converge, each measured (README, "holon's improvements"):
+// Three things make it converge, each measured (docs/hex.md, "holon's improvements"):
 //  - the field: moves along the surface (onto points that touch the mass) to an empty target point,
 //    by breadth-first search once per timestep; a migrant descends it strictly below the value it
 //    arrived with, since the field is computed with every migrant where it stands and may count on

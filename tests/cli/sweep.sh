@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Usage: sweep.sh HOLON : `holon check` and `holon verify` on every library system (rules/library)
-# and every broken variant (tests/checker/broken), each exit code as documented (README, "Exit codes
+# and every broken variant (tests/checker/broken), each exit code as documented (docs/cli.md, "Exit codes
 # and limits"): 0 every property holds, 1 one does not, 3 undecided; never 2 (the table's arguments
 # are right), 4 or a crash. Small regions keep the whole sweep near a minute; a file in either folder
 # without a row fails the sweep, so a new system or variant joins it by one line. A row's exit 1 on

@@ -81,7 +81,7 @@ TEST_CASE("every timestep conserves the modules and keeps every hole and its she
 }
 
 TEST_CASE("holon's improvements sculpt all three plans to at least 99.5% compliance with no module cut off") {
-    // The issue's target is 99% and zero islands in all 12 experiments (README: 99.9% and more over
+    // The issue's target is 99% and zero islands in all 12 experiments (docs/hex.md: 99.9% and more over
     // 10 repetitions); the smallest arrays, where one wrong point weighs most, are the quick test.
     for (const char* plan : {"square T", "T square", "rectangle circle"}) {
         CAPTURE(plan);
