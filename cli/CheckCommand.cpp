@@ -3,6 +3,7 @@
 // shortest counterexample trace, replayed through the reference interpreter before it is shown.
 
 #include "checker/Check.h"
+#include "checker/ComponentTable.h"
 #include "checker/Draw.h"
 #include "checker/Graph.h"
 #include "cli/Commands.h"
@@ -12,8 +13,10 @@
 #include "rules/Library.h"
 #include "rules/OutputFile.h"
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <unistd.h>
 
 namespace holon::cli {
@@ -23,7 +26,7 @@ namespace {
 struct CheckArgs {
     std::string file, region, traceOut, svg, dot;
     std::vector<std::string> from, inputs, properties, noWarnings;
-    bool all = false, json = false;
+    bool all = false, json = false, components = false;
     std::uint64_t maxStates = 50'000'000;
     double timeout = 0;
     std::uint64_t memoryMiB = kDefaultMemoryMiB;
@@ -40,6 +43,64 @@ std::string limitOption(checker::StopReason r) {
     case checker::StopReason::Decided: break;
     }
     return "";
+}
+
+/// `--components`: the graph's components as a table, whether the design is complete on the region
+/// (one component per conserved amount), and the representatives drawn; JSON when `json` is given.
+/// False when the exploration stopped at a limit, so the table would be of part of the graph.
+bool printComponents(const checker::Explorer& explorer, const rules::System& system, nlohmann::json* json) {
+    const rules::Engine& engine = explorer.engine();
+    if (explorer.stats().stopped != checker::StopReason::Finished) {
+        if (json) (*json)["component_table"] = nullptr;
+        else std::cout << "\ncomponents: not computed, the exploration stopped at a limit before the whole graph was seen\n";
+        return false;
+    }
+    const auto rows = checker::componentTable(explorer, checker::components(explorer));
+    // The amount the design conserves: the one it declares, else the count of metamodules when no
+    // component changes it.
+    bool conserves = false;  // GCC 12 warns (wrongly) of an uninitialised std::optional here
+    auto quantity = rules::Property::Quantity::Mass;
+    for (const rules::Property& p : system.properties)
+        if (p.kind == rules::Property::Kind::Conserves) conserves = true, quantity = p.quantity;
+    const bool countKept = std::all_of(rows.begin(), rows.end(), [](const auto& r) { return r.minCount == r.maxCount; });
+    const bool massKept = std::all_of(rows.begin(), rows.end(), [](const auto& r) { return r.minMass == r.maxMass; });
+    if (!conserves && countKept) conserves = true, quantity = rules::Property::Quantity::Count;
+    const bool byMass = quantity == rules::Property::Quantity::Mass;
+    if (conserves && !(byMass ? massKept : countKept)) conserves = false;
+    std::map<std::int64_t, int> perAmount;
+    if (conserves)
+        for (const auto& r : rows) ++perAmount[byMass ? r.minMass : r.minCount];
+    const bool complete = conserves && std::all_of(perAmount.begin(), perAmount.end(), [](const auto& a) { return a.second == 1; });
+    const std::string amount = !conserves ? "" : byMass ? "mass" : "number of metamodules";
+    const auto massText = [&](std::int64_t units) { return rules::Rational(units, engine.massDenominator()).str(); };
+    const auto range = [](const std::string& lo, const std::string& hi) { return lo == hi ? lo : lo + "-" + hi; };
+    if (json) {
+        nlohmann::json table = nlohmann::json::array();
+        for (const auto& r : rows)
+            table.push_back({{"states", r.states}, {"metamodules", {r.minCount, r.maxCount}}, {"mass", {massText(r.minMass), massText(r.maxMass)}},
+                             {"representative", rules::configToJson(rules::Interpreter(engine.model(), engine.region()), {explorer.cells(r.representative), engine.inputs()})}});
+        (*json)["component_table"] = table;
+        (*json)["conserved"] = conserves ? nlohmann::json(amount) : nlohmann::json(nullptr);
+        (*json)["complete"] = complete;
+        return true;
+    }
+    std::cout << "\ncomponents: " << rows.size() << "; ";
+    if (rows.size() == 1) std::cout << "one component: every configuration reaches every other\n";
+    else if (!conserves) std::cout << "the design conserves neither mass nor the number of metamodules within a component\n";
+    else if (complete) std::cout << "complete: one component per " << amount << " (" << perAmount.size() << (perAmount.size() == 1 ? " value" : " values") << ")\n";
+    else {
+        const auto split = std::find_if(perAmount.begin(), perAmount.end(), [](const auto& a) { return a.second > 1; });
+        std::cout << "not complete: " << amount << " " << (byMass ? massText(split->first) : std::to_string(split->first))
+                  << " has " << split->second << " components (configurations of the same " << amount << " that cannot reach each other)\n";
+    }
+    std::cout << "  " << std::left << std::setw(4) << "#" << std::setw(12) << "states" << std::setw(13) << "metamodules" << "mass\n";
+    for (std::size_t k = 0; k < rows.size() && k < 20; ++k)
+        std::cout << "  " << std::setw(4) << k + 1 << std::setw(12) << rows[k].states << std::setw(13)
+                  << range(std::to_string(rows[k].minCount), std::to_string(rows[k].maxCount)) << range(massText(rows[k].minMass), massText(rows[k].maxMass)) << '\n';
+    if (rows.size() > 20) std::cout << "  ... and " << rows.size() - 20 << " more (--json lists them all)\n";
+    for (std::size_t k = 0; k < rows.size() && k < 6; ++k)
+        std::cout << "-- representative of component " << k + 1 << " (its smallest configuration):\n" << checker::drawAscii(engine, explorer.cells(rows[k].representative));
+    return true;
 }
 
 int run(const CheckArgs& a) {
@@ -115,9 +176,13 @@ int run(const CheckArgs& a) {
         else dotOut->write([&](std::ostream& out) { checker::writeDot(*kept.explorer, in, out); });
     }
 
+    // A table asked for and not computed (a limit) leaves the run undecided.
+    const auto exitWith = [&](bool componentsShown) { return componentsShown || exitCode() != kExitOk ? exitCode() : static_cast<int>(kExitUndecided); };
     if (a.json) {
-        std::cout << report.toJson().dump(2) << '\n';
-        return exitCode();
+        nlohmann::json j = report.toJson();
+        const bool shown = !a.components || printComponents(*kept.explorer, *system, &j);
+        std::cout << j.dump(2) << '\n';
+        return exitWith(shown);
     }
     const auto& s = report.stats;
     std::cout << system->name << " on " << region.spec() << (a.all ? ", every legal configuration" : ", reachable from " + std::to_string(a.from.size()) + " configuration(s)") << '\n';
@@ -143,7 +208,7 @@ int run(const CheckArgs& a) {
         for (const std::string& w : written) std::cout << ' ' << w;
         std::cout << '\n';
     }
-    return exitCode();
+    return exitWith(!a.components || printComponents(*kept.explorer, *system, nullptr));
 }
 
 }  // namespace
@@ -162,6 +227,7 @@ Run addCheckCommand(CLI::App& app) {
     sub->add_option("--memory", a->memoryMiB, "memory bound in MiB (default 16384)")->check(memoryValidator());
     sub->add_option("--threads", a->threads, "worker threads (default 2)")->check(threadsValidator());
     sub->add_flag("--json", a->json, "print the report as JSON");
+    sub->add_flag("--components", a->components, "list the reconfiguration graph's components (sizes, metamodules, mass, a drawn representative) and say whether the design is complete");
     sub->add_option("--trace-out", a->traceOut, "write the counterexample as an ITF JSON trace");
     sub->add_option("--svg", a->svg, "draw the counterexample as SVG");
     sub->add_option("--dot", a->dot, "write the explored graph as Graphviz (small graphs)");
