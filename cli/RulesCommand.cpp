@@ -2,6 +2,7 @@
 // system: fields, cell states per lattice, masses, the symmetry group, the rules and their
 // instances after closing them under that group, constraints and properties.
 
+#include "checker/RuleDrawing.h"
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
 #include "rules/Diagnostics.h"
@@ -9,8 +10,10 @@
 #include "rules/Escape.h"
 #include "rules/Library.h"
 #include "rules/Model.h"
+#include "rules/OutputFile.h"
 #include "rules/Printer.h"
 
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -22,6 +25,7 @@ namespace {
 struct RulesOptions {
     std::vector<std::string> files;
     std::vector<std::string> noWarnings;
+    std::string svgDir, lattice;
     bool json = false;
 };
 
@@ -100,6 +104,39 @@ nlohmann::ordered_json summarise(const rules::System& s) {
     return j;
 }
 
+/// `--svg DIR`: one drawing per directed rule that has orientations of its own, on the system's
+/// lattice (or `--lattice`, or square2d for a system that fixes none), named SYSTEM.RULE.svg.
+void drawRules(const rules::System& s, const RulesOptions& o) {
+    const rules::Lattice* lattice = s.lattice ? &rules::Lattice::get(*s.lattice) : &rules::Lattice::get(rules::LatticeKind::Square2D);
+    if (!o.lattice.empty()) {
+        std::string names;
+        const auto all = rules::Lattice::all();
+        const auto named = std::find_if(all.begin(), all.end(), [&](const rules::Lattice* l) { return l->name() == o.lattice; });
+        for (const rules::Lattice* l : all) names += (names.empty() ? "" : ", ") + l->name();
+        if (named == all.end()) throw InputError("--lattice " + o.lattice + ": no such lattice; give one of " + names);
+        lattice = *named;
+        if (s.lattice && *s.lattice != lattice->kind())
+            throw InputError("--lattice " + o.lattice + ": system '" + s.name + "' is written for the " + rules::Lattice::get(*s.lattice).name() + " lattice; leave --lattice out");
+    }
+    const rules::Model model(s, *lattice);  // throws InputError when the system is fixed to another lattice
+    std::error_code error;
+    std::filesystem::create_directories(o.svgDir, error);
+    if (error) throw InputError("--svg " + o.svgDir + ": cannot create the folder: " + error.message());
+    const auto fileName = [](const std::string& name) {
+        std::string out;
+        for (char c : name) out += std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' ? c : '_';
+        return out;
+    };
+    int written = 0;
+    for (int r = 0; r < static_cast<int>(model.rules().size()); ++r) {
+        if (model.shapeCount(r) == 0) continue;
+        const rules::OutputFile file("--svg", o.svgDir + "/" + fileName(s.name) + "." + fileName(model.rules()[r].name) + ".svg");
+        file.write(checker::drawRuleSvg(model, r));
+        ++written;
+    }
+    std::cout << "  drawings     " << written << (written == 1 ? " rule" : " rules") << " on " << lattice->name() << " in " << o.svgDir << "/\n";
+}
+
 void printHuman(const nlohmann::ordered_json& j, std::ostream& out) {
     out << "system " << j["system"].get<std::string>() << "  (" << j["file"].get<std::string>() << ")\n";
     out << "  lattice      " << j["lattice"].get<std::string>() << '\n';
@@ -160,6 +197,8 @@ Run addRulesCommand(CLI::App& app) {
     sub->add_option("-W", opts->noWarnings, "silence a warning: -W no-NAME (names: unused-value, unused-input, "
                                             "unmassed-value, duplicate-rule, no-rules)");
     sub->add_flag("--json", opts->json, "print the summaries as JSON");
+    sub->add_option("--svg", opts->svgDir, "draw every rule, one SVG per rule with a panel per orientation, into this folder");
+    sub->add_option("--lattice", opts->lattice, "the lattice to draw on (square2d, hex2d, cubic3d; default: the system's, else square2d)");
     return [opts]() {
         const rules::LoadOptions load = loadOptions(opts->noWarnings);
         nlohmann::ordered_json all = nlohmann::ordered_json::array();
@@ -180,6 +219,7 @@ Run addRulesCommand(CLI::App& app) {
             nlohmann::ordered_json j = summarise(*system);
             if (opts->json) all.push_back(j);
             else printHuman(j, std::cout);
+            if (!opts->svgDir.empty()) drawRules(*system, *opts);
         }
         if (opts->json) std::cout << all.dump(2) << '\n';
         return failed ? 2 : 0;

@@ -84,10 +84,12 @@ Svg& Svg::legend(double x, double y, std::string_view label, const SvgAttrs& swa
     return text(x + 18, y + 11, label);
 }
 
-Svg& Svg::nested(const std::string& document, double x) {
+Svg& Svg::nested(const std::string& document, double x, double y) {
     // The nested root keeps its size and drops its namespace (the outer one declares it).
     const std::string root = "<svg xmlns=\"http://www.w3.org/2000/svg\"";
-    out_ << "<svg x=\"" << x << '"' << (document.compare(0, root.size(), root) == 0 ? document.substr(root.size()) : document.substr(4));
+    out_ << "<svg x=\"" << x << '"';
+    if (y != 0) out_ << " y=\"" << y << '"';
+    out_ << (document.compare(0, root.size(), root) == 0 ? document.substr(root.size()) : document.substr(4));
     return *this;
 }
 

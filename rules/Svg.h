@@ -51,8 +51,8 @@ public:
     Svg& text(double x, double y, std::string_view content, const SvgAttrs& attrs = {});
     /// A legend entry: a 14-unit swatch at (x, y) drawn with `swatch`, its label to the right.
     Svg& legend(double x, double y, std::string_view label, const SvgAttrs& swatch);
-    /// Another picture placed at x within this one (its own document, as document() wrote it).
-    Svg& nested(const std::string& document, double x);
+    /// Another picture placed at (x, y) within this one (its own document, as document() wrote it).
+    Svg& nested(const std::string& document, double x, double y = 0);
 
     /// The document: width and height, the root's other attributes, `defs` (markers, patterns), a
     /// white background, then the body.

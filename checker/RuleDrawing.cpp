@@ -1,0 +1,124 @@
+// Rule drawings (checker/RuleDrawing.h). An example firing is found by planting, for each pattern
+// cell, a state its left side accepts (Engine::lhsAccepts, so inputs and field atoms count) and
+// retrying with other neighbours and inputs until the guard holds; the two configurations are
+// drawn by the trace drawer (checker/Draw), one panel per orientation stacked in one document.
+
+#include "checker/RuleDrawing.h"
+
+#include "checker/Draw.h"
+#include "rules/Engine.h"
+#include "rules/Printer.h"
+#include "rules/Svg.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <random>
+
+namespace holon::checker {
+
+namespace {
+
+/// The region drawn around a pattern: its bounding box (a hexagon on the hex lattice) grown by one
+/// neighbour step, and where the anchor sits in it.
+std::pair<rules::Region, rules::Vec> regionAround(const rules::Lattice& lattice, const std::vector<rules::Vec>& offsets) {
+    if (lattice.kind() == rules::LatticeKind::Hex2D) {
+        int radius = 0;
+        for (const rules::Vec& o : offsets) radius = std::max(radius, (std::abs(o.x) + std::abs(o.y) + std::abs(o.x + o.y)) / 2);
+        return {rules::Region::hexagon(radius).grown(1), rules::Vec{}};
+    }
+    rules::Vec lo = offsets.front(), hi = offsets.front();
+    for (const rules::Vec& o : offsets)
+        lo = {std::min(lo.x, o.x), std::min(lo.y, o.y), std::min(lo.z, o.z)}, hi = {std::max(hi.x, o.x), std::max(hi.y, o.y), std::max(hi.z, o.z)};
+    return {rules::Region::box(lattice, hi - lo + rules::Vec{1, 1, 1}).grown(1), rules::Vec{} - lo};
+}
+
+/// A panel: the example firing of one orientation, or its left side when none was found.
+std::string drawOrientation(const rules::Model& model, int shape, int orientation, int orientations) {
+    const rules::RuleShape& rs = model.shapes()[shape];
+    const auto [region, anchor] = regionAround(model.lattice(), rs.offsets);
+    const rules::System& system = model.system();
+    const int alphabet = model.alphabet().size();
+    std::mt19937 rng(static_cast<unsigned>(1000 + shape));
+    const std::string head = "orientation " + std::to_string(orientation + 1) + " of " + std::to_string(orientations);
+    // Twenty draws of the inputs (the first: none set), each with a compiled engine and 300 tries:
+    // the first leave every other cell empty (the plainest example), then every other cell holds
+    // one state (guards that count many cells of a state), then random states.
+    for (int draw = 0; draw < 20; ++draw) {
+        std::vector<std::uint32_t> inputs(region.size(), 0);
+        if (draw > 0 && !system.inputs.empty())
+            for (auto& bits : inputs) bits = static_cast<std::uint32_t>(rng() & ((1u << system.inputs.size()) - 1));
+        const rules::Engine engine(model, region, inputs);
+        const auto& placed = engine.instances();
+        const auto p = std::find_if(placed.begin(), placed.end(), [&](const rules::Engine::Placed& q) { return q.shape == shape && q.anchor == anchor; });
+        if (p == placed.end()) break;  // cannot happen: the region is built around the pattern
+        const int instance = static_cast<int>(p - placed.begin());
+        for (int attempt = 0; attempt < 300; ++attempt) {
+            std::vector<CellValue> cells(region.size(), 0);
+            // Tries 100-199 make each free pattern cell (one that may be empty) hold one state
+            // with a random probability, for guards that count the pattern's cells of a state.
+            const auto one = static_cast<CellValue>(1 + attempt % (alphabet - 1));
+            const bool binary = attempt >= 100 && attempt < 200;
+            const double share = std::uniform_real_distribution<double>(0.3, 0.95)(rng);
+            if (attempt >= 20 && attempt < 60) std::fill(cells.begin(), cells.end(), one);
+            else if (attempt >= 200)
+                for (auto& v : cells)
+                    if (rng() % 2) v = static_cast<CellValue>(1 + rng() % (alphabet - 1));
+            bool planted = true;
+            for (int k = 0; k < p->size && planted; ++k) {
+                const int cell = p->cells[k];
+                std::vector<CellValue> accepted;
+                for (int v = 0; v < alphabet; ++v)
+                    if (engine.lhsAccepts(instance, k, engine.comboOfCell(cell), static_cast<CellValue>(v))) accepted.push_back(static_cast<CellValue>(v));
+                const bool free = std::count(accepted.begin(), accepted.end(), 0) && std::count(accepted.begin(), accepted.end(), one);
+                if (accepted.empty()) planted = false;
+                else if (binary && free) cells[cell] = std::uniform_real_distribution<double>(0, 1)(rng) < share ? one : 0;
+                else cells[cell] = accepted[attempt < 20 ? attempt % accepted.size() : rng() % accepted.size()];
+            }
+            if (!planted || !engine.matches(cells.data(), instance)) continue;
+            Trace t;
+            t.steps.push_back({cells, -1});
+            CellValue saved[rules::Engine::kMaxCells];
+            engine.apply(cells.data(), instance, saved);
+            t.steps.push_back({cells, instance});
+            return drawTraceSvg(t, engine, head);
+        }
+    }
+    rules::Svg none;
+    none.text(10, 22, head + ": no example found whose guard holds", {{"font-size", 14}, {"font-weight", "bold"}});
+    return none.document(520, 40);
+}
+
+/// The width and height a document declares on its root.
+std::pair<double, double> sizeOf(const std::string& document) {
+    const auto attribute = [&](const std::string& name) {
+        const std::size_t at = document.find(name + "=\"");
+        return at == std::string::npos ? 0.0 : std::atof(document.c_str() + at + name.size() + 2);
+    };
+    return {attribute("width"), attribute("height")};
+}
+
+}  // namespace
+
+std::string drawRuleSvg(const rules::Model& model, int rule) {
+    std::vector<int> shapes;
+    for (int s = 0; s < static_cast<int>(model.shapes().size()); ++s)
+        if (model.shapes()[s].rule == rule) shapes.push_back(s);
+    const rules::DirectedRule& r = model.rules()[rule];
+    const rules::System& system = model.system();
+    std::string title = "rule " + r.name + " on " + model.lattice().name() + ": " + std::to_string(shapes.size()) +
+                        (shapes.size() == 1 ? " orientation" : " orientations");
+    if (r.guard()) title += "; fires only where " + rules::printExpr(system, *r.guard());
+    rules::Svg body;
+    body.text(10, 24, title, {{"font-size", 15}, {"font-weight", "bold"}});
+    double y = 36, width = 520;
+    for (std::size_t k = 0; k < shapes.size(); ++k) {
+        const std::string panel = drawOrientation(model, shapes[k], static_cast<int>(k), static_cast<int>(shapes.size()));
+        const auto [w, h] = sizeOf(panel);
+        body.nested(panel, 0, y);
+        y += h + 8, width = std::max(width, w);
+    }
+    if (shapes.empty()) body.text(10, 56, "no orientation of its own: every one repeats an earlier rule's", {{"font-size", 13}}), y += 30;
+    return body.document(std::max(width, 9.0 * static_cast<double>(title.size()) + 20), y + 10);
+}
+
+}  // namespace holon::checker

@@ -1,0 +1,39 @@
+// Rule drawings: every orientation of every rule of the library is drawn as an example firing (an
+// enabled instance found by planting its left side), one panel each, with the guard in the title.
+
+#include "checker/RuleDrawing.h"
+#include "rules/Printer.h"
+#include "rules/Svg.h"
+#include "TestSupport.h"
+
+using namespace holon;
+
+namespace {
+std::size_t occurrences(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+}  // namespace
+
+TEST_CASE("every orientation of every library rule is drawn as an example firing") {
+    int drawn = 0;
+    for (const std::string& file : rules::libraryFiles()) {
+        const rules::System system = rules::librarySystem(std::filesystem::path(file).stem().string());
+        const rules::Lattice& lattice = system.lattice ? rules::Lattice::get(*system.lattice) : rules::Lattice::get(rules::LatticeKind::Square2D);
+        const rules::Model model(system, lattice);
+        for (int r = 0; r < static_cast<int>(model.rules().size()); ++r) {
+            const int n = model.shapeCount(r);
+            if (n == 0) continue;
+            CAPTURE(system.name);
+            CAPTURE(model.rules()[r].name);
+            const std::string svg = checker::drawRuleSvg(model, r);
+            CHECK(occurrences(svg, " of " + std::to_string(n) + "</text>") == static_cast<std::size_t>(n));
+            CHECK(occurrences(svg, "no example found") == 0);
+            CHECK(occurrences(svg, "1: " + model.rules()[r].name + " at") == static_cast<std::size_t>(n));  // the firing, in each panel
+            if (const auto* guard = model.rules()[r].guard()) CHECK(svg.find(rules::Svg::escape(rules::printExpr(system, *guard))) != std::string::npos);
+            ++drawn;
+        }
+    }
+    CHECK(drawn > 150);
+}
