@@ -42,12 +42,12 @@ bool HandwrittenPlanner::enabled(std::int64_t a, int rule, int d) const {
     }
     const std::uint8_t y = cells_[a + board_.step(d)];
     switch (rule) {
-        case Finalize: return kind(x) == F && kind(y) == U && inTarget(y);          // F U&target => F F
-        case PathFinalize: return kind(x) == F && kind(y) == P && inTarget(y);      // F P&target => F F
-        case PathCreate: return kind(x) == F && kind(y) == U && !inTarget(y);       // F U&!target => F P&parent=@0
-        case PathPropagate: return kind(x) == P && kind(y) == U;                    // P U => P P&parent=@0
-        case Create: return kind(x) == F && kind(y) == Empty && inTarget(y);        // F _&target => F F
-        default: return false;
+    case Finalize: return kind(x) == F && kind(y) == U && inTarget(y);      // F U&target => F F
+    case PathFinalize: return kind(x) == F && kind(y) == P && inTarget(y);  // F P&target => F F
+    case PathCreate: return kind(x) == F && kind(y) == U && !inTarget(y);   // F U&!target => F P&parent=@0
+    case PathPropagate: return kind(x) == P && kind(y) == U;                // P U => P P&parent=@0
+    case Create: return kind(x) == F && kind(y) == Empty && inTarget(y);    // F _&target => F F
+    default: return false;
     }
 }
 
@@ -94,13 +94,13 @@ void HandwrittenPlanner::fire(std::int64_t a, int rule, int d) {
     const std::uint8_t before = cells_[b], targetBit = before & (1 << 5);
     std::uint8_t after = before;
     switch (rule) {
-        case Finalize:
-        case PathFinalize:
-        case Create: after = targetBit | F; break;
-        case PathCreate:
-        case PathPropagate: after = static_cast<std::uint8_t>(targetBit | P | (opposite_[d] << 2)); break;
-        case Delete: after = targetBit; break;
-        default: break;
+    case Finalize:
+    case PathFinalize:
+    case Create: after = targetBit | F; break;
+    case PathCreate:
+    case PathPropagate: after = static_cast<std::uint8_t>(targetBit | P | (opposite_[d] << 2)); break;
+    case Delete: after = targetBit; break;
+    default: break;
     }
     cells_[b] = after;
     offGoal_ += int(atGoal(before)) - int(atGoal(after));

@@ -30,9 +30,18 @@ public:
 
 private:
     // Cell byte: kind in bits 0-1, parent direction in bits 2-4 (P only), target in bit 5.
-    enum Kind : std::uint8_t { Empty = 0, U = 1, F = 2, P = 3 };
+    enum Kind : std::uint8_t { Empty = 0,
+                               U = 1,
+                               F = 2,
+                               P = 3 };
     // Instance: anchor * 64 + rule * 8 + direction; the deletion uses direction 0.
-    enum Rule { Finalize, PathFinalize, PathCreate, PathPropagate, Create, Delete, kRules };
+    enum Rule { Finalize,
+                PathFinalize,
+                PathCreate,
+                PathPropagate,
+                Create,
+                Delete,
+                kRules };
 
     static Kind kind(std::uint8_t c) { return static_cast<Kind>(c & 3); }
     static bool inTarget(std::uint8_t c) { return (c >> 5) & 1; }

@@ -14,7 +14,7 @@
 namespace holon::bench {
 
 struct ShapePair {
-    std::string family;          // "polyomino->spiral", for the table
+    std::string family;            // "polyomino->spiral", for the table
     planner::Shape start, target;  // both contain the origin, the planner's seed
 };
 

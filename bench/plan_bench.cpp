@@ -77,8 +77,9 @@ int main(int argc, char** argv) {
         else if (flag == "--only" && i + 1 < argc) only = argv[++i];
         else if (flag == "--with-1e7") with1e7 = true;
         else {
-            std::fprintf(stderr, "usage: plan_bench [--runs N] [--max-k K] [--cap-gib G] [--timeout S] [--with-1e7] [--only PREFIX]\n"
-                                 "       plan_bench --case RULES FROM TO SCALE ALLOCATOR TIMEOUT\n");
+            std::fprintf(stderr,
+                         "usage: plan_bench [--runs N] [--max-k K] [--cap-gib G] [--timeout S] [--with-1e7] [--only PREFIX]\n"
+                         "       plan_bench --case RULES FROM TO SCALE ALLOCATOR TIMEOUT\n");
             return 2;
         }
     }

@@ -35,8 +35,7 @@ Verdict CheckReport::overall() const {
 nlohmann::json CheckReport::toJson() const {
     nlohmann::json props = nlohmann::json::array();
     for (const PropertyResult& p : properties)
-        props.push_back({{"name", p.name}, {"kind", p.kind}, {"verdict", verdictName(p.verdict)}, {"summary", p.summary},
-                         {"witness", p.witness}, {"seconds", p.seconds}});
+        props.push_back({{"name", p.name}, {"kind", p.kind}, {"verdict", verdictName(p.verdict)}, {"summary", p.summary}, {"witness", p.witness}, {"seconds", p.seconds}});
     return {{"system", system},
             {"region", region},
             {"states", stats.states},
@@ -141,9 +140,10 @@ std::string edgeText(const Stuck& stuck) {
 void judgeStuck(PropertyResult& r, const Explorer& ex, const Stuck& stuck, bool complete, const std::string& which,
                 const std::string& description, const char* countKey, const std::string& holdsText) {
     r.witness = nullptr;
-    if (!violatedAtNearest(r, ex, stuck.deadlocks, [](StateId) { return true; }, which, description, countKey)) {
+    if (!violatedAtNearest(
+            r, ex, stuck.deadlocks, [](StateId) { return true; }, which, description, countKey)) {
         r.verdict = complete && stuck.unclassified == 0 ? Verdict::Holds : Verdict::Unknown;
-        r.summary = !complete ? "no violation among the " + std::to_string(ex.stats().states) + " states explored before the limit"
+        r.summary = !complete            ? "no violation among the " + std::to_string(ex.stats().states) + " states explored before the limit"
                     : stuck.unclassified ? std::to_string(stuck.unclassified) + " stuck states not classified (deadlock or edge effect) within the limits"
                                          : holdsText;
         r.summary += edgeText(stuck);
@@ -330,8 +330,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
                         const auto& rule = e.model().rules()[e.instances()[ex->successorVia()[k]].rule];
                         r.summary = "rule '" + rule.name + "' changes the " + (byMass ? "mass" : "count");
                         r.trace->description = r.summary;
-                        r.witness = {{"rule", rule.name}, {"before", rules::Rational(amount[s], byMass ? e.massDenominator() : 1).str()},
-                                     {"after", rules::Rational(amount[succ[k]], byMass ? e.massDenominator() : 1).str()}};
+                        r.witness = {{"rule", rule.name}, {"before", rules::Rational(amount[s], byMass ? e.massDenominator() : 1).str()}, {"after", rules::Rational(amount[succ[k]], byMass ? e.massDenominator() : 1).str()}};
                     }
             if (r.verdict != Verdict::Violated) unknownOr(r, "every one of the " + std::to_string(report.stats.edges) + " steps keeps it");
             break;
@@ -458,8 +457,9 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
             for (StateId s : ids)
                 if (e.holds(*system.goal, ex->cells(s).data())) goals.push_back(s);
             const std::vector<char> reach = canReach(*ex, goals);
-            if (!violatedAtNearest(r, *ex, ids, [&](StateId s) { return !reach[s]; }, "from which no run reaches the goal",
-                                   "no run from here reaches the goal", "trapped")) {
+            if (!violatedAtNearest(
+                    r, *ex, ids, [&](StateId s) { return !reach[s]; }, "from which no run reaches the goal",
+                    "no run from here reaches the goal", "trapped")) {
                 r.verdict = Verdict::Holds;
                 r.summary = "from every state some run reaches the goal (" + std::to_string(goals.size()) + " goal states)";
             }

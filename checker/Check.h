@@ -16,7 +16,7 @@ namespace holon::checker {
 
 struct CheckOptions {
     Limits limits;
-    bool all = false;                          // every legal configuration instead of the reachable ones
+    bool all = false;                           // every legal configuration instead of the reachable ones
     std::vector<rules::Configuration> initial;  // used when !all
     std::vector<std::uint32_t> inputs;          // per cell; with --all, the problem's inputs
     std::vector<std::string> properties;        // empty: all of them

@@ -15,9 +15,9 @@ namespace holon::checker {
 
 struct ComponentRow {
     std::uint64_t states = 0;
-    int minCount = 0, maxCount = 0;          // metamodules (occupied cells)
-    std::int64_t minMass = 0, maxMass = 0;   // in units of the engine's massDenominator()
-    StateId representative = kNoState;       // the smallest configuration, cell by cell
+    int minCount = 0, maxCount = 0;         // metamodules (occupied cells)
+    std::int64_t minMass = 0, maxMass = 0;  // in units of the engine's massDenominator()
+    StateId representative = kNoState;      // the smallest configuration, cell by cell
 };
 
 /// One row per component, largest first (ties: smallest representative first), so the table does

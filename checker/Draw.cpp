@@ -57,7 +57,7 @@ char arrowChar(rules::Vec d) {
     if (d.z != 0) return 0;
     if (d.x == 1 && d.y == 0) return '>';
     if (d.x == -1 && d.y == 0) return '<';
-    if (d.x == 0 && d.y == 1) return 'v'; // +y points down the page
+    if (d.x == 0 && d.y == 1) return 'v';  // +y points down the page
     if (d.x == 0 && d.y == -1) return '^';
     return 0;
 }
@@ -81,7 +81,7 @@ std::vector<std::string> wrap(const std::string& text, std::size_t width) {
     return lines;
 }
 
-} // namespace
+}  // namespace
 
 // ---------------------------------------------------------------------------------------------
 // ASCII
@@ -280,7 +280,7 @@ std::string cellText(const rules::System& s, const std::vector<int>& fields) {
             text += (text.empty() ? "" : " ") + std::to_string(fields[f]);
             break;
         case FieldKind::Dir:
-            break; // drawn as an arrow
+            break;  // drawn as an arrow
         }
     }
     return text;
@@ -301,7 +301,7 @@ struct Flow {
     }
 };
 
-} // namespace
+}  // namespace
 
 std::string valueColour(const rules::Field& field, int value) {
     const int n = static_cast<int>(field.values.size());
@@ -443,7 +443,8 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
                              ? valueColour(system.fields[fill], alphabet.fields(v)[fill])
                              : "#8d8d8d";
             rules::SvgAttrs attrs{{"fill", colour}};
-            const rules::SvgAttrs& stroke = isChanged ? kChangedPen : isContext ? kContextPen : kCellPen;
+            const rules::SvgAttrs& stroke = isChanged ? kChangedPen : isContext ? kContextPen
+                                                                                : kCellPen;
             attrs.insert(attrs.end(), stroke.begin(), stroke.end());
             body.polygon(corners(i, hex ? 0.5 : 1), attrs);
         }
@@ -632,4 +633,4 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
     return body.document(width, height, {{"font-family", "sans-serif"}, {"font-size", 11}}, &defs);
 }
 
-} // namespace holon::checker
+}  // namespace holon::checker

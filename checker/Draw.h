@@ -42,4 +42,4 @@ std::string valueColour(const rules::Field& field, int value);
 /// value shown and every input. 3D regions drawn as z slices.
 std::string drawTraceSvg(const Trace& trace, const rules::Engine& engine, const std::string& title);
 
-} // namespace holon::checker
+}  // namespace holon::checker

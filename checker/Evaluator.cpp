@@ -35,7 +35,7 @@ void Evaluator::updateMembers(int cell, CellValue value) {
     const int combo = engine_->comboOfCell(cell);
     const std::size_t predicates = members_.size();
     if (predicates == 0) return;  // a system without constraints: nothing to track (and no row to index)
-    if (value < 64) {  // the common case, branch-free: one word of accepted states per predicate
+    if (value < 64) {             // the common case, branch-free: one word of accepted states per predicate
         const std::uint64_t* accepted = constraints_->acceptedStates(combo);
         for (std::size_t k = 0; k < predicates; ++k) members_[k] = (members_[k] & ~bit) | (((accepted[k] >> value) & 1u) << cell);
         return;

@@ -327,7 +327,8 @@ bool Explorer::gather(StateId id, Successors& out, Worker& worker) {
         const bool binary = engine_->model().alphabet().size() == 2;
         WordSuccessors::Loaded& loaded = out.loaded;
         words_->load(base, loaded, ranked() && !binary, !complete_);
-        const std::uint64_t index = !ranked() ? 0 : binary ? loaded.occupied[1] : indexOf(loaded.cells);
+        const std::uint64_t index = !ranked() ? 0 : binary ? loaded.occupied[1]
+                                                           : indexOf(loaded.cells);
         words_->forEach(loaded, [&](int p, const std::uint64_t* delta, std::uint64_t indexDelta) {
             const std::size_t k = out.count;
             if (ranked()) {
@@ -351,7 +352,7 @@ bool Explorer::gather(StateId id, Successors& out, Worker& worker) {
             for (int k = 0; k < placed.size; ++k) old[k] = cells[placed.cells[k]];
             const std::size_t at = out.count++;
             out.via[at] = p;
-            if (ranked()) {  // the rank is all a look-up needs: no packed successor
+            if (ranked()) {                            // the rank is all a look-up needs: no packed successor
                 std::uint64_t successorIndex = index;  // wraps below zero and back: unsigned arithmetic
                 for (int k = 0; k < placed.size; ++k) {
                     const int c = placed.cells[k];
@@ -576,7 +577,7 @@ const ExploreStats& Explorer::explore() {
         const std::size_t chunks = (sizeOf(level) + chunk - 1) / chunk;
         for (std::size_t c = 0; c < chunks; ++c) {
             auto from = [&](int t, std::size_t k) { return level[t].size() * k / chunks; };  // slice k of list t
-            std::size_t left = 0;  // states of this level not yet expanded, the chunk's included
+            std::size_t left = 0;                                                            // states of this level not yet expanded, the chunk's included
             for (int t = 0; t < threads; ++t) left += level[t].size() - from(t, c);
             // Rounds on the chunk's slices, then on the states a round put back.
             std::size_t size = 0, pending = 0;

@@ -27,12 +27,16 @@ namespace holon::checker {
 /// buffers, --all's lists and bitmaps), counted before each allocation.
 struct Limits {
     std::uint64_t maxStates = 50'000'000;
-    double timeoutSeconds = 0;           // 0: none
+    double timeoutSeconds = 0;  // 0: none
     std::uint64_t memoryBytes = 16ull << 30;
     int threads = 2;
 };
 
-enum class StopReason { Finished, MaxStates, Timeout, Memory, Decided };
+enum class StopReason { Finished,
+                        MaxStates,
+                        Timeout,
+                        Memory,
+                        Decided };
 std::string stopReasonName(StopReason r);
 
 struct ExploreStats {
@@ -108,7 +112,7 @@ private:
     /// that lead to them.
     struct Successors {
         StateId from = kNoState;
-        std::vector<CellValue> cells;  // of `from`, unpacked (the cell-by-cell path)
+        std::vector<CellValue> cells;   // of `from`, unpacked (the cell-by-cell path)
         WordSuccessors::Loaded loaded;  // of `from` (the word path)
         // The first `count` entries are the successors; there is room for one per instance of
         // the region, so listing one is a store. keys: hash in the store, or the candidate index
@@ -128,11 +132,11 @@ private:
         Successors ring[3];  // expandRange's pipeline
         StateStore::IdBlock ids;
         std::vector<StateId> next, terminal;
-        std::vector<StateId> deferred;  // states of the round left for a later one (no room, or a limit)
-        std::vector<StateId> found;     // resolve's first pass: per successor its id, kNoState or kFresh
+        std::vector<StateId> deferred;       // states of the round left for a later one (no room, or a limit)
+        std::vector<StateId> found;          // resolve's first pass: per successor its id, kNoState or kFresh
         std::vector<std::uint64_t> scratch;  // one successor's words
-        std::uint32_t ticks = 0;        // work since the clock was last read
-        std::uint64_t room = 0;         // room for new states taken from the round's, not used yet
+        std::uint32_t ticks = 0;             // work since the clock was last read
+        std::uint64_t room = 0;              // room for new states taken from the round's, not used yet
         struct Edge {
             StateId from, to;
             std::int32_t via;
@@ -211,7 +215,7 @@ private:
     // configuration c has index sum_i c[i] * a^i (a the alphabet size); a bit per candidate says
     // whether it is legal, and a legal one's id is its rank among the legal ones.
     std::vector<std::uint64_t> legalBits_;
-    std::vector<StateId> rankBefore_;  // per word of legalBits_: legal candidates before it
+    std::vector<StateId> rankBefore_;        // per word of legalBits_: legal candidates before it
     std::vector<std::uint64_t> placeValue_;  // a^i
     bool ranked() const { return !legalBits_.empty(); }
     std::size_t rankingBytes() const { return legalBits_.size() * 8 + rankBefore_.size() * sizeof(StateId) + placeValue_.size() * 8; }

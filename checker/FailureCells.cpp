@@ -47,9 +47,18 @@ void collect(const rules::Engine& engine, const Expr& e, const rules::CellValue*
         where(e.pred, [&](int i) { return part[i] != largest; });
         break;
     }
-    case Expr::Kind::Bool: case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Not: case Expr::Kind::Implies:
-    case Expr::Kind::Compare: case Expr::Kind::Add: case Expr::Kind::Sub: case Expr::Kind::Neg: case Expr::Kind::Count:
-    case Expr::Kind::Some: case Expr::Kind::Reaches:
+    case Expr::Kind::Bool:
+    case Expr::Kind::Number:
+    case Expr::Kind::Mass:
+    case Expr::Kind::Not:
+    case Expr::Kind::Implies:
+    case Expr::Kind::Compare:
+    case Expr::Kind::Add:
+    case Expr::Kind::Sub:
+    case Expr::Kind::Neg:
+    case Expr::Kind::Count:
+    case Expr::Kind::Some:
+    case Expr::Kind::Reaches:
         break;  // no cells to show
     }
 }

@@ -40,7 +40,6 @@ nlohmann::json answerOf(const ForkedJob& job, bool forked) {
     }
 }
 
-
 std::optional<Child> spawn(const ForkedJob& job) {
     int fds[2];
     if (pipe(fds) != 0) return std::nullopt;
@@ -74,7 +73,7 @@ nlohmann::json received(const Child& c, int status) {
     nlohmann::json answer = nlohmann::json::parse(c.text, nullptr, false);
     if (answer.is_discarded() || !answer.is_object())
         return {{"error", WIFSIGNALED(status) ? "the solver process died (signal " + std::to_string(WTERMSIG(status)) + ")"
-                                               : std::string("the solver process gave no answer")}};
+                                              : std::string("the solver process gave no answer")}};
     return answer;
 }
 

@@ -16,8 +16,8 @@ namespace holon::checker {
 using ForkedJob = std::function<nlohmann::json(bool forked)>;
 
 struct ForkedAnswer {
-    int job = -1;            // the job that gave `answer`; -1: none answered
-    nlohmann::json answer;   // on failure: {"error": why}
+    int job = -1;           // the job that gave `answer`; -1: none answered
+    nlohmann::json answer;  // on failure: {"error": why}
 };
 
 /// Runs the jobs at once, one child each, and returns the first answer `decisive` accepts (the

@@ -207,7 +207,8 @@ void writeDot(const Explorer& ex, const rules::Interpreter& in, std::ostream& ou
             label = "state " + std::to_string(s);
         }
         std::string escaped;
-        for (char ch : label) escaped += ch == '\n' ? std::string("\\l") : ch == '"' ? std::string("\\\"") : std::string(1, ch);
+        for (char ch : label) escaped += ch == '\n' ? std::string("\\l") : ch == '"' ? std::string("\\\"")
+                                                                                     : std::string(1, ch);
         out << "  s" << s << " [label=\"" << escaped << "\"" << (ex.isInitial(s) ? ", penwidth=2" : "") << "];\n";
     }
     for (std::size_t s = 0; s + 1 < row.size(); ++s)

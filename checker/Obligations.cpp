@@ -44,9 +44,7 @@ Verdict VerifyReport::overall() const {
 nlohmann::json VerifyReport::toJson() const {
     nlohmann::json props = nlohmann::json::array();
     for (const Obligation& o : obligations)
-        props.push_back({{"name", o.result.name}, {"kind", o.result.kind}, {"verdict", proofVerdictName(o.result.verdict)},
-                         {"summary", o.result.summary}, {"witness", o.result.witness}, {"seconds", o.result.seconds},
-                         {"smt_file", o.smtFile.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.smtFile)}});
+        props.push_back({{"name", o.result.name}, {"kind", o.result.kind}, {"verdict", proofVerdictName(o.result.verdict)}, {"summary", o.result.summary}, {"witness", o.result.witness}, {"seconds", o.result.seconds}, {"smt_file", o.smtFile.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.smtFile)}});
     return {{"system", system}, {"region", region}, {"properties", props}};
 }
 
@@ -149,7 +147,8 @@ public:
                     return {{"result", static_cast<int>(r)}, {"reason", r == smt::Result::Unknown ? solver.reasonUnknown() : ""}};
                 });
             const ForkedAnswer answer =
-                firstDecisive(jobs, [](const nlohmann::json& a) { return a.contains("result") && a["result"] != unknown; }, enc.budget());
+                firstDecisive(
+                    jobs, [](const nlohmann::json& a) { return a.contains("result") && a["result"] != unknown; }, enc.budget());
             result = static_cast<smt::Result>(answer.answer.value("result", unknown));
             reason = answer.answer.value("reason", answer.answer.value("error", std::string("no answer")));
             if (answer.job == 1) chosen = &lemmas.lean;
@@ -360,7 +359,8 @@ bool impliedByEarlier(Runner& run, const std::string& name, const std::vector<co
     smt::Term q = enc.legal(d);
     for (std::size_t j = 0; j < k; ++j) q = q && enc.holds(*conjuncts[j], d, true);
     q = q && !enc.holds(*conjuncts[k], d, false);
-    Obligation part = run.solve(name, "invariant", ctx, enc, q, [](const smt::Model&, PropertyResult&) {}, "", 0.25);
+    Obligation part = run.solve(
+        name, "invariant", ctx, enc, q, [](const smt::Model&, PropertyResult&) {}, "", 0.25);
     total.result.seconds += part.result.seconds;
     if (part.result.verdict != Verdict::Holds) return false;
     if (!part.smtFile.empty()) total.smtFile += (total.smtFile.empty() ? "" : " ") + part.smtFile;
@@ -397,8 +397,7 @@ Obligation proveInductive(Runner& run, const rules::Property& p, const Budget& b
         Obligation part = run.stepwise(
             p.name + "." + std::to_string(k + 1), "invariant", cctx, cenc, base, [&](int q) { return cenc.fires(q, c, d); },
             [&](const smt::Model& m, int q, PropertyResult& r) {
-                r.trace = Trace{{{cenc.decode(m, c), -1}, {cenc.decode(m, d), q}}, {}, {},
-                                "a step from a state where it holds to one where it fails: not inductive", {}};
+                r.trace = Trace{{{cenc.decode(m, c), -1}, {cenc.decode(m, d), q}}, {}, {}, "a step from a state where it holds to one where it fails: not inductive", {}};
                 r.summary = r.trace->description;
                 r.witness = {{"rule", model.rules()[e.instances()[q].rule].name}, {"conjunct", k + 1}};
             },
@@ -572,8 +571,9 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 const smt::Term legalFirst = enc.legal(first);
                 const auto partner = enc.state("d");
                 const std::string proved = "configurations one " + adjacency + " apart are one rule step apart (so no such pair is left to be reachable)";
-                Obligation o = run.solve(p.name, "holonomic", ctx, enc, legalFirst && enc.legal(partner) && unjoined(partner),
-                                         [](const smt::Model&, PropertyResult&) {}, proved);
+                Obligation o = run.solve(
+                    p.name, "holonomic", ctx, enc, legalFirst && enc.legal(partner) && unjoined(partner),
+                    [](const smt::Model&, PropertyResult&) {}, proved);
                 if (o.result.verdict != Verdict::Violated) {
                     return o;
                 }

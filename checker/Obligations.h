@@ -14,19 +14,19 @@
 namespace holon::checker {
 
 struct VerifyOptions {
-    double timeoutSeconds = 120;                // per obligation: building, writing and solving it
-    std::uint64_t memoryMiB = 0;                // Z3's memory limit for this process; 0: none
-    int depth = 0;                              // > 0: bounded model checking from `initial`
-    bool reach = false;                         // every state reachable from `initial` (Spacer)
+    double timeoutSeconds = 120;  // per obligation: building, writing and solving it
+    std::uint64_t memoryMiB = 0;  // Z3's memory limit for this process; 0: none
+    int depth = 0;                // > 0: bounded model checking from `initial`
+    bool reach = false;           // every state reachable from `initial` (Spacer)
     std::vector<rules::Configuration> initial;
-    std::vector<std::string> properties;        // empty: all
-    std::string smtOut;                         // directory for SMT-LIB2 files, or empty
-    std::string smtOutOption;                   // how the caller names smtOut in messages (its option); empty: "the SMT-LIB2 folder"
+    std::vector<std::string> properties;  // empty: all
+    std::string smtOut;                   // directory for SMT-LIB2 files, or empty
+    std::string smtOutOption;             // how the caller names smtOut in messages (its option); empty: "the SMT-LIB2 folder"
 };
 
 struct Obligation {
-    PropertyResult result;          // verdict Holds = proved, Violated = counterexample
-    std::string smtFile;            // written file, if any
+    PropertyResult result;  // verdict Holds = proved, Violated = counterexample
+    std::string smtFile;    // written file, if any
 };
 
 struct VerifyReport {

@@ -17,7 +17,8 @@
 
 namespace holon::checker {
 
-template <class T> class PageArray {
+template <class T>
+class PageArray {
     static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>,
                   "plain values only");
 
@@ -99,8 +100,8 @@ private:
 
     T* data_ = nullptr;
     std::size_t size_ = 0;
-    std::size_t dirty_ = 0;  // elements [0, dirty_) may hold data; beyond, the pages are zero
-    std::size_t mapped_ = 0; // bytes
+    std::size_t dirty_ = 0;   // elements [0, dirty_) may hold data; beyond, the pages are zero
+    std::size_t mapped_ = 0;  // bytes
 };
 
 }  // namespace holon::checker

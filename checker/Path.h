@@ -20,7 +20,9 @@ struct PathQuery {
     std::function<void(const ExploreStats&)> onProgress;
 };
 
-enum class PathOutcome { Found, Unreachable, Undecided };
+enum class PathOutcome { Found,
+                         Unreachable,
+                         Undecided };
 
 struct PathResult {
     PathOutcome outcome = PathOutcome::Undecided;

@@ -19,8 +19,8 @@
 #include "rules/Error.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -250,8 +250,7 @@ ReachProof solveHorn(smt::Context& ctx, const rules::Engine& engine, const BadSt
 }
 
 nlohmann::json toJson(const ReachProof& p) {
-    return {{"verdict", static_cast<int>(p.verdict)}, {"invariant", p.invariant}, {"reason", p.reason},
-            {"seconds", p.seconds}, {"files", p.certificateFiles}, {"used_known", p.usedKnown}};
+    return {{"verdict", static_cast<int>(p.verdict)}, {"invariant", p.invariant}, {"reason", p.reason}, {"seconds", p.seconds}, {"files", p.certificateFiles}, {"used_known", p.usedKnown}};
 }
 
 ReachProof fromJson(const nlohmann::json& answer) {

@@ -23,7 +23,8 @@ public:
 
 class Term;
 class Relation;
-enum class Sort { Bool, Int };
+enum class Sort { Bool,
+                  Int };
 
 /// Owns a Z3 context; every Term, Relation, Solver and Model made in it must go before it does.
 class Context {
@@ -64,7 +65,16 @@ private:
 class Term {
 public:
     /// What the inspection of a solved formula needs (Reach's invariant printer); anything else is Other.
-    enum class Op { Var, True, False, Not, And, Or, Implies, Eq, Xor, Other };
+    enum class Op { Var,
+                    True,
+                    False,
+                    Not,
+                    And,
+                    Or,
+                    Implies,
+                    Eq,
+                    Xor,
+                    Other };
 
     Term(const Term& o);
     Term(Term&& o) noexcept : ctx_(o.ctx_), node_(o.node_) { o.node_ = nullptr; }
@@ -85,7 +95,7 @@ public:
     unsigned varIndex() const;
     std::string str() const;
 
-    struct Node;  // a Z3_ast, in Smt.cpp
+    struct Node;                     // a Z3_ast, in Smt.cpp
     Term(Context& ctx, Node* node);  // takes a reference to `node`
     Node* node() const { return node_; }
 
@@ -136,7 +146,9 @@ private:
     std::shared_ptr<const Native> native_;
 };
 
-enum class Result { Sat, Unsat, Unknown };
+enum class Result { Sat,
+                    Unsat,
+                    Unknown };
 
 /// The model of a satisfiable answer, completed: every term has a value.
 class Model {
@@ -157,7 +169,8 @@ private:
 class Solver {
 public:
     /// Horn: Spacer, for constrained Horn clauses.
-    enum class Logic { Any, Horn };
+    enum class Logic { Any,
+                       Horn };
     explicit Solver(Context& ctx, Logic logic = Logic::Any);
     void add(const Term& e);
     /// Asserts the SMT-LIB2 file's assertions.

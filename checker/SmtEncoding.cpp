@@ -335,7 +335,8 @@ smt::Term SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
             smt::Term m = memberCounted(s, i, e);
             any = any || m, all = all && (e.kids.empty() ? m : smt::implies(memberPred(s, i, e.pred), m));
         }
-        return e.kind == Expr::Kind::Some ? any : e.kind == Expr::Kind::No ? !any : all;
+        return e.kind == Expr::Kind::Some ? any : e.kind == Expr::Kind::No ? !any
+                                                                           : all;
     }
     case Expr::Kind::Connected: return connected(e.pred, s, positive);
     case Expr::Kind::Reaches: return reaches(e, s, positive);
@@ -600,7 +601,8 @@ smt::Term SmtEncoding::guard(const rules::Engine::GuardNode& g, const std::int32
         count.kind = Expr::Kind::Count;
         smt::Term c = guardNumber(count, cells, s);
         const int sites = static_cast<int>(g.perSite.size());
-        return g.kind == Expr::Kind::Some ? c > 0 : g.kind == Expr::Kind::No ? c == 0 : c == sites;
+        return g.kind == Expr::Kind::Some ? c > 0 : g.kind == Expr::Kind::No ? c == 0
+                                                                             : c == sites;
     }
     case Expr::Kind::Connected: {
         // The accepted neighbours form a connected set: one of the (at most 2^6) connected sets.

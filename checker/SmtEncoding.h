@@ -20,7 +20,8 @@ public:
     /// and the helpers that speed up ordinary queries slow it down: for Horn clauses,
     /// pointer-reachability witnesses do not name their lowest and highest rank, and comparisons of
     /// counts and masses stay two sums instead of one sum of per-cell differences (see the .cpp).
-    enum class Use { Queries, HornClauses };
+    enum class Use { Queries,
+                     HornClauses };
     /// `engine` must cover every input combination (Engine(..., true)) when inputs are left open.
     /// Building formulas throws OutOfTime once `budget` is spent: on a large region encoding alone
     /// can take longer than the solver is given.

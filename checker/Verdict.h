@@ -11,7 +11,9 @@
 
 namespace holon::checker {
 
-enum class Verdict { Holds, Violated, Unknown };
+enum class Verdict { Holds,
+                     Violated,
+                     Unknown };
 
 /// The verdict of several properties together: violated if any is, else unknown if any is.
 inline Verdict combine(Verdict a, Verdict b) {
@@ -22,25 +24,29 @@ inline Verdict combine(Verdict a, Verdict b) {
 
 /// As the explorer says it: holds, violated, unknown.
 inline std::string verdictName(Verdict v) {
-    return v == Verdict::Holds ? "holds" : v == Verdict::Violated ? "violated" : "unknown";
+    return v == Verdict::Holds ? "holds" : v == Verdict::Violated ? "violated"
+                                                                  : "unknown";
 }
 /// As a proof says it: proved, counterexample, unknown.
 inline std::string proofVerdictName(Verdict v) {
-    return v == Verdict::Holds ? "proved" : v == Verdict::Violated ? "counterexample" : "unknown";
+    return v == Verdict::Holds ? "proved" : v == Verdict::Violated ? "counterexample"
+                                                                   : "unknown";
 }
 
 /// How a ranking's excepted rules read in a verdict: ", and every step of transfer keeps it".
 inline std::string exceptText(const rules::Property& ranking) {
     std::string names;
     for (std::size_t i = 0; i < ranking.except.size(); ++i)
-        names += (i == 0 ? "" : i + 1 == ranking.except.size() ? " and " : ", ") + ranking.except[i];
+        names += (i == 0 ? "" : i + 1 == ranking.except.size() ? " and "
+                                                               : ", ") +
+                 ranking.except[i];
     return names.empty() ? "" : ", and every step of " + names + " keeps it";
 }
 
 struct PropertyResult {
     std::string name, kind;
     Verdict verdict = Verdict::Unknown;
-    std::string summary;            // one line for the table
+    std::string summary;               // one line for the table
     nlohmann::json witness = nullptr;  // machine-readable evidence
     double seconds = 0;
     std::optional<Trace> trace;

@@ -84,8 +84,16 @@ bool WordConstraints::addLinear(const Tree& e, std::int64_t sign, Conjunct& c) {
     case Expr::Kind::Add: return addLinear(e.kids[0], sign, c) && addLinear(e.kids[1], sign, c);
     case Expr::Kind::Sub: return addLinear(e.kids[0], sign, c) && addLinear(e.kids[1], -sign, c);
     case Expr::Kind::Neg: return addLinear(e.kids[0], -sign, c);
-    case Expr::Kind::Bool: case Expr::Kind::And: case Expr::Kind::Or: case Expr::Kind::Not: case Expr::Kind::Implies:
-    case Expr::Kind::Compare: case Expr::Kind::All: case Expr::Kind::Some: case Expr::Kind::No: case Expr::Kind::Connected:
+    case Expr::Kind::Bool:
+    case Expr::Kind::And:
+    case Expr::Kind::Or:
+    case Expr::Kind::Not:
+    case Expr::Kind::Implies:
+    case Expr::Kind::Compare:
+    case Expr::Kind::All:
+    case Expr::Kind::Some:
+    case Expr::Kind::No:
+    case Expr::Kind::Connected:
     case Expr::Kind::Reaches:
         break;  // conditions: no number
     }
@@ -108,8 +116,16 @@ rules::Rational WordConstraints::numberOn(const Tree& e, const std::uint64_t* me
     case Expr::Kind::Add: return numberOn(kid(0), members, mass, cells) + numberOn(kid(1), members, mass, cells);
     case Expr::Kind::Sub: return numberOn(kid(0), members, mass, cells) - numberOn(kid(1), members, mass, cells);
     case Expr::Kind::Neg: return -numberOn(kid(0), members, mass, cells);
-    case Expr::Kind::Bool: case Expr::Kind::And: case Expr::Kind::Or: case Expr::Kind::Not: case Expr::Kind::Implies:
-    case Expr::Kind::Compare: case Expr::Kind::All: case Expr::Kind::Some: case Expr::Kind::No: case Expr::Kind::Connected:
+    case Expr::Kind::Bool:
+    case Expr::Kind::And:
+    case Expr::Kind::Or:
+    case Expr::Kind::Not:
+    case Expr::Kind::Implies:
+    case Expr::Kind::Compare:
+    case Expr::Kind::All:
+    case Expr::Kind::Some:
+    case Expr::Kind::No:
+    case Expr::Kind::Connected:
     case Expr::Kind::Reaches:
         break;
     }
@@ -135,7 +151,11 @@ bool WordConstraints::holdsOn(const Tree& e, const std::uint64_t* members, std::
     }
     case Expr::Kind::Connected: return adjacency_->connected(members[e.predicate]);
     case Expr::Kind::Reaches:  // a walk over the cells
-    case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Add: case Expr::Kind::Sub: case Expr::Kind::Neg:
+    case Expr::Kind::Number:
+    case Expr::Kind::Mass:
+    case Expr::Kind::Add:
+    case Expr::Kind::Sub:
+    case Expr::Kind::Neg:
     case Expr::Kind::Count:
         break;
     }

@@ -95,11 +95,11 @@ public:
     /// leaves as it was needs no check (the configuration before was legal).
     struct Check {
         enum class Kind : std::uint8_t {
-            Sum,       // sums[index] + delta  op  0
-            Removed,   // word `index` loses one cell, `bits`: it must not be a cut cell
-            Attached,  // word `index` gains the cells `bits`: they must join it
-            Connected, // word `index` loses `removed` and gains `bits`
-            General,   // any other conjunct, on the words after the change
+            Sum,        // sums[index] + delta  op  0
+            Removed,    // word `index` loses one cell, `bits`: it must not be a cut cell
+            Attached,   // word `index` gains the cells `bits`: they must join it
+            Connected,  // word `index` loses `removed` and gains `bits`
+            General,    // any other conjunct, on the words after the change
         };
         Kind kind;
         rules::CmpOp op = rules::CmpOp::Eq;

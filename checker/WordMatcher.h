@@ -111,15 +111,15 @@ private:
     const rules::Engine* engine_;
     int regionSize_, alphabet_;
     std::vector<Shape> shapes_;
-    std::vector<int> cellTest_;                 // per (shape, pattern cell): index into tests_, while instances are added
-    std::vector<rules::RuleTables::Mask> tests_;       // distinct left-side masks
-    std::vector<std::uint64_t> testCells_;      // [test * alphabet + state]: cells whose combination accepts the state
+    std::vector<int> cellTest_;                   // per (shape, pattern cell): index into tests_, while instances are added
+    std::vector<rules::RuleTables::Mask> tests_;  // distinct left-side masks
+    std::vector<std::uint64_t> testCells_;        // [test * alphabet + state]: cells whose combination accepts the state
     struct Pending {
         int delta;
         std::uint64_t anchors;
     };
     std::vector<std::vector<Pending>> pending_;  // per (shape, pattern cell), while instances are added
-    std::vector<int> firstCell_;                // per shape: its first (shape, pattern cell), while instances are added
+    std::vector<int> firstCell_;                 // per shape: its first (shape, pattern cell), while instances are added
     std::vector<Step> steps_;
     int extraTests_ = 0;
     struct Filter {

@@ -159,7 +159,7 @@ std::uint64_t WordSuccessors::computeDelta(int placed, const CellValue* cells, s
         for (unsigned change = static_cast<unsigned>(now ^ old[k]); change; change &= change - 1)
             planeDelta[std::countr_zero(change)] ^= std::uint64_t{1} << c;
         indexDelta +=
-            (static_cast<std::uint64_t>(now) - old[k]) * placeValue_[c]; // wraps: unsigned arithmetic
+            (static_cast<std::uint64_t>(now) - old[k]) * placeValue_[c];  // wraps: unsigned arithmetic
     }
     for (int w = 0; w < words_; ++w) delta[w] = 0;
     for (int j = 0; j < planes_; ++j)

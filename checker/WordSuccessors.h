@@ -21,8 +21,8 @@ namespace holon::checker {
 
 class WordSuccessors {
 public:
-    static constexpr int kMaxPlanes = 6;         // alphabets of at most 64 states
-    static constexpr int kMaxWords = kMaxPlanes; // 64 cells per plane
+    static constexpr int kMaxPlanes = 6;          // alphabets of at most 64 states
+    static constexpr int kMaxWords = kMaxPlanes;  // 64 cells per plane
     /// Usable when the region has at most 64 cells and the alphabet at most 64 states.
     static bool fits(const rules::Engine& engine);
     /// `layout` must be plane-major.
@@ -32,9 +32,9 @@ public:
     /// One configuration, read once for all its successors.
     struct Loaded {
         std::uint64_t allowed[kMaxFilters];  // per filter, the cells whose removal keeps its word connected
-        std::uint64_t occupied[64];              // per state, the cells in it
-        CellValue cells[64];                     // filled when `withCells` was asked or a rule needs them
-        WordConstraints::LegalBefore legal;      // when the constraints are decided on words
+        std::uint64_t occupied[64];          // per state, the cells in it
+        CellValue cells[64];                 // filled when `withCells` was asked or a rule needs them
+        WordConstraints::LegalBefore legal;  // when the constraints are decided on words
     };
     /// `prune`: successors that a connectivity constraint rules out are not listed at all (a
     /// search that decides legality); otherwise (--all, where the store decides) they may be.
@@ -42,7 +42,8 @@ public:
     /// f(placed, delta, indexDelta) for every enabled instance: the successor's stored words are
     /// the configuration's XOR `delta`, and its candidate index (the sum of state x alphabet^cell)
     /// is the configuration's plus `indexDelta`, modulo 2^64.
-    template <class F> void forEach(const Loaded& l, F&& f) const {
+    template <class F>
+    void forEach(const Loaded& l, F&& f) const {
         std::uint64_t delta[kMaxWords];
         matcher_->forEachMatch(l.occupied, l.allowed, l.cells, [&](int p) {
             if (fixed_[p])
@@ -71,17 +72,17 @@ private:
     const WordConstraints* constraints_;
     const StateLayout* layout_;
     int alphabet_, planes_, words_;
-    bool needCells_;                        // some rule has a guard or an instance without a fixed delta
-    std::vector<std::uint64_t> placeValue_; // alphabet^cell, modulo 2^64
-    std::vector<char> fixed_;  // per instance
-    std::vector<char> unique_;  // per instance
-    std::vector<std::uint64_t> fixedDelta_; // [instance * words]
+    bool needCells_;                         // some rule has a guard or an instance without a fixed delta
+    std::vector<std::uint64_t> placeValue_;  // alphabet^cell, modulo 2^64
+    std::vector<char> fixed_;                // per instance
+    std::vector<char> unique_;               // per instance
+    std::vector<std::uint64_t> fixedDelta_;  // [instance * words]
     std::vector<std::uint64_t> fixedIndexDelta_;
     std::vector<WordConstraints::WordChange> fixedChange_;  // per instance, when fixed and on words
     std::vector<WordConstraints::Check> checks_;            // fixed instances' compiled changes, back to back
-    std::vector<std::uint32_t> firstCheck_;               // per instance and one past the end: its checks in checks_
-    std::unique_ptr<WordMatcher> matcher_;                // the engine's instances, with the filters
-    std::vector<int> filteredWord_;                       // per filter: the constraint word whose cut cells it excludes
+    std::vector<std::uint32_t> firstCheck_;                 // per instance and one past the end: its checks in checks_
+    std::unique_ptr<WordMatcher> matcher_;                  // the engine's instances, with the filters
+    std::vector<int> filteredWord_;                         // per filter: the constraint word whose cut cells it excludes
 };
 
 }  // namespace holon::checker

@@ -73,7 +73,9 @@ int runHolon(int argc, char** argv) {
         std::cerr << "holon: error: " << rules::escapeText(e.what(), true) << '\n';
         return kExitBadInput;
     } catch (const Interrupted& e) {
-        std::cerr << "holon: " << (e.signal() == SIGINT ? "interrupted (SIGINT)" : e.signal() == SIGTERM ? "terminated (SIGTERM)" : e.what()) << '\n';
+        std::cerr << "holon: " << (e.signal() == SIGINT ? "interrupted (SIGINT)" : e.signal() == SIGTERM ? "terminated (SIGTERM)"
+                                                                                                         : e.what())
+                  << '\n';
         return 128 + e.signal();
     } catch (const LimitError& e) {
         std::cerr << "holon: limit: " << rules::escapeText(e.what(), true) << '\n';

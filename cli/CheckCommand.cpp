@@ -71,14 +71,14 @@ bool printComponents(const checker::Explorer& explorer, const rules::System& sys
     if (conserves)
         for (const auto& r : rows) ++perAmount[byMass ? r.minMass : r.minCount];
     const bool complete = conserves && std::all_of(perAmount.begin(), perAmount.end(), [](const auto& a) { return a.second == 1; });
-    const std::string amount = !conserves ? "" : byMass ? "mass" : "number of metamodules";
+    const std::string amount = !conserves ? "" : byMass ? "mass"
+                                                        : "number of metamodules";
     const auto massText = [&](std::int64_t units) { return rules::Rational(units, engine.massDenominator()).str(); };
     const auto range = [](const std::string& lo, const std::string& hi) { return lo == hi ? lo : lo + "-" + hi; };
     if (json) {
         nlohmann::json table = nlohmann::json::array();
         for (const auto& r : rows)
-            table.push_back({{"states", r.states}, {"metamodules", {r.minCount, r.maxCount}}, {"mass", {massText(r.minMass), massText(r.maxMass)}},
-                             {"representative", rules::configToJson(rules::Interpreter(engine.model(), engine.region()), {explorer.cells(r.representative), engine.inputs()})}});
+            table.push_back({{"states", r.states}, {"metamodules", {r.minCount, r.maxCount}}, {"mass", {massText(r.minMass), massText(r.maxMass)}}, {"representative", rules::configToJson(rules::Interpreter(engine.model(), engine.region()), {explorer.cells(r.representative), engine.inputs()})}});
         (*json)["component_table"] = table;
         (*json)["conserved"] = conserves ? nlohmann::json(amount) : nlohmann::json(nullptr);
         (*json)["complete"] = complete;
@@ -93,13 +93,15 @@ bool printComponents(const checker::Explorer& explorer, const rules::System& sys
         std::cout << "not complete: " << amount << " " << (byMass ? massText(split->first) : std::to_string(split->first))
                   << " has " << split->second << " components (configurations of the same " << amount << " that cannot reach each other)\n";
     }
-    std::cout << "  " << std::left << std::setw(4) << "#" << std::setw(12) << "states" << std::setw(13) << "metamodules" << "mass\n";
+    std::cout << "  " << std::left << std::setw(4) << "#" << std::setw(12) << "states" << std::setw(13) << "metamodules"
+              << "mass\n";
     for (std::size_t k = 0; k < rows.size() && k < 20; ++k)
         std::cout << "  " << std::setw(4) << k + 1 << std::setw(12) << rows[k].states << std::setw(13)
                   << range(std::to_string(rows[k].minCount), std::to_string(rows[k].maxCount)) << range(massText(rows[k].minMass), massText(rows[k].maxMass)) << '\n';
     if (rows.size() > 20) std::cout << "  ... and " << rows.size() - 20 << " more (--json lists them all)\n";
     for (std::size_t k = 0; k < rows.size() && k < 6; ++k)
-        std::cout << "-- representative of component " << k + 1 << " (its smallest configuration):\n" << checker::drawAscii(engine, explorer.cells(rows[k].representative));
+        std::cout << "-- representative of component " << k + 1 << " (its smallest configuration):\n"
+                  << checker::drawAscii(engine, explorer.cells(rows[k].representative));
     return true;
 }
 
@@ -166,8 +168,7 @@ int run(const CheckArgs& a) {
         }
         if (svgOut) {
             const rules::OutputFile file("--svg", pathFor(svgOut->path(), p->name, several));
-            file.write(checker::drawTraceSvg(*p->trace, engine, system->name + " on " + region.spec() + ": " + p->name + " " +
-                                                                    checker::verdictName(p->verdict) + " -- " + p->trace->description));
+            file.write(checker::drawTraceSvg(*p->trace, engine, system->name + " on " + region.spec() + ": " + p->name + " " + checker::verdictName(p->verdict) + " -- " + p->trace->description));
             written.push_back(file.path());
         }
     }
@@ -195,7 +196,8 @@ int run(const CheckArgs& a) {
                   << (s.enumerating ? " while listing the legal configurations of the region (" + std::to_string(s.frontier) + " found)"
                                     : ": explored " + std::to_string(s.states) + ", frontier " + std::to_string(s.frontier))
                   << "; raise " << limitOption(s.stopped) << " to go further";
-    std::cout << "\n\n  " << std::left << std::setw(20) << "property" << std::setw(10) << "verdict" << std::setw(10) << "time" << "evidence\n";
+    std::cout << "\n\n  " << std::left << std::setw(20) << "property" << std::setw(10) << "verdict" << std::setw(10) << "time"
+              << "evidence\n";
     for (const auto& p : report.properties)
         std::cout << "  " << std::setw(20) << p.name << std::setw(10) << checker::verdictName(p.verdict) << std::setw(10)
                   << (std::to_string(static_cast<int>(p.seconds * 1000)) + " ms ") << p.summary << '\n';

@@ -21,7 +21,11 @@ namespace holon::cli {
 /// not complete; 2 bad input or usage; 3 undecided (a limit, a timeout, the solver's unknown);
 /// 4 an internal error (a bug in holon: please report it). A run stopped by SIGINT or SIGTERM
 /// (holon plan) exits 128 + the signal, 130 or 143, after writing what it has as complete files.
-enum ExitCode : int { kExitOk = 0, kExitViolated = 1, kExitBadInput = 2, kExitUndecided = 3, kExitInternal = 4 };
+enum ExitCode : int { kExitOk = 0,
+                      kExitViolated = 1,
+                      kExitBadInput = 2,
+                      kExitUndecided = 3,
+                      kExitInternal = 4 };
 
 inline int exitCodeFor(checker::Verdict v) {
     switch (v) {

@@ -78,7 +78,8 @@ int run(const DiffArgs& a) {
     const checker::DesignDifference d = checker::compareDesigns({sideA->engine.get(), sideA->explorer.get()}, {sideB->engine.get(), sideB->explorer.get()});
     const int code = d.same() ? kExitOk : kExitViolated;
     // The witness drawn: B's extra transition first (a variant's new move), else A's.
-    const int shown = d.transitionWitness[1] ? 1 : d.transitionWitness[0] ? 0 : -1;
+    const int shown = d.transitionWitness[1] ? 1 : d.transitionWitness[0] ? 0
+                                                                          : -1;
     const auto describe = [&](int side) {
         const checker::Trace& t = *d.transitionWitness[side];
         const auto& engine = *sides[side]->engine;

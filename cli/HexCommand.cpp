@@ -61,7 +61,11 @@ std::string seriesSvg(const std::vector<planner::hex::SculptResult>& runs, int s
         svg.line(left, 5 + h * (1 - pct / 100.0), left + w, 5 + h * (1 - pct / 100.0), {{"stroke", "#ddd"}});
     }
     svg.text(left + w - 80, h + bottom + 5, std::to_string(steps) + " timesteps");
-    const struct { const char* name; const char* colour; float planner::hex::SculptSample::*field; } metrics[] = {
+    const struct {
+        const char* name;
+        const char* colour;
+        float planner::hex::SculptSample::*field;
+    } metrics[] = {
         {"completeness", "#1f6fd0", &planner::hex::SculptSample::completeness},
         {"stability", "#2a9d3a", &planner::hex::SculptSample::stability},
         {"compliance", "#111", &planner::hex::SculptSample::compliance}};
@@ -103,9 +107,7 @@ void writeOutputs(const HexArgs& a, const std::vector<planner::hex::SculptResult
 /// The improvements over seed 003 a run uses, by flag name.
 std::vector<std::string> improvements(const planner::hex::SculptOptions& o) {
     std::vector<std::string> on;
-    const std::pair<bool, const char*> flags[] = {{o.dropOverhangs, "drop-overhangs"}, {o.flexibleGrowth, "flexible-growth"}, {o.roll, "roll"},
-                                                  {o.deleteOverflow, "delete-overflow"}, {o.growInside, "grow-inside"}, {o.keepConnected, "keep-connected"},
-                                                  {o.migrate, "migrate"}, {o.balance, "balance"}};
+    const std::pair<bool, const char*> flags[] = {{o.dropOverhangs, "drop-overhangs"}, {o.flexibleGrowth, "flexible-growth"}, {o.roll, "roll"}, {o.deleteOverflow, "delete-overflow"}, {o.growInside, "grow-inside"}, {o.keepConnected, "keep-connected"}, {o.migrate, "migrate"}, {o.balance, "balance"}};
     for (const auto& [set, name] : flags)
         if (set) on.push_back(name);
     return on;
@@ -124,19 +126,23 @@ int run(HexArgs a) {
     std::vector<char> ran(a.reps, 0);
     const std::function<bool()> expired = [&] { return budget.expired(); };
     WriteErrors errors;  // written only by run 0 (the frames), read after every run has ended
-    runParallel(a.reps, a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int r) {
-        planner::hex::SculptSetup setup = a.setup;
-        setup.options.seed = a.seed + r;
-        const int last = setup.steps;
-        runs[r] = planner::hex::runSculpt(setup, [&](const planner::hex::HoleSculptor& s) {
-            if (!a.out.empty() && r == 0 && (s.time() == 1 || s.time() == last / 10 || s.time() == last)) {
-                errors.attempt([&] {
-                    rules::OutputFile("--out", (std::filesystem::path(a.out) / ("frame_" + std::to_string(s.time()) + ".svg")).string()).write(planner::hex::sculptSvg(s));
-                });
-            }
-        }, budget.limited() ? expired : std::function<bool()>());
-        ran[r] = runs[r].steps > 0;
-    }, budget.limited() ? expired : std::function<bool()>());
+    runParallel(
+        a.reps, a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int r) {
+            planner::hex::SculptSetup setup = a.setup;
+            setup.options.seed = a.seed + r;
+            const int last = setup.steps;
+            runs[r] = planner::hex::runSculpt(
+                setup, [&](const planner::hex::HoleSculptor& s) {
+                    if (!a.out.empty() && r == 0 && (s.time() == 1 || s.time() == last / 10 || s.time() == last)) {
+                        errors.attempt([&] {
+                            rules::OutputFile("--out", (std::filesystem::path(a.out) / ("frame_" + std::to_string(s.time()) + ".svg")).string()).write(planner::hex::sculptSvg(s));
+                        });
+                    }
+                },
+                budget.limited() ? expired : std::function<bool()>());
+            ran[r] = runs[r].steps > 0;
+        },
+        budget.limited() ? expired : std::function<bool()>());
     // Stopped by --timeout: the runs that made at least one timestep, compared over the timesteps
     // all of them made; the files written are whole, and say so by their length.
     std::vector<planner::hex::SculptResult> kept;
@@ -157,11 +163,7 @@ int run(HexArgs a) {
     if (!a.out.empty()) writeOutputs(a, runs, steps, errors);
     if (a.json) {
         auto js = [](Stat s) { return nlohmann::json{{"mean", s.mean}, {"std", s.std}}; };
-        nlohmann::json j{{"from", a.setup.from}, {"to", a.setup.to}, {"size", a.setup.size}, {"reps", runs.size()},
-                         {"modules", js(modules)}, {"steps", steps}, {"stopped", stopped ? "timeout" : "done"}, {"tri_regions", runs[0].triRegions},
-                         {"completeness", js(completeness)}, {"stability", js(stability)}, {"compliance", js(compliance)},
-                         {"islands", js(islands)}, {"seconds", js(seconds)},
-                         {"improvements", improvements(a.setup.options)}};
+        nlohmann::json j{{"from", a.setup.from}, {"to", a.setup.to}, {"size", a.setup.size}, {"reps", runs.size()}, {"modules", js(modules)}, {"steps", steps}, {"stopped", stopped ? "timeout" : "done"}, {"tri_regions", runs[0].triRegions}, {"completeness", js(completeness)}, {"stability", js(stability)}, {"compliance", js(compliance)}, {"islands", js(islands)}, {"seconds", js(seconds)}, {"improvements", improvements(a.setup.options)}};
         std::cout << j.dump() << '\n';
     } else {
         std::cout << std::fixed << std::setprecision(2) << a.setup.from << " -> " << a.setup.to << " on " << a.setup.size << "x" << a.setup.size
@@ -197,10 +199,12 @@ Run addHexCommand(CLI::App& app) {
     sub->add_option("--tri", a->setup.triFraction, "tri-region edge as a fraction of the array side (0.001 to 1)")->check(finiteValidator(1e-3, 1, "a fraction"));
     sub->add_option("--decay", a->setup.options.decay, "c_decay of the temperature test, timesteps per diameter (0.001 to 10^9)")->check(finiteValidator(1e-3, 1e9, "timesteps per diameter"));
     sub->add_option("--hole-density", a->setup.options.holeDensity, "initial holes per source lattice point (0 to 1)")->check(finiteValidator(0, 1, "holes per point"));
-    sub->add_flag_callback("--improved", [a] {
-        auto& o = a->setup.options;
-        o.dropOverhangs = o.flexibleGrowth = o.roll = o.deleteOverflow = o.growInside = o.keepConnected = o.migrate = o.balance = true;
-    }, "all of holon's improvements: --drop-overhangs --flexible-growth --roll --delete-overflow --grow-inside --keep-connected --migrate --balance");
+    sub->add_flag_callback(
+        "--improved", [a] {
+            auto& o = a->setup.options;
+            o.dropOverhangs = o.flexibleGrowth = o.roll = o.deleteOverflow = o.growInside = o.keepConnected = o.migrate = o.balance = true;
+        },
+        "all of holon's improvements: --drop-overhangs --flexible-growth --roll --delete-overflow --grow-inside --keep-connected --migrate --balance");
     sub->add_flag("--drop-overhangs", a->setup.options.dropOverhangs, "a column head with a gap below it falls into the gap");
     sub->add_flag("--flexible-growth", a->setup.options.flexibleGrowth, "growth nodes also start with one module more or fewer in their disk");
     sub->add_flag("--roll", a->setup.options.roll, "outside the target, surface modules roll down one-hop slopes (with --migrate, migration moves them instead)");

@@ -107,7 +107,8 @@ std::string writtenFor(const std::string& path) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos || text[text.find_first_not_of(" \t\r\n")] != '{') return "";
     const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);  // already read once, so well formed
     if (!j.is_object()) return "";
-    const nlohmann::json* name = j.contains("system") ? &j["system"] : j.contains("#meta") && j["#meta"].is_object() && j["#meta"].contains("system") ? &j["#meta"]["system"] : nullptr;
+    const nlohmann::json* name = j.contains("system") ? &j["system"] : j.contains("#meta") && j["#meta"].is_object() && j["#meta"].contains("system") ? &j["#meta"]["system"]
+                                                                                                                                                      : nullptr;
     return name && name->is_string() ? name->get<std::string>() : "";
 }
 

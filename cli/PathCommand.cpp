@@ -80,11 +80,10 @@ int run(const PathArgs& a) {
     if (found && svgOut) svgOut->write(checker::drawTraceSvg(result.trace, engine, title));
 
     const auto& s = result.stats;
-    const int code = !found ? (result.outcome == checker::PathOutcome::Unreachable ? kExitViolated : kExitUndecided) : replayed ? kExitOk : kExitInternal;
+    const int code = !found ? (result.outcome == checker::PathOutcome::Unreachable ? kExitViolated : kExitUndecided) : replayed ? kExitOk
+                                                                                                                                : kExitInternal;
     if (a.json) {
-        nlohmann::json j = {{"system", system->name}, {"region", region.spec()},     {"outcome", outcomeName(result.outcome)},
-                            {"states", s.states},     {"depth", s.depth},           {"seconds", s.seconds},
-                            {"stopped", checker::stopReasonName(s.stopped)}};
+        nlohmann::json j = {{"system", system->name}, {"region", region.spec()}, {"outcome", outcomeName(result.outcome)}, {"states", s.states}, {"depth", s.depth}, {"seconds", s.seconds}, {"stopped", checker::stopReasonName(s.stopped)}};
         if (found) j["length"] = length, j["replayed"] = replayed, j["path"] = traceJson(result.trace, engine, in);
         std::cout << j.dump(2) << '\n';
         return code;
@@ -102,7 +101,8 @@ int run(const PathArgs& a) {
         break;
     case checker::PathOutcome::Undecided:
         std::cout << "  undecided: stopped by " << checker::stopReasonName(s.stopped) << " after " << s.states << " states (none within " << checker::stepCount(static_cast<std::size_t>(s.depth))
-                  << "); raise " << (s.stopped == checker::StopReason::Timeout ? "--timeout" : s.stopped == checker::StopReason::Memory ? "--memory" : "--max-states")
+                  << "); raise " << (s.stopped == checker::StopReason::Timeout ? "--timeout" : s.stopped == checker::StopReason::Memory ? "--memory"
+                                                                                                                                        : "--max-states")
                   << " to search further\n";
         break;
     }

@@ -7,16 +7,16 @@
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
 #include "cli/WriteErrors.h"
-#include "planner/Execution.h"
 #include "planner/Diagnosis.h"
+#include "planner/Execution.h"
 #include "planner/Faults.h"
 #include "planner/Monitor.h"
 #include "planner/Report.h"
 #include "planner/hex/DiskMetamodules.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
-#include "rules/Limits.h"
 #include "rules/Library.h"
+#include "rules/Limits.h"
 #include "rules/OutputFile.h"
 #include "rules/StopSignals.h"
 
@@ -61,7 +61,6 @@ struct PlanArgs {
     std::uint64_t memoryMiB = kDefaultMemoryMiB;
     bool check = false, json = false, quiet = false;
 };
-
 
 /// --seed-cell x,y (2D shapes) or x,y,z (3D): as many coordinates as the shapes have dimensions.
 std::optional<planner::Vec> parseCell(const std::string& text, int dimension) {
@@ -249,11 +248,7 @@ int run(const PlanArgs& a) {
     for (const std::string& e : report.writeErrors()) errors.add(e);
 
     if (a.json) {
-        nlohmann::json j = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions},
-                            {"transfers", stats.transfers}, {"transfer_lower_bound", lowerBound >= 0 ? nlohmann::json(lowerBound) : nlohmann::json()},
-                            {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete},
-                            {"relabels", stats.relabels}, {"evaluations", stats.evaluations}, {"stopped", stats.stopped},
-                            {"system", system->name}, {"allocator", allocator->name()}, {"scheduler", a.scheduler}, {"seed", a.seed}};
+        nlohmann::json j = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", lowerBound >= 0 ? nlohmann::json(lowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"relabels", stats.relabels}, {"evaluations", stats.evaluations}, {"stopped", stats.stopped}, {"system", system->name}, {"allocator", allocator->name()}, {"scheduler", a.scheduler}, {"seed", a.seed}};
         if (faults) j["faults"] = faults->json();
         std::cout << j.dump(2) << '\n';
     } else {

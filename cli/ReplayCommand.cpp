@@ -28,7 +28,6 @@ struct Args {
     std::string rules, plan;
 };
 
-
 /// A lattice point given as [x, y] or [x, y, z].
 rules::Vec pointOf(const nlohmann::json& j, const std::string& where) {
     if (!j.is_array() || j.size() < 2 || j.size() > 3) throw InputError(where + ": a cell must be [x, y] or [x, y, z]");

@@ -92,7 +92,8 @@ void printTables(std::ostream& out, const std::vector<rb::Coupling>& couplings, 
         return s;
     };
     const int width = std::max(8, runs * 5 + 1);
-    out << "collisions per run, * = deadlock (as Tables I and II)\n" << std::left << std::setw(6) << "";
+    out << "collisions per run, * = deadlock (as Tables I and II)\n"
+        << std::left << std::setw(6) << "";
     for (rb::Strategy s : strategies) out << "| " << std::setw(width) << rb::strategyName(s);
     out << "| DL | CL\n";
     for (rb::Coupling c : couplings) {
@@ -108,11 +109,14 @@ void printTables(std::ostream& out, const std::vector<rb::Coupling>& couplings, 
     }
     out << std::setw(6) << "DL";
     for (rb::Strategy s : strategies) out << "| " << std::setw(width) << deadlocks(select([&](const Job& j) { return j.strategy == s; }));
-    out << "| " << deadlocks(select([](const Job&) { return true; })) << '\n' << std::setw(6) << "CL";
+    out << "| " << deadlocks(select([](const Job&) { return true; })) << '\n'
+        << std::setw(6) << "CL";
     for (rb::Strategy s : strategies) out << "| " << std::setw(width) << collisionText(select([&](const Job& j) { return j.strategy == s; }));
-    out << "| " << collisionText(select([](const Job&) { return true; })) << "\n\nmoves per metamodule (as Fig. 5)\n" << std::setw(6) << "";
+    out << "| " << collisionText(select([](const Job&) { return true; })) << "\n\nmoves per metamodule (as Fig. 5)\n"
+        << std::setw(6) << "";
     for (rb::Strategy s : strategies) out << "| " << std::setw(width) << rb::strategyName(s);
-    out << "| mean\n" << std::fixed << std::setprecision(1);
+    out << "| mean\n"
+        << std::fixed << std::setprecision(1);
     for (rb::Coupling c : couplings) {
         out << std::setw(6) << rb::couplingName(c);
         double sum = 0;
@@ -165,14 +169,16 @@ int run(const RoombotsArgs& a) {
         std::vector<std::pair<rb::Coupling, int>> keys;
         for (const auto& [key, setting] : runSettings) keys.push_back(key);
         std::atomic<int> derived{0};
-        runParallel(static_cast<int>(keys.size()), a.threads, false, "recipes", [&](int k) {
-            rb::Setting& s = runSettings[keys[k]];
-            try {
-                s.recipe = rb::automaticRecipe(table, keys[k].first, s, expired);
-                ++derived;
-            } catch (const rb::AssemblyStopped&) {
-            }
-        }, expired);
+        runParallel(
+            static_cast<int>(keys.size()), a.threads, false, "recipes", [&](int k) {
+                rb::Setting& s = runSettings[keys[k]];
+                try {
+                    s.recipe = rb::automaticRecipe(table, keys[k].first, s, expired);
+                    ++derived;
+                } catch (const rb::AssemblyStopped&) {
+                }
+            },
+            expired);
         if (derived < static_cast<int>(keys.size()))
             throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached while deriving the recipes, before any run; nothing was written; raise --timeout");
     }
@@ -196,13 +202,15 @@ int run(const RoombotsArgs& a) {
     rb::AssemblyOptions options;
     options.stallSteps = a.stall;
     options.stop = expired;  // a run the deadline cuts short is dropped, not counted
-    runParallel(static_cast<int>(jobs.size()), a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int k) {
-        try {
-            jobs[k].result = rb::assemble(table, jobs[k].coupling, jobs[k].strategy, runSettings.at({jobs[k].coupling, jobs[k].run}), options);
-            jobs[k].ran = true;
-        } catch (const rb::AssemblyStopped&) {
-        }
-    }, expired);
+    runParallel(
+        static_cast<int>(jobs.size()), a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int k) {
+            try {
+                jobs[k].result = rb::assemble(table, jobs[k].coupling, jobs[k].strategy, runSettings.at({jobs[k].coupling, jobs[k].run}), options);
+                jobs[k].ran = true;
+            } catch (const rb::AssemblyStopped&) {
+            }
+        },
+        expired);
     // Stopped by --timeout: the tables and files hold the runs made, each whole.
     const std::size_t planned = jobs.size();
     jobs.erase(std::remove_if(jobs.begin(), jobs.end(), [](const Job& j) { return !j.ran; }), jobs.end());
@@ -223,12 +231,8 @@ int run(const RoombotsArgs& a) {
     if (a.json) {
         nlohmann::json runs = nlohmann::json::array();
         for (const Job& j : jobs)
-            runs.push_back({{"metamodule", rb::couplingName(j.coupling)}, {"strategy", rb::strategyName(j.strategy)}, {"run", j.run},
-                            {"recipe", runSettings.at({j.coupling, j.run}).recipe.name}, {"completed", j.result.completed}, {"deadlocked", j.result.deadlocked},
-                            {"collisions", j.result.collisions}, {"moves", j.result.moves}, {"mean_moves", j.result.meanMoves},
-                            {"seconds", j.result.seconds}, {"deadlock_reason", j.result.reason}});
-        std::cout << nlohmann::json{{"structure", a.structure}, {"runs", runs}, {"completed", completed}, {"collisions", clean},
-                                    {"collisions_all_runs", all}, {"deadlocks", dl}, {"mean_moves", moves}, {"stopped", stopped ? "timeout" : "done"}}.dump()
+            runs.push_back({{"metamodule", rb::couplingName(j.coupling)}, {"strategy", rb::strategyName(j.strategy)}, {"run", j.run}, {"recipe", runSettings.at({j.coupling, j.run}).recipe.name}, {"completed", j.result.completed}, {"deadlocked", j.result.deadlocked}, {"collisions", j.result.collisions}, {"moves", j.result.moves}, {"mean_moves", j.result.meanMoves}, {"seconds", j.result.seconds}, {"deadlock_reason", j.result.reason}});
+        std::cout << nlohmann::json{{"structure", a.structure}, {"runs", runs}, {"completed", completed}, {"collisions", clean}, {"collisions_all_runs", all}, {"deadlocks", dl}, {"mean_moves", moves}, {"stopped", stopped ? "timeout" : "done"}}.dump()
                   << '\n';
         errors.raise();
         return stopped ? kExitUndecided : kExitOk;
@@ -251,7 +255,8 @@ int run(const RoombotsArgs& a) {
         }
     std::cout << '\n';
     printTables(std::cout, couplings, strategies, jobs, static_cast<int>(settings.size()));
-    std::cout << "\n" << completed << " of " << jobs.size() << " runs completed, " << dl << " deadlocked; " << clean
+    std::cout << "\n"
+              << completed << " of " << jobs.size() << " runs completed, " << dl << " deadlocked; " << clean
               << " collisions in runs that did not deadlock (" << all << " in all); " << std::setprecision(1) << moves
               << " moves per metamodule\n";
     if (stopped) std::cout << stoppedText << '\n';

@@ -47,8 +47,7 @@ const char* kindName(rules::Property::Kind k) {
 
 nlohmann::ordered_json summarise(const rules::System& s) {
     using json = nlohmann::ordered_json;
-    json j{{"file", s.sourceName}, {"system", s.name},
-           {"lattice", s.lattice ? rules::Lattice::get(*s.lattice).name() : "any"}};
+    json j{{"file", s.sourceName}, {"system", s.name}, {"lattice", s.lattice ? rules::Lattice::get(*s.lattice).name() : "any"}};
     json fields = json::array();
     for (const rules::Field& f : s.fields) {
         json fj{{"name", f.name}};
@@ -90,8 +89,7 @@ nlohmann::ordered_json summarise(const rules::System& s) {
         }
         json instances = json::object();
         for (const rules::Model& m : models) instances[m.lattice().name()] = m.shapeCount(static_cast<int>(r));
-        rulesJson.push_back({{"name", dr.name}, {"cells", dr.lhs().size()}, {"instances", instances},
-                             {"guarded", dr.guard() != nullptr}, {"self_inverse", false}});
+        rulesJson.push_back({{"name", dr.name}, {"cells", dr.lhs().size()}, {"instances", instances}, {"guarded", dr.guard() != nullptr}, {"self_inverse", false}});
     }
     j["rules"] = rulesJson;
     json constraints = json::array();
@@ -194,8 +192,9 @@ Run addRulesCommand(CLI::App& app) {
     auto opts = std::make_shared<RulesOptions>();
     CLI::App* sub = app.add_subcommand("rules", "Parse .holon rule files, report diagnostics and summarise each system");
     sub->add_option("files", opts->files, "rule files (.holon)")->required();
-    sub->add_option("-W", opts->noWarnings, "silence a warning: -W no-NAME (names: unused-value, unused-input, "
-                                            "unmassed-value, duplicate-rule, no-rules)");
+    sub->add_option("-W", opts->noWarnings,
+                    "silence a warning: -W no-NAME (names: unused-value, unused-input, "
+                    "unmassed-value, duplicate-rule, no-rules)");
     sub->add_flag("--json", opts->json, "print the summaries as JSON");
     sub->add_option("--svg", opts->svgDir, "draw every rule, one SVG per rule with a panel per orientation, into this folder");
     sub->add_option("--lattice", opts->lattice, "the lattice to draw on (square2d, hex2d, cubic3d; default: the system's, else square2d)");

@@ -112,7 +112,8 @@ int run(const VerifyArgs& a) {
     std::cout << system->name << " on " << region.spec() << ": every configuration of the region"
               << (a.depth > 0 || a.reach ? " (NAME@bmcK: paths of K steps from --from; NAME@reach: every state reachable from --from)" : "")
               << "\n\n  " << std::left << std::setw(22)
-              << "obligation" << std::setw(16) << "verdict" << std::setw(10) << "time" << "evidence\n";
+              << "obligation" << std::setw(16) << "verdict" << std::setw(10) << "time"
+              << "evidence\n";
     for (const auto& o : report.obligations)
         std::cout << "  " << std::setw(22) << o.result.name << std::setw(16) << checker::proofVerdictName(o.result.verdict) << std::setw(10)
                   << (std::to_string(static_cast<int>(o.result.seconds * 1000)) + " ms ") << o.result.summary << '\n';

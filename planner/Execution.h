@@ -11,13 +11,15 @@
 
 #include <chrono>
 #include <csignal>
-#include <utility>
 #include <functional>
 #include <string>
+#include <utility>
 
 namespace holon::planner {
 
-enum class Scheduler { Async, Sync, Adversarial };
+enum class Scheduler { Async,
+                       Sync,
+                       Adversarial };
 
 struct RunOptions {
     Scheduler scheduler = Scheduler::Sync;
@@ -113,8 +115,8 @@ private:
     std::uint32_t clock_ = 0;
     std::vector<std::int64_t> anchors_;
     std::vector<std::pair<int, std::int64_t>> pipelined_;  // transfer shapes that may chain, and the step of each of their cells
-    std::int64_t offGoal_ = 0;  // cells not as the goal wants them
-    bool deferred_ = false;     // options_.admit refused an instance in the current step or round
+    std::int64_t offGoal_ = 0;                             // cells not as the goal wants them
+    bool deferred_ = false;                                // options_.admit refused an instance in the current step or round
     std::string halt_;
     RunStats stats_;
 };

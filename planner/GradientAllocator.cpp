@@ -85,8 +85,10 @@ public:
                     if (!cells[j]) continue;
                     bestC = std::min(bestC, needC_[j]), bestD = std::min(bestD, needD_[j]);
                 }
-                c = demand_[i] & kNeedsC ? 0 : bestC + 1 >= far ? kFar : bestC + 1;
-                dd = demand_[i] & kNeedsD ? 0 : bestD + 1 >= far ? kFar : bestD + 1;
+                c = demand_[i] & kNeedsC ? 0 : bestC + 1 >= far ? kFar
+                                                                : bestC + 1;
+                dd = demand_[i] & kNeedsD ? 0 : bestD + 1 >= far ? kFar
+                                                                 : bestD + 1;
             }
             if (c != needC_[i] || dd != needD_[i]) updates_.push_back({i, c, dd});
         }

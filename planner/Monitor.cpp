@@ -73,7 +73,8 @@ bool Monitor::connected() const {
     const auto occupied = [&](std::int64_t j) { return cells[j] != 0; };
     rules::Flood flood;
     return rules::connected(flood, cells.size(), rules::verticesWhere(static_cast<std::int64_t>(cells.size()), occupied),
-                            rules::offsetEdges(board.lattice().degree(), [&](int d) { return board.step(d); }, occupied));
+                            rules::offsetEdges(
+                                board.lattice().degree(), [&](int d) { return board.step(d); }, occupied));
 }
 
 void Monitor::checkFromScratch() {

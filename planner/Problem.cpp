@@ -50,8 +50,9 @@ rules::CellValue findState(const rules::Alphabet& alphabet, const std::vector<st
 
 PlannerSchema PlannerSchema::of(const rules::System& system) {
     PlannerSchema s;
-    const std::string fix = "; the planner needs a field 'label: U | P | F' and an input 'target' "
-                            "(see rules/library/planner_intermediate.holon)";
+    const std::string fix =
+        "; the planner needs a field 'label: U | P | F' and an input 'target' "
+        "(see rules/library/planner_intermediate.holon)";
     for (std::size_t i = 0; i < system.fields.size(); ++i)
         if (system.fields[i].name == "label") s.label = static_cast<int>(i);
     if (s.label < 0) throw InputError("system '" + system.name + "' has no field 'label'" + fix);

@@ -15,10 +15,10 @@ namespace holon::planner {
 /// How a planner system names its parts: seed 000 §IV-A's labels and the target input.
 struct PlannerSchema {
     int label = -1, unknown = -1, path = -1, final = -1;  // field index, and its values U, P, F
-    int target = -1;                                     // input index
-    int resource = -1;                                   // the field that carries mass, or -1
-    int full = -1, creator = -1;                         // resource values of mass 1 (D) and the most mass (C)
-    rules::Rational extra;                               // mass(C) - 1: what a creator carries beyond a metamodule
+    int target = -1;                                      // input index
+    int resource = -1;                                    // the field that carries mass, or -1
+    int full = -1, creator = -1;                          // resource values of mass 1 (D) and the most mass (C)
+    rules::Rational extra;                                // mass(C) - 1: what a creator carries beyond a metamodule
     /// Reads the schema of a system; throws InputError naming what is missing.
     static PlannerSchema of(const rules::System& system);
 };

@@ -9,7 +9,9 @@
 
 namespace holon::planner {
 
-enum class StepFault { None, NotEnabled, ConstraintBroken };
+enum class StepFault { None,
+                       NotEnabled,
+                       ConstraintBroken };
 
 /// Replays `instance` on `before`; on StepFault::None, `after` holds the interpreter's rewrite.
 StepFault replayStep(const rules::Interpreter& in, const rules::Configuration& before, const rules::Instance& instance, rules::Configuration& after);

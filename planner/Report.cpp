@@ -31,8 +31,7 @@ Report::Report(const Problem& problem, const Execution& execution, ReportOptions
         plan_.emplace(rules::OutputFile(options_.planOutOption, options_.planOut).open());
         // The first line makes the plan self-contained: what it starts from, target included.
         const rules::System& system = problem.model->system();
-        plan_->stream() << nlohmann::json{{"plan", "holon"}, {"system", system.name}, {"source", system.sourceName},
-                                          {"start", configurationJson(problem, execution.cells())}}
+        plan_->stream() << nlohmann::json{{"plan", "holon"}, {"system", system.name}, {"source", system.sourceName}, {"start", configurationJson(problem, execution.cells())}}
                                .dump()
                         << '\n';
     }
@@ -69,7 +68,7 @@ void Report::roundEnd(const RunStats& stats) {
     const double created = fraction(stats.creations, problem_->toCreate), deleted = fraction(stats.deletions, problem_->toDelete);
     if (csv_ && (stats.steps != lastStep_)) {
         csv_->stream() << stats.rounds << ',' << stats.steps << ',' << stats.creations << ',' << stats.deletions << ',' << stats.transfers << ',' << created << ','
-              << deleted << '\n';
+                       << deleted << '\n';
         lastStep_ = stats.steps;
     }
     const double done = fraction(stats.creations + stats.deletions, problem_->toCreate + problem_->toDelete);
@@ -99,11 +98,7 @@ void Report::finish(const RunStats& stats, std::int64_t transferLowerBound) {
         cell["waits_on"] = waitingOn(*problem_, *board, i);
         unfinished.push_back(cell);
     }
-    nlohmann::json summary = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions},
-                              {"transfers", stats.transfers}, {"transfer_lower_bound", transferLowerBound >= 0 ? nlohmann::json(transferLowerBound) : nlohmann::json()},
-                              {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete},
-                              {"stopped", stats.stopped}, {"interrupted", stats.stopped == "interrupted"},
-                              {"cells_short_of_goal", shortCount}, {"short_of_goal", unfinished}};
+    nlohmann::json summary = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", transferLowerBound >= 0 ? nlohmann::json(transferLowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"stopped", stats.stopped}, {"interrupted", stats.stopped == "interrupted"}, {"cells_short_of_goal", shortCount}, {"short_of_goal", unfinished}};
     summary.update(extra_);
     attempt([&] { rules::OutputFile(options_.outOption, options_.outDir + "/summary.json").write(summary.dump(2) + '\n'); });
 }
@@ -200,16 +195,19 @@ std::string drawBoard(const Problem& problem, const std::vector<BoxEngine::Value
                 }
                 const auto& f = alphabet.fields(v);
                 const int label = f[schema.label];
-                svg.rect(cx, cy, px, px, {{"fill", label == schema.final ? kF : label == schema.path ? kP : kU}, outline, outlineWidth});
+                svg.rect(cx, cy, px, px, {{"fill", label == schema.final ? kF : label == schema.path ? kP
+                                                                                                     : kU},
+                                          outline,
+                                          outlineWidth});
                 if (schema.resource >= 0 && f[schema.resource] != schema.full && px >= 4) svg.circle(cx + px / 2, cy + px / 2, px / 4, {{"fill", kCreator}});
             }
     }
     // The legend: what each colour means, and the axes.
     const rules::Field& labels = problem.model->system().fields[static_cast<std::size_t>(schema.label)];
     const std::pair<const char*, std::string> keys[] = {{kU, labels.values[static_cast<std::size_t>(schema.unknown)] + " (undecided)"},
-                                                       {kP, labels.values[static_cast<std::size_t>(schema.path)] + " (path: to be deleted)"},
-                                                       {kF, labels.values[static_cast<std::size_t>(schema.final)] + " (final)"},
-                                                       {kTarget, "empty target cell"}};
+                                                        {kP, labels.values[static_cast<std::size_t>(schema.path)] + " (path: to be deleted)"},
+                                                        {kF, labels.values[static_cast<std::size_t>(schema.final)] + " (final)"},
+                                                        {kTarget, "empty target cell"}};
     double lx = 5;
     for (const auto& [fill, text] : keys) {
         svg.legend(lx, legendTop, text, {{"fill", fill}, outline, {"stroke-width", 0.5}});
@@ -219,8 +217,7 @@ std::string drawBoard(const Problem& problem, const std::vector<BoxEngine::Value
         svg.circle(lx + 7, legendTop + 7, 4, {{"fill", kCreator}});
         svg.text(lx + 18, legendTop + 11, "dot: creator resource", font);
     }
-    svg.text(5, legendTop + 32, "x to the right, y down the page from (" + std::to_string(board.lower().x) + "," + std::to_string(board.lower().y) + ") at the top left" +
-                                    (is3d ? "; one picture per layer z" : ""),
+    svg.text(5, legendTop + 32, "x to the right, y down the page from (" + std::to_string(board.lower().x) + "," + std::to_string(board.lower().y) + ") at the top left" + (is3d ? "; one picture per layer z" : ""),
              font);
     return svg.document(std::max(width, 560.0), legendTop + 42);
 }

@@ -303,7 +303,8 @@ std::vector<std::vector<Vec>> components(const std::vector<Vec>& cells, int dime
         [&](auto&& f) {
             for (Vec c : cells) f(index(c));
         },
-        rules::offsetEdges(dimension == 3 ? 6 : 4, [&](int k) { return steps[k]; }, [&](std::int64_t j) { return in[j] != 0; }),
+        rules::offsetEdges(
+            dimension == 3 ? 6 : 4, [&](int k) { return steps[k]; }, [&](std::int64_t j) { return in[j] != 0; }),
         [&](std::int64_t i, int k) {
             if (k == static_cast<int>(out.size())) out.emplace_back();
             out[k].push_back({static_cast<int>(i % w) + lo.x - 1, static_cast<int>(i / w % h) + lo.y - 1, static_cast<int>(i / (w * h)) + lo.z - 1});

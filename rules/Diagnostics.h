@@ -13,7 +13,8 @@
 namespace holon::rules {
 
 struct Diagnostic {
-    enum class Severity { Error, Warning } severity = Severity::Error;
+    enum class Severity { Error,
+                          Warning } severity = Severity::Error;
     SourceLoc loc;
     int line = 0, col = 0;  // copied from loc (SourceLoc does not compare)
     std::string message;

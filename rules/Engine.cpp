@@ -246,8 +246,16 @@ Rational Engine::number(const Expr& e, const CellValue* cells) const {
     case Expr::Kind::Sub: return number(e.kids[0], cells) - number(e.kids[1], cells);
     case Expr::Kind::Neg: return -number(e.kids[0], cells);
     case Expr::Kind::Count: return countCells(e, cells, true);
-    case Expr::Kind::Bool: case Expr::Kind::And: case Expr::Kind::Or: case Expr::Kind::Not: case Expr::Kind::Implies:
-    case Expr::Kind::Compare: case Expr::Kind::All: case Expr::Kind::Some: case Expr::Kind::No: case Expr::Kind::Connected:
+    case Expr::Kind::Bool:
+    case Expr::Kind::And:
+    case Expr::Kind::Or:
+    case Expr::Kind::Not:
+    case Expr::Kind::Implies:
+    case Expr::Kind::Compare:
+    case Expr::Kind::All:
+    case Expr::Kind::Some:
+    case Expr::Kind::No:
+    case Expr::Kind::Connected:
     case Expr::Kind::Reaches:
         break;  // conditions: the parser types every expression, so none is read as a number
     }
@@ -272,7 +280,11 @@ bool Engine::holds(const Expr& e, const CellValue* cells) const {
     case Expr::Kind::Connected: return connected(predicateMask(e.pred), cells);
     case Expr::Kind::Reaches:
         return e.field < 0 ? reachesAlongAdjacency(predicateMask(e.pred), predicateMask(e.target), cells) : reachesAlongField(e, cells);
-    case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Add: case Expr::Kind::Sub: case Expr::Kind::Neg:
+    case Expr::Kind::Number:
+    case Expr::Kind::Mass:
+    case Expr::Kind::Add:
+    case Expr::Kind::Sub:
+    case Expr::Kind::Neg:
     case Expr::Kind::Count:
         break;  // numbers: the parser types every expression, so none is read as a condition
     }

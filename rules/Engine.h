@@ -125,8 +125,8 @@ private:
     struct CellTest {
         std::uint64_t any, all;  // states below 64 accepted under some / every input combination
     };
-    std::vector<CellTest> cellTests_;   // per shape, per pattern cell
-    std::vector<int> firstCellTest_;    // per shape: its first entry in cellTests_
+    std::vector<CellTest> cellTests_;  // per shape, per pattern cell
+    std::vector<int> firstCellTest_;   // per shape: its first entry in cellTests_
     bool test(const Mask& m, int combo, CellValue v) const { return tables_.test(m, combo, v); }
     bool connected(const Mask& m, const CellValue* cells) const;
     /// reaches(from, nbr, to): every `from` cell has a path through `from` cells to a `to` cell.
@@ -146,7 +146,7 @@ private:
     std::vector<std::int32_t> placedIndex_;  // [cell * shapes + shape]: the instance anchored there, or -1
     std::vector<std::vector<std::int32_t>> byCell_;
     std::unordered_map<const CellPredicate*, int> predicateIndex_;
-    std::vector<Mask> predicateMasks_;  // distinct predicates only: equal text, one mask
+    std::vector<Mask> predicateMasks_;                       // distinct predicates only: equal text, one mask
     std::unordered_map<const Expr*, GuardNode> cellGuards_;  // per quantifier with a cell guard
 };
 

@@ -211,7 +211,7 @@ bool Interpreter::holdsAt(const Expr& e, const Configuration& c, const Placement
     case Expr::Kind::No: return countCells(e, c, at) == 0;
     case Expr::Kind::All: {
         if (!e.kids.empty()) return countCells(e, c, at) == countCells(e, c, at, false);  // every pred cell satisfies the cell guard
-        const int total = e.around >= 0                   ? model_->lattice().degree()
+        const int total = e.around >= 0                 ? model_->lattice().degree()
                           : e.around == Expr::kOwnCells ? static_cast<int>(at->positions.size())
                                                         : region_->size();
         return countCells(e, c, at) == total;
@@ -231,7 +231,11 @@ bool Interpreter::holdsAt(const Expr& e, const Configuration& c, const Placement
         return connectedWord((std::uint64_t{1} << members.size()) - 1, aroundByTable(adjacent.data()));
     }
     case Expr::Kind::Reaches: return reaches(e, c);
-    case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Add: case Expr::Kind::Sub: case Expr::Kind::Neg:
+    case Expr::Kind::Number:
+    case Expr::Kind::Mass:
+    case Expr::Kind::Add:
+    case Expr::Kind::Sub:
+    case Expr::Kind::Neg:
     case Expr::Kind::Count:
         break;  // numbers never reach here: the parser types every expression
     }
@@ -246,8 +250,16 @@ Rational Interpreter::numberAt(const Expr& e, const Configuration& c, const Plac
     case Expr::Kind::Sub: return numberAt(e.kids[0], c, at) - numberAt(e.kids[1], c, at);
     case Expr::Kind::Neg: return -numberAt(e.kids[0], c, at);
     case Expr::Kind::Count: return countCells(e, c, at);
-    case Expr::Kind::Bool: case Expr::Kind::And: case Expr::Kind::Or: case Expr::Kind::Not: case Expr::Kind::Implies:
-    case Expr::Kind::Compare: case Expr::Kind::All: case Expr::Kind::Some: case Expr::Kind::No: case Expr::Kind::Connected:
+    case Expr::Kind::Bool:
+    case Expr::Kind::And:
+    case Expr::Kind::Or:
+    case Expr::Kind::Not:
+    case Expr::Kind::Implies:
+    case Expr::Kind::Compare:
+    case Expr::Kind::All:
+    case Expr::Kind::Some:
+    case Expr::Kind::No:
+    case Expr::Kind::Connected:
     case Expr::Kind::Reaches:
         break;  // conditions never reach here: the parser types every expression
     }

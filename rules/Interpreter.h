@@ -29,10 +29,10 @@ struct Instance {
 
 /// Why an instance is not enabled, for a person (the rule a stuck cell waits on).
 struct Blocked {
-    std::vector<int> cells;        // pattern cells whose state the left side rejects
-    int conjunct = -1;             // the first false conjunct of the guard (conjuncts(guard)), or -1
-    std::vector<Vec> witnesses;    // for a false neighbour or own-cells quantifier: the cells that make
-                                   // it false (`no nbr U`: the U neighbours; `all`: those that are not)
+    std::vector<int> cells;      // pattern cells whose state the left side rejects
+    int conjunct = -1;           // the first false conjunct of the guard (conjuncts(guard)), or -1
+    std::vector<Vec> witnesses;  // for a false neighbour or own-cells quantifier: the cells that make
+                                 // it false (`no nbr U`: the U neighbours; `all`: those that are not)
     bool enabled() const { return cells.empty() && conjunct < 0; }
 };
 

@@ -18,7 +18,9 @@ struct SourceLoc {
     friend bool operator==(const SourceLoc&, const SourceLoc&) { return true; }
 };
 
-enum class FieldKind { Enum, Dir, Int };
+enum class FieldKind { Enum,
+                       Dir,
+                       Int };
 
 /// A named per-cell field with a finite domain. A field may exist only while an earlier enum field
 /// holds one of some values (`field parent: dir if P`); elsewhere it is absent.
@@ -42,14 +44,17 @@ struct MassEntry {
 
 /// The right-hand side of `field=...`: a literal, `none`, or the direction toward pattern cell k.
 struct FieldValue {
-    enum class Kind { Literal, None, CellRef } kind = Kind::Literal;
+    enum class Kind { Literal,
+                      None,
+                      CellRef } kind = Kind::Literal;
     int value = 0;  // Literal: enum index or integer; CellRef: k
     friend bool operator==(const FieldValue&, const FieldValue&) = default;
 };
 
 /// One conjunct of a cell term: a field test/assignment or an input test, possibly negated.
 struct Atom {
-    enum class Kind { Field, Input } kind = Kind::Field;
+    enum class Kind { Field,
+                      Input } kind = Kind::Field;
     bool negated = false;
     int index = 0;  // field or input index
     FieldValue value;
@@ -59,7 +64,9 @@ struct Atom {
 
 /// What one cell must be (on a left side, in a guard or expression) or becomes (on a right side).
 struct CellTerm {
-    enum class Base { Empty, Any, Occupied } base = Base::Any;  // `_`, `*`, `#` (field atoms imply #)
+    enum class Base { Empty,
+                      Any,
+                      Occupied } base = Base::Any;  // `_`, `*`, `#` (field atoms imply #)
     std::vector<Atom> atoms;
     bool hasOffset = false;
     Vec offset;         // explicit position in lattice coordinates, `@(x,y)`
@@ -72,7 +79,12 @@ struct CellTerm {
 /// A disjunction of cell terms, as in `F&target | _&!target`.
 using CellPredicate = std::vector<CellTerm>;
 
-enum class CmpOp { Eq, Ne, Lt, Le, Gt, Ge };
+enum class CmpOp { Eq,
+                   Ne,
+                   Lt,
+                   Le,
+                   Gt,
+                   Ge };
 
 template <class Number>  // Rational, or std::int64_t where both sides are integers
 bool compare(CmpOp op, const Number& a, const Number& b) {
@@ -90,17 +102,24 @@ bool compare(CmpOp op, const Number& a, const Number& b) {
 /// Configuration-level and guard expressions.
 struct Expr {
     enum class Kind {
-        Bool,       // value.num() != 0
-        Number,     // value
-        Mass,       // total mass of the configuration
-        And, Or, Not, Implies,
-        Compare,    // kids[0] op kids[1]
-        Add, Sub, Neg,
+        Bool,    // value.num() != 0
+        Number,  // value
+        Mass,    // total mass of the configuration
+        And,
+        Or,
+        Not,
+        Implies,
+        Compare,  // kids[0] op kids[1]
+        Add,
+        Sub,
+        Neg,
         // Number of cells satisfying pred (in the region, or around pattern cell `around`). In the
         // region, an optional kids[0] is a local guard read with @0 at the cell (`count(H: no nbr _)`):
         // only cells where it holds count, and all(T: G) means every T cell satisfies G.
         Count,
-        All, Some, No,
+        All,
+        Some,
+        No,
         Connected,  // the cells satisfying pred form one connected set; with `around` (guards): the
                     // neighbours of that pattern cell satisfying pred are connected among themselves
         Reaches,    // every pred cell follows `field` through pred cells to a target cell, acyclically;
@@ -136,14 +155,20 @@ struct Constraint {
 };
 
 struct Property {
-    enum class Kind { Invariant, Progress, Ranking, Holonomic, Conserves } kind = Kind::Invariant;
+    enum class Kind { Invariant,
+                      Progress,
+                      Ranking,
+                      Holonomic,
+                      Conserves } kind = Kind::Invariant;
     std::string name;
-    std::vector<Expr> exprs;  // Invariant: {expr}; Progress: {assumption} or {}; Ranking: the components;
-                              // Holonomic: {count(P)} where P says which cells hold a complete
-                              // metamodule (`by occupancy of D | C`), or {}
+    std::vector<Expr> exprs;          // Invariant: {expr}; Progress: {assumption} or {}; Ranking: the components;
+                                      // Holonomic: {count(P)} where P says which cells hold a complete
+                                      // metamodule (`by occupancy of D | C`), or {}
     std::vector<std::string> except;  // Ranking: rules whose steps must keep it instead (resource moves)
-    enum class Adjacency { Occupancy, Move } adjacency = Adjacency::Occupancy;  // Holonomic
-    enum class Quantity { Mass, Count } quantity = Quantity::Mass;              // Conserves
+    enum class Adjacency { Occupancy,
+                           Move } adjacency = Adjacency::Occupancy;  // Holonomic
+    enum class Quantity { Mass,
+                          Count } quantity = Quantity::Mass;  // Conserves
     SourceLoc loc;
     friend bool operator==(const Property&, const Property&) = default;
 };

@@ -87,8 +87,8 @@ const Lattice& Lattice::get(LatticeKind kind) {
                                {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}},
                                {"+x", "+y", "+z", "-x", "-y", "-z"},
                                {LinearMap{{{{0, -1, 0}, {1, 0, 0}, {0, 0, 1}}}},   // quarter turn about z
-                                LinearMap{{{{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}}}}, // quarter turn about x
-                               LinearMap{{{{1, 0, 0}, {0, -1, 0}, {0, 0, 1}}}});  // y -> -y
+                                LinearMap{{{{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}}}},  // quarter turn about x
+                               LinearMap{{{{1, 0, 0}, {0, -1, 0}, {0, 0, 1}}}});   // y -> -y
     // Hex, axial (q, r) with pointy tops: a 60° turn maps (q, r) to (q + r, -q); the mirror in the
     // E-W axis maps (q, r) to (q + r, -r), swapping NE with SE and NW with SW.
     static const Lattice hex(LatticeKind::Hex2D, "hex2d", 2,

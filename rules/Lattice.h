@@ -30,11 +30,15 @@ struct LinearMap {
     friend bool operator==(const LinearMap&, const LinearMap&) = default;
 };
 
-enum class LatticeKind { Square2D, Cubic3D, Hex2D };
+enum class LatticeKind { Square2D,
+                         Cubic3D,
+                         Hex2D };
 
 /// The symmetries a system's rules are closed under (`symmetry none | rotations |
 /// rotations+reflections`): the identity, the proper rotations, or the lattice's full point group.
-enum class Symmetry { None, Rotations, RotationsReflections };
+enum class Symmetry { None,
+                      Rotations,
+                      RotationsReflections };
 
 /// "none", "rotations", "rotations+reflections": the spelling of the `symmetry` declaration.
 const char* symmetryName(Symmetry s);

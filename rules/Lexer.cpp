@@ -14,12 +14,12 @@ namespace holon::rules {
 namespace {
 
 constexpr std::array<std::string_view, 25> kPunct{"<=>", "=>", "<=", ">=", "==", "!=", "..", "<", ">", "=", ":",
-                                                 "|",   "&",  "!",  "@",  ",",  "(",  ")",  "*", "#", "_", "/",
-                                                 "+",   "-",  ";"};
+                                                  "|", "&", "!", "@", ",", "(", ")", "*", "#", "_", "/",
+                                                  "+", "-", ";"};
 
 bool continuesLine(const Token& t) {
-    static constexpr std::array<std::string_view, 14> joiners{"and", "or",  "not", "implies", "if", "assuming", ",",
-                                                              "=>",  "<=>", "|",   "&",       ":",  "=",        "("};
+    static constexpr std::array<std::string_view, 14> joiners{"and", "or", "not", "implies", "if", "assuming", ",",
+                                                              "=>", "<=>", "|", "&", ":", "=", "("};
     if (t.kind != Token::Kind::Ident && t.kind != Token::Kind::Punct) return false;
     for (auto j : joiners)
         if (t.text == j) return true;
@@ -38,8 +38,8 @@ bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0
 }  // namespace
 
 const std::vector<std::string>& declarationKeywords() {
-    static const std::vector<std::string> words{"system",     "lattice", "symmetry",  "field",   "states",   "input",     "mass",
-                                                "rule",       "constraint", "goal", "invariant", "ranking", "progress", "holonomic",
+    static const std::vector<std::string> words{"system", "lattice", "symmetry", "field", "states", "input", "mass",
+                                                "rule", "constraint", "goal", "invariant", "ranking", "progress", "holonomic",
                                                 "conserves"};
     return words;
 }

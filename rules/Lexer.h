@@ -11,7 +11,11 @@
 namespace holon::rules {
 
 struct Token {
-    enum class Kind { Ident, Int, Punct, Newline, End } kind = Kind::End;
+    enum class Kind { Ident,
+                      Int,
+                      Punct,
+                      Newline,
+                      End } kind = Kind::End;
     std::string text;
     SourceLoc loc;
     bool is(std::string_view t) const { return (kind == Kind::Punct || kind == Kind::Ident) && text == t; }

@@ -141,9 +141,9 @@ Model::Model(const System& system, const Lattice& lattice)
             std::vector<Vec> offsets;
             for (std::size_t i = 0; i < lhs.size(); ++i) {
                 Vec base = dr.rule->lhs[0].hasOffset ? dr.rule->lhs[i].offset
-                                            : Vec{static_cast<int>(i) * lattice.direction(0).x,
-                                                  static_cast<int>(i) * lattice.direction(0).y,
-                                                  static_cast<int>(i) * lattice.direction(0).z};
+                                                     : Vec{static_cast<int>(i) * lattice.direction(0).x,
+                                                           static_cast<int>(i) * lattice.direction(0).y,
+                                                           static_cast<int>(i) * lattice.direction(0).z};
                 offsets.push_back(map.apply(base));
             }
             // Key: cells sorted by position relative to the lowest one; references (@k, parent=@k,

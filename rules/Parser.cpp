@@ -51,11 +51,23 @@ std::string suggestion(const std::string& name, const std::vector<std::string>& 
 
 bool isBoolExpr(const Expr& e) {
     switch (e.kind) {
-    case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Add: case Expr::Kind::Sub:
-    case Expr::Kind::Neg: case Expr::Kind::Count:
+    case Expr::Kind::Number:
+    case Expr::Kind::Mass:
+    case Expr::Kind::Add:
+    case Expr::Kind::Sub:
+    case Expr::Kind::Neg:
+    case Expr::Kind::Count:
         return false;
-    case Expr::Kind::Bool: case Expr::Kind::And: case Expr::Kind::Or: case Expr::Kind::Not: case Expr::Kind::Implies:
-    case Expr::Kind::Compare: case Expr::Kind::All: case Expr::Kind::Some: case Expr::Kind::No: case Expr::Kind::Connected:
+    case Expr::Kind::Bool:
+    case Expr::Kind::And:
+    case Expr::Kind::Or:
+    case Expr::Kind::Not:
+    case Expr::Kind::Implies:
+    case Expr::Kind::Compare:
+    case Expr::Kind::All:
+    case Expr::Kind::Some:
+    case Expr::Kind::No:
+    case Expr::Kind::Connected:
     case Expr::Kind::Reaches:
         return true;
     }
@@ -114,7 +126,9 @@ private:
         switch (tok.kind) {
         case Token::Kind::Newline: return "end of line";
         case Token::Kind::End: return "end of file";
-        case Token::Kind::Ident: case Token::Kind::Int: case Token::Kind::Punct: break;
+        case Token::Kind::Ident:
+        case Token::Kind::Int:
+        case Token::Kind::Punct: break;
         }
         return "'" + tok.text + "'";
     }
@@ -347,8 +361,9 @@ private:
         checkLayout(r);
         if (accept("if")) {
             if (r.bidirectional)
-                fail(peek().loc, "a '<=>' rule cannot have a guard (it would hold before one direction only); "
-                                 "write the two directions as separate '=>' rules");
+                fail(peek().loc,
+                     "a '<=>' rule cannot have a guard (it would hold before one direction only); "
+                     "write the two directions as separate '=>' rules");
             inGuard_ = true;
             try {
                 r.guard = boolExpr();
@@ -691,8 +706,7 @@ private:
     }
     Tree comparison() {
         Tree lhs = sum();
-        static const std::pair<const char*, CmpOp> ops[] = {{"==", CmpOp::Eq}, {"!=", CmpOp::Ne}, {"<=", CmpOp::Le},
-                                                            {">=", CmpOp::Ge}, {"<", CmpOp::Lt},  {">", CmpOp::Gt}};
+        static const std::pair<const char*, CmpOp> ops[] = {{"==", CmpOp::Eq}, {"!=", CmpOp::Ne}, {"<=", CmpOp::Le}, {">=", CmpOp::Ge}, {"<", CmpOp::Lt}, {">", CmpOp::Gt}};
         for (auto [text, op] : ops)
             if (at(text)) {
                 SourceLoc loc = next().loc;
@@ -714,8 +728,9 @@ private:
             e = join(kind, loc, std::move(e), std::move(rhs));
         }
         if (at("*") || at("/"))
-            fail(peek().loc, "expressions add and subtract (+, -) but do not multiply or divide; write 2 * count(F) as "
-                             "count(F) + count(F), and a fraction as 3/2");
+            fail(peek().loc,
+                 "expressions add and subtract (+, -) but do not multiply or divide; write 2 * count(F) as "
+                 "count(F) + count(F), and a fraction as 3/2");
         return e;
     }
     Tree unary() {

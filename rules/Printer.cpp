@@ -52,11 +52,18 @@ int precedence(const Expr& e) {
     case Expr::Kind::And: return 3;
     case Expr::Kind::Not: return 4;
     case Expr::Kind::Compare: return 5;
-    case Expr::Kind::Add: case Expr::Kind::Sub: return 6;
+    case Expr::Kind::Add:
+    case Expr::Kind::Sub: return 6;
     case Expr::Kind::Neg: return 7;
     case Expr::Kind::Number: return e.value.isInteger() ? 8 : 7;  // 3/2 prints as a fraction: keep it whole
-    case Expr::Kind::Bool: case Expr::Kind::Mass: case Expr::Kind::Count: case Expr::Kind::All: case Expr::Kind::Some:
-    case Expr::Kind::No: case Expr::Kind::Connected: case Expr::Kind::Reaches:
+    case Expr::Kind::Bool:
+    case Expr::Kind::Mass:
+    case Expr::Kind::Count:
+    case Expr::Kind::All:
+    case Expr::Kind::Some:
+    case Expr::Kind::No:
+    case Expr::Kind::Connected:
+    case Expr::Kind::Reaches:
         return 8;  // atoms
     }
     return 8;

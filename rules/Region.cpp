@@ -4,8 +4,8 @@
 
 #include "rules/Region.h"
 
-#include "rules/Limits.h"
 #include "rules/Error.h"
+#include "rules/Limits.h"
 
 #include <algorithm>
 #include <charconv>

@@ -40,7 +40,7 @@ public:
     struct Shape {
         std::vector<Mask> lhs;
         std::vector<std::vector<CellValue>> rhs;  // empty for a copy term
-        std::vector<int> copyFrom;                 // pattern cell whose old state is copied, or -1
+        std::vector<int> copyFrom;                // pattern cell whose old state is copied, or -1
         bool hasGuard = false;
         GuardNode guard;
     };
@@ -93,7 +93,11 @@ public:
         case Expr::Kind::No: return !guardAny(g, at, cells);
         case Expr::Kind::All: return guardCount(g, at, cells) == static_cast<int>(g.perSite.size());
         case Expr::Kind::Connected: return directionsConnected(guardMembers(g, at, cells));
-        case Expr::Kind::Number: case Expr::Kind::Mass: case Expr::Kind::Add: case Expr::Kind::Sub: case Expr::Kind::Neg:
+        case Expr::Kind::Number:
+        case Expr::Kind::Mass:
+        case Expr::Kind::Add:
+        case Expr::Kind::Sub:
+        case Expr::Kind::Neg:
         case Expr::Kind::Count:
         case Expr::Kind::Reaches:  // the parser refuses these in guards
             break;
@@ -121,7 +125,8 @@ private:
     /// The guard's sites it accepts, as bits.
     template <class Cells>
     std::uint32_t guardMembers(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
-        if (g.around < 0) [[unlikely]] return ownCellMembers(g, at, cells);
+        if (g.around < 0) [[unlikely]]
+            return ownCellMembers(g, at, cells);
         std::uint32_t set = 0;
         const auto centre = cells[g.around];
         for (int d = 0; d < static_cast<int>(g.perSite.size()); ++d) set |= static_cast<std::uint32_t>(acceptsSite(g, d, at, at.neighbour(centre, d))) << d;
@@ -141,7 +146,8 @@ private:
     /// Whether some site is accepted: guardCount(...) > 0, stopping at the first.
     template <class Cells>
     bool guardAny(const GuardNode& g, const Cells& at, const std::int32_t* cells) const {
-        if (g.around < 0) [[unlikely]] return ownCellMembers(g, at, cells) != 0;
+        if (g.around < 0) [[unlikely]]
+            return ownCellMembers(g, at, cells) != 0;
         const auto centre = cells[g.around];
         for (int d = 0; d < static_cast<int>(g.perSite.size()); ++d)
             if (acceptsSite(g, d, at, at.neighbour(centre, d))) return true;
@@ -156,8 +162,16 @@ private:
         case Expr::Kind::Neg: return -guardNumber(g.kids[0], at, cells);
         case Expr::Kind::Count: return guardCount(g, at, cells);
         case Expr::Kind::Mass:  // the parser refuses it in guards
-        case Expr::Kind::Bool: case Expr::Kind::And: case Expr::Kind::Or: case Expr::Kind::Not: case Expr::Kind::Implies:
-        case Expr::Kind::Compare: case Expr::Kind::All: case Expr::Kind::Some: case Expr::Kind::No: case Expr::Kind::Connected:
+        case Expr::Kind::Bool:
+        case Expr::Kind::And:
+        case Expr::Kind::Or:
+        case Expr::Kind::Not:
+        case Expr::Kind::Implies:
+        case Expr::Kind::Compare:
+        case Expr::Kind::All:
+        case Expr::Kind::Some:
+        case Expr::Kind::No:
+        case Expr::Kind::Connected:
         case Expr::Kind::Reaches:
             break;
         }

@@ -22,7 +22,8 @@ public:
     static const volatile std::sig_atomic_t* caught();
 
 private:
-    struct sigaction oldInt_ {}, oldTerm_ {};
+    struct sigaction oldInt_ {
+    }, oldTerm_{};
 };
 
 }  // namespace holon::rules

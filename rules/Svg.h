@@ -19,7 +19,7 @@ struct SvgAttr {
     SvgAttr(const char* name, const char* value) : name(name), value(value) {}
     SvgAttr(const char* name, const std::string& value) : name(name), value(value) {}
     template <class Number>
-        requires std::is_arithmetic_v<Number>
+    requires std::is_arithmetic_v<Number>
     SvgAttr(const char* name, Number value) : name(name) {
         std::ostringstream s;
         s << value;

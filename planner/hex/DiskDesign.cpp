@@ -65,7 +65,8 @@ public:
                     if (cells_[i]) f(i);
                 });
             },
-            rules::offsetEdges(6, [&](int d) { return board.step(d); }, disk));
+            rules::offsetEdges(
+                6, [&](int d) { return board.step(d); }, disk));
     }
     /// A shortest pivot path for the disk at `from` (lifted) to the reachable cell with the least
     /// rank (ranks below 0 are not goals); empty if none.
@@ -296,7 +297,7 @@ std::vector<PivotMove> DiskDesign::sequence(int a0, int b0, int a1, int b1, bool
     if (a1 == a0 - 1 && b1 == b0 + 1) {  // A gives
         if (a0 == units_) base = &base_[b0];
         else if (b1 == units_) base = &base_[a1], turn = true, backwards = true;  // B gave, run back
-    } else if (a1 == a0 + 1 && b1 == b0 - 1) {  // B gives
+    } else if (a1 == a0 + 1 && b1 == b0 - 1) {                                    // B gives
         if (b0 == units_) base = &base_[a0], turn = true;
         else if (a1 == units_) base = &base_[b1], backwards = true;
     }

@@ -146,7 +146,8 @@ std::string replayDiskMoves(const std::vector<Vec>& start, const std::vector<Dis
     const std::vector<Vec>& neighbours = rules::Lattice::get(rules::LatticeKind::Hex2D).directions();  // counterclockwise
     std::vector<std::int64_t> offsets;
     for (Vec d : neighbours) offsets.push_back(static_cast<std::int64_t>(d.y) * width + d.x);
-    const auto edges = rules::offsetEdges(6, [&](int d) { return offsets[d]; }, [&](std::int64_t i) { return grid[i] != 0; });
+    const auto edges = rules::offsetEdges(
+        6, [&](int d) { return offsets[d]; }, [&](std::int64_t i) { return grid[i] != 0; });
     rules::Flood flood;
     const auto rejoined = [&](Vec gone) {
         std::vector<std::int64_t> ends;

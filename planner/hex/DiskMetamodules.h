@@ -20,7 +20,7 @@ namespace holon::planner::hex {
 struct DiskMove {
     std::int64_t instance = 0;  // the fired instance of the plan this move belongs to (0-based)
     std::string rule;
-    Vec from, to, pivot;        // axial disk coordinates
+    Vec from, to, pivot;  // axial disk coordinates
 };
 
 class DiskMetamodules {
@@ -50,8 +50,8 @@ private:
 
     const Problem* problem_;
     DiskDesign design_;
-    std::unique_ptr<PivotRules> pivots_;       // on the slots of the board and one slot of margin
-    std::vector<BoxEngine::Value> cells_;      // the disks, on pivots_'s board
+    std::unique_ptr<PivotRules> pivots_;   // on the slots of the board and one slot of margin
+    std::vector<BoxEngine::Value> cells_;  // the disks, on pivots_'s board
     std::int64_t instances_ = 0;
     std::vector<Vec> start_;
     std::vector<DiskMove> moves_;

@@ -35,7 +35,10 @@ public:
     const std::vector<std::int64_t>& points() const { return points_; }
     /// Cartesian position in module diameters: x to the right, y up (row 0 is the top), the array's
     /// lower left point at the origin.
-    double x(std::int64_t i) const { const Vec p = board_.point(i); return p.x + 0.5 * p.y; }
+    double x(std::int64_t i) const {
+        const Vec p = board_.point(i);
+        return p.x + 0.5 * p.y;
+    }
     double y(std::int64_t i) const { return kRowHeight * (n_ - 1 - board_.point(i).y); }
     double width() const { return n_ - 0.5; }
     double height() const { return kRowHeight * (n_ - 1); }

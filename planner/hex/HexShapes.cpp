@@ -67,7 +67,8 @@ bool connected(const HexArray& array, const std::vector<std::uint8_t>& shape) {
             for (std::int64_t i : array.points())
                 if (shape[i]) f(i);
         },
-        rules::offsetEdges(6, [&](int d) { return array.step(d); }, inShape));
+        rules::offsetEdges(
+            6, [&](int d) { return array.step(d); }, inShape));
 }
 
 std::vector<std::uint8_t> sculptShape(const HexArray& array, const std::string& spec, const std::string& role) {

@@ -64,7 +64,7 @@ private:
                     *deleteEngine_ = nullptr, *flexibleEngine_ = nullptr;
     int create_ = -1;
     std::map<std::vector<std::int64_t>, int> deletion_;  // sorted steps of the shepherds that leave -> shape
-    std::map<std::int64_t, int> spill_, borrow_;          // step of the third-ring cell -> shape
+    std::map<std::int64_t, int> spill_, borrow_;         // step of the third-ring cell -> shape
     Value module_ = 0, rim_ = 0, centre_ = 0;
     int move_[6] = {};
     int collapse_[6][4][6] = {};

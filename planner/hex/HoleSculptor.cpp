@@ -34,7 +34,8 @@ std::int64_t deepestCell(const HexArray& array, const std::vector<std::uint8_t>&
         if (mask[i] && open) edge.push_back(i);
     }
     std::int64_t deepest = edge.front();
-    hopsFrom(array, edge, [&](std::int64_t n, std::int64_t) { return mask[n] != 0; }, &deepest);
+    hopsFrom(
+        array, edge, [&](std::int64_t n, std::int64_t) { return mask[n] != 0; }, &deepest);
     return deepest;
 }
 
@@ -64,7 +65,9 @@ HoleSculptor::HoleSculptor(const HexArray& array, const std::vector<std::uint8_t
     }
 
     for (std::int64_t i : array.points()) {
-        class_[i] = source[i] && target[i] ? 0 : !source[i] && !target[i] ? 1 : target[i] ? 2 : 3;
+        class_[i] = source[i] && target[i] ? 0 : !source[i] && !target[i] ? 1
+                                             : target[i]                  ? 2
+                                                                          : 3;
         ++classSize_[class_[i]];
         if (!target[i]) ++classCorrect_[class_[i]];  // everything starts empty
     }
@@ -250,7 +253,8 @@ void HoleSculptor::tryCreate(std::int64_t k) {
     // borrowed module enters, is immaterial to the cells; MassTree hears of it as one module's move
     // and then the disk's filling.
     const BoxEngine& engine = spill >= 0 || borrow >= 0 ? rules_->flexibleEngine() : rules_->growthEngine();
-    const int shape = spill >= 0 ? rules_->spill(spill - k) : borrow >= 0 ? rules_->borrow(borrow - k) : rules_->create();
+    const int shape = spill >= 0 ? rules_->spill(spill - k) : borrow >= 0 ? rules_->borrow(borrow - k)
+                                                                          : rules_->create();
     std::int64_t from = borrow, to = spill;
     if (spill >= 0 || borrow >= 0) {
         for (std::int64_t o : disk2_) {
@@ -470,7 +474,8 @@ std::int64_t HoleSculptor::islands() const {
             for (std::int64_t s : array_->points())
                 if (filled(s)) f(s);
         },
-        rules::offsetEdges(6, [&](int d) { return array_->step(d); }, [&](std::int64_t m) { return filled(m); }),
+        rules::offsetEdges(
+            6, [&](int d) { return array_->step(d); }, [&](std::int64_t m) { return filled(m); }),
         [&](std::int64_t c, int k) {
             if (k == static_cast<int>(mods.size())) mods.push_back(0);
             mods[k] += module(c);

@@ -112,26 +112,26 @@ private:
     Random random_;
     int time_ = 0;
     std::unique_ptr<const HoleRules> rules_;
-    std::unique_ptr<MassTree> tree_;            // with keepConnected or migrate: the connectivity test
-    std::vector<std::int32_t> towardEmpty_;     // with migrate: moves along the surface to an empty target point
+    std::unique_ptr<MassTree> tree_;         // with keepConnected or migrate: the connectivity test
+    std::vector<std::int32_t> towardEmpty_;  // with migrate: moves along the surface to an empty target point
     struct Arrival {
         std::int32_t value = std::numeric_limits<std::int32_t>::max();  // the field value a migrant arrived with
         int time = 0;
     };
-    std::vector<Arrival> arrival_;              // with migrate: per cell, how its migrant arrived there
-    static constexpr int kArrivalMemory = 16;   // timesteps an arrival value binds the migrant
-    std::vector<Value> cells_;                  // the ensemble, as hex_holes.holon's cell states
-    std::vector<std::uint8_t> class_;           // class: 0 stays filled, 1 stays empty, 2 to fill, 3 to empty
-    std::vector<std::int32_t> holeAt_;          // per hole centre: its hole's id; -1 elsewhere
+    std::vector<Arrival> arrival_;             // with migrate: per cell, how its migrant arrived there
+    static constexpr int kArrivalMemory = 16;  // timesteps an arrival value binds the migrant
+    std::vector<Value> cells_;                 // the ensemble, as hex_holes.holon's cell states
+    std::vector<std::uint8_t> class_;          // class: 0 stays filled, 1 stays empty, 2 to fill, 3 to empty
+    std::vector<std::int32_t> holeAt_;         // per hole centre: its hole's id; -1 elsewhere
     std::vector<Hole> holesById_;
-    std::vector<std::int64_t> activePoints_;    // lattice points inside active tri-regions, shuffled once
-    std::vector<double> nearPerimeter_;         // d_near: hops to the target's perimeter
-    double maxDistance_ = 1;                    // d_max
+    std::vector<std::int64_t> activePoints_;  // lattice points inside active tri-regions, shuffled once
+    std::vector<double> nearPerimeter_;       // d_near: hops to the target's perimeter
+    double maxDistance_ = 1;                  // d_max
     std::int64_t classSize_[4] = {}, classCorrect_[4] = {};
     std::int64_t modules_ = 0, liveHoles_ = 0;
-    std::int64_t holeBudget_ = 0;               // (target area - modules) / 7: the holes that fill the target exactly
-    std::int64_t growthDemand_ = 0;             // --balance: growth nodes this timestep that the budget held back
-    std::int64_t deletionLicences_ = 0;         // --balance: deletions below the budget still allowed this timestep
+    std::int64_t holeBudget_ = 0;        // (target area - modules) / 7: the holes that fill the target exactly
+    std::int64_t growthDemand_ = 0;      // --balance: growth nodes this timestep that the budget held back
+    std::int64_t deletionLicences_ = 0;  // --balance: deletions below the budget still allowed this timestep
     SculptCounts counts_;
     // Offsets (index steps): ring 1, disk of radius 1 and 2, ring 2 and 3, radius-3 disk, and per
     // direction the shepherds ordered by how far they lie toward the direction.

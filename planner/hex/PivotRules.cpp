@@ -47,7 +47,8 @@ PivotRules::PivotRules(Vec lower, Vec extent) : compiled_(std::make_unique<Compi
         const int d = lattice.directionOf(shape.offsets[lands[0]] - from);
         if (d < 0) continue;
         const Vec p = shape.offsets[pivot[0]] - from;
-        const int side = p == lattice.direction((d + 1) % 6) ? 0 : p == lattice.direction((d + 5) % 6) ? 1 : -1;
+        const int side = p == lattice.direction((d + 1) % 6) ? 0 : p == lattice.direction((d + 5) % 6) ? 1
+                                                                                                       : -1;
         const Vec other = lattice.direction(side == 0 ? (d + 5) % 6 : (d + 1) % 6);
         if (side < 0 || shape.offsets[swept[0]] - from != other || roll_[d][side].shape >= 0) continue;
         roll_[d][side] = {s, board_->offset(shape.offsets[0] - from)};
@@ -64,7 +65,8 @@ PivotRules::Instance PivotRules::find(Vec from, Vec to, Vec pivot) const {
     const int d = lattice.directionOf(to - from);
     if (d < 0) return {};
     const Vec p = pivot - from;
-    const int side = p == lattice.direction((d + 1) % 6) ? 0 : p == lattice.direction((d + 5) % 6) ? 1 : -1;
+    const int side = p == lattice.direction((d + 1) % 6) ? 0 : p == lattice.direction((d + 5) % 6) ? 1
+                                                                                                   : -1;
     if (side < 0) return {};
     return roll(board_->index(from), d, side);
 }

@@ -55,7 +55,9 @@ std::string sculptSvg(const HoleSculptor& sculptor) {
     const double scale = std::max(1.0, 800.0 / array.n()), r = 0.5 * scale;
     rules::Svg svg;
     for (std::int64_t i : array.points()) {
-        const char* fill = sculptor.module(i) ? (sculptor.target()[i] ? "#888" : "#222") : sculptor.holeCell(i) ? "#cde" : sculptor.target()[i] ? "#e44" : nullptr;
+        const char* fill = sculptor.module(i) ? (sculptor.target()[i] ? "#888" : "#222") : sculptor.holeCell(i) ? "#cde"
+                                                                                       : sculptor.target()[i]   ? "#e44"
+                                                                                                                : nullptr;
         if (fill) svg.circle((array.frameX(i) + 0.5) * scale, (array.frameHeight() - array.frameY(i) + 0.5) * scale, r, {{"fill", fill}});
     }
     return svg.document((array.frameWidth() + 1) * scale, (array.frameHeight() + 1) * scale);

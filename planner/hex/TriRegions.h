@@ -12,16 +12,16 @@ namespace holon::planner::hex {
 
 struct TriRegion {
     bool growth = false;
-    int gravity = 0;             // lattice direction 0..5 that is "down"
-    std::int64_t points = 0;     // lattice points inside
+    int gravity = 0;          // lattice direction 0..5 that is "down"
+    std::int64_t points = 0;  // lattice points inside
     std::int64_t toFill = 0, toEmpty = 0;
 };
 
 struct TriPlan {
-    double side = 0;                    // triangle edge, in module diameters
-    std::vector<TriRegion> regions;     // active tri-regions
-    std::vector<std::int32_t> regionOf; // per board cell: index into regions, or -1
-    int gravityFallbacks = 0;           // regions never touched by the perimeter (gravity toward the mass centre)
+    double side = 0;                     // triangle edge, in module diameters
+    std::vector<TriRegion> regions;      // active tri-regions
+    std::vector<std::int32_t> regionOf;  // per board cell: index into regions, or -1
+    int gravityFallbacks = 0;            // regions never touched by the perimeter (gravity toward the mass centre)
 };
 
 /// Tiles the array with triangles of edge `side` module diameters and assigns gravity by the

@@ -15,7 +15,10 @@ namespace holon::planner::roombots {
 
 /// greedy, slope, step: Eq. 2 (a)-(c); reserve: in seeding order, each metamodule plans its whole
 /// walk and starts when roombots_reserve.holon lets it (no walk under way shares a floor column).
-enum class Strategy : std::uint8_t { Greedy, Slope, Step, Reserve };
+enum class Strategy : std::uint8_t { Greedy,
+                                     Slope,
+                                     Step,
+                                     Reserve };
 const char* strategyName(Strategy s);
 Strategy parseStrategy(const std::string& name);  // throws InputError
 constexpr std::array<Strategy, 3> kPaperStrategies{Strategy::Greedy, Strategy::Slope, Strategy::Step};
@@ -23,8 +26,8 @@ constexpr std::array<Strategy, 3> kPaperStrategies{Strategy::Greedy, Strategy::S
 /// One shape transition of one metamodule (a step of the inch-worm walk or the final seating).
 struct Action {
     int module = 0;
-    double begin = 0, end = 0;  // simulated seconds
-    Cell from, to;              // foot before and after
+    double begin = 0, end = 0;      // simulated seconds
+    Cell from, to;                  // foot before and after
     double forceX = 0, forceY = 0;  // the force vector it followed (Eq. 1); 0 for reserve
     bool seat = false;
 };
@@ -34,12 +37,12 @@ struct AssemblyResult {
     int collisions = 0;
     std::vector<int> moves;  // per metamodule
     double meanMoves = 0;
-    double seconds = 0;      // simulated time until the last seat or the deadlock
+    double seconds = 0;  // simulated time until the last seat or the deadlock
     std::vector<Action> actions;
-    std::vector<Seed> placed;  // seeds filled, in order
-    std::vector<std::array<Cell, 4>> cells;  // every metamodule's cells at the end
+    std::vector<Seed> placed;                                 // seeds filled, in order
+    std::vector<std::array<Cell, 4>> cells;                   // every metamodule's cells at the end
     std::vector<std::vector<std::array<Cell, 4>>> snapshots;  // every metamodule's cells each time a seed was filled
-    std::string reason;        // why a deadlock was declared
+    std::string reason;                                       // why a deadlock was declared
     /// reserve: the coordination rule's start configuration with the walks the run took as its
     /// inputs, a configuration file for `holon check rules/library/roombots_reserve.holon`.
     std::string coordination;

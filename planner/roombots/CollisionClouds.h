@@ -14,10 +14,11 @@
 namespace holon::planner::roombots {
 
 struct Transition {
-    enum class Kind : std::uint8_t { Step, Seat };
-    Kind kind;            // Step: the head lands facing down on the floor; Seat: any other posture
+    enum class Kind : std::uint8_t { Step,
+                                     Seat };
+    Kind kind;  // Step: the head lands facing down on the floor; Seat: any other posture
     Joints to;
-    double seconds;       // the slowest joint's travel (outer joints 2 s, swivel 3 s per turn, §III)
+    double seconds;           // the slowest joint's travel (outer joints 2 s, swivel 3 s per turn, §III)
     std::vector<Cell> cloud;  // relative to the foot at yaw 0, sorted
 };
 

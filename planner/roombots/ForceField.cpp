@@ -105,7 +105,8 @@ void ForceField::decide(int i) {
     for (const Body& o : bodies_) {
         const double d = planar(o.knownFoot, b.foot);
         if (&o == &b || o.placed || d <= 0 || d > kRange) continue;
-        const double alpha = strategy_ == Strategy::Step ? 1.0 : strategy_ == Strategy::Slope ? std::clamp((8 - d) / 4, 0.0, 1.0) : 0.0;
+        const double alpha = strategy_ == Strategy::Step ? 1.0 : strategy_ == Strategy::Slope ? std::clamp((8 - d) / 4, 0.0, 1.0)
+                                                                                              : 0.0;
         fx += alpha * (b.foot.x - o.knownFoot.x) / d, fy += alpha * (b.foot.y - o.knownFoot.y) / d;
     }
     const double norm = std::hypot(fx, fy);
@@ -146,7 +147,6 @@ void ForceField::decide(int i) {
     b.previousFoot = b.foot;
     start(i, *best, false, fx, fy);
 }
-
 
 /// The steps a metamodule standing so may take: onto a free floor connector, sweeping no known
 /// cell, and not onto an active seed it could not fill from the posture it would land in.

@@ -49,7 +49,7 @@ Mat3 turn(Vec3 u, double angle) {
     for (double& c : u) c /= n;
     const double c = std::cos(angle), s = std::sin(angle), t = 1 - c;
     const double x = u[0], y = u[1], z = u[2];
-    return {t * x * x + c,     t * x * y - s * z, t * x * z + s * y, t * x * y + s * z, t * y * y + c,
+    return {t * x * x + c, t * x * y - s * z, t * x * z + s * y, t * x * y + s * z, t * y * y + c,
             t * y * z - s * x, t * x * z - s * y, t * y * z + s * x, t * z * z + c};
 }
 
@@ -126,7 +126,9 @@ Metamodule::Metamodule(Coupling coupling) : coupling_(coupling), lock_(-1) {
         const Vec3 a = apply(c.frames[3], kDiagonal), b = apply(c.frames[4], kDiagonal), n = apply(c.frames[3], kMinusX);
         const double d = dot(a, b);
         const Vec3 axb{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-        const Coupling found = d < -2.5 ? Coupling::PAR : d > 0 ? Coupling::PER : dot(n, axb) > 0 ? Coupling::SRS : Coupling::SRZ;
+        const Coupling found = d < -2.5 ? Coupling::PAR : d > 0         ? Coupling::PER
+                                                      : dot(n, axb) > 0 ? Coupling::SRS
+                                                                        : Coupling::SRZ;
         if (found == coupling) return;
     }
     throw std::logic_error("no lock realises coupling " + std::string(couplingName(coupling)));

@@ -21,13 +21,20 @@ struct Cell {
 
 /// How the two RB modules are locked together (Fig. 3a), named by the relative orientation of the
 /// body-diagonal axes of the two connected hemispheres.
-enum class Coupling : std::uint8_t { PAR, PER, SRS, SRZ };
+enum class Coupling : std::uint8_t { PAR,
+                                     PER,
+                                     SRS,
+                                     SRZ };
 const char* couplingName(Coupling c);
 Coupling parseCoupling(const std::string& name);  // throws InputError
 constexpr std::array<Coupling, 4> kCouplings{Coupling::PAR, Coupling::PER, Coupling::SRS, Coupling::SRZ};
 
 /// The five shapes a four-cell chain can take (§IV-A b).
-enum class Shape : std::uint8_t { I, L, S, U, S3D };
+enum class Shape : std::uint8_t { I,
+                                  L,
+                                  S,
+                                  U,
+                                  S3D };
 const char* shapeName(Shape s);
 
 /// A joint setting, from the foot: outer joint 1 (0..2 x 120°), swivel 1 (0..3 x 90°), outer joint 2,

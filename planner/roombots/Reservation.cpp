@@ -51,7 +51,6 @@ int Reservation::walk(int seed, const Cell& start, const CellSet& blocked) {
     return actions == 0 ? -1 : static_cast<int>(actions);
 }
 
-
 /// How many postures a walk can stand in at the seed's foot (joint setting and yaw) change shape
 /// into the seed without sweeping `blocked`.
 int Reservation::seatings(int seed, const CellSet& blocked) const {
@@ -69,7 +68,7 @@ void Reservation::assignSeeds() {
         int pick = -1;
         for (std::size_t i = 0; i < bodies_.size(); ++i)
             if (!taken[i] && (pick < 0 || planar(bodies_[i].foot, setting_.recipe.seeds[s].cells[0]) <
-                                               planar(bodies_[pick].foot, setting_.recipe.seeds[s].cells[0]) - 1e-9))
+                                              planar(bodies_[pick].foot, setting_.recipe.seeds[s].cells[0]) - 1e-9))
                 pick = static_cast<int>(i);
         taken[pick] = true;
         bodies_[pick].seed = static_cast<int>(s);
@@ -147,7 +146,6 @@ std::vector<Move> Reservation::plan(int i, const CellSet& blocked) const {
     return {};
 }
 
-
 /// In seeding order, each metamodule plans its walk and starts when the coordination rule fires its
 /// start; a metamodule never starts before one earlier in the order.
 void Reservation::startWaiting() {
@@ -212,7 +210,6 @@ void Reservation::advance(int i) {
     path.erase(path.begin());
     start(i, m, m.transition->kind == Transition::Kind::Seat, 0, 0);
 }
-
 
 AssemblyResult assembleByReservation(const CloudTable& table, Coupling coupling, const Setting& setting, const AssemblyOptions& options) {
     Reservation r(table, coupling, setting);

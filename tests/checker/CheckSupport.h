@@ -1,10 +1,10 @@
 #pragma once
 // Running checks from tests: a system, a region, and the kept exploration.
 
+#include "TestSupport.h"
 #include "checker/Check.h"
 #include "checker/Trace.h"
 #include "rules/Error.h"
-#include "TestSupport.h"
 
 namespace holon::test {
 

@@ -2,8 +2,8 @@
 // every state counted once, each row's counts and masses those of its states, the representative
 // the smallest configuration of its component, rows largest first.
 
-#include "checker/ComponentTable.h"
 #include "CheckSupport.h"
+#include "checker/ComponentTable.h"
 
 using namespace holon;
 

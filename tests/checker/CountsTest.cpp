@@ -3,9 +3,9 @@
 // union-find) on square regions up to 4x4 and small hex and cubic regions.
 
 #include "BruteForce.h"
-#include <set>
 #include "CheckSupport.h"
 #include "checker/Graph.h"
+#include <set>
 
 using namespace holon;
 
@@ -99,11 +99,7 @@ TEST_CASE("successors and legality on words give the graph the cell-by-cell path
     struct Case {
         std::string stem, spec, start;  // start: a picture in examples/hex/checker, else random
     };
-    const std::vector<Case> cases = {{"pixel", "square:4x3", ""},           {"general1", "square:3x3", ""},
-                                     {"general_lock2", "square:3x2", ""},      {"planner_intermediate", "square:3x3", ""},
-                                     {"planner_general2", "square:3x2", ""},   {"roombots_reserve", "square:4x3", ""},
-                                     {"hex_holes", "hex:r4", "neck.txt"},      {"hex_collapse", "hex:r3", "blob.txt"},
-                                     {"pixel", "cubic:3x2x2", ""}};
+    const std::vector<Case> cases = {{"pixel", "square:4x3", ""}, {"general1", "square:3x3", ""}, {"general_lock2", "square:3x2", ""}, {"planner_intermediate", "square:3x3", ""}, {"planner_general2", "square:3x2", ""}, {"roombots_reserve", "square:4x3", ""}, {"hex_holes", "hex:r4", "neck.txt"}, {"hex_collapse", "hex:r3", "blob.txt"}, {"pixel", "cubic:3x2x2", ""}};
     for (const auto& [stem, spec, start] : cases) {
         CAPTURE(stem);
         CAPTURE(spec);

@@ -2,10 +2,10 @@
 // the same start in both designs, configurations and transitions written by state names, and the
 // set differences counted. A design compared with itself has no difference.
 
+#include "TestSupport.h"
 #include "checker/Diff.h"
 #include "rules/Engine.h"
 #include "rules/Parser.h"
-#include "TestSupport.h"
 
 #include <set>
 

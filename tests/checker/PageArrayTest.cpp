@@ -14,12 +14,12 @@ TEST_CASE("a page array grows without losing elements, and new elements are zero
     a.resize(1000);
     for (std::size_t i = 0; i < a.size(); ++i) CHECK(a[i] == 0u);
     for (std::size_t i = 0; i < a.size(); ++i) a[i] = static_cast<std::uint32_t>(i + 1);
-    a.resize(3'000'000); // past 2 MiB: remapped, huge pages asked for
+    a.resize(3'000'000);  // past 2 MiB: remapped, huge pages asked for
     CHECK(a[999] == 1000u);
     CHECK(a[1000] == 0u);
     CHECK(a[2'999'999] == 0u);
     a[2'999'999] = 7;
-    a.resize(10); // shrink, then grow over the old elements: they must read as zero
+    a.resize(10);  // shrink, then grow over the old elements: they must read as zero
     a.resize(3'000'000);
     CHECK(a[9] == 10u);
     CHECK(a[10] == 0u);

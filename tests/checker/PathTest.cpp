@@ -3,9 +3,9 @@
 // configuration (and to the goal) has exactly the interpreter's BFS distance and replays; a
 // configuration outside the reachable set is "unreachable", and a limit makes the answer undecided.
 
+#include "TestSupport.h"
 #include "checker/Path.h"
 #include "rules/Engine.h"
-#include "TestSupport.h"
 
 #include <map>
 #include <random>

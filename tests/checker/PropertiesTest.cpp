@@ -240,7 +240,7 @@ TEST_CASE("hex holes: deletion as the paper words it breaks a neighbouring hole,
     auto shared = test::checkFrom(broken("hex_delete_shared"), "hex:r5", kTwoHoles, "");
     const auto& holes = shared.property("holes");
     REQUIRE(holes.verdict == Verdict::Violated);
-    CHECK(holes.trace->steps.size() == 4);  // two moves toward the surface, one deletion
+    CHECK(holes.trace->steps.size() == 4);   // two moves toward the surface, one deletion
     CHECK(holes.trace->marked.size() == 1);  // the neighbouring hole's cell that lost its shepherd
     CHECK(holes.trace->description.find("crossed cells show where") != std::string::npos);
     shared.replayAll();
@@ -271,10 +271,12 @@ TEST_CASE("hex delete: every choice of seven shepherds keeps the holes whole, an
 }
 
 TEST_CASE("hex growth (seed 003 §IV-E): one counting rule makes whole holes and keeps the module count, and without its guards it does not") {
-    const char* blob = "    . . . . .\n   . . . . . .\n  . . . . . M .\n . . . . M M M .\n. . . . M M M M .\n . . M M M M M .\n"
-                       "  . . M M M M .\n   . M . . M .\n    . . . . .\n";
-    const char* everywhere = "    x x x x x\n   x x x x x x\n  x x x x x x x\n x x x x x x x x\nx x x x x x x x x\n x x x x x x x x\n"
-                             "  x x x x x x x\n   x x x x x x\n    x x x x x\n";
+    const char* blob =
+        "    . . . . .\n   . . . . . .\n  . . . . . M .\n . . . . M M M .\n. . . . M M M M .\n . . M M M M M .\n"
+        "  . . M M M M .\n   . M . . M .\n    . . . . .\n";
+    const char* everywhere =
+        "    x x x x x\n   x x x x x x\n  x x x x x x x\n x x x x x x x x\nx x x x x x x x x\n x x x x x x x x\n"
+        "  x x x x x x x\n   x x x x x x\n    x x x x x\n";
     auto grown = test::checkFrom(rules::librarySystem("hex_growth"), "hex:r4", blob, everywhere, {}, {"holes", "mass_conservation"});
     CHECK(grown.report.stats.states == 4);  // three disks hold exactly 12 modules; each creation ends the others
     CHECK(grown.property("holes").verdict == Verdict::Holds);
@@ -351,8 +353,9 @@ TEST_CASE("hex collapse (seed 003 §IV-F): every collapse keeps the mass connect
     CHECK(c.report.stats.states > 100000);  // every gravity, every order
     CHECK(c.property("one_mass").verdict == Verdict::Holds);
     CHECK(c.property("mass_conservation").verdict == Verdict::Holds);
-    const char* holeAndBlob = "    . . . . .\n   . . . . . .\n  . . M M M . .\n . . M H H M M .\n. . M H C H M M .\n . . M H H M M .\n"
-                              "  . M M M M . .\n   . . . . . .\n    . . . . .\n";
+    const char* holeAndBlob =
+        "    . . . . .\n   . . . . . .\n  . . M M M . .\n . . M H H M M .\n. . M H C H M M .\n . . M H H M M .\n"
+        "  . M M M M . .\n   . . . . . .\n    . . . . .\n";
     auto h = test::checkFrom(rules::librarySystem("hex_collapse"), "hex:r4", holeAndBlob, "");
     CHECK(h.property("holes").verdict == Verdict::Holds);
     CHECK(h.property("one_mass").verdict == Verdict::Holds);

@@ -1,10 +1,10 @@
 // Rule drawings: every orientation of every rule of the library is drawn as an example firing (an
 // enabled instance found by planting its left side), one panel each, with the guard in the title.
 
+#include "TestSupport.h"
 #include "checker/RuleDrawing.h"
 #include "rules/Printer.h"
 #include "rules/Svg.h"
-#include "TestSupport.h"
 
 using namespace holon;
 

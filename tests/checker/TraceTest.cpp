@@ -42,7 +42,7 @@ int roundTrip(const test::Checked& c) {
             const rules::Configuration read = rules::configFromItf(*c.world.in, itf, k, &named);
             CHECK(read.cells == p.trace->steps[k].cells);
             CHECK(read.inputs == c.kept.engine->inputs());
-            CHECK(named == all); // every input is in the trace, even one that holds nowhere
+            CHECK(named == all);  // every input is in the trace, even one that holds nowhere
         }
         CHECK(rules::configFromItf(*c.world.in, itf, std::nullopt).cells == p.trace->steps.back().cells);
     }
@@ -54,7 +54,7 @@ const char* kTwoHoles =
     "M M H C H M H H M M M\n M M H H M M M M M M\n  M M M M M M M M M\n   M M M M M M M M\n    M M M M M M "
     "M\n     M M M M M M\n";
 
-} // namespace
+}  // namespace
 
 TEST_CASE("ITF round trip: a system with several fields and a pointer, state by state") {
     // planner_general1 without the deletion guard: res and label on every cell, parent on P cells,
@@ -155,7 +155,7 @@ TEST_CASE("ASCII: a state without a one-character name gets a character the lege
         CHECK(used.insert(ch).second);
         CHECK(text.find(std::string(1, ch) + " = " + c.world.model->alphabet().name(v)) != std::string::npos);
     }
-    CHECK(key.chars.size() >= 3); // D&F, D&U and a D&P with its pointer at least
+    CHECK(key.chars.size() >= 3);  // D&F, D&U and a D&P with its pointer at least
     CHECK(text.find("-- input target:") != std::string::npos);
     // States that have one-character names need no legend, and keep their names.
     auto g = test::checkAll(broken("general1_leaky"), "square:3x1");
@@ -226,7 +226,7 @@ TEST_CASE("SVG and ASCII on hex and cubic regions: every cell drawn, pointers al
     t.steps.push_back({cfg.cells, -1});
     rules::Engine engine(*w.model, w.region, cfg.inputs);
     const std::string cubic = checker::drawTraceSvg(t, engine, "lock along z");
-    CHECK(cubic.find("r=\"1.2\"") != std::string::npos); // the dot of +z
+    CHECK(cubic.find("r=\"1.2\"") != std::string::npos);  // the dot of +z
     CHECK(cubic.find(">z=1</text>") != std::string::npos);
     const std::string ascii = checker::drawTraceAscii(t, engine);
     CHECK(ascii.find("z=0") != std::string::npos);

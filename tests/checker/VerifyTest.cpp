@@ -190,7 +190,8 @@ TEST_CASE("reaches along adjacency: a guarded deletion keeps every U joined to a
         test::World w(test::parse(std::string(R"(system s
 field label: U | F
 rule spread: F U => F F
-rule drop: F => _)") + (guarded ? " if no nbr U" : "") + R"(
+rule drop: F => _)") + (guarded ? " if no nbr U" : "") +
+                                  R"(
 invariant joined: reaches(U, nbr, F)
 )"),
                       "square:3x3");

@@ -3,10 +3,10 @@
 // the instances that match one by one, and the constraints decided on words (outright, from a
 // legal parent by a fixed change, and by the incremental evaluator) agree with Engine::legal.
 
+#include "TestSupport.h"
 #include "checker/Evaluator.h"
 #include "checker/WordConstraints.h"
 #include "checker/WordMatcher.h"
-#include "TestSupport.h"
 
 #include <random>
 

@@ -44,8 +44,8 @@ private:
     /// One ensemble: the region the interpreter sees it as, and the mirror the replay keeps.
     struct Mirror {
         const rules::Region* region = nullptr;
-        std::unique_ptr<rules::Region> ownRegion;    // a compiled engine's board as a box region
-        std::vector<std::int64_t> boardOf;          // region cell -> board index (compiled engines)
+        std::unique_ptr<rules::Region> ownRegion;  // a compiled engine's board as a box region
+        std::vector<std::int64_t> boardOf;         // region cell -> board index (compiled engines)
         const planner::BoxEngine::Value* cells = nullptr;
         const rules::Configuration* configuration = nullptr;
         std::vector<rules::CellValue> state;

@@ -55,18 +55,15 @@ const std::vector<Backend> kBackends = {
     {"U/P/F planner, square", {"planner_general2"}, 1, 1, [](auto& c) { plan("planner_general2", 2, "box:4x4", "T:4", c); }},
     {"U/P/F planner, cubic", {"planner_intermediate"}, 1, 1, [](auto& c) { plan("planner_intermediate", 3, "box:3x3x2", "box:2x3x3", c); }},
     {"hex sculpting, seed 003", {"hex_holes", "hex_delete", "hex_collapse", "hex_growth"}, 400, 100, [](auto& c) { sculpt(false, c); }},
-    {"hex sculpting, holon's improvements", {"hex_holes", "hex_delete", "hex_collapse", "hex_growth", "hex_growth_flexible", "hex_migrate"}, 400, 100,
-     [](auto& c) { sculpt(true, c); }},
-    {"hex disks", {"planner_general2", "hex_pivot"}, 50, 50,
-     [](auto& c) {
+    {"hex sculpting, holon's improvements", {"hex_holes", "hex_delete", "hex_collapse", "hex_growth", "hex_growth_flexible", "hex_migrate"}, 400, 100, [](auto& c) { sculpt(true, c); }},
+    {"hex disks", {"planner_general2", "hex_pivot"}, 50, 50, [](auto& c) {
          std::unique_ptr<planner::hex::DiskMetamodules> disks;
          plan("planner_general2", 2, "box:3x2", "box:2x3", c, [&](const planner::Problem& p, const planner::Execution& ex, std::int64_t anchor, int shape, const auto* old) {
              if (!disks) disks = std::make_unique<planner::hex::DiskMetamodules>(p);
              REQUIRE_MESSAGE(disks->fired(anchor, shape, old, ex.cells()), disks->failure());
          });
      }},
-    {"Roombots coordination", {"roombots_reserve"}, 1, 1,
-     [](auto&) {
+    {"Roombots coordination", {"roombots_reserve"}, 1, 1, [](auto&) {
          const auto table = planner::roombots::CloudTable::load(planner::roombots::CloudTable::defaultPath());
          for (const auto& setting : planner::roombots::loadScenario("chair", 1, 1))
              REQUIRE(planner::roombots::assemble(table, planner::roombots::Coupling::PAR, planner::roombots::Strategy::Reserve, setting).completed);

@@ -76,7 +76,10 @@ TEST_CASE("every motion sequence of the hex disk design holds whatever the neigh
                                 for (int x = 0; x < 4; ++x) {
                                     const Vec slot{x, y, 0};
                                     const int other = round == 0 ? 0 : 1 + static_cast<int>(random.below(units));
-                                    const int before = slot == a ? a0 : slot == b ? b0 : other, after = slot == a ? a1 : slot == b ? b1 : other;
+                                    const int before = slot == a ? a0 : slot == b ? b0
+                                                                                  : other,
+                                              after = slot == a ? a1 : slot == b ? b1
+                                                                                 : other;
                                     for (Vec c : design.layout(before)) start.push_back(Vec{s * x, s * y, 0} + c);
                                     for (Vec c : design.layout(after)) end.push_back(Vec{s * x, s * y, 0} + c);
                                 }

@@ -6,8 +6,8 @@
 #include "planner/Monitor.h"
 
 #include <filesystem>
-#include <map>
 #include <fstream>
+#include <map>
 
 namespace holon::test {
 

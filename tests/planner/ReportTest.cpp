@@ -8,9 +8,9 @@
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 
+#include "rules/Parser.h"
 #include <csignal>
 #include <filesystem>
-#include "rules/Parser.h"
 
 #include <fstream>
 #include <nlohmann/json.hpp>

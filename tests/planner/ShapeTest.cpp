@@ -3,8 +3,8 @@
 #include "planner/Shape.h"
 #include "rules/Error.h"
 
-#include <doctest/doctest.h>
 #include <algorithm>
+#include <doctest/doctest.h>
 #include <filesystem>
 #include <fstream>
 

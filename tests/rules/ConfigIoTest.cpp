@@ -1,7 +1,7 @@
 // Configuration formats: JSON and ASCII art round trips, and clear errors for bad input.
 
-#include "rules/Error.h"
 #include "TestSupport.h"
+#include "rules/Error.h"
 
 using namespace holon;
 using test::World;

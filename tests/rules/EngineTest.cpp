@@ -3,8 +3,8 @@
 // and every constraint, goal and property evaluates the same. The matcher that tries the shapes
 // cell by cell agrees with the one that tries the instances one by one.
 
-#include "rules/Engine.h"
 #include "TestSupport.h"
+#include "rules/Engine.h"
 
 #include <random>
 

@@ -2,11 +2,11 @@
 // raw bytes, huge and empty files, deeply nested JSON. Each must end in located errors of bounded
 // size, never a crash, a hang or a flood. The inputs are generated here, not committed.
 
+#include "TestSupport.h"
 #include "rules/Engine.h"
 #include "rules/Error.h"
 #include "rules/Escape.h"
 #include "rules/Printer.h"
-#include "TestSupport.h"
 
 #include <chrono>
 #include <filesystem>
@@ -162,9 +162,9 @@ TEST_CASE("front-end messages: multiplication, rule size, end of file, declared 
 
     // A name declared twice is one error; the declaration's other names are still declared.
     for (const char* text : {"system s\nfield label: A | B\nfield label: C | D\nrule r: C => D\nrule q: A => B\n",
-                                    "system s\nfield label: A | A | B\nrule r: A => B\n",
-                                    "system s\ninput t, t, u\nfield label: A | B\nrule r: A&u => B\n",
-                                    "system s\nfield label: A | B\nrule r: A => B\nrule r: B => A if some nbr B\nrule q: A => B\n"}) {
+                             "system s\nfield label: A | A | B\nrule r: A => B\n",
+                             "system s\ninput t, t, u\nfield label: A | B\nrule r: A&u => B\n",
+                             "system s\nfield label: A | B\nrule r: A => B\nrule r: B => A if some nbr B\nrule q: A => B\n"}) {
         CAPTURE(text);
         parse(text, &d);
         CHECK(d.errorCount() == 1);

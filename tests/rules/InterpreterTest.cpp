@@ -82,7 +82,8 @@ invariant tree: reaches(P, parent, F)
 invariant shape: connected and connected(F) and count(P) == 2 and mass == 4
 invariant small: connected and count(#) == 2 and all(# | _) and no(P)
 invariant joined: connected
-)"), "square:4x1");
+)"),
+            "square:4x1");
     auto holds = [&](const char* name, const rules::Configuration& c) { return w.in->holds(w.system.property(name)->exprs[0], c); };
     auto c = w.in->empty();
     auto set = [&](int x, const std::string& v) { c.cells[w.region.indexOf({x, 0, 0})] = static_cast<rules::CellValue>(w.value(v)); };
@@ -105,7 +106,8 @@ field label: U | P | F
 field parent: dir if P
 rule r: U => F
 invariant joined: reaches(U, nbr, P|F)
-)"), "square:5x1");
+)"),
+            "square:5x1");
     const rules::Expr& joined = w.system.property("joined")->exprs[0];
     auto c = w.in->empty();
     auto set = [&](int x, const std::string& v) { c.cells[w.region.indexOf({x, 0, 0})] = static_cast<rules::CellValue>(w.value(v)); };
@@ -133,7 +135,8 @@ field parent: dir if P
 rule r: U => F
 invariant pointed: all(F: some nbr P&parent=@0)
 invariant lonely: count(U: no nbr #) == 1 and some(F: count nbr U == 2) and no(P: no nbr #)
-)"), "square:6x1");
+)"),
+            "square:6x1");
     auto holds = [&](const char* name, const rules::Configuration& c) { return w.in->holds(w.system.property(name)->exprs[0], c); };
     auto c = w.in->empty();
     auto set = [&](int x, const std::string& v) { c.cells[w.region.indexOf({x, 0, 0})] = static_cast<rules::CellValue>(w.value(v)); };

@@ -1,9 +1,9 @@
 // Print -> re-parse round trips: every library file and every valid golden file re-parses from its
 // printed form to an equal IR, and printing is a fixed point.
 
+#include "TestSupport.h"
 #include "rules/Library.h"
 #include "rules/Printer.h"
-#include "TestSupport.h"
 
 #include <filesystem>
 

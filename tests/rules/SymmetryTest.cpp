@@ -22,7 +22,7 @@ int instances(const rules::System& s, rules::LatticeKind kind) {
     return static_cast<int>(rules::Model(s, rules::Lattice::get(kind)).shapes().size());
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("a one-sided template has one orientation per symmetry: 1, the rotations, or twice as many") {
     // A module slides along +x with a wall below it: chiral on the square lattice.
@@ -63,18 +63,20 @@ rule pair: F _ => F F
     }
 }
 
-TEST_CASE("a guard that treats mirrored cells alike merges the mirrored orientation, whatever the conjuncts' "
-          "order") {
+TEST_CASE(
+    "a guard that treats mirrored cells alike merges the mirrored orientation, whatever the conjuncts' "
+    "order") {
     // Cells @2 and @3 are mirror images in the x axis; the guard asks the same of both, in index
     // order, which the mirror reverses.
-    const rules::System s = test::parse("system t\nlattice square2d\nstates M\n"
-                                        "rule push: M@(0,0) _@(1,0) #@(0,1) #@(0,-1) => _ @0 * * if count "
-                                        "nbr@2 # == 1 and count nbr@3 # == 1\n"
-                                        "rule lean: M@(0,0) _@(1,0) #@(0,1) #@(0,-1) => _ @0 * * if count "
-                                        "nbr@2 # == 1 and count nbr@3 # == 2\n");
+    const rules::System s = test::parse(
+        "system t\nlattice square2d\nstates M\n"
+        "rule push: M@(0,0) _@(1,0) #@(0,1) #@(0,-1) => _ @0 * * if count "
+        "nbr@2 # == 1 and count nbr@3 # == 1\n"
+        "rule lean: M@(0,0) _@(1,0) #@(0,1) #@(0,-1) => _ @0 * * if count "
+        "nbr@2 # == 1 and count nbr@3 # == 2\n");
     const rules::Model m(s, rules::Lattice::get(rules::LatticeKind::Square2D));
     CHECK(m.shapeCount(0) == 4);
-    CHECK(m.shapeCount(1) == 8); // asks different things of the two sides: chiral
+    CHECK(m.shapeCount(1) == 8);  // asks different things of the two sides: chiral
 }
 
 TEST_CASE("sliding_cube slides with a wall on either side") {
@@ -107,7 +109,7 @@ TEST_CASE("rotations claim their rewrites before reflections: a mirror-symmetric
     REQUIRE(m.rules().size() == 2);
     CHECK(m.shapeCount(0) == 6);
     CHECK(m.shapeCount(1) == 6);
-    CHECK(m.duplicates().size() == 1); // the reverse repeats the rule; validate() does not warn about that
+    CHECK(m.duplicates().size() == 1);  // the reverse repeats the rule; validate() does not warn about that
 }
 
 TEST_CASE(
