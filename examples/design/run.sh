@@ -33,10 +33,13 @@ step 3 1 check $d/tromino_v1.holon --region square:4x4 --from $d/start.txt \
 # 5. The fix, what it changed, and the check again; whether the design is complete.
 step 5 1 diff $d/tromino_v1.holon $d/tromino.holon --region square:4x4 --from $d/start.txt
 step 5 0 check $d/tromino.holon --region square:4x4 --from $d/start.txt --components
+step 5 0 check $d/tromino.holon --region square:4x4 --from "$out/counterexample.itf.json#0"
+step 5 1 check $d/tromino.holon --region square:4x4 --all --components
 # 6. The invariant proved for every configuration of the region (and refuted for the first version).
 step 6 1 verify $d/tromino_v1.holon --region square:4x4
 step 6 0 verify $d/tromino.holon --region square:4x4
 # 7. How to get from the start to the target.
 step 7 0 path $d/tromino.holon --region square:4x4 --from $d/start.txt --to $d/target.txt --svg "$out/path.svg"
+step 7 0 path $d/tromino.holon --region square:4x4 --from $d/start.txt --to $d/target.txt --json
 echo "(pictures and the trace in $out/)"
 exit $failed
