@@ -27,6 +27,7 @@ step() {
 # 1-2. The generators of the first version, and what holon reads in them.
 step 2 0 rules $d/tromino_v1.holon
 step 2 0 rules $d/tromino_v1.holon --json
+step 2 0 rules $d/tromino_v1.holon --svg "$out/rules"
 # 3. The checker finds the flaw: the invariant 'together' fails after one step.
 step 3 1 check $d/tromino_v1.holon --region square:4x4 --from $d/start.txt \
     --svg "$out/counterexample.svg" --trace-out "$out/counterexample.itf.json"

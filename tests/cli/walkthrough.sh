@@ -15,6 +15,7 @@ failed=0
 # The verdicts, in the order of the steps.
 for line in \
     "slide                 3 cells  8" \
+    "drawings     2 rules on square2d in $out/rules/" \
     "violated after 1 step: 'connected' is false" \
     "-- 1: slide at (1,0)" \
     "  A: 420 configurations, 1680 transitions; only in A: 368 configurations, 1512 transitions" \
