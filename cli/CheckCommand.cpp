@@ -7,6 +7,7 @@
 #include "checker/Draw.h"
 #include "checker/Graph.h"
 #include "cli/Commands.h"
+#include "cli/ExploreLimits.h"
 #include "cli/Inputs.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
@@ -27,23 +28,8 @@ struct CheckArgs {
     std::string file, region, traceOut, svg, dot;
     std::vector<std::string> from, inputs, properties, noWarnings;
     bool all = false, json = false, components = false;
-    std::uint64_t maxStates = 50'000'000;
-    double timeout = 0;
-    std::uint64_t memoryMiB = kDefaultMemoryMiB;
-    int threads = 2;
+    ExploreLimitArgs limits;
 };
-
-/// The option that sets a limit, for "raise --memory".
-std::string limitOption(checker::StopReason r) {
-    switch (r) {
-    case checker::StopReason::MaxStates: return "--max-states";
-    case checker::StopReason::Timeout: return "--timeout";
-    case checker::StopReason::Memory: return "--memory";
-    case checker::StopReason::Finished:
-    case checker::StopReason::Decided: break;
-    }
-    return "";
-}
 
 /// `--components`: the graph's components as a table, whether the design is complete on the region
 /// (one component per conserved amount), and the representatives drawn; JSON when `json` is given.
@@ -118,10 +104,7 @@ int run(const CheckArgs& a) {
     if (!a.dot.empty()) dotOut.emplace("--dot", a.dot);
 
     checker::CheckOptions options;
-    options.limits.maxStates = a.maxStates;
-    options.limits.timeoutSeconds = a.timeout;
-    options.limits.memoryBytes = a.memoryMiB << 20;
-    options.limits.threads = std::max(1, a.threads);
+    options.limits = a.limits.limits();
     options.all = a.all;
     options.properties = a.properties;
     if (a.all && !a.from.empty()) throw InputError("give either --all or --from, not both");
@@ -224,10 +207,7 @@ Run addCheckCommand(CLI::App& app) {
     sub->add_option("--from", a->from, "initial configuration (JSON or ASCII art); repeatable");
     sub->add_option("--input", a->inputs, "set an input from an ASCII mask: NAME=FILE (any character but '.' marks a cell)");
     sub->add_option("--property", a->properties, "check only this property (repeatable); 'deadlock' and 'goal_reachable' are built in");
-    sub->add_option("--max-states", a->maxStates, "stop after this many states (default 50000000)")->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
-    sub->add_option("--timeout", a->timeout, "stop after this many seconds (default: no limit)")->check(secondsValidator());
-    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB (default 16384)")->check(memoryValidator());
-    sub->add_option("--threads", a->threads, "worker threads (default 2)")->check(threadsValidator());
+    addExploreLimits(sub, a->limits);
     sub->add_flag("--json", a->json, "print the report as JSON");
     sub->add_flag("--components", a->components, "list the reconfiguration graph's components (sizes, metamodules, mass, a drawn representative) and say whether the design is complete");
     sub->add_option("--trace-out", a->traceOut, "write the counterexample as an ITF JSON trace");

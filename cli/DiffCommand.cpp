@@ -6,6 +6,7 @@
 #include "checker/Diff.h"
 #include "checker/Draw.h"
 #include "cli/Commands.h"
+#include "cli/ExploreLimits.h"
 #include "cli/Inputs.h"
 #include "rules/OutputFile.h"
 
@@ -19,10 +20,7 @@ struct DiffArgs {
     std::string a, b, region, svg;
     std::vector<std::string> from, inputs, noWarnings;
     bool all = false, json = false;
-    std::uint64_t maxStates = 50'000'000;
-    double timeout = 0;
-    std::uint64_t memoryMiB = kDefaultMemoryMiB;
-    int threads = 2;
+    ExploreLimitArgs limits;
 };
 
 /// One design on the region, explored from the starts (read with its own state names) or --all.
@@ -47,10 +45,7 @@ std::unique_ptr<Side> explore(const DiffArgs& a, const std::string& file, const 
     const auto starts = readStarts(*side->in, a.from, a.inputs, &inputs);
     side->engine = std::make_unique<rules::Engine>(*side->model, region, starts.empty() ? inputs : starts.front().inputs);
     checker::Explorer::Options options;
-    options.limits.maxStates = a.maxStates;
-    options.limits.timeoutSeconds = a.timeout;
-    options.limits.memoryBytes = (a.memoryMiB << 20) / 2;  // two designs share --memory
-    options.limits.threads = a.threads;
+    options.limits = a.limits.limits(2);  // two designs share --memory
     side->explorer = std::make_unique<checker::Explorer>(*side->engine, options);
     if (a.all) side->explorer->addAllLegal();
     for (const auto& s : starts) side->explorer->addInitial(s.cells.data());
@@ -128,10 +123,7 @@ Run addDiffCommand(CLI::App& app) {
     sub->add_flag("--all", a->all, "compare on every legal configuration of the region");
     sub->add_option("--from", a->from, "start configuration for both designs (JSON or ASCII art); repeatable");
     sub->add_option("--input", a->inputs, "set an input from an ASCII mask: NAME=FILE");
-    sub->add_option("--max-states", a->maxStates, "stop each exploration after this many states (default 50000000)")->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
-    sub->add_option("--timeout", a->timeout, "stop each exploration after this many seconds (default: no limit)")->check(secondsValidator());
-    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB for both explorations (default 16384)")->check(memoryValidator());
-    sub->add_option("--threads", a->threads, "worker threads (default 2)")->check(threadsValidator());
+    addExploreLimits(sub, a->limits, "each exploration");
     sub->add_flag("--json", a->json, "print the counts and witnesses as JSON");
     sub->add_option("--svg", a->svg, "draw the nearest differing transition as SVG");
     sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");

@@ -6,6 +6,7 @@
 #include "checker/Draw.h"
 #include "checker/Path.h"
 #include "cli/Commands.h"
+#include "cli/ExploreLimits.h"
 #include "cli/Inputs.h"
 #include "rules/OutputFile.h"
 
@@ -21,10 +22,7 @@ struct PathArgs {
     std::string file, region, from, to, traceOut, svg;
     std::vector<std::string> inputs, noWarnings;
     bool goal = false, json = false;
-    std::uint64_t maxStates = 50'000'000;
-    double timeout = 0;
-    std::uint64_t memoryMiB = kDefaultMemoryMiB;
-    int threads = 2;
+    ExploreLimitArgs limits;
 };
 
 std::string outcomeName(checker::PathOutcome o) {
@@ -54,10 +52,7 @@ int run(const PathArgs& a) {
         if (query.to->inputs != query.from.inputs)
             throw InputError("--to " + a.to + ": its inputs differ from those of --from " + a.from + "; a path never changes an input");
     }
-    query.limits.maxStates = a.maxStates;
-    query.limits.timeoutSeconds = a.timeout;
-    query.limits.memoryBytes = a.memoryMiB << 20;
-    query.limits.threads = a.threads;
+    query.limits = a.limits.limits();
     const bool terminal = isatty(2) && !a.json;
     if (terminal)
         query.onProgress = [](const checker::ExploreStats& s) {
@@ -101,8 +96,7 @@ int run(const PathArgs& a) {
         break;
     case checker::PathOutcome::Undecided:
         std::cout << "  undecided: stopped by " << checker::stopReasonName(s.stopped) << " after " << s.states << " states (none within " << checker::stepCount(static_cast<std::size_t>(s.depth))
-                  << "); raise " << (s.stopped == checker::StopReason::Timeout ? "--timeout" : s.stopped == checker::StopReason::Memory ? "--memory"
-                                                                                                                                        : "--max-states")
+                  << "); raise " << limitOption(s.stopped)
                   << " to search further\n";
         break;
     }
@@ -120,10 +114,7 @@ Run addPathCommand(CLI::App& app) {
     sub->add_option("--to", a->to, "target configuration (JSON, ITF#N or ASCII art)");
     sub->add_flag("--goal", a->goal, "go to the nearest configuration where the system's goal holds");
     sub->add_option("--input", a->inputs, "set an input from an ASCII mask: NAME=FILE (any character but '.' marks a cell)");
-    sub->add_option("--max-states", a->maxStates, "stop after this many states (default 50000000)")->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
-    sub->add_option("--timeout", a->timeout, "stop after this many seconds (default: no limit)")->check(secondsValidator());
-    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB (default 16384)")->check(memoryValidator());
-    sub->add_option("--threads", a->threads, "worker threads (default 2)")->check(threadsValidator());
+    addExploreLimits(sub, a->limits, "the search");
     sub->add_flag("--json", a->json, "print the result as JSON (length: the number of rule steps)");
     sub->add_option("--trace-out", a->traceOut, "write the path as an ITF JSON trace");
     sub->add_option("--svg", a->svg, "draw the path as SVG");
