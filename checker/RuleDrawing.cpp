@@ -35,7 +35,10 @@ std::pair<rules::Region, rules::Vec> regionAround(const rules::Lattice& lattice,
 /// A panel: the example firing of one orientation, or its left side when none was found.
 std::string drawOrientation(const rules::Model& model, int shape, int orientation, int orientations) {
     const rules::RuleShape& rs = model.shapes()[shape];
-    const auto [region, anchor] = regionAround(model.lattice(), rs.offsets);
+    // Not a structured binding: clang 14 does not let a lambda capture one.
+    const std::pair<rules::Region, rules::Vec> around = regionAround(model.lattice(), rs.offsets);
+    const rules::Region& region = around.first;
+    const rules::Vec anchor = around.second;
     const rules::System& system = model.system();
     const int alphabet = model.alphabet().size();
     std::mt19937 rng(static_cast<unsigned>(1000 + shape));
