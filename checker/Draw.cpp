@@ -318,7 +318,7 @@ std::string valueColour(const rules::Field& field, int value) {
     return kPalette[slot];
 }
 
-std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::string& title) {
+rules::SvgPicture drawTrace(const Trace& t, const rules::Engine& e, const std::string& title) {
     const rules::Region& r = e.region();
     const rules::Lattice& lattice = r.lattice();
     const rules::System& system = systemOf(e);
@@ -630,7 +630,7 @@ std::string drawTraceSvg(const Trace& t, const rules::Engine& e, const std::stri
                   {{"stroke", kInputColour[n % 8]}, {"stroke-width", 1.5}, {"stroke-opacity", 0.45}})
             .close("pattern");
     }
-    return body.document(width, height, {{"font-family", "sans-serif"}, {"font-size", 11}}, &defs);
+    return body.picture(width, height, {{"font-family", "sans-serif"}, {"font-size", 11}}, &defs);
 }
 
 }  // namespace holon::checker

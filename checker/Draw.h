@@ -2,6 +2,7 @@
 // Pictures of configurations and traces for a person: ASCII for the terminal, SVG for a file.
 
 #include "checker/Trace.h"
+#include "rules/Svg.h"
 
 #include <functional>
 #include <map>
@@ -40,6 +41,9 @@ std::string valueColour(const rules::Field& field, int value);
 /// red, the rule's other cells (context, blocking) dashed, marked cells crossed; each input as an
 /// outline of its cells (shaded where empty); titles wrapped to the picture; a legend naming every
 /// value shown and every input. 3D regions drawn as z slices.
-std::string drawTraceSvg(const Trace& trace, const rules::Engine& engine, const std::string& title);
+rules::SvgPicture drawTrace(const Trace& trace, const rules::Engine& engine, const std::string& title);
+inline std::string drawTraceSvg(const Trace& trace, const rules::Engine& engine, const std::string& title) {
+    return drawTrace(trace, engine, title).document;
+}
 
 }  // namespace holon::checker

@@ -11,7 +11,6 @@
 #include "rules/Svg.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <random>
 
 namespace holon::checker {
@@ -33,7 +32,7 @@ std::pair<rules::Region, rules::Vec> regionAround(const rules::Lattice& lattice,
 }
 
 /// A panel: the example firing of one orientation, or its left side when none was found.
-std::string drawOrientation(const rules::Model& model, int shape, int orientation, int orientations) {
+rules::SvgPicture drawOrientation(const rules::Model& model, int shape, int orientation, int orientations) {
     const rules::RuleShape& rs = model.shapes()[shape];
     // Not a structured binding: clang 14 does not let a lambda capture one.
     const std::pair<rules::Region, rules::Vec> around = regionAround(model.lattice(), rs.offsets);
@@ -83,21 +82,12 @@ std::string drawOrientation(const rules::Model& model, int shape, int orientatio
             CellValue saved[rules::Engine::kMaxCells];
             engine.apply(cells.data(), instance, saved);
             t.steps.push_back({cells, instance});
-            return drawTraceSvg(t, engine, head);
+            return drawTrace(t, engine, head);
         }
     }
     rules::Svg none;
     none.text(10, 22, head + ": no example found whose guard holds", {{"font-size", 14}, {"font-weight", "bold"}});
-    return none.document(520, 40);
-}
-
-/// The width and height a document declares on its root.
-std::pair<double, double> sizeOf(const std::string& document) {
-    const auto attribute = [&](const std::string& name) {
-        const std::size_t at = document.find(name + "=\"");
-        return at == std::string::npos ? 0.0 : std::atof(document.c_str() + at + name.size() + 2);
-    };
-    return {attribute("width"), attribute("height")};
+    return none.picture(520, 40);
 }
 
 }  // namespace
@@ -115,10 +105,9 @@ std::string drawRuleSvg(const rules::Model& model, int rule) {
     body.text(10, 24, title, {{"font-size", 15}, {"font-weight", "bold"}});
     double y = 36, width = 520;
     for (std::size_t k = 0; k < shapes.size(); ++k) {
-        const std::string panel = drawOrientation(model, shapes[k], static_cast<int>(k), static_cast<int>(shapes.size()));
-        const auto [w, h] = sizeOf(panel);
-        body.nested(panel, 0, y);
-        y += h + 8, width = std::max(width, w);
+        const rules::SvgPicture panel = drawOrientation(model, shapes[k], static_cast<int>(k), static_cast<int>(shapes.size()));
+        body.nested(panel.document, 0, y);
+        y += panel.height + 8, width = std::max(width, panel.width);
     }
     if (shapes.empty()) body.text(10, 56, "no orientation of its own: every one repeats an earlier rule's", {{"font-size", 13}}), y += 30;
     return body.document(std::max(width, 9.0 * static_cast<double>(title.size()) + 20), y + 10);

@@ -30,6 +30,13 @@ struct SvgAttr {
 };
 using SvgAttrs = std::vector<SvgAttr>;
 
+/// A finished document with the size its root declares, so a picture placed within another is
+/// laid out by its size, never by reading the markup back.
+struct SvgPicture {
+    std::string document;
+    double width = 0, height = 0;
+};
+
 class Svg {
 public:
     /// `text` with &, <, > and " escaped, for element text and attribute values.
@@ -57,6 +64,10 @@ public:
     /// The document: width and height, the root's other attributes, `defs` (markers, patterns), a
     /// white background, then the body.
     std::string document(double width, double height, const SvgAttrs& attrs = {}, const Svg* defs = nullptr) const;
+    /// document() with its size kept beside it.
+    SvgPicture picture(double width, double height, const SvgAttrs& attrs = {}, const Svg* defs = nullptr) const {
+        return {document(width, height, attrs, defs), width, height};
+    }
     /// The body written so far.
     std::string body() const { return out_.str(); }
 

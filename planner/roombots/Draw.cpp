@@ -19,13 +19,8 @@ const char* colour(int module) {
     return kColours[module % 8];
 }
 
-/// The isometric picture's body and size.
-struct Picture {
-    rules::Svg svg;
-    double width = 0, height = 0;
-};
-
-Picture isometric(const Setting& setting, const std::vector<std::array<Cell, 4>>& cells) {
+/// The isometric picture.
+rules::SvgPicture isometric(const Setting& setting, const std::vector<std::array<Cell, 4>>& cells) {
     struct Cube {
         Cell c;
         int module;
@@ -51,12 +46,12 @@ Picture isometric(const Setting& setting, const std::vector<std::array<Cell, 4>>
     for (const Seed& seed : setting.recipe.seeds)
         for (const Cell& c : seed.cells) minX = std::min(minX, sx(c.x, c.y + 1)), maxX = std::max(maxX, sx(c.x + 1, c.y));
     const double ox = 10 - minX, oy = 10 - minY;
-    Picture out;
-    out.width = maxX - minX + 20, out.height = maxY - minY + 20;
+    rules::Svg out;
+    const double width = maxX - minX + 20, height = maxY - minY + 20;
     auto polygon = [&](std::initializer_list<std::array<double, 3>> corners, const char* fill, double shade) {
         std::vector<std::pair<double, double>> points;
         for (const auto& p : corners) points.push_back({ox + sx(p[0], p[1]), oy + sy(p[0], p[1], p[2])});
-        out.svg.polygon(points, {{"fill", fill}, {"fill-opacity", shade}, {"stroke", "#333"}, {"stroke-width", 0.5}});
+        out.polygon(points, {{"fill", fill}, {"fill-opacity", shade}, {"stroke", "#333"}, {"stroke-width", 0.5}});
     };
     for (const Seed& seed : setting.recipe.seeds)  // the goal's footprint on the floor
         for (const Cell& c : seed.cells)
@@ -67,7 +62,7 @@ Picture isometric(const Setting& setting, const std::vector<std::array<Cell, 4>>
         polygon({{x + 1, y, z}, {x + 1, y + 1, z}, {x + 1, y + 1, z + 1}, {x + 1, y, z + 1}}, colour(q.module), 0.7);
         polygon({{x, y + 1, z}, {x + 1, y + 1, z}, {x + 1, y + 1, z + 1}, {x, y + 1, z + 1}}, colour(q.module), 0.5);
     }
-    return out;
+    return out.picture(width, height);
 }
 
 }  // namespace
@@ -110,8 +105,7 @@ std::string footTraceSvg(const Setting& setting, const AssemblyResult& result) {
 }
 
 std::string isometricSvg(const Setting& setting, const std::vector<std::array<Cell, 4>>& cells) {
-    const Picture p = isometric(setting, cells);
-    return p.svg.document(p.width, p.height);
+    return isometric(setting, cells).document;
 }
 
 std::string assemblySvg(const Setting& setting, const AssemblyResult& result) {
@@ -120,8 +114,8 @@ std::string assemblySvg(const Setting& setting, const AssemblyResult& result) {
     rules::Svg svg;
     double x = 0, height = 0;
     for (const auto& cells : frames) {
-        const Picture p = isometric(setting, cells);
-        svg.nested(p.svg.document(p.width, p.height), x);
+        const rules::SvgPicture p = isometric(setting, cells);
+        svg.nested(p.document, x);
         x += p.width, height = std::max(height, p.height);
     }
     return svg.document(x, height);
