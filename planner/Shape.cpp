@@ -4,6 +4,7 @@
 
 #include "planner/Shape.h"
 
+#include "rules/Binvox.h"
 #include "rules/Components.h"
 #include "rules/Error.h"
 #include "rules/Limits.h"
@@ -212,7 +213,22 @@ Shape fromAscii(std::string_view argument, const std::string& text) {
     return s;
 }
 
-Shape fromFile(std::string_view argument) {
+/// A .binvox voxel file (rules/Binvox.h): checked and counted first, so a shape too large is
+/// refused before its cells are made; a malformed file is named with the byte that is wrong.
+Shape fromBinvox(std::string_view argument, const std::string& bytes, std::size_t maxCells, std::uint64_t memoryBytes) {
+    Shape s;
+    s.dimension = 3;
+    try {
+        const rules::BinvoxInfo info = rules::scanBinvox(bytes);
+        checkSize(argument, info.filled, maxCells, memoryBytes);
+        s.cells = rules::binvoxCells(bytes, info);
+    } catch (const InputError& e) {
+        bad(argument, e.what());
+    }
+    return s;
+}
+
+Shape fromFile(std::string_view argument, std::size_t maxCells, std::uint64_t memoryBytes) {
     const std::string path(argument);
     if (!std::ifstream(path)) {
         std::string known;
@@ -222,6 +238,7 @@ Shape fromFile(std::string_view argument) {
     const std::string text = rules::readTextFile(path);
     auto endsWith = [&](std::string_view suffix) { return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0; };
     if (endsWith(".json")) return fromJson(argument, text);
+    if (endsWith(".binvox")) return fromBinvox(argument, text, maxCells, memoryBytes);
     if (endsWith(".xyz") || endsWith(".vox")) return fromVoxels(argument, text);
     return fromAscii(argument, text);
 }
@@ -276,7 +293,7 @@ Shape parseShape(std::string_view argument, int scale, std::uint64_t memoryBytes
         if (r[0] >= r[1]) bad(argument, "the inner radius must be smaller than the outer one");
         s = annulus(argument, r[0], r[1], maxCells, memoryBytes);
     } else if (kind == "chair") s = chair(argument, rest, maxCells, memoryBytes);
-    else s = fromFile(argument);
+    else s = fromFile(argument, maxCells, memoryBytes);
     s.name = std::string(argument);
     std::sort(s.cells.begin(), s.cells.end());  // distinct: generators make each cell once, files are checked
     if (s.cells.empty()) bad(argument, "the shape has no cells");
