@@ -63,11 +63,17 @@ Exported fromShapes(const ExportArgs& a) {
 }
 
 Exported fromConfiguration(const ExportArgs& a) {
-    if (a.rules.empty() || a.region.empty())
-        throw InputError("--config needs --rules (the system the configuration is of) and --region (the region it lies on), as holon check --from does");
-    const auto system = loadRules(a.rules, a.noWarnings);
-    if (!system) throw InputError("--rules " + a.rules + ": the rule file has errors (above)");
-    const rules::Region region = rules::Region::parse(a.region, 1u << 22);
+    // A JSON configuration (plan's end.json included) names its system and region, a trace its
+    // rule file and region: those are the defaults; ASCII art names neither.
+    const std::string source = namedInFile(a.config, "source");
+    const std::string rulesName = !a.rules.empty() ? a.rules : !source.empty() ? source : namedInFile(a.config, "system");
+    const std::string regionSpec = !a.region.empty() ? a.region : namedInFile(a.config, "region");
+    if (rulesName.empty() || regionSpec.empty())
+        throw InputError("--config " + a.config + " does not name its " + (rulesName.empty() ? "system" : "region") +
+                         "; give --rules (the system it is a configuration of) and --region (the region it lies on), as holon check --from takes them");
+    const auto system = loadRules(rulesName, a.noWarnings);
+    if (!system) throw InputError("--rules " + rulesName + ": the rule file has errors (above)");
+    const rules::Region region = rules::Region::parse(regionSpec, 1u << 22);
     const rules::Model model(*system, region.lattice());
     const rules::Interpreter in(model, region);
     const rules::Configuration c = rules::readConfigFile(in, a.config);
@@ -142,8 +148,8 @@ Run addExportCommand(CLI::App& app) {
     sub->add_option("--target", a->target, "with --shape: the target shape, as holon plan --to takes, written as the VisibleSim world's target (targetList)");
     sub->add_option("--scale", a->scale, "with --shape: every cell becomes a KxK (3D: KxKxK) block, as in holon plan")->check(CLI::Range(1, planner::kMaxCoordinate));
     sub->add_option("--config", a->config, "a configuration, as holon check --from takes: JSON, ASCII art, an ITF trace (FILE#N: state N), plan's end.json");
-    sub->add_option("--rules", a->rules, "with --config: the rule file or bundled system it is a configuration of");
-    sub->add_option("--region", a->region, "with --config: the region it lies on (square:WxH, cubic:WxHxD, hex:rR)");
+    sub->add_option("--rules", a->rules, "with --config: the rule file or bundled system it is a configuration of (default: the one a JSON file or trace names)");
+    sub->add_option("--region", a->region, "with --config: the region it lies on, square:WxH, cubic:WxHxD or hex:rR (default: the one a JSON file or trace names)");
     sub->add_option("--visiblesim", a->visibleSim, "write a VisibleSim world (XML) for the VisibleSim modular-robot simulator: square2d and cubic3d as slidingCubes, hex2d as hexanodes");
     sub->add_option("--robot", a->robot, "the VisibleSim module type: slidingCubes (default on square2d and cubic3d), blinkyBlocks, or hexanodes (hex2d)");
     sub->add_option("--margin", a->margin, "with --visiblesim: empty cells around the modules in the world's grid, room to move (default 0: the grid just holds them)")->check(CLI::Range(0, 1000));
