@@ -10,6 +10,7 @@
 #include "rules/Limits.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
+#include "rules/VisibleSim.h"
 
 #include <nlohmann/json.hpp>
 
@@ -228,8 +229,28 @@ Shape fromBinvox(std::string_view argument, const std::string& bytes, std::size_
     return s;
 }
 
+/// A VisibleSim world (rules/VisibleSim.h): its modules, or with `target` its first grid target.
+Shape fromVisibleSim(std::string_view argument, const std::string& text, bool target, std::size_t maxCells) {
+    Shape s;
+    try {
+        const rules::VisibleSimCells world = rules::readVisibleSimWorld(text, maxCells);
+        if (world.lattice->kind() == rules::LatticeKind::Hex2D)
+            bad(argument, "a hex2d (hexanodes) world; plan runs on square2d and cubic3d, hex shapes are for holon hex");
+        s.dimension = world.lattice->dimension();
+        s.cells = target ? world.targets : world.blocks;
+    } catch (const InputError& e) {
+        if (std::string_view(e.what()).starts_with("shape '")) throw;
+        bad(argument, e.what());
+    }
+    if (target && s.cells.empty()) bad(argument, "the world has no grid target (<targetList><target format=\"grid\">)");
+    return s;
+}
+
 Shape fromFile(std::string_view argument, std::size_t maxCells, std::uint64_t memoryBytes) {
-    const std::string path(argument);
+    // WORLD.xml#target: the target of a VisibleSim world, when no file has that name.
+    std::string path(argument);
+    const bool target = path.ends_with(".xml#target") && !std::ifstream(path);
+    if (target) path.resize(path.size() - 7);
     if (!std::ifstream(path)) {
         std::string known;
         for (const auto& [name, what] : shapeGenerators()) known += (known.empty() ? "" : ", ") + name;
@@ -239,6 +260,7 @@ Shape fromFile(std::string_view argument, std::size_t maxCells, std::uint64_t me
     auto endsWith = [&](std::string_view suffix) { return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0; };
     if (endsWith(".json")) return fromJson(argument, text);
     if (endsWith(".binvox")) return fromBinvox(argument, text, maxCells, memoryBytes);
+    if (endsWith(".xml")) return fromVisibleSim(argument, text, target, maxCells);
     if (endsWith(".xyz") || endsWith(".vox")) return fromVoxels(argument, text);
     return fromAscii(argument, text);
 }

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace holon::rules {
@@ -41,5 +42,21 @@ Vec toVisibleSimAxes(const Lattice& lattice, Vec v);
 /// legend). Throws InputError when the robot does not live on the lattice or there is no block.
 std::string visibleSimWorld(const Lattice& lattice, VisibleSimRobot robot, const std::vector<VisibleSimCell>& blocks,
                             const std::vector<VisibleSimCell>& targets, const std::vector<std::string>& comments, int margin = 0);
+
+/// A VisibleSim world read back: its modules and the cells of its first grid target, in holon's
+/// cells, and the lattice they are on.
+struct VisibleSimCells {
+    const Lattice* lattice = nullptr;
+    std::vector<Vec> blocks, targets;
+};
+
+/// Reads the modules of a world (<block> and <blocksLine> in its <blockList>) and the cells of its
+/// first <target format="grid"> (<cell>, <targetLine>). The comment holon writes ("holon square2d
+/// cell (x, y) is at position ...") gives the lattice and the map back to holon's coordinates, so
+/// a world holon wrote reads back as the same cells; a world from elsewhere is square2d when its
+/// grid is one layer (y flipped within the grid) and cubic3d otherwise. Throws InputError starting
+/// "line L, column C: " for malformed XML, a position outside gridSize, a cell given twice, more
+/// than `maxCells` cells, or what holon does not read (<blockBox>, <csg>, in world coordinates).
+VisibleSimCells readVisibleSimWorld(std::string_view text, std::size_t maxCells);
 
 }  // namespace holon::rules

@@ -3,7 +3,7 @@
 # it wrote with readers of its own: Python's XML parser for the VisibleSim worlds (every module
 # inside gridSize, each position once, the block problem's exact positions), a binvox decoder written
 # from the format's description for the chair (the chair generator's 30 cells), and holon's own
-# binvox reader for a byte-for-byte round trip. Usage: interop.sh HOLON SOURCE_DIR
+# binvox and VisibleSim readers for round trips (the same bytes, the same world). Usage: interop.sh HOLON SOURCE_DIR
 set -eu
 holon=$1 src=$2
 out=$(mktemp -d)
@@ -11,6 +11,10 @@ trap 'rm -rf "$out"' EXIT
 HOLON=$holon OUT=$out bash "$src/examples/interop/run.sh"
 "$holon" export --shape "$out/chair.binvox" --binvox "$out/chair_again.binvox" >/dev/null
 cmp "$out/chair.binvox" "$out/chair_again.binvox"
+# The block problem's world read back by holon (start and target) and written again: the same world,
+# but for the first two comments, which name the shapes it was made from.
+"$holon" export --shape "$out/blocks.xml" --target "$out/blocks.xml#target" --margin 1 --visiblesim "$out/blocks_again.xml" >/dev/null
+diff <(tail -n +4 "$out/blocks.xml") <(tail -n +4 "$out/blocks_again.xml")
 python3 - "$out" <<'PY'
 import sys, xml.etree.ElementTree as ET
 out = sys.argv[1]

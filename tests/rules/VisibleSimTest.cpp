@@ -1,7 +1,9 @@
 // VisibleSim worlds (rules/VisibleSim.h), read back by a minimal XML reader of this test's own:
 // every module inside gridSize, the lattice directions landing on VisibleSim's directions of the
 // same name (the table of VisibleSim's lattice.h), world positions that keep holon's picture, and
-// a round trip of positions and colours for each lattice.
+// a round trip of positions and colours for each lattice; then holon's own reader: the same cells
+// back from what the writer wrote, worlds written as VisibleSim's examples write them, and
+// malformed worlds refused at their line and column.
 
 #include "rules/Error.h"
 #include "rules/VisibleSim.h"
@@ -149,4 +151,87 @@ TEST_CASE("a robot on the wrong lattice, and an empty world, are refused") {
     CHECK_THROWS_AS(xmlOf(LatticeKind::Hex2D, VisibleSimRobot::SlidingCubes, {{{0, 0, 0}, "#000000"}}), holon::InputError);
     CHECK_THROWS_AS(xmlOf(LatticeKind::Cubic3D, VisibleSimRobot::Hexanodes, {{{0, 0, 0}, "#000000"}}), holon::InputError);
     CHECK_THROWS_AS(xmlOf(LatticeKind::Cubic3D, VisibleSimRobot::SlidingCubes, {}), holon::InputError);
+}
+
+namespace {
+
+std::string readRefusal(const std::string& xml, std::size_t maxCells = 1000) {
+    try {
+        r::readVisibleSimWorld(xml, maxCells);
+    } catch (const holon::InputError& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+}  // namespace
+
+TEST_CASE("holon's reader gives back the cells the writer wrote, on every lattice, with a margin") {
+    std::mt19937 random(5);
+    for (LatticeKind kind : {LatticeKind::Square2D, LatticeKind::Cubic3D, LatticeKind::Hex2D}) {
+        const Lattice& lattice = Lattice::get(kind);
+        const VisibleSimRobot robot = kind == LatticeKind::Hex2D ? VisibleSimRobot::Hexanodes : VisibleSimRobot::SlidingCubes;
+        for (int trial = 0; trial < 10; ++trial) {
+            std::set<Vec> blocks, targets;
+            const auto cell = [&] { return Vec{int(random() % 21) - 10, int(random() % 21) - 10, lattice.dimension() == 3 ? int(random() % 21) - 10 : 0}; };
+            for (int k = 0; k < 50; ++k) blocks.insert(cell()), targets.insert(cell());
+            std::vector<VisibleSimCell> b, t;
+            for (Vec v : blocks) b.push_back({v, "#123456"});
+            for (Vec v : targets) t.push_back({v, "#654321"});
+            const r::VisibleSimCells back = r::readVisibleSimWorld(r::visibleSimWorld(lattice, robot, b, t, {"x"}, trial % 3), 1000);
+            CHECK(back.lattice == &lattice);
+            CHECK(back.blocks == std::vector<Vec>(blocks.begin(), blocks.end()));
+            CHECK(back.targets == std::vector<Vec>(targets.begin(), targets.end()));
+        }
+    }
+}
+
+TEST_CASE("a world written as VisibleSim's examples write them") {
+    // Tabs, stray ';' after an element, a default colour, blocksLine rows, a target of targetLines
+    // and cells, a second target (not read), comments: as in VisibleSim's applicationsBin/*/config.xml.
+    const std::string xml = R"(<?xml version="1.0" standalone="no" ?>
+<world gridSize="6,4,2" windowSize="1800,900">
+	<camera target="50,50,0" directionSpherical="30,30,100" angle="45"/>
+	<blockList color="128,255,128" blockSize="10.0,10.0,10.0">
+		<blocksLine plane="0" line=" 1" values="011100"/>
+<!--		<blocksLine plane="1" line=" 4" values="000011"/>-->
+		<block position="1,2,0" color="255,0,0" master="true"/>;
+	</blockList>
+	<targetList>
+		<target format="grid">
+			<targetLine plane="1" line="0" values="110000"/>
+			<cell position="5,3,1"/>
+		</target>
+		<target format="grid"><cell position="0,0,0"/></target>
+	</targetList>
+</world>
+)";
+    const r::VisibleSimCells w = r::readVisibleSimWorld(xml, 1000);
+    CHECK(w.lattice->kind() == LatticeKind::Cubic3D);
+    CHECK(w.blocks == std::vector<Vec>{{1, 1, 0}, {1, 2, 0}, {2, 1, 0}, {3, 1, 0}});
+    CHECK(w.targets == std::vector<Vec>{{0, 0, 1}, {1, 0, 1}, {5, 3, 1}});
+    // One layer without holon's comment: square2d, y flipped within the grid (row 0 at the top).
+    const r::VisibleSimCells flat = r::readVisibleSimWorld("<world gridSize=\"3,2,1\"><blockList><block position=\"2,0,0\"/></blockList></world>", 10);
+    CHECK(flat.lattice->kind() == LatticeKind::Square2D);
+    CHECK(flat.blocks == std::vector<Vec>{{2, 1, 0}});
+}
+
+TEST_CASE("malformed worlds are refused at their line and column") {
+    const std::string head = "<world gridSize=\"3,3,1\">\n<blockList>\n";
+    CHECK(readRefusal(head + "<block position=\"1,1,0\"/>\n</blockList>\n") == "line 1, column 1: <world> is never closed");
+    CHECK(readRefusal(head + "<block position=\"1,1,0\"/>\n</world>\n") == "line 4, column 1: </world> closes <blockList> (opened at line 2, column 1)");
+    CHECK(readRefusal(head + "  <block position=\"3,0,0\"/>\n</blockList></world>") ==
+          "line 3, column 3: position 3,0,0 is outside the grid 3,3,1 (VisibleSim refuses it too)");
+    CHECK(readRefusal(head + "<block position=\"1,1,0\"/>\n<block position=\"1,1,0\"/>\n</blockList></world>") ==
+          "line 4, column 1: position 1,1,0 is given twice (also at line 3, column 1)");
+    CHECK(readRefusal(head + "<block position=\"1,1\"/>\n</blockList></world>") == "line 3, column 1: position=\"1,1\" is not three whole numbers x,y,z");
+    CHECK(readRefusal(head + "<block color=\"1,1,1\"/>\n</blockList></world>") == "line 3, column 1: <block> without a position=\"x,y,z\"");
+    CHECK(readRefusal(head + "<block position=1,1,0/>\n</blockList></world>") == "line 3, column 17: the value of position must be in quotes");
+    CHECK(readRefusal(head + "<blockBox boxOrigin=\"0,0,0\"/>\n</blockList></world>").find("line 3, column 1: <blockBox> is in world units") == 0);
+    CHECK(readRefusal(head + "<blocksLine values=\"1x1\"/>\n</blockList></world>") == "line 3, column 1: values=\"...\" holds 'x'; a line of modules is 0s and 1s");
+    CHECK(readRefusal(head + "<blocksLine values=\"111\"/>\n</blockList></world>", 2) == "line 3, column 1: more than 2 cells, the limit; give a smaller world");
+    CHECK(readRefusal("<world><blockList/></world>") == "line 1, column 1: <world> needs gridSize=\"X,Y,Z\", three whole numbers from 1");
+    CHECK(readRefusal("<robots gridSize=\"1,1,1\"/>") == "line 1, column 1: the root element is <robots>; a VisibleSim world's is <world>");
+    CHECK(readRefusal("<!-- only a comment") == "line 1, column 5: a comment is not closed ('-->' missing)");
+    CHECK(readRefusal("") == "line 1, column 1: no element; a VisibleSim world is an XML file with a <world> element");
 }
