@@ -66,7 +66,8 @@ Exported fromConfiguration(const ExportArgs& a) {
     // A JSON configuration (plan's end.json included) names its system and region, a trace its
     // rule file and region: those are the defaults; ASCII art names neither.
     const std::string source = namedInFile(a.config, "source");
-    const std::string rulesName = !a.rules.empty() ? a.rules : !source.empty() ? source : namedInFile(a.config, "system");
+    const std::string rulesName = !a.rules.empty() ? a.rules : !source.empty() ? source
+                                                                               : namedInFile(a.config, "system");
     const std::string regionSpec = !a.region.empty() ? a.region : namedInFile(a.config, "region");
     if (rulesName.empty() || regionSpec.empty())
         throw InputError("--config " + a.config + " does not name its " + (rulesName.empty() ? "system" : "region") +

@@ -94,8 +94,11 @@ std::string visibleSimWorld(const Lattice& lattice, VisibleSimRobot robot, const
     std::ostringstream out;
     out << "<?xml version=\"1.0\" standalone=\"no\" ?>\n";
     for (const std::string& c : comments) out << "<!-- " << commentText(c) << " -->\n";
-    const char* axes = lattice.kind() == LatticeKind::Cubic3D ? "(x, y, z)" : hex ? "(x + y, -y, 0)" : "(x, -y, 0)";
-    out << "<!-- holon " << lattice.name() << " cell " << (hex ? "(x, y) axial" : lattice.dimension() == 3 ? "(x, y, z)" : "(x, y)") << " is at position " << axes
+    const char* axes = lattice.kind() == LatticeKind::Cubic3D ? "(x, y, z)" : hex ? "(x + y, -y, 0)"
+                                                                                  : "(x, -y, 0)";
+    out << "<!-- holon " << lattice.name() << " cell " << (hex ? "(x, y) axial" : lattice.dimension() == 3 ? "(x, y, z)"
+                                                                                                           : "(x, y)")
+        << " is at position " << axes
         << " - (" << lo.x << ", " << lo.y << ", " << lo.z << ") -->\n";
     // Extents in 64 bits: coordinates reach +-2^29, so a difference fits, a difference plus one too.
     out << "<world gridSize=\"" << std::int64_t(hi.x) - lo.x + 1 << "," << std::int64_t(hi.y) - lo.y + 1 << "," << std::int64_t(hi.z) - lo.z + 1 << "\">\n";

@@ -217,8 +217,8 @@ VisibleSimCells readVisibleSimWorld(std::string_view text, std::size_t maxCells)
         for (std::size_t k = 1; k < list->size(); ++k)
             if ((*list)[k].first == (*list)[k - 1].first)
                 places.bad(std::max((*list)[k].second, (*list)[k - 1].second), "position " + std::to_string((*list)[k].first.x) + "," + std::to_string((*list)[k].first.y) + "," +
-                                                                                     std::to_string((*list)[k].first.z) + " is given twice (also at " +
-                                                                                     places.at(std::min((*list)[k].second, (*list)[k - 1].second)) + ")");
+                                                                                   std::to_string((*list)[k].first.z) + " is given twice (also at " +
+                                                                                   places.at(std::min((*list)[k].second, (*list)[k - 1].second)) + ")");
         for (const auto& [p, offset] : *list) cells->push_back(toVisibleSimAxes(*out.lattice, p + holonMap->second));
         std::sort(cells->begin(), cells->end());
     }

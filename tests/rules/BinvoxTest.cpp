@@ -81,7 +81,7 @@ TEST_CASE("malformed files are refused at the byte that is wrong") {
     CHECK(refusal(good.substr(0, 55)) == "byte 55: the file ends after 7 of the 8 voxels of a 2^3 grid (truncated?)");
     CHECK(refusal(good.substr(0, 56)) == "byte 55: the file ends after 7 of the 8 voxels of a 2^3 grid (truncated?)");
     CHECK(refusal("#binvox 3\n") == "byte 0: not a binvox file: the first line must be '#binvox 1' (or 2)");
-    CHECK(refusal("PK\x03\x04") .find("byte 0: the header ends early") == 0);
+    CHECK(refusal("PK\x03\x04").find("byte 0: the header ends early") == 0);
     CHECK(refusal("#binvox 1\ndim 2 2 3\ndata\n").find("byte 10: the grid is 2x2x3") == 0);
     CHECK(refusal("#binvox 1\ndim 0 0 0\ndata\n").find("byte 10: dim 0 is not from 1 to") == 0);
     CHECK(refusal("#binvox 1\ndata\n") == "byte 10: 'data' before 'dim D D D'; the header must give the grid's size");

@@ -110,7 +110,8 @@ TEST_CASE("round trip: positions and colours come back, every one inside gridSiz
     const std::string palette[] = {"#4e79a7", "#59a14f", "#edc948", "#010203"};
     for (LatticeKind kind : {LatticeKind::Square2D, LatticeKind::Cubic3D, LatticeKind::Hex2D}) {
         const Lattice& lattice = Lattice::get(kind);
-        const VisibleSimRobot robot = kind == LatticeKind::Hex2D ? VisibleSimRobot::Hexanodes : kind == LatticeKind::Cubic3D ? VisibleSimRobot::BlinkyBlocks : VisibleSimRobot::SlidingCubes;
+        const VisibleSimRobot robot = kind == LatticeKind::Hex2D ? VisibleSimRobot::Hexanodes : kind == LatticeKind::Cubic3D ? VisibleSimRobot::BlinkyBlocks
+                                                                                                                             : VisibleSimRobot::SlidingCubes;
         for (int trial = 0; trial < 20; ++trial) {
             std::map<Vec, std::string> blocks, targets;
             const auto cell = [&] { return Vec{int(random() % 15) - 7, int(random() % 15) - 7, lattice.dimension() == 3 ? int(random() % 15) - 7 : 0}; };
