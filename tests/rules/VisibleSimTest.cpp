@@ -233,6 +233,9 @@ TEST_CASE("malformed worlds are refused at their line and column") {
     CHECK(readRefusal(head + "<blocksLine values=\"111\"/>\n</blockList></world>", 2) == "line 3, column 1: more than 2 cells, the limit; give a smaller world");
     CHECK(readRefusal("<world><blockList/></world>") == "line 1, column 1: <world> needs gridSize=\"X,Y,Z\", three whole numbers from 1");
     CHECK(readRefusal("<robots gridSize=\"1,1,1\"/>") == "line 1, column 1: the root element is <robots>; a VisibleSim world's is <world>");
+    CHECK(readRefusal("<!-- holon cubic3d cell (x, y, z) is at position (x, y, z) - (2147483000, 0, 0) -->\n<world gridSize=\"2147483000,1,1\"><blockList>"
+                      "<block position=\"2147482000,0,0\"/></blockList></world>") ==
+          "line 2, column 45: this position is beyond +-536870912 in holon's coordinates; give a smaller grid or offset");
     CHECK(readRefusal("<!-- only a comment") == "line 1, column 5: a comment is not closed ('-->' missing)");
     CHECK(readRefusal("") == "line 1, column 1: no element; a VisibleSim world is an XML file with a <world> element");
 }
