@@ -105,7 +105,11 @@ rules::VisibleSimRobot robotFor(const std::string& name, const rules::Lattice& l
 int run(const ExportArgs& a) {
     if (a.shape.empty() == a.config.empty())
         throw InputError("give --shape SHAPE (a planning shape, as plan --from takes) or --config FILE (a configuration, as check --from takes), one of the two");
+    // An option that does not apply is refused, not ignored.
     if (!a.target.empty() && a.shape.empty()) throw InputError("--target is a planning shape's target and goes with --shape; a configuration has none");
+    if (a.scale != 1 && a.shape.empty()) throw InputError("--scale goes with --shape; a configuration is written as it is");
+    if (!a.shape.empty() && (!a.rules.empty() || !a.region.empty())) throw InputError("--rules and --region go with --config; --shape is read as holon plan --from reads it");
+    if (a.visibleSim.empty() && (!a.robot.empty() || a.margin != 0)) throw InputError("--robot and --margin go with --visiblesim");
     if (a.visibleSim.empty() && a.binvox.empty()) throw InputError("say what to write: --visiblesim FILE.xml, --binvox FILE.binvox, or both");
     // Output paths are checked before the work.
     std::optional<rules::OutputFile> visibleSimFile, binvoxFile;
