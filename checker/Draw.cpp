@@ -318,6 +318,12 @@ std::string valueColour(const rules::Field& field, int value) {
     return kPalette[slot];
 }
 
+std::string stateColour(const rules::Model& model, CellValue v) {
+    const int fill = fillField(model.system());
+    const int value = fill >= 0 ? model.alphabet().fields(v)[fill] : rules::kAbsent;
+    return value != rules::kAbsent ? valueColour(model.system().fields[fill], value) : "#8d8d8d";
+}
+
 rules::SvgPicture drawTrace(const Trace& t, const rules::Engine& e, const std::string& title) {
     const rules::Region& r = e.region();
     const rules::Lattice& lattice = r.lattice();
@@ -437,11 +443,7 @@ rules::SvgPicture drawTrace(const Trace& t, const rules::Engine& e, const std::s
             const CellValue v = t.steps[k].cells[i];
             const bool isChanged = std::find(changed.begin(), changed.end(), i) != changed.end();
             const bool isContext = std::find(context.begin(), context.end(), i) != context.end();
-            std::string colour = "#ffffff";
-            if (v)
-                colour = fill >= 0 && alphabet.fields(v)[fill] != rules::kAbsent
-                             ? valueColour(system.fields[fill], alphabet.fields(v)[fill])
-                             : "#8d8d8d";
+            const std::string colour = v ? stateColour(e.model(), v) : "#ffffff";
             rules::SvgAttrs attrs{{"fill", colour}};
             const rules::SvgAttrs& stroke = isChanged ? kChangedPen : isContext ? kContextPen
                                                                                 : kCellPen;
@@ -515,9 +517,7 @@ rules::SvgPicture drawTrace(const Trace& t, const rules::Engine& e, const std::s
             if (!v) continue;
             auto [cx, cy] = centre(r.cell(i));
             const auto& fields = alphabet.fields(v);
-            const std::string colour = fill >= 0 && fields[fill] != rules::kAbsent
-                                           ? valueColour(system.fields[fill], fields[fill])
-                                           : "#8d8d8d";
+            const std::string colour = stateColour(e.model(), v);
             const std::string text = cellText(system, fields);
             if (!text.empty())
                 body.text(cx, cy + 3.5, text,

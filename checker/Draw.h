@@ -35,6 +35,9 @@ std::string drawTraceAscii(const Trace& trace, const rules::Engine& engine);
 /// The fill colour of a state value, "#rrggbb": fixed by the value's name and its field's declared
 /// values, so a value has the same colour in every picture of a system.
 std::string valueColour(const rules::Field& field, int value);
+/// The fill colour of a non-empty cell state in every picture (the SVG traces, VisibleSim worlds):
+/// valueColour of its first enum field, grey when it has none.
+std::string stateColour(const rules::Model& model, CellValue v);
 /// Frames left to right; each cell filled by the colour of its first enum field, its text naming the
 /// values of every enum and integer field, one arrow with a head per pointer field (each field its
 /// own colour and dash; in 3D, +z and -z as a dot and a cross in a circle); changed cells outlined in

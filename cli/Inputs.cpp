@@ -98,19 +98,22 @@ std::string missingInput(const rules::System& system, int k, const std::string& 
 
 }  // namespace
 
+std::string namedInFile(const std::string& path, const std::string& key) {
+    std::error_code error;  // FILE#N picks a trace's state; a file whose own name holds '#' is read as it is
+    const std::string file = std::filesystem::exists(path, error) ? path : path.substr(0, path.rfind('#'));
+    const std::string text = rules::readTextFile(file);
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos || text[text.find_first_not_of(" \t\r\n")] != '{') return "";
+    const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);  // a parse error reads as "names nothing"
+    if (!j.is_object()) return "";
+    const nlohmann::json* name = j.contains(key) ? &j[key] : j.contains("#meta") && j["#meta"].is_object() && j["#meta"].contains(key) ? &j["#meta"][key]
+                                                                                                                                       : nullptr;
+    return name && name->is_string() ? name->get<std::string>() : "";
+}
+
 namespace {
 
 /// The system a JSON configuration or ITF trace says it was written for, or "" (ASCII art names none).
-std::string writtenFor(const std::string& path) {
-    const std::string file = path.substr(0, path.find('#'));  // FILE#N picks a trace's state
-    const std::string text = rules::readTextFile(file);
-    if (text.find_first_not_of(" \t\r\n") == std::string::npos || text[text.find_first_not_of(" \t\r\n")] != '{') return "";
-    const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);  // already read once, so well formed
-    if (!j.is_object()) return "";
-    const nlohmann::json* name = j.contains("system") ? &j["system"] : j.contains("#meta") && j["#meta"].is_object() && j["#meta"].contains("system") ? &j["#meta"]["system"]
-                                                                                                                                                      : nullptr;
-    return name && name->is_string() ? name->get<std::string>() : "";
-}
+std::string writtenFor(const std::string& path) { return namedInFile(path, "system"); }
 
 }  // namespace
 

@@ -293,7 +293,7 @@ Run addPlanCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("plan", "run the U/P/F planner compiled from a rule file, from a start shape to a target shape");
     std::string shapes;
     for (const auto& [name, what] : planner::shapeGenerators()) shapes += "\n    " + name + ": " + what;
-    sub->footer("SHAPE is a generator or a file (.json cell list, .xyz voxels, ASCII art):" + shapes);
+    sub->footer("SHAPE is a generator or a file (.json cell list, .xyz voxels, .binvox, a VisibleSim world .xml or its target WORLD.xml#target, ASCII art):" + shapes);
     sub->add_option("--rules", a->rules, "planner rule file, or a bundled name (default planner_intermediate)");
     sub->add_option("--from", a->from, "start shape")->required();
     sub->add_option("--to", a->to, "target shape")->required();

@@ -1,5 +1,6 @@
 // libFuzzer target for shape files, the planners' input format: any byte string written as a shape
-// file (JSON cell list, voxel text, ASCII art: the first byte picks which) and read by
+// file (JSON cell list, voxel text, ASCII art, .binvox, VisibleSim XML: the first byte picks which,
+// its value mod 5 in that order) and read by
 // planner::parseShape as `plan --from/--to` reads it, then as a hex picture for `hex --from/--to`
 // on a 12x12 array; also as a procedural argument (`box:...`, `ring:...`) when it has no '/'.
 // Accepted or refused with InputError or LimitError; crashes, hangs, leaks, sanitizer reports and
@@ -47,8 +48,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size == 0) return 0;
-    static const char* const kinds[] = {".json", ".xyz", ".txt"};
-    const std::string path = scratch + "/shape" + kinds[data[0] % 3];
+    static const char* const kinds[] = {".json", ".xyz", ".txt", ".binvox", ".xml"};
+    const std::string path = scratch + "/shape" + kinds[data[0] % 5];
     const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
     std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
     constexpr std::size_t kMax = 1 << 16;

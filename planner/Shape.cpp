@@ -4,11 +4,13 @@
 
 #include "planner/Shape.h"
 
+#include "rules/Binvox.h"
 #include "rules/Components.h"
 #include "rules/Error.h"
 #include "rules/Limits.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
+#include "rules/VisibleSim.h"
 
 #include <nlohmann/json.hpp>
 
@@ -212,8 +214,43 @@ Shape fromAscii(std::string_view argument, const std::string& text) {
     return s;
 }
 
-Shape fromFile(std::string_view argument) {
-    const std::string path(argument);
+/// A .binvox voxel file (rules/Binvox.h): checked and counted first, so a shape too large is
+/// refused before its cells are made; a malformed file is named with the byte that is wrong.
+Shape fromBinvox(std::string_view argument, const std::string& bytes, std::size_t maxCells, std::uint64_t memoryBytes) {
+    Shape s;
+    s.dimension = 3;
+    try {
+        const rules::BinvoxInfo info = rules::scanBinvox(bytes);
+        checkSize(argument, info.filled, maxCells, memoryBytes);
+        s.cells = rules::binvoxCells(bytes, info);
+    } catch (const InputError& e) {
+        bad(argument, e.what());
+    }
+    return s;
+}
+
+/// A VisibleSim world (rules/VisibleSim.h): its modules, or with `target` its first grid target.
+Shape fromVisibleSim(std::string_view argument, const std::string& text, bool target, std::size_t maxCells) {
+    Shape s;
+    try {
+        const rules::VisibleSimCells world = rules::readVisibleSimWorld(text, maxCells);
+        if (world.lattice->kind() == rules::LatticeKind::Hex2D)
+            bad(argument, "a hex2d (hexanodes) world; plan runs on square2d and cubic3d, hex shapes are for holon hex");
+        s.dimension = world.lattice->dimension();
+        s.cells = target ? world.targets : world.blocks;
+    } catch (const InputError& e) {
+        if (std::string_view(e.what()).starts_with("shape '")) throw;
+        bad(argument, e.what());
+    }
+    if (target && s.cells.empty()) bad(argument, "the world has no grid target (<targetList><target format=\"grid\">)");
+    return s;
+}
+
+Shape fromFile(std::string_view argument, std::size_t maxCells, std::uint64_t memoryBytes) {
+    // WORLD.xml#target: the target of a VisibleSim world, when no file has that name.
+    std::string path(argument);
+    const bool target = path.ends_with(".xml#target") && !std::ifstream(path);
+    if (target) path.resize(path.size() - 7);
     if (!std::ifstream(path)) {
         std::string known;
         for (const auto& [name, what] : shapeGenerators()) known += (known.empty() ? "" : ", ") + name;
@@ -222,6 +259,8 @@ Shape fromFile(std::string_view argument) {
     const std::string text = rules::readTextFile(path);
     auto endsWith = [&](std::string_view suffix) { return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0; };
     if (endsWith(".json")) return fromJson(argument, text);
+    if (endsWith(".binvox")) return fromBinvox(argument, text, maxCells, memoryBytes);
+    if (endsWith(".xml")) return fromVisibleSim(argument, text, target, maxCells);
     if (endsWith(".xyz") || endsWith(".vox")) return fromVoxels(argument, text);
     return fromAscii(argument, text);
 }
@@ -276,7 +315,7 @@ Shape parseShape(std::string_view argument, int scale, std::uint64_t memoryBytes
         if (r[0] >= r[1]) bad(argument, "the inner radius must be smaller than the outer one");
         s = annulus(argument, r[0], r[1], maxCells, memoryBytes);
     } else if (kind == "chair") s = chair(argument, rest, maxCells, memoryBytes);
-    else s = fromFile(argument);
+    else s = fromFile(argument, maxCells, memoryBytes);
     s.name = std::string(argument);
     std::sort(s.cells.begin(), s.cells.end());  // distinct: generators make each cell once, files are checked
     if (s.cells.empty()) bad(argument, "the shape has no cells");

@@ -1,7 +1,7 @@
 #pragma once
 // Start and target shapes of a planning problem: sets of lattice cells in 2D or 3D, given as a
 // procedural string (`box:6x3x2`, `T:12`, `disc:8`, `ring:4,8`, `chair:3`) or a file (JSON cell
-// list, ASCII art, voxel text), each scalable so that every cell becomes a KxK(xK) block.
+// list, ASCII art, voxel text, .binvox, a VisibleSim world), each scalable so that every cell becomes a KxK(xK) block.
 
 #include "rules/Lattice.h"
 
