@@ -7,6 +7,7 @@
 // systems whose steps each change W cells towards the target (pixel's add and remove: W = 1), and
 // weak where modules must first move away.
 
+#include "checker/Evaluator.h"
 #include "checker/PathSearch.h"
 
 #include <algorithm>
@@ -42,6 +43,8 @@ PathResult aStarPath(const rules::Engine& engine, const Footprints& footprints, 
 
     std::vector<CellValue> cells(n), after(n);
     CellValue saved[rules::Engine::kMaxCells];
+    const WordConstraints constraints(engine);
+    Evaluator evaluator(constraints);  // holds the state being expanded
     StopReason stop = StopReason::Finished;
     int deepest = 0;
     std::size_t f = 0;  // the queue's lowest g + h: no path is shorter
@@ -63,16 +66,20 @@ PathResult aStarPath(const rules::Engine& engine, const Footprints& footprints, 
                 return result;
             }
             tree.cells(id, cells.data());
+            evaluator.load(cells.data());
             std::copy(cells.begin(), cells.end(), after.begin());
             engine.forEachMatch(cells.data(), [&](int placed) {
                 engine.apply(after.data(), placed, saved);
-                if (stop == StopReason::Finished && engine.legal(after.data())) {
-                    const auto [next, added] = tree.add(after.data(), id, placed);
+                if (stop == StopReason::Finished) {
+                    const rules::Engine::Placed& instance = engine.instances()[placed];
+                    StateId next = tree.findNear(id, instance, after.data());
+                    const bool added = next == kNoState && legalNear(evaluator, instance, cells.data(), after.data());
                     if (added) {
+                        next = tree.addMissing(id, placed);
                         g.push_back(g[id] + 1), h.push_back(bound(after.data())), closed.push_back(0);
                         push(next);
                         stop = meter.check(tree.size(), bytes(), deepest);
-                    } else if (!closed[next] && g[id] + 1 < g[next]) {
+                    } else if (next != kNoState && !closed[next] && g[id] + 1 < g[next]) {
                         g[next] = g[id] + 1, tree.relink(next, id, placed);
                         push(next);
                     }

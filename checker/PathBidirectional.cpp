@@ -9,11 +9,19 @@
 // end, which on a space that grows with the distance is a small part of what the forward search
 // stores.
 
+#include "checker/Evaluator.h"
 #include "checker/PathSearch.h"
 
 #include <algorithm>
 
 namespace holon::checker {
+
+bool legalNear(Evaluator& evaluator, const rules::Engine::Placed& instance, const CellValue* loaded, const CellValue* next) {
+    for (int k = 0; k < instance.size; ++k) evaluator.set(instance.cells[k], next[instance.cells[k]]);
+    const bool legal = evaluator.legal();
+    for (int k = 0; k < instance.size; ++k) evaluator.set(instance.cells[k], loaded[instance.cells[k]]);
+    return legal;
+}
 
 PathResult bidirectionalPath(const rules::Engine& engine, const Predecessors& predecessors, const PathQuery& query) {
     const int n = engine.region().size();
@@ -39,6 +47,8 @@ PathResult bidirectionalPath(const rules::Engine& engine, const Predecessors& pr
     StopReason stop = StopReason::Finished;
     std::vector<CellValue> cells(n), after(n);
     CellValue saved[rules::Engine::kMaxCells];
+    const WordConstraints constraints(engine);
+    Evaluator evaluator(constraints);  // holds the state being expanded
     while (meet[0] == kNoState && stop == StopReason::Finished) {
         const std::uint64_t frontier[2] = {trees[0].size() - begin[0], trees[1].size() - begin[1]};
         if (!frontier[0] || !frontier[1]) {
@@ -52,18 +62,19 @@ PathResult bidirectionalPath(const rules::Engine& engine, const Predecessors& pr
         const StateId end = static_cast<StateId>(tree.size());
         for (StateId id = begin[side]; id < end && meet[0] == kNoState && stop == StopReason::Finished; ++id) {
             tree.cells(id, cells.data());
+            evaluator.load(cells.data());
             const auto visit = [&](int placed, const CellValue* next) {
-                if (meet[0] != kNoState || stop != StopReason::Finished) return;
-                const auto [found, added] = tree.add(next, id, placed);
-                if (!added) return;
-                if (const StateId other = trees[1 - side].find(next); other != kNoState) meet[side] = found, meet[1 - side] = other;
+                const rules::Engine::Placed& instance = engine.instances()[placed];
+                if (meet[0] != kNoState || stop != StopReason::Finished || tree.findNear(id, instance, next) != kNoState || !legalNear(evaluator, instance, cells.data(), next)) return;
+                const StateId found = tree.addMissing(id, placed);
+                if (const StateId other = trees[1 - side].findAsIn(tree); other != kNoState) meet[side] = found, meet[1 - side] = other;
                 stop = meter.check(states(), bytes(), depth[0] + depth[1]);
             };
             if (side == 0) {
                 std::copy(cells.begin(), cells.end(), after.begin());
                 engine.forEachMatch(cells.data(), [&](int placed) {
                     engine.apply(after.data(), placed, saved);
-                    if (engine.legal(after.data())) visit(placed, after.data());
+                    visit(placed, after.data());
                     engine.undo(after.data(), placed, saved);
                 });
             } else {

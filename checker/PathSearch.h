@@ -32,12 +32,13 @@ private:
     int maxWrites_ = 0;
 };
 
-/// Rule steps run backwards: the configurations s with an enabled instance p that leads to a given
-/// s' (s legal, p's left side and guard hold in s, and firing p in s gives s'). Every such s
-/// differs from s' only in p's pattern cells, and each pattern cell's old state is constrained by
-/// its own new state (or, for a cell another cell's state moves into, fixed by it), so the
-/// candidates are a product of per-cell sets; each is then checked forwards, which makes the
-/// predecessors exact whatever the rule's guard, inputs and the system's constraints.
+/// Rule steps run backwards: the configurations s with an instance p that leads to a given s'
+/// (p's left side and guard hold in s, and firing p in s gives s'). Every such s differs from s'
+/// only in p's pattern cells, and each pattern cell's old state is constrained by its own new
+/// state (or, for a cell whose old state moves to another cell, fixed by that cell's new state),
+/// so the candidates are a product of per-cell sets; each is then checked forwards, which makes
+/// the predecessors exact whatever the rule's guard and inputs. Like Engine::forEachMatch, this
+/// leaves the system's constraints to the caller: s is a step of the search only when it is legal.
 class Predecessors {
 public:
     /// A rule whose firings may each come from more candidates than this is not run backwards.
@@ -45,8 +46,9 @@ public:
     explicit Predecessors(const rules::Engine& engine);
     /// Empty when every instance runs backwards; else why the search must go forwards only.
     const std::string& irreversible() const { return irreversible_; }
-    /// f(placed, before) for every predecessor `before` of `after` (a region's cells) and the
-    /// instance leading from it; `before` is valid during the call only. Not thread-safe.
+    /// f(placed, before) for every predecessor `before` of `after` (a region's cells), legal or
+    /// not, and the instance leading from it; `before` is valid during the call only. Not
+    /// thread-safe.
     template <class F>
     void forEach(const CellValue* after, F&& f) const;
 
@@ -76,6 +78,14 @@ public:
     /// The id of `cells`, and whether this call added it (with its parent and instance).
     std::pair<StateId, bool> add(const CellValue* cells, StateId parent, int via);
     StateId find(const CellValue* cells) const;
+    /// find() for `cells` that differ from stored state `base` at most in the instance's cells:
+    /// only those are packed anew.
+    StateId findNear(StateId base, const rules::Engine::Placed& instance, const CellValue* cells) const;
+    /// find() for the configuration the last find of `other` (of the same engine) looked for.
+    StateId findAsIn(const SearchTree& other) const;
+    /// Stores the configuration the last find() did not find (a search checks a configuration's
+    /// legality only when it is new: every stored one is legal).
+    StateId addMissing(StateId parent, int via);
     void cells(StateId id, CellValue* out) const { store_.layout().unpack(store_.state(id), out); }
     StateId parent(StateId id) const { return parent_[id]; }
     int via(StateId id) const { return via_[id]; }
@@ -89,7 +99,8 @@ private:
     int cells_;
     StateStore store_;
     std::uint64_t reserved_ = 0;
-    mutable std::vector<std::uint64_t> packed_;
+    mutable std::vector<std::uint64_t> packed_;  // the last configuration added or looked for
+    mutable std::uint64_t hash_ = 0;             // its hash
     std::vector<StateId> parent_;
     std::vector<int> via_;
 };
@@ -109,6 +120,11 @@ private:
     double lastReport_ = 0;
     std::uint32_t ticks_ = 0;
 };
+
+class Evaluator;
+/// Whether `next`, which differs from the configuration `evaluator` holds (`loaded`) at most in
+/// the instance's cells, is legal; the evaluator is left as it was.
+bool legalNear(Evaluator& evaluator, const rules::Engine::Placed& instance, const CellValue* loaded, const CellValue* next);
 
 /// Bidirectional breadth-first search from query.from forwards and query.to backwards (needs
 /// predecessors.irreversible() empty), one level at a time on the side with the smaller frontier,
@@ -151,7 +167,7 @@ void Predecessors::forEach(const CellValue* after, F&& f) const {
             for (int k = 0; k < inst.size; ++k) before_[inst.cells[k]] = old[k] = *at[k];
             bool exact = engine_->matches(before_.data(), static_cast<int>(p));
             for (int k = 0; k < inst.size && exact; ++k) exact = engine_->rewritten(inst, k, old) == after[inst.cells[k]];
-            if (exact && engine_->legal(before_.data())) f(static_cast<int>(p), before_.data());
+            if (exact) f(static_cast<int>(p), before_.data());
             int k = 0;
             while (k < inst.size && ++at[k] == hi[k]) at[k] = lo[k], ++k;
             if (k == inst.size) break;

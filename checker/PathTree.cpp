@@ -13,21 +13,41 @@ SearchTree::SearchTree(const rules::Engine& engine)
     : cells_(engine.region().size()), store_(StateLayout(engine.region().size(), engine.tables().alphabet())), packed_(store_.layout().words()) {}
 
 std::pair<StateId, bool> SearchTree::add(const CellValue* cells, StateId parent, int via) {
+    if (const StateId id = find(cells); id != kNoState) return {id, false};
+    return {addMissing(parent, via), true};
+}
+
+StateId SearchTree::find(const CellValue* cells) const {
+    store_.layout().pack(cells, packed_.data());
+    hash_ = store_.layout().hash(packed_.data());
+    return store_.find(packed_.data(), hash_);
+}
+
+StateId SearchTree::findNear(StateId base, const rules::Engine::Placed& instance, const CellValue* cells) const {
+    const StateLayout& layout = store_.layout();
+    std::copy(store_.state(base), store_.state(base) + layout.words(), packed_.begin());
+    for (int k = 0; k < instance.size; ++k) layout.set(packed_.data(), instance.cells[k], cells[instance.cells[k]]);
+    hash_ = layout.hash(packed_.data());
+    return store_.find(packed_.data(), hash_);
+}
+
+StateId SearchTree::findAsIn(const SearchTree& other) const {
+    std::copy(other.packed_.begin(), other.packed_.end(), packed_.begin());
+    hash_ = other.hash_;
+    return store_.find(packed_.data(), hash_);
+}
+
+StateId SearchTree::addMissing(StateId parent, int via) {
     if (store_.capacityUsed() + 1 > reserved_) {
         // Room doubles, so the table is rebuilt log(n) times.
         const std::uint64_t more = std::max<std::uint64_t>(reserved_, 1 << 12);
         store_.reserve(more);
         reserved_ = store_.capacityUsed() + more;
     }
-    store_.layout().pack(cells, packed_.data());
-    const auto [id, added] = store_.insert(packed_.data());
-    if (added) parent_.push_back(parent), via_.push_back(via);
-    return {id, added};
-}
-
-StateId SearchTree::find(const CellValue* cells) const {
-    store_.layout().pack(cells, packed_.data());
-    return store_.find(packed_.data());
+    StateStore::IdBlock one{0, 0, 1};
+    const StateId id = store_.insert(packed_.data(), hash_, one).first;
+    parent_.push_back(parent), via_.push_back(via);
+    return id;
 }
 
 std::vector<StateId> SearchTree::pathTo(StateId id) const {
