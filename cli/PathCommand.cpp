@@ -133,8 +133,8 @@ int run(const PathArgs& a) {
             std::cout << "  unreachable: the " << result.closed << (result.closed == 1 ? " configuration" : " configurations") << " reachable from the start include no "
                       << (a.goal ? "goal configuration" : "configuration equal to the target") << '\n';
         else
-            std::cout << "  unreachable: the " << result.closed << (result.closed == 1 ? " configuration" : " configurations")
-                      << " from which the target is reachable do not include the start\n";
+            std::cout << "  unreachable: the target is reachable from " << result.closed << (result.closed == 1 ? " configuration" : " configurations")
+                      << " (all searched backwards), and the start is not one of them\n";
         break;
     case checker::PathOutcome::Undecided:
         std::cout << "  undecided: stopped by " << checker::stopReasonName(s.stopped) << " after " << s.states << " states (none within " << checker::stepCount(static_cast<std::size_t>(s.depth))
