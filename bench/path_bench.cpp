@@ -125,7 +125,9 @@ int main(int argc, char** argv) {
     for (std::size_t p = 1; p < runs[0].size(); ++p)
         if (runs[0][p].states > runs[0][largest].states) largest = p;
     std::printf("largest forward search (pair %zu, %llu states):", largest, static_cast<unsigned long long>(runs[0][largest].states));
-    for (int s = 0; s < 3; ++s) std::printf(" %s %.3f s%s", checker::pathSearchName(searches[s]).c_str(), runs[s][largest].seconds, s < 2 ? "," : "\n");
+    for (int s = 0; s < 3; ++s)
+        std::printf(" %s %.3f s (%.3f CPU-s)%s", checker::pathSearchName(searches[s]).c_str(), runs[s][largest].seconds,
+                    static_cast<double>(runs[s][largest].states) / std::max(runs[s][largest].perCpu, 1e-9), s < 2 ? "," : "\n");
     for (int s = 0; s < 3; ++s) {
         std::vector<double> seconds, perCore, perCpu;
         for (const Run& r : runs[s]) seconds.push_back(r.seconds), perCore.push_back(r.perCore), perCpu.push_back(r.perCpu);

@@ -35,8 +35,8 @@ enum class PathOutcome { Found,
 
 struct PathResult {
     PathOutcome outcome = PathOutcome::Undecided;
-    Trace trace;         // when Found: a shortest path, trace.steps.size() - 1 rule steps
-    ExploreStats stats;  // the searched space (both sides of a bidirectional search)
+    Trace trace;                              // when Found: a shortest path, trace.steps.size() - 1 rule steps
+    ExploreStats stats;                       // the searched space (both sides of a bidirectional search)
     PathSearch search = PathSearch::Forward;  // the search that ran
     std::string fallback;                     // why it is not the one asked for, or empty
     int bound = -1;                           // A*: the bound at `from` (a lower bound on the length)

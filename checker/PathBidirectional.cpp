@@ -16,13 +16,6 @@
 
 namespace holon::checker {
 
-bool legalNear(Evaluator& evaluator, const rules::Engine::Placed& instance, const CellValue* loaded, const CellValue* next) {
-    for (int k = 0; k < instance.size; ++k) evaluator.set(instance.cells[k], next[instance.cells[k]]);
-    const bool legal = evaluator.legal();
-    for (int k = 0; k < instance.size; ++k) evaluator.set(instance.cells[k], loaded[instance.cells[k]]);
-    return legal;
-}
-
 PathResult bidirectionalPath(const rules::Engine& engine, const Predecessors& predecessors, const PathQuery& query) {
     const int n = engine.region().size();
     const rules::Configuration& to = *query.to;

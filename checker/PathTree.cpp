@@ -1,8 +1,9 @@
-// The search tree and the limits of the path searches that run beside the explorer
-// (checker/PathSearch.h). Single-threaded on purpose: a bidirectional or A* search stores a few
+// The search tree, legality near a stored state and the limits of the path searches that run
+// beside the explorer (checker/PathSearch.h). Single-threaded on purpose: a bidirectional or A* search stores a few
 // hundred thousand states where the forward one stores millions, so it gains less from threads
 // than it would lose to the explorer's level barriers, and one thread keeps its ids in order.
 
+#include "checker/Evaluator.h"
 #include "checker/PathSearch.h"
 
 #include <algorithm>
@@ -55,6 +56,13 @@ std::vector<StateId> SearchTree::pathTo(StateId id) const {
     for (StateId s = id; s != kNoState; s = parent_[s]) path.push_back(s);
     std::reverse(path.begin(), path.end());
     return path;
+}
+
+bool legalNear(Evaluator& evaluator, const rules::Engine::Placed& instance, const CellValue* loaded, const CellValue* next) {
+    for (int k = 0; k < instance.size; ++k) evaluator.set(instance.cells[k], next[instance.cells[k]]);
+    const bool legal = evaluator.legal();
+    for (int k = 0; k < instance.size; ++k) evaluator.set(instance.cells[k], loaded[instance.cells[k]]);
+    return legal;
 }
 
 SearchMeter::SearchMeter(const PathQuery& query) : query_(&query), budget_(query.limits.timeoutSeconds) {}

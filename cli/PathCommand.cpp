@@ -95,8 +95,9 @@ int run(const PathArgs& a) {
     if (found && svgOut) svgOut->write(checker::drawTraceSvg(result.trace, engine, title));
 
     const auto& s = result.stats;
-    const int code = !found ? (result.outcome == checker::PathOutcome::Unreachable ? kExitViolated : kExitUndecided) : replayed && (!schedule || scheduled) ? kExitOk
-                                                                                                                                                         : kExitInternal;
+    int code = kExitOk;
+    if (!found) code = result.outcome == checker::PathOutcome::Unreachable ? kExitViolated : kExitUndecided;
+    else if (!replayed || (schedule && !scheduled)) code = kExitInternal;
     if (a.json) {
         nlohmann::json j = {{"system", system->name}, {"region", region.spec()}, {"outcome", outcomeName(result.outcome)}, {"states", s.states}, {"depth", s.depth}, {"seconds", s.seconds}, {"stopped", checker::stopReasonName(s.stopped)}};
         j["search"] = checker::pathSearchName(result.search);

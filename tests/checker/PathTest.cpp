@@ -265,7 +265,7 @@ TEST_CASE("rule steps run backwards are exactly the forward steps into a configu
                 std::set<Step> found;
                 predecessors.forEach(after.data(), [&](int placed, const rules::CellValue* before) {
                     const std::vector<rules::CellValue> cells(before, before + after.size());
-                    CHECK(found.insert({cells, placed}).second);  // each once
+                    CHECK(found.insert({cells, placed}).second);                               // each once
                     if (!w.in->legal({cells, engine.inputs()})) found.erase({cells, placed});  // the search's part
                 });
                 const auto expected = into.find(after);
