@@ -90,7 +90,7 @@ PathResult shortestPath(const rules::Engine& engine, const PathQuery& query) {
     const Predecessors predecessors(engine);
     if (predecessors.irreversible().empty()) return bidirectionalPath(engine, predecessors, query);
     PathResult result = forwardPath(engine, query);
-    result.fallback = "forward search: " + predecessors.irreversible();
+    result.fallback = predecessors.irreversible();
     return result;
 }
 

@@ -7,7 +7,6 @@
 #include "checker/StateStore.h"
 
 #include <algorithm>
-#include <bit>
 #include <string>
 #include <vector>
 

@@ -112,7 +112,7 @@ int run(const PathArgs& a) {
     std::cout << system->name << " on " << region.spec() << ", from " << a.from << " to " << (a.goal ? "the goal" : a.to) << '\n'
               << "  search: " << checker::pathSearchName(result.search);
     if (result.bound >= 0) std::cout << " (bound at the start: " << checker::stepCount(static_cast<std::size_t>(result.bound)) << ")";
-    if (!result.fallback.empty()) std::cout << "; " << result.fallback;
+    if (!result.fallback.empty()) std::cout << ", since " << result.fallback;
     std::cout << '\n';
     switch (result.outcome) {
     case checker::PathOutcome::Found:
