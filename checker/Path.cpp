@@ -1,8 +1,12 @@
-// Shortest paths by breadth-first search on the explorer (checker/Path.h). The explorer asks
-// `decided` after each level, so the first level that stores a target is its distance; the search
-// keeps no edges (only the BFS tree), which is what makes 10^7-state spaces cheap to cross.
+// Shortest paths (checker/Path.h): the choice of search, and the forward one, breadth-first on
+// the explorer. The explorer asks `decided` after each level, so the first level that stores a
+// target is its distance; the search keeps no edges (only the BFS tree), which is what makes
+// 10^7-state spaces cheap to cross. The searches towards one given configuration, which need
+// fewer states, are in PathBidirectional.cpp and PathAStar.cpp.
 
 #include "checker/Path.h"
+
+#include "checker/PathSearch.h"
 
 #include "rules/Error.h"
 
@@ -11,11 +15,21 @@
 
 namespace holon::checker {
 
-PathResult shortestPath(const rules::Engine& engine, const PathQuery& query) {
+std::string pathSearchName(PathSearch s) {
+    switch (s) {
+    case PathSearch::Auto: return "auto";
+    case PathSearch::Forward: return "forward";
+    case PathSearch::Bidirectional: return "bidirectional";
+    case PathSearch::AStar: return "astar";
+    }
+    return "?";
+}
+
+namespace {
+
+PathResult forwardPath(const rules::Engine& engine, const PathQuery& query) {
     const std::size_t n = query.from.cells.size();
     const auto& goal = engine.model().system().goal;
-    if (!query.to && !goal) throw InputError("system '" + engine.model().system().name + "' declares no goal; give --to CONFIG, or declare one with 'goal EXPR'");
-    if (query.to && query.to->cells.size() != n) throw InputError("--to: the configuration does not fit the region of --from");
     const auto isTarget = [&](const CellValue* cells) {
         return query.to ? std::equal(cells, cells + n, query.to->cells.begin()) : engine.holds(*goal, cells);
     };
@@ -40,6 +54,7 @@ PathResult shortestPath(const rules::Engine& engine, const PathQuery& query) {
     Explorer explorer(engine, options);
     explorer.addInitial(query.from.cells.data());
     PathResult result;
+    result.search = PathSearch::Forward;
     result.stats = explorer.explore();
     if (best != kNoState) {
         result.outcome = PathOutcome::Found;
@@ -48,12 +63,34 @@ PathResult shortestPath(const rules::Engine& engine, const PathQuery& query) {
         return result;
     }
     switch (result.stats.stopped) {
-    case StopReason::Finished: result.outcome = PathOutcome::Unreachable; break;
+    case StopReason::Finished: result.outcome = PathOutcome::Unreachable, result.closed = result.stats.states; break;
     case StopReason::MaxStates:
     case StopReason::Timeout:
     case StopReason::Memory:
     case StopReason::Decided: result.outcome = PathOutcome::Undecided; break;
     }
+    return result;
+}
+
+}  // namespace
+
+PathResult shortestPath(const rules::Engine& engine, const PathQuery& query) {
+    if (!query.to && !engine.model().system().goal)
+        throw InputError("system '" + engine.model().system().name + "' declares no goal; give --to CONFIG, or declare one with 'goal EXPR'");
+    if (query.to && query.to->cells.size() != query.from.cells.size()) throw InputError("--to: the configuration does not fit the region of --from");
+    if (!query.to && (query.search == PathSearch::Bidirectional || query.search == PathSearch::AStar))
+        throw InputError("--search " + pathSearchName(query.search) + " needs a target configuration: give --to CONFIG instead of --goal, or --search forward");
+    switch (query.search) {
+    case PathSearch::Forward: return forwardPath(engine, query);
+    case PathSearch::AStar: return aStarPath(engine, Footprints(engine), query);
+    case PathSearch::Auto:
+    case PathSearch::Bidirectional: break;
+    }
+    if (!query.to) return forwardPath(engine, query);
+    const Predecessors predecessors(engine);
+    if (predecessors.irreversible().empty()) return bidirectionalPath(engine, predecessors, query);
+    PathResult result = forwardPath(engine, query);
+    result.fallback = predecessors.irreversible();
     return result;
 }
 

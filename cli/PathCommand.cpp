@@ -1,10 +1,13 @@
 // `holon path FILE --region R --from A (--to B | --goal)`: a shortest sequence of rule steps
 // between two configurations, or to the nearest goal configuration (checker/Path.h), replayed
 // through the reference interpreter before it is shown; "unreachable" comes with the size of the
-// space searched, which is every configuration reachable from A.
+// space searched, which is every configuration reachable from A (or, when the bidirectional
+// search's backward side ran dry first, every configuration from which B is reachable).
+// --parallel groups the path's steps into rounds that fire together (checker/PathSchedule.h).
 
 #include "checker/Draw.h"
 #include "checker/Path.h"
+#include "checker/PathSchedule.h"
 #include "cli/Commands.h"
 #include "cli/ExploreLimits.h"
 #include "cli/Inputs.h"
@@ -19,9 +22,9 @@ namespace holon::cli {
 namespace {
 
 struct PathArgs {
-    std::string file, region, from, to, traceOut, svg;
+    std::string file, region, from, to, traceOut, svg, search = "auto";
     std::vector<std::string> inputs, noWarnings;
-    bool goal = false, json = false;
+    bool goal = false, json = false, parallel = false;
     ExploreLimitArgs limits;
 };
 
@@ -34,8 +37,15 @@ std::string outcomeName(checker::PathOutcome o) {
     return "?";
 }
 
+checker::PathSearch searchNamed(const std::string& name) {
+    for (auto s : {checker::PathSearch::Auto, checker::PathSearch::Forward, checker::PathSearch::Bidirectional, checker::PathSearch::AStar})
+        if (checker::pathSearchName(s) == name) return s;
+    throw InputError("--search " + name + ": unknown search; use auto, forward, bidirectional or astar");
+}
+
 int run(const PathArgs& a) {
     if (a.to.empty() == !a.goal) throw InputError("say where to go: --to CONFIG (JSON or ASCII art) or --goal (any configuration where the system's goal holds), not both");
+    const checker::PathSearch search = searchNamed(a.search);
     auto system = loadRules(a.file, a.noWarnings);
     if (!system) return kExitBadInput;
     const rules::Region region = rules::Region::parse(a.region, 1u << 22);
@@ -53,6 +63,7 @@ int run(const PathArgs& a) {
             throw InputError("--to " + a.to + ": its inputs differ from those of --from " + a.from + "; a path never changes an input");
     }
     query.limits = a.limits.limits();
+    query.search = search;
     const bool terminal = isatty(2) && !a.json;
     if (terminal)
         query.onProgress = [](const checker::ExploreStats& s) {
@@ -70,29 +81,61 @@ int run(const PathArgs& a) {
         std::cerr << "holon path: internal error: the path does not replay: " << why
                   << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
     const std::size_t length = found ? result.trace.steps.size() - 1 : 0;
+    std::optional<checker::Schedule> schedule;
+    bool scheduled = false;
+    if (a.parallel && found && replayed) {
+        schedule = checker::compactSteps(result.trace, engine, checker::Footprints(engine));
+        scheduled = checker::replaySchedule(*schedule, result.trace, engine, in, &why);
+        if (!scheduled)
+            std::cerr << "holon path: internal error: the parallel schedule does not replay: " << why
+                      << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+    }
     const std::string title = system->name + " on " + region.spec() + ": " + (found ? "a shortest path, " + checker::stepCount(length) : outcomeName(result.outcome));
     if (found && traceOut) traceOut->write(checker::toItf(result.trace, engine, a.file).dump(2) + "\n");
     if (found && svgOut) svgOut->write(checker::drawTraceSvg(result.trace, engine, title));
 
     const auto& s = result.stats;
-    const int code = !found ? (result.outcome == checker::PathOutcome::Unreachable ? kExitViolated : kExitUndecided) : replayed ? kExitOk
-                                                                                                                                : kExitInternal;
+    int code = kExitOk;
+    if (!found) code = result.outcome == checker::PathOutcome::Unreachable ? kExitViolated : kExitUndecided;
+    else if (!replayed || (schedule && !scheduled)) code = kExitInternal;
     if (a.json) {
         nlohmann::json j = {{"system", system->name}, {"region", region.spec()}, {"outcome", outcomeName(result.outcome)}, {"states", s.states}, {"depth", s.depth}, {"seconds", s.seconds}, {"stopped", checker::stopReasonName(s.stopped)}};
+        j["search"] = checker::pathSearchName(result.search);
+        if (!result.fallback.empty()) j["fallback"] = result.fallback;
+        if (result.bound >= 0) j["bound"] = result.bound;
+        if (result.outcome == checker::PathOutcome::Unreachable) j["closed"] = {{"side", result.closedFromStart ? "from" : "to"}, {"states", result.closed}};
         if (found) j["length"] = length, j["replayed"] = replayed, j["path"] = traceJson(result.trace, engine, in);
+        if (schedule) j["parallel"] = {{"makespan", schedule->makespan()}, {"rounds", schedule->rounds}, {"replayed", scheduled}};
         std::cout << j.dump(2) << '\n';
         return code;
     }
-    std::cout << system->name << " on " << region.spec() << ", from " << a.from << " to " << (a.goal ? "the goal" : a.to) << '\n';
+    std::cout << system->name << " on " << region.spec() << ", from " << a.from << " to " << (a.goal ? "the goal" : a.to) << '\n'
+              << "  search: " << checker::pathSearchName(result.search);
+    if (result.bound >= 0) std::cout << " (bound at the start: " << checker::stepCount(static_cast<std::size_t>(result.bound)) << ")";
+    if (!result.fallback.empty()) std::cout << ", since " << result.fallback;
+    std::cout << '\n';
     switch (result.outcome) {
     case checker::PathOutcome::Found:
         std::cout << "  a shortest path: " << checker::stepCount(length) << " (searched " << s.states << " states, " << std::fixed << std::setprecision(2)
                   << s.seconds << " s" << (replayed ? "; replayed through the reference interpreter)" : "; NOT confirmed by the reference interpreter)") << "\n\n"
                   << checker::drawTraceAscii(result.trace, engine);
+        if (schedule) {
+            std::cout << "\n  parallel: " << schedule->makespan() << (schedule->makespan() == 1 ? " round" : " rounds") << " for " << checker::stepCount(length)
+                      << " (a greedy grouping of this path's steps, not a shortest parallel path" << (scheduled ? "; replayed)" : "; NOT confirmed by the reference interpreter)") << '\n';
+            for (std::size_t r = 0; r < schedule->rounds.size(); ++r) {
+                std::cout << "    round " << r + 1 << ": step" << (schedule->rounds[r].size() == 1 ? " " : "s ");
+                for (std::size_t k = 0; k < schedule->rounds[r].size(); ++k) std::cout << (k ? ", " : "") << schedule->rounds[r][k];
+                std::cout << '\n';
+            }
+        }
         break;
     case checker::PathOutcome::Unreachable:
-        std::cout << "  unreachable: the " << s.states << (s.states == 1 ? " configuration" : " configurations") << " reachable from the start (depth " << s.depth << ") include no "
-                  << (a.goal ? "goal configuration" : "configuration equal to the target") << '\n';
+        if (result.closedFromStart)
+            std::cout << "  unreachable: the " << result.closed << (result.closed == 1 ? " configuration" : " configurations") << " reachable from the start include no "
+                      << (a.goal ? "goal configuration" : "configuration equal to the target") << '\n';
+        else
+            std::cout << "  unreachable: the target is reachable from " << result.closed << (result.closed == 1 ? " configuration" : " configurations")
+                      << " (all searched backwards), and the start is not one of them\n";
         break;
     case checker::PathOutcome::Undecided:
         std::cout << "  undecided: stopped by " << checker::stopReasonName(s.stopped) << " after " << s.states << " states (none within " << checker::stepCount(static_cast<std::size_t>(s.depth))
@@ -113,6 +156,8 @@ Run addPathCommand(CLI::App& app) {
     sub->add_option("--from", a->from, "start configuration (JSON, ITF#N or ASCII art)")->required();
     sub->add_option("--to", a->to, "target configuration (JSON, ITF#N or ASCII art)");
     sub->add_flag("--goal", a->goal, "go to the nearest configuration where the system's goal holds");
+    sub->add_option("--search", a->search, "auto (bidirectional to --to when the rules run backwards, else forward), forward, bidirectional or astar (with --to)");
+    sub->add_flag("--parallel", a->parallel, "also group the path's steps into rounds of instances that fire together, with the makespan");
     sub->add_option("--input", a->inputs, "set an input from an ASCII mask: NAME=FILE (any character but '.' marks a cell)");
     addExploreLimits(sub, a->limits, "the search");
     sub->add_flag("--json", a->json, "print the result as JSON (length: the number of rule steps)");
