@@ -50,6 +50,7 @@ int runHolon(int argc, char** argv) {
     add(addReplayCommand);
     add(addPathCommand);
     add(addDiffCommand);
+    add(addViewCommand);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

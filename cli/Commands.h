@@ -104,5 +104,6 @@ Run addRoombotsCommand(CLI::App& app);
 Run addReplayCommand(CLI::App& app);
 Run addPathCommand(CLI::App& app);
 Run addDiffCommand(CLI::App& app);
+Run addViewCommand(CLI::App& app);
 
 }  // namespace holon::cli
