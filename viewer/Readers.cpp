@@ -110,7 +110,7 @@ public:
     int of(const nlohmann::json& j, Vec offset, const std::string& where) const {
         const Vec v = point(j, where) + offset;
         const auto it = index_.find(key(v));
-        if (it == index_.end()) throw InputError(where + ": cell " + j.dump() + " lies outside the run's cells");
+        if (it == index_.end()) throw InputError(where + ": cell " + j.dump() + " lies outside the run's cells (its region or points); the file was edited by hand or mixes two runs: write it again with the holon command that made it");
         return it->second;
     }
     static Vec point(const nlohmann::json& j, const std::string& where) {
@@ -171,7 +171,7 @@ std::string lineColumn(const std::string& text, std::size_t byte) {
     byte = std::min(byte, text.size());
     const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(byte), '\n'));
     const std::size_t start = text.rfind('\n', byte == 0 ? 0 : byte - 1);
-    return std::to_string(line) + ":" + std::to_string(start == std::string::npos ? byte : byte - start - 1);
+    return std::to_string(line) + ":" + std::to_string(start == std::string::npos ? byte + 1 : byte - start);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -247,9 +247,12 @@ Run readLines(const std::string& path, std::istream& in, const nlohmann::json& h
         if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
         nlohmann::json j;
         try {
+            rules::checkJsonDepth(line);
             j = nlohmann::json::parse(line);
         } catch (const nlohmann::json::exception& e) {
             throw InputError(where + ": not a JSON line (" + e.what() + "); the file is cut short or was edited by hand: write it again");
+        } catch (const InputError& e) {
+            throw InputError(where + ": " + e.what());
         }
         const bool fault = j.is_object() && j.contains("fault");
         if (!j.is_object() || !j.contains("round") || !j["round"].is_number_integer() || !j.contains("cells") || !j["cells"].is_array() ||
@@ -370,6 +373,12 @@ Run readItf(const nlohmann::json& itf, const std::string& path, const std::strin
 }
 
 Run readRun(const std::string& path, const std::string& rulesFile) {
+    // Only a file: /dev/zero or a pipe has no end to read to.
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) throw InputError(path + ": a folder, not a file; " + kFormats);
+    if (!std::filesystem::is_regular_file(path, error)) throw InputError(path + ": no such file (or not a regular file); " + kFormats);
+    if (std::filesystem::file_size(path, error) > kMaxFileBytes)
+        throw LimitError(path + ": larger than the viewer's " + std::to_string(kMaxFileBytes >> 20) + " MiB (docs/viewer.md)");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot open the file");
     std::string first;
@@ -377,9 +386,11 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
     nlohmann::json head;
     bool line = false;
     try {
+        rules::checkJsonDepth(first);
         head = nlohmann::json::parse(first);
         line = head.is_object() && !head.contains("states");
     } catch (const nlohmann::json::exception&) {
+    } catch (const InputError&) {
     }
     if (line) return readLines(path, in, head, rulesFile);
     // One JSON document: an ITF trace (pretty-printed over many lines).
@@ -387,6 +398,11 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
     rest << first << '\n' << in.rdbuf();
     const std::string all = rest.str();
     nlohmann::json itf;
+    try {
+        rules::checkJsonDepth(all);
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
     try {
         itf = nlohmann::json::parse(all);
     } catch (const nlohmann::json::parse_error& e) {

@@ -58,6 +58,8 @@ struct Run {
 /// changes is shown every g-th step, g as small as keeps the changes within the limit.
 constexpr std::int64_t kMaxCells = 4'000'000;
 constexpr std::int64_t kMaxChanges = 4'000'000;
+/// The largest input file the viewer reads (a plan of 10^6 metamodules is about 250 MB).
+constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t{2} << 30;
 
 /// Merges runs of `g` consecutive steps into one (labels of the first and last, changes to their
 /// net effect, context of all) until the changes fit kMaxChanges; records g in run.sampled.
