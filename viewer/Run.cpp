@@ -58,13 +58,13 @@ std::vector<Run::Step> merged(const Run& run, int g) {
 
 }  // namespace
 
-void sample(Run& run) {
+void sample(Run& run, std::int64_t maxChanges) {
     run.runSteps = static_cast<std::int64_t>(run.steps.size()) - 1;
-    if (changesOf(run) <= kMaxChanges) return;
+    if (changesOf(run) <= maxChanges) return;
     for (int g = 2;; g *= 2) {
         Run candidate = run;
         candidate.steps = merged(run, g);
-        if (changesOf(candidate) <= kMaxChanges || candidate.steps.size() <= 2) {
+        if (changesOf(candidate) <= maxChanges || candidate.steps.size() <= 2) {
             if (run.violation > 0) candidate.violation = (run.violation - 1) / g + 1;
             candidate.sampled = g;
             run = std::move(candidate);

@@ -62,8 +62,9 @@ constexpr std::int64_t kMaxChanges = 4'000'000;
 constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t{2} << 30;
 
 /// Merges runs of `g` consecutive steps into one (labels of the first and last, changes to their
-/// net effect, context of all) until the changes fit kMaxChanges; records g in run.sampled.
-void sample(Run& run);
+/// net effect, context of all), g the smallest power of 2 that brings the changes within
+/// `maxChanges`; records g in run.sampled and the run's own step count in run.runSteps.
+void sample(Run& run, std::int64_t maxChanges = kMaxChanges);
 
 /// The configuration after step k (0: the start).
 std::vector<int> configurationAt(const Run& run, std::size_t k);
