@@ -76,7 +76,6 @@ void checkJsonDepth(const std::string& text) {
     }
 }
 
-
 nlohmann::json stateFields(const Model& model, CellValue v) {
     nlohmann::json record = nlohmann::json::object();
     if (v == 0) return record;

@@ -49,8 +49,7 @@ private:
 std::string pageData(const Run& run) {
     if (run.states.size() > 65535) throw LimitError("the run has " + std::to_string(run.states.size()) + " distinct cell states, more than the viewer's 65535");
     const checker::TraceColours colours = checker::traceColours();
-    nlohmann::json j{{"kind", run.kind}, {"title", run.title}, {"notes", run.notes}, {"lattice", rules::Lattice::get(run.lattice).name()}, {"violation", run.violation}, {"sampled", run.sampled},
-                     {"runSteps", run.runSteps}, {"maxChanges", kMaxChanges}};
+    nlohmann::json j{{"kind", run.kind}, {"title", run.title}, {"notes", run.notes}, {"lattice", rules::Lattice::get(run.lattice).name()}, {"violation", run.violation}, {"sampled", run.sampled}, {"runSteps", run.runSteps}, {"maxChanges", kMaxChanges}};
     j["palette"] = {{"changed", colours.changed}, {"context", colours.context}, {"cell", colours.cell}, {"noFill", colours.noFill}};
     Packed points(4);
     for (Vec v : run.cells) points.add(v.x), points.add(v.y), points.add(v.z);

@@ -9,8 +9,8 @@
 #include "viewer/Readers.h"
 
 #include "checker/Draw.h"
-#include "rules/Error.h"
 #include "rules/ConfigIo.h"
+#include "rules/Error.h"
 #include "rules/Library.h"
 #include "rules/Model.h"
 #include "rules/Region.h"
@@ -209,7 +209,9 @@ Run readLines(const std::string& path, std::istream& in, const nlohmann::json& h
         system.emplace(loadNamed(rulesFile, text(head, "source"), text(head, "system"), where1));
         states.emplace(run, *system, rules::Lattice::get(run.lattice));
     }
-    run.title = (kind == "plan" ? "plan " : kind == "hex" ? "hex run " : "Roombots run ") + path + (system ? " (" + system->name + ")" : "");
+    run.title = (kind == "plan" ? "plan " : kind == "hex" ? "hex run "
+                                                          : "Roombots run ") +
+                path + (system ? " (" + system->name + ")" : "");
     if (head.contains("title") && head["title"].is_string()) run.notes.push_back(head["title"].get<std::string>());
     run.start.assign(run.cells.size(), 0);
     if (!start.contains("cells") || !start["cells"].is_array()) throw InputError(where1 + ": the start configuration has no \"cells\" list");
@@ -233,7 +235,9 @@ Run readLines(const std::string& path, std::istream& in, const nlohmann::json& h
         Run::Step& step = run.steps.back();
         std::string counts;
         for (const auto& [rule, n] : rules) counts += (counts.empty() ? "" : ", ") + rule + " " + std::to_string(n);
-        step.label = (kind == "roombots" ? "action " : kind == "hex" ? "timestep " : "round ") + std::to_string(*round) + ": " + counts;
+        step.label = (kind == "roombots" ? "action " : kind == "hex" ? "timestep "
+                                                                     : "round ") +
+                     std::to_string(*round) + ": " + counts;
         for (const auto& change : step.changes) seenAt[change.first] = -2;
         for (int c : looked)
             if (seenAt[c] != -2) step.context.push_back(c), seenAt[c] = -2;
@@ -280,7 +284,8 @@ Run readLines(const std::string& path, std::istream& in, const nlohmann::json& h
         }
     }
     close();
-    run.notes.push_back(std::to_string(instances) + " rule instances in " + std::to_string(run.steps.size() - 1) + (kind == "roombots" ? " actions" : kind == "hex" ? " timesteps" : " rounds"));
+    run.notes.push_back(std::to_string(instances) + " rule instances in " + std::to_string(run.steps.size() - 1) + (kind == "roombots" ? " actions" : kind == "hex" ? " timesteps"
+                                                                                                                                                                    : " rounds"));
     return run;
 }
 
@@ -314,7 +319,8 @@ Run readItf(const nlohmann::json& itf, const std::string& path, const std::strin
                 points.push_back(Cells::point(entry[0], stateWhere(k)));
             }
         const bool three = !points.empty() && states[0]["cells"]["#map"][0][0]["#tup"].size() == 3;
-        run.lattice = system.lattice ? *system.lattice : three ? rules::LatticeKind::Cubic3D : rules::LatticeKind::Square2D;
+        run.lattice = system.lattice ? *system.lattice : three ? rules::LatticeKind::Cubic3D
+                                                               : rules::LatticeKind::Square2D;
         boxAround(run, points);
     }
     limitCells(run, path);
@@ -395,7 +401,8 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
     if (line) return readLines(path, in, head, rulesFile);
     // One JSON document: an ITF trace (pretty-printed over many lines).
     std::stringstream rest;
-    rest << first << '\n' << in.rdbuf();
+    rest << first << '\n'
+         << in.rdbuf();
     const std::string all = rest.str();
     nlohmann::json itf;
     try {

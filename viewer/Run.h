@@ -43,10 +43,10 @@ struct Run {
     /// What each fill colour means, in order: (colour, label).
     std::vector<std::pair<std::string, std::string>> legend;
     std::vector<Input> inputs;
-    std::vector<int> start;   // state per cell
-    std::vector<Step> steps;  // steps[0] is the start: no changes
-    int violation = -1;       // the first step at which a property is violated; -1: none
-    int sampled = 1;          // each step shown stands for this many steps of the run (1: every step)
+    std::vector<int> start;     // state per cell
+    std::vector<Step> steps;    // steps[0] is the start: no changes
+    int violation = -1;         // the first step at which a property is violated; -1: none
+    int sampled = 1;            // each step shown stands for this many steps of the run (1: every step)
     std::int64_t runSteps = 0;  // steps in the run, before sampling
 
     /// The index of a state with these fields (compact JSON, sorted keys), added when new.

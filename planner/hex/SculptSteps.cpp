@@ -29,8 +29,7 @@ SculptSteps::SculptSteps(std::ostream& out, const HoleSculptor& sculptor)
         }
         if (sculptor.target()[i]) target.push_back(at);
     }
-    *out_ << nlohmann::json{{"run", "hex"}, {"system", model.system().name}, {"source", model.system().sourceName},
-                            {"start", {{"lattice", lattice.name()}, {"points", points}, {"cells", cells}, {"inputs", {{"target", target}}}}}}
+    *out_ << nlohmann::json{{"run", "hex"}, {"system", model.system().name}, {"source", model.system().sourceName}, {"start", {{"lattice", lattice.name()}, {"points", points}, {"cells", cells}, {"inputs", {{"target", target}}}}}}
                  .dump()
           << '\n';
 }

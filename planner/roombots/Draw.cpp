@@ -153,8 +153,7 @@ std::string runSteps(const Setting& setting, const AssemblyResult& result, const
         for (const Cell& c : seed.cells) structure.push_back(at(c));
     const std::string region = "cubic:" + std::to_string(hi.x - lo.x + 1) + "x" + std::to_string(hi.y - lo.y + 1) + "x" + std::to_string(hi.z - lo.z + 1);
     std::ostringstream out;
-    out << nlohmann::json{{"run", "roombots"}, {"title", title}, {"colours", colours},
-                          {"start", {{"region", region}, {"offset", {-lo.x, -lo.y, -lo.z}}, {"cells", cells}, {"inputs", {{"structure", structure}}}}}}
+    out << nlohmann::json{{"run", "roombots"}, {"title", title}, {"colours", colours}, {"start", {{"region", region}, {"offset", {-lo.x, -lo.y, -lo.z}}, {"cells", cells}, {"inputs", {{"structure", structure}}}}}}
                .dump()
         << '\n';
     std::vector<std::array<Cell, 4>> now = result.start;
