@@ -9,6 +9,8 @@
 #include "cli/ExploreLimits.h"
 #include "cli/Inputs.h"
 #include "rules/OutputFile.h"
+#include "viewer/Page.h"
+#include "viewer/Readers.h"
 
 #include <iomanip>
 #include <iostream>
@@ -19,7 +21,7 @@ namespace holon::cli {
 namespace {
 
 struct PathArgs {
-    std::string file, region, from, to, traceOut, svg;
+    std::string file, region, from, to, traceOut, svg, html;
     std::vector<std::string> inputs, noWarnings;
     bool goal = false, json = false;
     ExploreLimitArgs limits;
@@ -41,7 +43,8 @@ int run(const PathArgs& a) {
     const rules::Region region = rules::Region::parse(a.region, 1u << 22);
     rules::Model model(*system, region.lattice());
     rules::Interpreter in(model, region);
-    std::optional<rules::OutputFile> traceOut, svgOut;
+    std::optional<rules::OutputFile> traceOut, svgOut, htmlOut;
+    if (!a.html.empty()) htmlOut.emplace("--html", a.html);
     if (!a.traceOut.empty()) traceOut.emplace("--trace-out", a.traceOut);
     if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
 
@@ -73,6 +76,7 @@ int run(const PathArgs& a) {
     const std::string title = system->name + " on " + region.spec() + ": " + (found ? "a shortest path, " + checker::stepCount(length) : outcomeName(result.outcome));
     if (found && traceOut) traceOut->write(checker::toItf(result.trace, engine, a.file).dump(2) + "\n");
     if (found && svgOut) svgOut->write(checker::drawTraceSvg(result.trace, engine, title));
+    if (found && htmlOut) htmlOut->write(viewer::page(viewer::readItf(checker::toItf(result.trace, engine, a.file), a.html, *system)));
 
     const auto& s = result.stats;
     const int code = !found ? (result.outcome == checker::PathOutcome::Unreachable ? kExitViolated : kExitUndecided) : replayed ? kExitOk
@@ -118,6 +122,7 @@ Run addPathCommand(CLI::App& app) {
     sub->add_flag("--json", a->json, "print the result as JSON (length: the number of rule steps)");
     sub->add_option("--trace-out", a->traceOut, "write the path as an ITF JSON trace");
     sub->add_option("--svg", a->svg, "draw the path as SVG");
+    sub->add_option("--html", a->html, "write the path as a self-contained HTML viewer (docs/viewer.md)");
     sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
     return [a] { return run(*a); };
 }

@@ -22,7 +22,7 @@ struct ViewArgs {
 int run(const ViewArgs& a) {
     const rules::OutputFile file("-o", a.out);  // checked before the input is read
     viewer::Run r = viewer::readRun(a.input, a.rules);
-    viewer::sample(r);
+    viewer::sample(r);  // to say so below; page() would
     file.write(viewer::page(r));
     std::cout << "view " << a.out << ": " << r.title << ", " << r.steps.size() - 1 << " steps shown"
               << (r.sampled > 1 ? " (sampled: each is " + std::to_string(r.sampled) + " steps of the run's " + std::to_string(r.runSteps) + ")" : "") << ", "

@@ -6,10 +6,11 @@
 
 #include "checker/Draw.h"
 #include "rules/Error.h"
-#include "rules/OutputFile.h"
 #include "viewer/ViewerPage.h"
 
 #include <nlohmann/json.hpp>
+
+#include <algorithm>
 
 namespace holon::viewer {
 
@@ -51,9 +52,26 @@ std::string pageData(const Run& run) {
     const checker::TraceColours colours = checker::traceColours();
     nlohmann::json j{{"kind", run.kind}, {"title", run.title}, {"notes", run.notes}, {"lattice", rules::Lattice::get(run.lattice).name()}, {"violation", run.violation}, {"sampled", run.sampled}, {"runSteps", run.runSteps}, {"maxChanges", kMaxChanges}};
     j["palette"] = {{"changed", colours.changed}, {"context", colours.context}, {"cell", colours.cell}, {"noFill", colours.noFill}};
-    Packed points(4);
-    for (Vec v : run.cells) points.add(v.x), points.add(v.y), points.add(v.z);
-    j["points"] = points.text();
+    // A box region in x-fastest order (every region of a plan) is sent as its corner and size.
+    Vec lo{}, size{};
+    if (!run.cells.empty()) {
+        lo = run.cells[0];
+        Vec hi = lo;
+        for (Vec v : run.cells) lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)}, hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
+        size = {hi.x - lo.x + 1, hi.y - lo.y + 1, hi.z - lo.z + 1};
+    }
+    bool box = std::int64_t(size.x) * size.y * size.z == static_cast<std::int64_t>(run.cells.size());
+    for (std::size_t i = 0; box && i < run.cells.size(); ++i) {
+        const int k = static_cast<int>(i);
+        box = run.cells[i] == lo + Vec{k % size.x, k / size.x % size.y, k / size.x / size.y};
+    }
+    if (box) {
+        j["box"] = {lo.x, lo.y, lo.z, size.x, size.y, size.z};
+    } else {
+        Packed points(4);
+        for (Vec v : run.cells) points.add(v.x), points.add(v.y), points.add(v.z);
+        j["points"] = points.text();
+    }
     nlohmann::json states = nlohmann::json::array();
     for (const Run::State& s : run.states) states.push_back({s.key, s.colour, s.text});
     j["states"] = states;
@@ -91,14 +109,13 @@ std::string pageData(const Run& run) {
     return text;
 }
 
-std::string page(const Run& run) {
+std::string page(Run run) {
+    sample(run);
     std::string html = kViewerPage;
     const std::string marker = "HOLON_VIEWER_DATA";
     const std::size_t at = html.find(marker);
     if (at == std::string::npos) throw std::logic_error("viewer/viewer.html has no HOLON_VIEWER_DATA placeholder");
     return html.replace(at, marker.size(), pageData(run));
 }
-
-void writePage(const Run& run, const std::string& option, const std::string& path) { rules::OutputFile(option, path).write(page(run)); }
 
 }  // namespace holon::viewer

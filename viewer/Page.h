@@ -8,13 +8,11 @@
 
 namespace holon::viewer {
 
-/// The page data as JSON text: the cells, the state table with colours, the legend, the inputs,
+/// The page data as JSON text: the cells (a box's corner and size, or every point), the state table with colours, the legend, the inputs,
 /// the start configuration and the steps' changes, the bulky arrays as base64 of little-endian
 /// typed arrays (the page decodes them in milliseconds; JSON arrays of numbers take seconds).
 std::string pageData(const Run& run);
-/// The whole HTML page.
-std::string page(const Run& run);
-/// Writes the page to `path` through the checked writer; `option` names it in messages (-o, --html).
-void writePage(const Run& run, const std::string& option, const std::string& path);
+/// The whole HTML page of the run, sampled (sample()) when it is too big.
+std::string page(Run run);
 
 }  // namespace holon::viewer

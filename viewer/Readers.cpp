@@ -294,13 +294,12 @@ Run readLines(const std::string& path, std::istream& in, const nlohmann::json& h
 // ---------------------------------------------------------------------------------------------
 // ITF
 
-Run readItf(const nlohmann::json& itf, const std::string& path, const std::string& rulesFile) {
+Run readItf(const nlohmann::json& itf, const std::string& path, const rules::System& system) {
     Run run;
     run.kind = "trace";
     const nlohmann::json meta = itf.contains("#meta") ? itf["#meta"] : nlohmann::json::object();
     if (!itf.contains("states") || !itf["states"].is_array() || itf["states"].empty()) throw InputError(path + ": an ITF trace needs a non-empty \"states\" list (" + kFormats + ")");
     const nlohmann::json& states = itf["states"];
-    const rules::System system = loadNamed(rulesFile, text(meta, "source"), text(meta, "system"), path);
     const auto stateWhere = [&](std::size_t k) { return path + ": state " + std::to_string(k); };
     const auto mapOf = [&](std::size_t k) -> const nlohmann::json& {
         const nlohmann::json& s = states[k];
@@ -418,7 +417,8 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
         throw InputError(path + ":1: not JSON (" + e.what() + "); " + kFormats);
     }
     if (!itf.is_object() || !itf.contains("states")) throw InputError(path + ":1: neither an ITF trace (no \"states\") nor JSON Lines; " + std::string(kFormats));
-    return readItf(itf, path, rulesFile);
+    const nlohmann::json meta = itf.contains("#meta") ? itf["#meta"] : nlohmann::json::object();
+    return readItf(itf, path, loadNamed(rulesFile, text(meta, "source"), text(meta, "system"), path));
 }
 
 }  // namespace holon::viewer

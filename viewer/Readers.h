@@ -4,6 +4,7 @@
 // Roombots run (holon roombots --out, steps_*.jsonl). The kind is told from the content; a file
 // that is none of them, or breaks its format, throws InputError naming FILE:LINE and the fix.
 
+#include "rules/Ir.h"
 #include "viewer/Run.h"
 
 #include <nlohmann/json.hpp>
@@ -16,7 +17,7 @@ namespace holon::viewer {
 /// "source" when that file exists, else the bundled system of its name).
 Run readRun(const std::string& path, const std::string& rules = "");
 
-/// An ITF trace already in memory (`where` names it in messages).
-Run readItf(const nlohmann::json& itf, const std::string& where, const std::string& rules = "");
+/// An ITF trace already in memory, of `system` (`where` names it in messages): check, path --html.
+Run readItf(const nlohmann::json& itf, const std::string& where, const rules::System& system);
 
 }  // namespace holon::viewer

@@ -59,8 +59,8 @@ std::vector<Run::Step> merged(const Run& run, int g) {
 }  // namespace
 
 void sample(Run& run, std::int64_t maxChanges) {
-    run.runSteps = static_cast<std::int64_t>(run.steps.size()) - 1;
-    if (changesOf(run) <= maxChanges) return;
+    if (run.sampled == 1) run.runSteps = static_cast<std::int64_t>(run.steps.size()) - 1;
+    if (changesOf(run) <= maxChanges) return;  // also when sampled before
     for (int g = 2;; g *= 2) {
         Run candidate = run;
         candidate.steps = merged(run, g);
