@@ -118,3 +118,16 @@ TEST_CASE("the page holds the data once, and a label cannot end its script eleme
     CHECK(scripts == 2);  // the data's and the code's
     CHECK(html.find(R"(<\/script>)") != std::string::npos);
 }
+
+TEST_CASE("a monitor's trace names no region: the box around its cells, every fired instance's cells as context") {
+    const std::string itf = R"({"#meta":{"system":"pixel","property":"monitor","description":"cut apart"},"vars":["cells"],"states":[
+        {"#meta":{"index":0},"cells":{"#map":[[{"#tup":[2,5]},{"state":"M"}],[{"#tup":[3,5]},{"state":"M"}]]}},
+        {"#meta":{"index":1,"fired":[{"rule":"destroy","cells":[[3,5]]},{"rule":"create","cells":[[2,6]]}]},"cells":{"#map":[[{"#tup":[2,5]},{"state":"M"}],[{"#tup":[2,6]},{"state":"M"}]]}}]})";
+    const viewer::Run run = viewer::readRun(write("monitor.itf.json", itf));
+    CHECK(run.cells.size() == 4);  // x 2..3, y 5..6
+    REQUIRE(run.steps.size() == 2);
+    CHECK(run.steps[1].changes.size() == 2);
+    CHECK(run.steps[1].context.empty());
+    CHECK(run.steps[1].label == "1: 2 instances fired");
+    CHECK(run.violation == 1);
+}
