@@ -115,7 +115,11 @@ public:
     }
     static Vec point(const nlohmann::json& j, const std::string& where) {
         if (j.is_object() && j.contains("#tup")) return point(j["#tup"], where);
-        if (!j.is_array() || j.size() < 2 || j.size() > 3 || !std::all_of(j.begin(), j.end(), [](const auto& c) { return c.is_number_integer() && std::abs(c.template get<std::int64_t>()) < (1 << 30); }))
+        // Within ±2^30: beyond it a coordinate lies outside every region, and a sum of two would overflow.
+        const auto small = [](const nlohmann::json& c) {
+            return c.is_number_unsigned() ? c.get<std::uint64_t>() < (1u << 30) : c.is_number_integer() && std::abs(c.get<std::int64_t>()) < (1 << 30);
+        };
+        if (!j.is_array() || j.size() < 2 || j.size() > 3 || !std::all_of(j.begin(), j.end(), small))
             throw InputError(where + ": a cell is [x, y] or [x, y, z] of integers, found " + j.dump());
         return {j[0].get<int>(), j[1].get<int>(), j.size() == 3 ? j[2].get<int>() : 0};
     }
@@ -203,7 +207,9 @@ Run readLines(const std::string& path, std::istream& in, const nlohmann::json& h
     std::optional<rules::System> system;
     std::optional<States> states;
     if (kind == "roombots") {
-        if (!head.contains("colours") || !head["colours"].is_array()) throw InputError(where1 + ": a Roombots run's first line lists its metamodules' \"colours\"");
+        const nlohmann::json colours = head.contains("colours") ? head["colours"] : nlohmann::json();
+        if (!colours.is_array() || !std::all_of(colours.begin(), colours.end(), [](const auto& c) { return c.is_string(); }))
+            throw InputError(where1 + ": a Roombots run's first line lists its metamodules' \"colours\"; write it again with holon roombots --out");
         states.emplace(run, head["colours"].get<std::vector<std::string>>());
     } else {
         system.emplace(loadNamed(rulesFile, text(head, "source"), text(head, "system"), where1));
@@ -312,12 +318,13 @@ Run readItf(const nlohmann::json& itf, const std::string& path, const rules::Sys
         regionCells(run, region, path);
     } else {
         std::vector<Vec> points;
+        bool three = false;
         for (std::size_t k = 0; k < states.size(); ++k)
             for (const auto& entry : mapOf(k)) {
                 if (!entry.is_array() || entry.size() != 2) throw InputError(stateWhere(k) + ": a map entry is [{\"#tup\": [x, y]}, {FIELD: VALUE}]");
                 points.push_back(Cells::point(entry[0], stateWhere(k)));
+                three = three || (entry[0].is_object() ? entry[0]["#tup"].size() == 3 : entry[0].size() == 3);
             }
-        const bool three = !points.empty() && states[0]["cells"]["#map"][0][0]["#tup"].size() == 3;
         run.lattice = system.lattice ? *system.lattice : three ? rules::LatticeKind::Cubic3D
                                                                : rules::LatticeKind::Square2D;
         boxAround(run, points);

@@ -131,3 +131,13 @@ TEST_CASE("a monitor's trace names no region: the box around its cells, every fi
     CHECK(run.steps[1].label == "1: 2 instances fired");
     CHECK(run.violation == 1);
 }
+
+TEST_CASE("hostile inputs end in a located message, not a crash") {
+    // A monitor's trace whose first state is empty: the lattice comes from the cells of later states.
+    const std::string empty = R"({"#meta":{"system":"pixel"},"states":[{"cells":{"#map":[]}},{"cells":{"#map":[[{"#tup":[0,0]},{"state":"M"}]]}}]})";
+    CHECK(viewer::readRun(write("empty_first.itf.json", empty)).cells.size() == 1);
+    const std::string huge = R"({"#meta":{"system":"pixel"},"states":[{"cells":{"#map":[[{"#tup":[18446744073709551615,0]},{"state":"M"}]]}}]})";
+    CHECK_THROWS_WITH_AS(viewer::readRun(write("huge.itf.json", huge)), doctest::Contains("huge.itf.json: state 0: a cell is [x, y] or [x, y, z] of integers"), InputError);
+    const std::string roombots = R"({"run":"roombots","colours":[1,2],"start":{"region":"cubic:2x2x2","cells":[]}})";
+    CHECK_THROWS_WITH_AS(viewer::readRun(write("rb.jsonl", roombots)), doctest::Contains("rb.jsonl:1: a Roombots run's first line lists its metamodules' \"colours\""), InputError);
+}
