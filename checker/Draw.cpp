@@ -227,10 +227,11 @@ const char* const kPointerColour[] = {"#111111", "#6a1b9a", "#00695c", "#5d4037"
 const char* const kPointerDash[] = {"", "5,2", "2,2", "6,2,2,2"};
 const char* const kInputColour[] = {"#1b5e20", "#0d47a1", "#880e4f", "#e65100",
                                     "#006064", "#4a148c", "#827717", "#263238"};
-// The outlines of changed, context and other cells.
-const rules::SvgAttrs kChangedPen{{"stroke", "#d62728"}, {"stroke-width", 3}};
-const rules::SvgAttrs kContextPen{{"stroke", "#ff7f0e"}, {"stroke-width", 2.5}, {"stroke-dasharray", "4,2"}};
-const rules::SvgAttrs kCellPen{{"stroke", "#999"}, {"stroke-width", 0.8}};
+// The outlines of changed, context and other cells; the fill of a state without a fill field.
+constexpr const char *kChanged = "#d62728", *kContext = "#ff7f0e", *kCell = "#999", *kNoFill = "#8d8d8d";
+const rules::SvgAttrs kChangedPen{{"stroke", kChanged}, {"stroke-width", 3}};
+const rules::SvgAttrs kContextPen{{"stroke", kContext}, {"stroke-width", 2.5}, {"stroke-dasharray", "4,2"}};
+const rules::SvgAttrs kCellPen{{"stroke", kCell}, {"stroke-width", 0.8}};
 
 /// The pen of pointer field j's arrows.
 rules::SvgAttrs pointerPen(std::size_t j) {
@@ -265,25 +266,6 @@ bool light(const std::string& colour) {
               g = std::stoi(colour.substr(3, 2), nullptr, 16),
               b = std::stoi(colour.substr(5, 2), nullptr, 16);
     return 0.299 * r + 0.587 * g + 0.114 * b > 150;
-}
-
-/// The text inside a cell: the values of every enum and integer field, in declaration order.
-std::string cellText(const rules::System& s, const std::vector<int>& fields) {
-    std::string text;
-    for (std::size_t f = 0; f < fields.size(); ++f) {
-        if (fields[f] == rules::kAbsent) continue;
-        switch (s.fields[f].kind) {
-        case FieldKind::Enum:
-            text += (text.empty() ? "" : " ") + s.fields[f].values[fields[f]];
-            break;
-        case FieldKind::Int:
-            text += (text.empty() ? "" : " ") + std::to_string(fields[f]);
-            break;
-        case FieldKind::Dir:
-            break;  // drawn as an arrow
-        }
-    }
-    return text;
 }
 
 /// A left-to-right flow of legend items that wraps at the picture's width.
@@ -321,7 +303,29 @@ std::string valueColour(const rules::Field& field, int value) {
 std::string stateColour(const rules::Model& model, CellValue v) {
     const int fill = fillField(model.system());
     const int value = fill >= 0 ? model.alphabet().fields(v)[fill] : rules::kAbsent;
-    return value != rules::kAbsent ? valueColour(model.system().fields[fill], value) : "#8d8d8d";
+    return value != rules::kAbsent ? valueColour(model.system().fields[fill], value) : kNoFill;
+}
+
+std::string cellText(const rules::System& s, const std::vector<int>& fields) {
+    std::string text;
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+        if (fields[f] == rules::kAbsent) continue;
+        switch (s.fields[f].kind) {
+        case FieldKind::Enum:
+            text += (text.empty() ? "" : " ") + s.fields[f].values[fields[f]];
+            break;
+        case FieldKind::Int:
+            text += (text.empty() ? "" : " ") + std::to_string(fields[f]);
+            break;
+        case FieldKind::Dir:
+            break;  // drawn as an arrow
+        }
+    }
+    return text;
+}
+
+TraceColours traceColours() {
+    return {kChanged, kContext, kCell, kNoFill, std::vector<std::string>(std::begin(kInputColour), std::end(kInputColour))};
 }
 
 rules::SvgPicture drawTrace(const Trace& t, const rules::Engine& e, const std::string& title) {

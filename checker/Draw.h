@@ -38,6 +38,16 @@ std::string valueColour(const rules::Field& field, int value);
 /// The fill colour of a non-empty cell state in every picture (the SVG traces, VisibleSim worlds):
 /// valueColour of its first enum field, grey when it has none.
 std::string stateColour(const rules::Model& model, CellValue v);
+/// The text inside a cell: the values of every enum and integer field, in declaration order.
+std::string cellText(const rules::System& system, const std::vector<int>& fields);
+/// The colours drawTraceSvg draws with besides the values' (valueColour), for other pictures of
+/// the same traces (the browser viewer): the outlines of changed, context (blocking) and other
+/// cells, the fill of a state that has no fill field, and one colour per input.
+struct TraceColours {
+    std::string changed, context, cell, noFill;
+    std::vector<std::string> inputs;
+};
+TraceColours traceColours();
 /// Frames left to right; each cell filled by the colour of its first enum field, its text naming the
 /// values of every enum and integer field, one arrow with a head per pointer field (each field its
 /// own colour and dash; in 3D, +z and -z as a dot and a cross in a circle); changed cells outlined in

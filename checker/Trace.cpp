@@ -63,6 +63,12 @@ nlohmann::json toItf(const Trace& trace, const rules::Engine& engine, const std:
             for (int c = 0; c < p.size; ++c) cells.push_back(rules::pointJson(region.lattice(), region.cell(p.cells[c])));
             meta["cells"] = cells;
         }
+        // The cells the violated property points at (the part cut off, a blocking cell).
+        if (k + 1 == trace.steps.size() && !trace.marked.empty()) {
+            nlohmann::json marked = nlohmann::json::array();
+            for (int i : trace.marked) marked.push_back(rules::pointJson(region.lattice(), region.cell(i)));
+            meta["marked"] = marked;
+        }
         itf.state(
             meta,
             [&](auto&& f) {

@@ -35,7 +35,8 @@ Trace traceWithStep(const Explorer& explorer, StateId from, std::uint64_t edge);
 /// A trace along a list of states, choosing for each step an instance that leads to the next.
 Trace traceAlong(const Explorer& explorer, const std::vector<StateId>& states);
 
-/// ITF: {"#meta", "vars": ["cells"], "states": [{"#meta": {"index", "rule", "anchor", "cells"}, "cells": {"#map": ...}}], "loop"};
+/// ITF: {"#meta", "vars": ["cells"], "states": [{"#meta": {"index", "rule", "cells"}, "cells": {"#map": ...}}], "loop"},
+/// the instance's cells in pattern order; the last state's "#meta" also has "marked" when the trace marks cells;
 /// a system with inputs also has the variable "inputs", the engine's, by name: {"target": {"#set": [...]}}.
 nlohmann::json toItf(const Trace& trace, const rules::Engine& engine, const std::string& source);
 /// Replays every step through the reference interpreter: true when each step is an enabled instance

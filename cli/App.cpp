@@ -51,6 +51,7 @@ int runHolon(int argc, char** argv) {
     add(addPathCommand);
     add(addDiffCommand);
     add(addExportCommand);
+    add(addViewCommand);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

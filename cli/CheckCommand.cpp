@@ -13,6 +13,8 @@
 #include "rules/Error.h"
 #include "rules/Library.h"
 #include "rules/OutputFile.h"
+#include "viewer/Page.h"
+#include "viewer/Readers.h"
 
 #include <algorithm>
 #include <iomanip>
@@ -25,7 +27,7 @@ namespace holon::cli {
 namespace {
 
 struct CheckArgs {
-    std::string file, region, traceOut, svg, dot;
+    std::string file, region, traceOut, svg, dot, html;
     std::vector<std::string> from, inputs, properties, noWarnings;
     bool all = false, json = false, components = false;
     ExploreLimitArgs limits;
@@ -98,7 +100,8 @@ int run(const CheckArgs& a) {
     rules::Model model(*system, region.lattice());
     rules::Interpreter in(model, region);
     // Output paths are checked before the work, so a finished check is never lost to a bad path.
-    std::optional<rules::OutputFile> traceOut, svgOut, dotOut;
+    std::optional<rules::OutputFile> traceOut, svgOut, dotOut, htmlOut;
+    if (!a.html.empty()) htmlOut.emplace("--html", a.html);
     if (!a.traceOut.empty()) traceOut.emplace("--trace-out", a.traceOut);
     if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
     if (!a.dot.empty()) dotOut.emplace("--dot", a.dot);
@@ -147,6 +150,11 @@ int run(const CheckArgs& a) {
         if (traceOut) {
             const rules::OutputFile file("--trace-out", pathFor(traceOut->path(), p->name, several));
             file.write(checker::toItf(*p->trace, engine, a.file).dump(2) + "\n");
+            written.push_back(file.path());
+        }
+        if (htmlOut) {
+            const rules::OutputFile file("--html", pathFor(htmlOut->path(), p->name, several));
+            file.write(viewer::page(viewer::readItf(checker::toItf(*p->trace, engine, a.file), file.path(), *system)));
             written.push_back(file.path());
         }
         if (svgOut) {
@@ -212,6 +220,7 @@ Run addCheckCommand(CLI::App& app) {
     sub->add_flag("--components", a->components, "list the reconfiguration graph's components (sizes, metamodules, mass, a drawn representative) and say whether the design is complete");
     sub->add_option("--trace-out", a->traceOut, "write the counterexample as an ITF JSON trace");
     sub->add_option("--svg", a->svg, "draw the counterexample as SVG");
+    sub->add_option("--html", a->html, "write the counterexample as a self-contained HTML viewer (docs/viewer.md)");
     sub->add_option("--dot", a->dot, "write the explored graph as Graphviz (small graphs)");
     sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
     return [a] { return run(*a); };

@@ -105,5 +105,6 @@ Run addReplayCommand(CLI::App& app);
 Run addPathCommand(CLI::App& app);
 Run addDiffCommand(CLI::App& app);
 Run addExportCommand(CLI::App& app);
+Run addViewCommand(CLI::App& app);
 
 }  // namespace holon::cli

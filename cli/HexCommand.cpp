@@ -8,6 +8,7 @@
 #include "cli/Parallel.h"
 #include "cli/WriteErrors.h"
 #include "planner/hex/SculptRun.h"
+#include "planner/hex/SculptSteps.h"
 #include "rules/Error.h"
 #include "rules/Limits.h"
 #include "rules/OutputFile.h"
@@ -20,6 +21,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <thread>
 #include <unistd.h>
@@ -34,7 +36,7 @@ struct HexArgs {
     double timeout = 0;         // 0: the option left out, no limit
     std::uint64_t memoryMiB = kDefaultMemoryMiB;
     std::uint64_t seed = 1;
-    std::string out;
+    std::string out, stepsOut;
     bool json = false, quiet = false;
 };
 
@@ -116,6 +118,8 @@ std::vector<std::string> improvements(const planner::hex::SculptOptions& o) {
 int run(HexArgs a) {
     const checker::Budget budget(a.timeout);  // one deadline for every run and every timestep
     if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
+    std::optional<rules::OutputStream> stepsFile;  // the first run, instance by instance
+    if (!a.stepsOut.empty()) stepsFile.emplace(rules::OutputFile("--steps-out", a.stepsOut).open());
     // Memory before any array is made: the runs that go at once, and every run's series.
     const std::uint64_t perRun = planner::hex::sculptBytes(a.setup), series = static_cast<std::uint64_t>(a.setup.steps) * sizeof(planner::hex::SculptSample);
     const int parallel = std::min(a.reps, a.threads > 0 ? a.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
@@ -131,15 +135,19 @@ int run(HexArgs a) {
             planner::hex::SculptSetup setup = a.setup;
             setup.options.seed = a.seed + r;
             const int last = setup.steps;
+            std::optional<planner::hex::SculptSteps> steps;
             runs[r] = planner::hex::runSculpt(
                 setup, [&](const planner::hex::HoleSculptor& s) {
+                    if (steps) steps->timestepEnded();
                     if (!a.out.empty() && r == 0 && (s.time() == 1 || s.time() == last / 10 || s.time() == last)) {
                         errors.attempt([&] {
                             rules::OutputFile("--out", (std::filesystem::path(a.out) / ("frame_" + std::to_string(s.time()) + ".svg")).string()).write(planner::hex::sculptSvg(s));
                         });
-                    }
-                },
-                budget.limited() ? expired : std::function<bool()>());
+                    } },
+                budget.limited() ? expired : std::function<bool()>(),
+                [&](const planner::hex::HoleSculptor& s) {
+                    if (stepsFile && r == 0) steps.emplace(stepsFile->stream(), s);
+                });
             ran[r] = runs[r].steps > 0;
         },
         budget.limited() ? expired : std::function<bool()>());
@@ -161,6 +169,7 @@ int run(HexArgs a) {
     const Stat seconds = stat(runs, [](const auto& r) { return r.seconds; });
     const Stat modules = stat(runs, [](const auto& r) { return static_cast<double>(r.modules); });
     if (!a.out.empty()) writeOutputs(a, runs, steps, errors);
+    if (stepsFile) errors.attempt([&] { stepsFile->commit(); });
     if (a.json) {
         auto js = [](Stat s) { return nlohmann::json{{"mean", s.mean}, {"std", s.std}}; };
         nlohmann::json j{{"from", a.setup.from}, {"to", a.setup.to}, {"size", a.setup.size}, {"reps", runs.size()}, {"modules", js(modules)}, {"steps", steps}, {"stopped", stopped ? "timeout" : "done"}, {"tri_regions", runs[0].triRegions}, {"completeness", js(completeness)}, {"stability", js(stability)}, {"compliance", js(compliance)}, {"islands", js(islands)}, {"seconds", js(seconds)}, {"improvements", improvements(a.setup.options)}};
@@ -217,6 +226,7 @@ Run addHexCommand(CLI::App& app) {
     sub->add_option("--timeout", a->timeout, "stop every run after this many seconds in all, with the timesteps made so far (exit 3; default: no limit)")->check(secondsValidator());
     sub->add_option("--memory", a->memoryMiB, "memory bound in MiB, checked before the arrays are made (default 16384)")->check(memoryValidator());
     sub->add_option("--out", a->out, "directory for series.csv, series.svg (metrics over time) and SVG frames of the first run (created if missing; its parent must exist)");
+    sub->add_option("--steps-out", a->stepsOut, "write the first run as JSON Lines, one rule instance a line, for holon view (large: keep --size and --steps small)");
     sub->add_flag("--json", a->json, "print a JSON summary");
     sub->add_flag("--quiet", a->quiet, "no progress bar");
     return [a] { return withinMemory(a->memoryMiB, [&] { return run(*a); }); };

@@ -12,6 +12,8 @@
 #include "cli/ExploreLimits.h"
 #include "cli/Inputs.h"
 #include "rules/OutputFile.h"
+#include "viewer/Page.h"
+#include "viewer/Readers.h"
 
 #include <iomanip>
 #include <iostream>
@@ -22,7 +24,7 @@ namespace holon::cli {
 namespace {
 
 struct PathArgs {
-    std::string file, region, from, to, traceOut, svg, search = "auto";
+    std::string file, region, from, to, traceOut, svg, html, search = "auto";
     std::vector<std::string> inputs, noWarnings;
     bool goal = false, json = false, parallel = false;
     ExploreLimitArgs limits;
@@ -51,7 +53,8 @@ int run(const PathArgs& a) {
     const rules::Region region = rules::Region::parse(a.region, 1u << 22);
     rules::Model model(*system, region.lattice());
     rules::Interpreter in(model, region);
-    std::optional<rules::OutputFile> traceOut, svgOut;
+    std::optional<rules::OutputFile> traceOut, svgOut, htmlOut;
+    if (!a.html.empty()) htmlOut.emplace("--html", a.html);
     if (!a.traceOut.empty()) traceOut.emplace("--trace-out", a.traceOut);
     if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
 
@@ -93,6 +96,7 @@ int run(const PathArgs& a) {
     const std::string title = system->name + " on " + region.spec() + ": " + (found ? "a shortest path, " + checker::stepCount(length) : outcomeName(result.outcome));
     if (found && traceOut) traceOut->write(checker::toItf(result.trace, engine, a.file).dump(2) + "\n");
     if (found && svgOut) svgOut->write(checker::drawTraceSvg(result.trace, engine, title));
+    if (found && htmlOut) htmlOut->write(viewer::page(viewer::readItf(checker::toItf(result.trace, engine, a.file), a.html, *system)));
 
     const auto& s = result.stats;
     int code = kExitOk;
@@ -163,6 +167,7 @@ Run addPathCommand(CLI::App& app) {
     sub->add_flag("--json", a->json, "print the result as JSON (length: the number of rule steps)");
     sub->add_option("--trace-out", a->traceOut, "write the path as an ITF JSON trace");
     sub->add_option("--svg", a->svg, "draw the path as SVG");
+    sub->add_option("--html", a->html, "write the path as a self-contained HTML viewer (docs/viewer.md)");
     sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
     return [a] { return run(*a); };
 }

@@ -19,6 +19,8 @@
 #include "rules/Limits.h"
 #include "rules/OutputFile.h"
 #include "rules/StopSignals.h"
+#include "viewer/Page.h"
+#include "viewer/Readers.h"
 
 #include <nlohmann/json.hpp>
 
@@ -49,7 +51,7 @@ void printShortOfGoal(const planner::Problem& problem, const planner::Execution&
 }
 
 struct PlanArgs {
-    std::string rules = "planner_intermediate", from, to, allocator = "random", scheduler = "sync", out, planOut, seedCell, traceOut, hexDisks;
+    std::string rules = "planner_intermediate", from, to, allocator = "random", scheduler = "sync", out, planOut, seedCell, traceOut, hexDisks, html;
     std::vector<std::string> noWarnings, lose, loseRandom;
     std::int64_t delay = 0;
     double drop = 0;
@@ -167,6 +169,9 @@ int run(const PlanArgs& a) {
     // Every output path is checked before any work: a finished plan is never lost to a typo.
     if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
     if (!a.planOut.empty()) rules::OutputFile("--plan-out", a.planOut);
+    // The viewer reads the plan back from its file once it is complete.
+    if (!a.html.empty() && a.planOut.empty()) throw InputError("--html needs --plan-out FILE: the viewer plays the plan written there");
+    if (!a.html.empty()) rules::OutputFile("--html", a.html);
     if (!a.hexDisks.empty()) rules::prepareOutputDir("--hex-disks", a.hexDisks);
     std::optional<rules::OutputFile> traceFile;
     if (!a.traceOut.empty()) traceFile.emplace("--trace-out", a.traceOut);
@@ -246,6 +251,7 @@ int run(const PlanArgs& a) {
     report.finish(stats, lowerBound);
     WriteErrors errors;
     for (const std::string& e : report.writeErrors()) errors.add(e);
+    if (!a.html.empty() && report.writeErrors().empty()) errors.attempt([&] { rules::OutputFile("--html", a.html).write(viewer::page(viewer::readRun(a.planOut))); });
 
     if (a.json) {
         nlohmann::json j = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", lowerBound >= 0 ? nlohmann::json(lowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"relabels", stats.relabels}, {"evaluations", stats.evaluations}, {"stopped", stats.stopped}, {"system", system->name}, {"allocator", allocator->name()}, {"scheduler", a.scheduler}, {"seed", a.seed}};
@@ -307,6 +313,7 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--out", a->out, "write summary.json, completion.csv and SVG snapshots into this folder (created if missing; its parent must exist)");
     sub->add_option("--hex-disks", a->hexDisks, "2D general_n plans: realise every template as pivot moves of hex-lattice disks (seed 000 Fig. 4a); write disk_moves.jsonl and disks.svg into this folder");
     sub->add_option("--plan-out", a->planOut, "write the plan as JSON Lines (one fired instance per line)");
+    sub->add_option("--html", a->html, "with --plan-out: write the plan as a self-contained HTML viewer (docs/viewer.md)");
     sub->add_option("--max-steps", a->maxSteps, "stop after this many steps (exit 3; default: no limit)")->check(countValidator());
     sub->add_option("--max-rounds", a->maxRounds, "stop after this many rounds (exit 3; default: no limit)")->check(countValidator());
     sub->add_option("--timeout", a->timeout, "stop after this many seconds, setup included (exit 3; default: no limit)")->check(secondsValidator());

@@ -52,7 +52,7 @@ std::string name(const Job& j) {
     return std::string(rb::couplingName(j.coupling)) + "_" + rb::strategyName(j.strategy) + "_" + std::to_string(j.run);
 }
 
-/// One run's trace (CSV), foot traces and assembly (SVG), and its coordination rule; a file that
+/// One run's trace (CSV), foot traces and assembly (SVG), its actions for holon view (JSON Lines), and its coordination rule; a file that
 /// cannot be written is added to `errors`.
 void writeRun(const std::filesystem::path& dir, const Job& j, const rb::Setting& setting, WriteErrors& errors) {
     const auto write = [&](const std::string& file, const std::function<void(std::ostream&)>& fill) {
@@ -66,6 +66,7 @@ void writeRun(const std::filesystem::path& dir, const Job& j, const rb::Setting&
     });
     write("feet_" + name(j) + ".svg", [&](std::ostream& out) { out << rb::footTraceSvg(setting, j.result); });
     write("assembly_" + name(j) + ".svg", [&](std::ostream& out) { out << rb::assemblySvg(setting, j.result); });
+    write("steps_" + name(j) + ".jsonl", [&](std::ostream& out) { out << rb::runSteps(setting, j.result, name(j)); });
     if (!j.result.coordination.empty()) write("coordination_" + name(j) + ".json", [&](std::ostream& out) { out << j.result.coordination; });
 }
 
@@ -281,7 +282,7 @@ Run addRoombotsCommand(CLI::App& app) {
     sub->add_option("--threads", a->threads, "parallel runs, 1 to 64 (default: the machine's cores)")->check(threadsValidator());
     sub->add_option("--timeout", a->timeout, "stop after this many seconds in all, a run in progress dropped; the tables hold the runs made (exit 3; default: no limit)")->check(secondsValidator());
     sub->add_option("--memory", a->memoryMiB, "memory bound in MiB, checked before the runs (default 16384)")->check(memoryValidator());
-    sub->add_option("--out", a->out, "directory for per-run traces (CSV), foot-trace pictures and assembly snapshots (SVG) (created if missing; its parent must exist)");
+    sub->add_option("--out", a->out, "directory for per-run traces (CSV), foot-trace pictures and assembly snapshots (SVG), and each run action by action for holon view (steps_*.jsonl) (created if missing; its parent must exist)");
     sub->add_flag("--json", a->json, "print a JSON summary");
     sub->add_flag("--quiet", a->quiet, "no progress bar");
     return [a] { return withinMemory(a->memoryMiB, [&] { return run(*a); }); };

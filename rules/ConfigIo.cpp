@@ -28,30 +28,6 @@ nlohmann::json position(const Region& region, Vec v) { return pointJson(region.l
 std::string quote(const nlohmann::json& v) { return excerpt(v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)); }
 std::string quote(const std::string& name) { return excerpt(name); }
 
-/// Refuses JSON nested deeper than kMaxJsonDepth, with the line and column where it gets too deep.
-void checkJsonDepth(const std::string& text) {
-    int depth = 0, line = 1;
-    std::size_t lineStart = 0;
-    bool inString = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (inString) {
-            if (c == '\\') ++i;
-            else if (c == '"') inString = false;
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > kMaxJsonDepth)
-                throw InputError("line " + std::to_string(line) + ", column " + std::to_string(i - lineStart + 1) + ": JSON nested deeper than " +
-                                 std::to_string(kMaxJsonDepth) + " levels; a configuration or a trace is at most 6 deep");
-        } else if (c == ']' || c == '}') {
-            --depth;
-        } else if (c == '\n') {
-            ++line, lineStart = i + 1;
-        }
-    }
-}
-
 /// The cells of each ASCII row, in order: square rows are x = 0..W-1; hex rows are the cells of
 /// row r from west to east.
 std::vector<std::vector<int>> asciiRows(const Region& region) {
@@ -76,6 +52,29 @@ std::vector<std::string> rowTokens(const Region& region, const std::string& line
 }
 
 }  // namespace
+
+void checkJsonDepth(const std::string& text) {
+    int depth = 0, line = 1;
+    std::size_t lineStart = 0;
+    bool inString = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (c == '\\') ++i;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth)
+                throw InputError("line " + std::to_string(line) + ", column " + std::to_string(i - lineStart + 1) + ": JSON nested deeper than " +
+                                 std::to_string(kMaxJsonDepth) + " levels; a configuration or a trace is at most 6 deep");
+        } else if (c == ']' || c == '}') {
+            --depth;
+        } else if (c == '\n') {
+            ++line, lineStart = i + 1;
+        }
+    }
+}
 
 nlohmann::json stateFields(const Model& model, CellValue v) {
     nlohmann::json record = nlohmann::json::object();

@@ -25,6 +25,10 @@ Configuration configFromAscii(const Interpreter& in, const std::string& text);
 /// A per-cell mask in ASCII art: every character other than '.' and blanks marks a cell.
 std::vector<bool> maskFromAscii(const Region& region, const std::string& text);
 
+/// Refuses JSON nested deeper than any configuration or trace (InputError with the line and
+/// column where it gets too deep), before a parser recurses into it.
+void checkJsonDepth(const std::string& text);
+
 /// True for an ITF trace (holon's --trace-out: an object with "states"), false for a configuration.
 bool isItfTrace(const nlohmann::json& j);
 /// State `index` of an ITF trace (the last when none is given) with the inputs it carries: each

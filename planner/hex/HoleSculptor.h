@@ -69,6 +69,9 @@ public:
     std::vector<std::int64_t> holeCentres() const;
     bool holeCell(std::int64_t i) const { return cells_[i] == rules_->rim() || cells_[i] == rules_->centre(); }
     const HexArray& array() const { return *array_; }
+    /// A board cell's state (hex_holes's M, H, C; 0 empty) and the rules that write it.
+    BoxEngine::Value cell(std::int64_t i) const { return cells_[i]; }
+    const HoleRules& rules() const { return *rules_; }
     const std::vector<std::uint8_t>& target() const { return *target_; }
 
 private:

@@ -17,7 +17,8 @@ std::uint64_t sculptBytes(const SculptSetup& setup) {
     return static_cast<std::uint64_t>(HexArray::boardSize(setup.size)) * 96;
 }
 
-SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame, const std::function<bool()>& stop) {
+SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame, const std::function<bool()>& stop,
+                       const std::function<void(const HoleSculptor&)>& started) {
     const auto begin = std::chrono::steady_clock::now();
     const HexArray array(setup.size);
     const auto source = sculptShape(array, setup.from, "--from"), target = sculptShape(array, setup.to, "--to");
@@ -29,6 +30,7 @@ SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const 
     result.holeBudget = sculptor.holeBudget();
     result.triRegions = static_cast<int>(plan.regions.size());
     result.series.reserve(setup.steps);
+    if (started) started(sculptor);
     int t = 0;
     for (; t < setup.steps && !(stop && stop()); ++t) {
         sculptor.step();

@@ -38,8 +38,9 @@ std::uint64_t sculptBytes(const SculptSetup& setup);
 
 /// Runs one experiment. `frame(sculptor)` is called after every timestep (may be empty); `stop`
 /// (may be empty) is asked before each: once it says so the run ends there, result.steps telling
-/// how many timesteps it ran.
-SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame = {}, const std::function<bool()>& stop = {});
+/// how many timesteps it ran. `started(sculptor)` (may be empty) is called before the first timestep.
+SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame = {}, const std::function<bool()>& stop = {},
+                       const std::function<void(const HoleSculptor&)>& started = {});
 
 /// An SVG picture of the ensemble: modules, hole cells, and the target's outline points left empty.
 std::string sculptSvg(const HoleSculptor& sculptor);

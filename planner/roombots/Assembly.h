@@ -30,6 +30,7 @@ struct Action {
     Cell from, to;                  // foot before and after
     double forceX = 0, forceY = 0;  // the force vector it followed (Eq. 1); 0 for reserve
     bool seat = false;
+    std::array<Cell, 4> cells{};  // the metamodule's cells after it
 };
 
 struct AssemblyResult {
@@ -40,6 +41,7 @@ struct AssemblyResult {
     double seconds = 0;  // simulated time until the last seat or the deadlock
     std::vector<Action> actions;
     std::vector<Seed> placed;                                 // seeds filled, in order
+    std::vector<std::array<Cell, 4>> start;                   // every metamodule's cells at the start
     std::vector<std::array<Cell, 4>> cells;                   // every metamodule's cells at the end
     std::vector<std::vector<std::array<Cell, 4>>> snapshots;  // every metamodule's cells each time a seed was filled
     std::string reason;                                       // why a deadlock was declared

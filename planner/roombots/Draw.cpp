@@ -6,6 +6,8 @@
 
 #include "rules/Svg.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -14,7 +16,7 @@
 namespace holon::planner::roombots {
 namespace {
 
-const char* colour(int module) {
+const char* colourOf(int module) {
     static constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2"};
     return kColours[module % 8];
 }
@@ -58,9 +60,9 @@ rules::SvgPicture isometric(const Setting& setting, const std::vector<std::array
             if (c.z == 0) polygon({{double(c.x), double(c.y), 0}, {c.x + 1.0, double(c.y), 0}, {c.x + 1.0, c.y + 1.0, 0}, {double(c.x), c.y + 1.0, 0}}, "#bbb", 0.4);
     for (const Cube& q : cubes) {
         const double x = q.c.x, y = q.c.y, z = q.c.z;
-        polygon({{x, y, z + 1}, {x + 1, y, z + 1}, {x + 1, y + 1, z + 1}, {x, y + 1, z + 1}}, colour(q.module), 0.9);
-        polygon({{x + 1, y, z}, {x + 1, y + 1, z}, {x + 1, y + 1, z + 1}, {x + 1, y, z + 1}}, colour(q.module), 0.7);
-        polygon({{x, y + 1, z}, {x + 1, y + 1, z}, {x + 1, y + 1, z + 1}, {x, y + 1, z + 1}}, colour(q.module), 0.5);
+        polygon({{x, y, z + 1}, {x + 1, y, z + 1}, {x + 1, y + 1, z + 1}, {x, y + 1, z + 1}}, colourOf(q.module), 0.9);
+        polygon({{x + 1, y, z}, {x + 1, y + 1, z}, {x + 1, y + 1, z + 1}, {x + 1, y, z + 1}}, colourOf(q.module), 0.7);
+        polygon({{x, y + 1, z}, {x + 1, y + 1, z}, {x + 1, y + 1, z + 1}, {x, y + 1, z + 1}}, colourOf(q.module), 0.5);
     }
     return out.picture(width, height);
 }
@@ -87,14 +89,14 @@ std::string footTraceSvg(const Setting& setting, const AssemblyResult& result) {
         std::vector<std::pair<double, double>> path{{px(setting.starts[m].x), py(setting.starts[m].y)}};
         for (const Action& a : result.actions)
             if (a.module == static_cast<int>(m) && !a.seat) path.push_back({px(a.to.x), py(a.to.y)});
-        svg.polyline(path, {{"fill", "none"}, {"stroke", colour(m)}, {"stroke-width", 1.5}});
+        svg.polyline(path, {{"fill", "none"}, {"stroke", colourOf(m)}, {"stroke-width", 1.5}});
         for (const Action& a : result.actions) {
             if (a.module != static_cast<int>(m) || a.seat) continue;
-            svg.circle(px(a.to.x), py(a.to.y), 2, {{"fill", colour(m)}});
+            svg.circle(px(a.to.x), py(a.to.y), 2, {{"fill", colourOf(m)}});
             const double n = std::hypot(a.forceX, a.forceY);
             if (n > 0)
                 svg.line(px(a.from.x), py(a.from.y), px(a.from.x + 0.8 * a.forceX / n), py(a.from.y + 0.8 * a.forceY / n),
-                         {{"stroke", colour(m)}, {"opacity", 0.6}});
+                         {{"stroke", colourOf(m)}, {"opacity", 0.6}});
         }
     }
     std::ostringstream caption;
@@ -119,6 +121,46 @@ std::string assemblySvg(const Setting& setting, const AssemblyResult& result) {
         x += p.width, height = std::max(height, p.height);
     }
     return svg.document(x, height);
+}
+
+const char* metamoduleColour(int module) { return colourOf(module); }
+
+std::string runSteps(const Setting& setting, const AssemblyResult& result, const std::string& title) {
+    // The region: the box around every cell the run touches and every seed's.
+    Cell lo = result.start.empty() ? Cell{} : result.start[0][0], hi = lo;
+    const auto extend = [&](const Cell& c) {
+        lo = {std::min(lo.x, c.x), std::min(lo.y, c.y), std::min(lo.z, c.z)}, hi = {std::max(hi.x, c.x), std::max(hi.y, c.y), std::max(hi.z, c.z)};
+    };
+    for (const auto& cells : result.start)
+        for (const Cell& c : cells) extend(c);
+    for (const Action& a : result.actions)
+        for (const Cell& c : a.cells) extend(c);
+    for (const Seed& seed : setting.recipe.seeds)
+        for (const Cell& c : seed.cells) extend(c);
+    const auto at = [&](const Cell& c) { return nlohmann::json{c.x - lo.x, c.y - lo.y, c.z - lo.z}; };
+    nlohmann::json colours = nlohmann::json::array(), cells = nlohmann::json::array(), structure = nlohmann::json::array();
+    for (std::size_t m = 0; m < result.start.size(); ++m) {
+        colours.push_back(colourOf(static_cast<int>(m)));
+        for (const Cell& c : result.start[m]) cells.push_back({{"at", at(c)}, {"module", m}});
+    }
+    for (const Seed& seed : setting.recipe.seeds)
+        for (const Cell& c : seed.cells) structure.push_back(at(c));
+    const std::string region = "cubic:" + std::to_string(hi.x - lo.x + 1) + "x" + std::to_string(hi.y - lo.y + 1) + "x" + std::to_string(hi.z - lo.z + 1);
+    std::ostringstream out;
+    out << nlohmann::json{{"run", "roombots"}, {"title", title}, {"colours", colours}, {"start", {{"region", region}, {"offset", {-lo.x, -lo.y, -lo.z}}, {"cells", cells}, {"inputs", {{"structure", structure}}}}}}
+               .dump()
+        << '\n';
+    std::vector<std::array<Cell, 4>> now = result.start;
+    for (std::size_t k = 0; k < result.actions.size(); ++k) {
+        const Action& a = result.actions[k];
+        nlohmann::json touched = nlohmann::json::array(), after = nlohmann::json::array();
+        for (const Cell& c : now[a.module])
+            if (std::find(a.cells.begin(), a.cells.end(), c) == a.cells.end()) touched.push_back({c.x, c.y, c.z}), after.push_back(nlohmann::json::object());
+        for (const Cell& c : a.cells) touched.push_back({c.x, c.y, c.z}), after.push_back({{"module", a.module}});
+        now[a.module] = a.cells;
+        out << nlohmann::json{{"round", k}, {"time", a.begin}, {"rule", a.seat ? "seat" : "step"}, {"cells", touched}, {"after", after}}.dump() << '\n';
+    }
+    return out.str();
 }
 
 }  // namespace holon::planner::roombots

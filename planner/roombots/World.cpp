@@ -24,6 +24,7 @@ World::World(const CloudTable& table, Coupling coupling, const Setting& setting)
         b.joints = Joints{};
         b.cells = place(postures_[0].cells, b.foot, 0);
         bodies_.push_back(b);
+        result_.start.push_back(b.cells);
         extend(b.foot);
     }
 }
@@ -80,7 +81,7 @@ void World::start(int i, const Move& m, bool seatAction, double fx, double fy) {
             ++result_.collisions, collided_.insert({id, n});
         }
     }
-    result_.actions.push_back({i, now_, end, b.foot, m.foot, fx, fy, seatAction});
+    result_.actions.push_back({i, now_, end, b.foot, m.foot, fx, fy, seatAction, m.cells});
     b.foot = m.foot, b.yaw = m.yaw, b.joints = m.joints, b.cells = m.cells, b.cloud = m.cloud;
     b.moving = end, b.action = id;
     ++b.moves;

@@ -1,0 +1,431 @@
+// The viewer's readers. An ITF trace is one JSON document whose states are whole configurations;
+// plans, hex runs and Roombots runs are JSON Lines in one format (holon plan --plan-out's): a first
+// line with the start configuration, then one line per rule instance fired, {"round", "rule",
+// "cells", "after"}, the cells' states after it ({} for an emptied cell). A step of the viewer is a
+// state of a trace and a round of the others (a hex timestep, a Roombots action). Cell states are
+// checked against the system the file names, so a state the rules cannot produce is an error with
+// its line, not a grey cell.
+
+#include "viewer/Readers.h"
+
+#include "checker/Draw.h"
+#include "rules/ConfigIo.h"
+#include "rules/Error.h"
+#include "rules/Library.h"
+#include "rules/Model.h"
+#include "rules/Region.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+namespace holon::viewer {
+
+namespace {
+
+const char* const kFormats =
+    "holon view reads an ITF trace (holon check --trace-out), a plan (holon plan --plan-out), a hex run (holon hex --steps-out) or a Roombots run (holon roombots --out: steps_*.jsonl)";
+
+std::string text(const nlohmann::json& j, const char* key) { return j.is_object() && j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : ""; }
+
+/// The system a file's states belong to: --rules, else the file it names, else the bundled one.
+rules::System loadNamed(const std::string& rules, const std::string& source, const std::string& name, const std::string& where) {
+    std::string path = rules;
+    if (path.empty() && !source.empty() && std::filesystem::exists(source)) path = source;
+    if (path.empty() && !name.empty() && std::filesystem::exists(rules::libraryDir() + "/" + name + ".holon")) path = rules::libraryDir() + "/" + name + ".holon";
+    if (path.empty() && !rules.empty()) path = rules;
+    if (path.empty())
+        throw InputError(where + ": the rule file it names ('" + (source.empty() ? name : source) + "') is not there; give it with --rules FILE");
+    if (!rules.empty() && !std::filesystem::exists(rules) && std::filesystem::exists(rules::libraryDir() + "/" + rules + ".holon"))
+        path = rules::libraryDir() + "/" + rules + ".holon";
+    std::optional<rules::System> system = rules::loadSystem(path, std::cerr);
+    if (!system) throw InputError(path + ": the rule file has errors (above); fix it or give another with --rules FILE");
+    if (!name.empty() && system->name != name)
+        throw InputError(where + ": the file is of system '" + name + "', but " + path + " declares '" + system->name + "'; give its rule file with --rules FILE");
+    return std::move(*system);
+}
+
+/// Cell states by their fields (compact JSON, sorted keys): either those of a rule system, each
+/// filled as the SVG pictures fill it, or a Roombots run's metamodules, each in its colour.
+class States {
+public:
+    States(Run& run, const rules::System& system, const rules::Lattice& lattice) : run_(&run), model_(std::make_unique<rules::Model>(system, lattice)) {
+        const rules::Alphabet& a = model_->alphabet();
+        for (std::size_t f = 0; f < system.fields.size() && fill_ < 0; ++f)
+            if (system.fields[f].kind == rules::FieldKind::Enum) fill_ = static_cast<int>(f);
+        for (int v = 1; v < a.size(); ++v) valid_[rules::stateFields(*model_, static_cast<rules::CellValue>(v)).dump()] = v;
+        what_ = "a state of system " + system.name;
+    }
+    States(Run& run, std::vector<std::string> colours) : run_(&run), colours_(std::move(colours)) {
+        what_ = "a metamodule of the run, {\"module\": 0 to " + std::to_string(static_cast<int>(colours_.size()) - 1) + "}";
+    }
+
+    /// The run's state index of these fields; throws naming `where` when it is no state.
+    int of(const nlohmann::json& fields, const std::string& where) {
+        if (!fields.is_object()) throw InputError(where + ": a cell state is a JSON object of its fields, found " + fields.dump());
+        if (fields.empty()) return 0;
+        std::string key = fields.dump();
+        if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+        std::string colour, label, words;
+        if (model_) {
+            const auto it = valid_.find(key);
+            if (it == valid_.end()) throw InputError(where + ": " + key + " is not " + what_ + "; give the rule file the run was made with (--rules FILE)");
+            const std::vector<int>& values = model_->alphabet().fields(static_cast<rules::CellValue>(it->second));
+            const rules::System& system = model_->system();
+            const bool filled = fill_ >= 0 && values[fill_] != rules::kAbsent;
+            colour = filled ? checker::valueColour(system.fields[fill_], values[fill_]) : checker::traceColours().noFill;
+            label = filled ? system.fields[fill_].name + " = " + system.fields[fill_].values[values[fill_]] : "no " + (fill_ >= 0 ? system.fields[fill_].name : "fill field");
+            words = checker::cellText(system, values);
+        } else {
+            const int m = fields.size() == 1 && fields.contains("module") && fields["module"].is_number_integer() ? fields["module"].get<int>() : -1;
+            if (m < 0 || m >= static_cast<int>(colours_.size())) throw InputError(where + ": " + key + " is not " + what_);
+            colour = colours_[m], label = "metamodule " + std::to_string(m), words = std::to_string(m);
+        }
+        const int s = run_->state(key, colour, words);
+        if (std::none_of(run_->legend.begin(), run_->legend.end(), [&](const auto& l) { return l.second == label; })) run_->legend.push_back({colour, label});
+        return cache_[key] = s;
+    }
+
+private:
+    Run* run_;
+    std::unique_ptr<rules::Model> model_;
+    int fill_ = -1;
+    std::map<std::string, int> valid_, cache_;
+    std::vector<std::string> colours_;
+    std::string what_;
+};
+
+/// Lattice positions to cell indices.
+class Cells {
+public:
+    explicit Cells(Run& run) : run_(&run) {
+        for (std::size_t i = 0; i < run.cells.size(); ++i) index_[key(run.cells[i])] = static_cast<int>(i);
+    }
+    /// [x, y] or [x, y, z] plus `offset`: its cell, or an error naming `where`.
+    int of(const nlohmann::json& j, Vec offset, const std::string& where) const {
+        const Vec v = point(j, where) + offset;
+        const auto it = index_.find(key(v));
+        if (it == index_.end()) throw InputError(where + ": cell " + j.dump() + " lies outside the run's cells (its region or points); the file was edited by hand or mixes two runs: write it again with the holon command that made it");
+        return it->second;
+    }
+    static Vec point(const nlohmann::json& j, const std::string& where) {
+        if (j.is_object() && j.contains("#tup")) return point(j["#tup"], where);
+        // Within ±2^30: beyond it a coordinate lies outside every region, and a sum of two would overflow.
+        const auto small = [](const nlohmann::json& c) {
+            return c.is_number_unsigned() ? c.get<std::uint64_t>() < (1u << 30) : c.is_number_integer() && std::abs(c.get<std::int64_t>()) < (1 << 30);
+        };
+        if (!j.is_array() || j.size() < 2 || j.size() > 3 || !std::all_of(j.begin(), j.end(), small))
+            throw InputError(where + ": a cell is [x, y] or [x, y, z] of integers, found " + j.dump());
+        return {j[0].get<int>(), j[1].get<int>(), j.size() == 3 ? j[2].get<int>() : 0};
+    }
+
+private:
+    static std::tuple<int, int, int> key(Vec v) { return {v.x, v.y, v.z}; }
+    Run* run_;
+    std::map<std::tuple<int, int, int>, int> index_;
+};
+
+void limitCells(const Run& run, const std::string& where) {
+    if (static_cast<std::int64_t>(run.cells.size()) > kMaxCells)
+        throw LimitError(where + ": " + std::to_string(run.cells.size()) + " cells, more than the viewer's " + std::to_string(kMaxCells) + " (docs/viewer.md)");
+}
+
+/// The box of lattice points spanning `points` (the cells of a run that names no region).
+void boxAround(Run& run, const std::vector<Vec>& points) {
+    if (points.empty()) return;
+    Vec lo = points[0], hi = points[0];
+    for (Vec p : points) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    const std::int64_t count = std::int64_t(hi.x - lo.x + 1) * (hi.y - lo.y + 1) * (hi.z - lo.z + 1);
+    if (count > kMaxCells) throw LimitError("the run spans " + std::to_string(count) + " cells, more than the viewer's " + std::to_string(kMaxCells) + " (docs/viewer.md)");
+    for (int z = lo.z; z <= hi.z; ++z)
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int x = lo.x; x <= hi.x; ++x) run.cells.push_back({x, y, z});
+}
+
+void regionCells(Run& run, const std::string& spec, const std::string& where) {
+    try {
+        const rules::Region region = rules::Region::parse(spec, static_cast<std::size_t>(kMaxCells));
+        run.lattice = region.lattice().kind();
+        run.cells = region.cells();
+    } catch (const InputError& e) {
+        throw InputError(where + ": region '" + spec + "': " + e.what());
+    }
+}
+
+void addInputs(Run& run, const Cells& cells, const nlohmann::json& inputs, Vec offset, const std::string& where) {
+    if (inputs.is_null()) return;
+    if (!inputs.is_object()) throw InputError(where + ": \"inputs\" must be an object {NAME: [cell, ...]}");
+    const auto colours = checker::traceColours().inputs;
+    for (const auto& [name, list] : inputs.items()) {
+        const nlohmann::json& set = list.is_object() && list.contains("#set") ? list["#set"] : list;
+        if (!set.is_array()) throw InputError(where + ": input '" + name + "' must be a list of cells");
+        Run::Input input{name, colours[run.inputs.size() % colours.size()], {}};
+        for (const auto& c : set) input.cells.push_back(cells.of(c, offset, where + ": input '" + name + "'"));
+        run.inputs.push_back(std::move(input));
+    }
+}
+
+/// Where a JSON syntax error lies, as line:column of `text`.
+std::string lineColumn(const std::string& text, std::size_t byte) {
+    byte = std::min(byte, text.size());
+    const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(byte), '\n'));
+    const std::size_t start = text.rfind('\n', byte == 0 ? 0 : byte - 1);
+    return std::to_string(line) + ":" + std::to_string(start == std::string::npos ? byte + 1 : byte - start);
+}
+
+// ---------------------------------------------------------------------------------------------
+// JSON Lines: plans, hex runs, Roombots runs
+
+Run readLines(const std::string& path, std::istream& in, const nlohmann::json& head, const std::string& rulesFile) {
+    Run run;
+    const std::string where1 = path + ":1";
+    const std::string kind = text(head, "plan") == "holon" ? "plan" : text(head, "run");
+    if (kind != "plan" && kind != "hex" && kind != "roombots") throw InputError(where1 + ": not a holon run: " + kFormats);
+    run.kind = kind;
+    if (!head.contains("start") || !head["start"].is_object()) throw InputError(where1 + ": the first line has no \"start\" configuration; write the file again with the holon command that made it");
+    const nlohmann::json& start = head["start"];
+    // The cells: the start's region (plans, Roombots runs) or its list of points (hex runs).
+    if (start.contains("region") && start["region"].is_string()) {
+        regionCells(run, start["region"], where1);
+    } else if (start.contains("points") && start["points"].is_array() && start.contains("lattice") && start["lattice"].is_string()) {
+        const rules::Lattice* lattice = rules::Lattice::byName(start["lattice"].get<std::string>());
+        if (!lattice) throw InputError(where1 + ": unknown lattice '" + start["lattice"].get<std::string>() + "'");
+        run.lattice = lattice->kind();
+        if (start["points"].size() > static_cast<std::size_t>(kMaxCells)) throw LimitError(where1 + ": more cells than the viewer's " + std::to_string(kMaxCells) + " (docs/viewer.md)");
+        for (const auto& p : start["points"]) run.cells.push_back(Cells::point(p, where1));
+    } else {
+        throw InputError(where1 + ": the start configuration names no \"region\" (or \"points\" and \"lattice\"); write the file again with the holon command that made it");
+    }
+    limitCells(run, path);
+    const Vec offset = start.contains("offset") ? Cells::point(start["offset"], where1 + ": offset") : Vec{};
+    const Cells cells(run);
+    std::optional<rules::System> system;
+    std::optional<States> states;
+    if (kind == "roombots") {
+        const nlohmann::json colours = head.contains("colours") ? head["colours"] : nlohmann::json();
+        if (!colours.is_array() || !std::all_of(colours.begin(), colours.end(), [](const auto& c) { return c.is_string(); }))
+            throw InputError(where1 + ": a Roombots run's first line lists its metamodules' \"colours\"; write it again with holon roombots --out");
+        states.emplace(run, head["colours"].get<std::vector<std::string>>());
+    } else {
+        system.emplace(loadNamed(rulesFile, text(head, "source"), text(head, "system"), where1));
+        states.emplace(run, *system, rules::Lattice::get(run.lattice));
+    }
+    run.title = (kind == "plan" ? "plan " : kind == "hex" ? "hex run "
+                                                          : "Roombots run ") +
+                path + (system ? " (" + system->name + ")" : "");
+    if (head.contains("title") && head["title"].is_string()) run.notes.push_back(head["title"].get<std::string>());
+    run.start.assign(run.cells.size(), 0);
+    if (!start.contains("cells") || !start["cells"].is_array()) throw InputError(where1 + ": the start configuration has no \"cells\" list");
+    for (const auto& c : start["cells"]) {
+        if (!c.is_object() || !c.contains("at")) throw InputError(where1 + ": a start cell is {\"at\": [x, y], FIELD: VALUE, ...}, found " + c.dump());
+        nlohmann::json fields = c;
+        fields.erase("at");
+        run.start[cells.of(c["at"], Vec{}, where1)] = states->of(fields, where1);
+    }
+    addInputs(run, cells, start.contains("inputs") ? start["inputs"] : nlohmann::json(), Vec{}, where1);
+
+    // One step per round: every instance of the round, its cells changed or only looked at.
+    run.steps.push_back({"start", {}, {}, {}});
+    std::vector<int> now = run.start, seenAt(run.cells.size(), -1);
+    std::map<std::string, int> rules;
+    std::vector<int> looked;
+    std::optional<std::int64_t> round;
+    std::int64_t instances = 0;
+    const auto close = [&] {
+        if (!round) return;
+        Run::Step& step = run.steps.back();
+        std::string counts;
+        for (const auto& [rule, n] : rules) counts += (counts.empty() ? "" : ", ") + rule + " " + std::to_string(n);
+        step.label = (kind == "roombots" ? "action " : kind == "hex" ? "timestep "
+                                                                     : "round ") +
+                     std::to_string(*round) + ": " + counts;
+        for (const auto& change : step.changes) seenAt[change.first] = -2;
+        for (int c : looked)
+            if (seenAt[c] != -2) step.context.push_back(c), seenAt[c] = -2;
+        for (int c : looked) seenAt[c] = -1;
+        for (const auto& change : step.changes) seenAt[change.first] = -1;
+        rules.clear(), looked.clear();
+    };
+    std::string line;
+    for (int lineNo = 2; std::getline(in, line); ++lineNo) {
+        const std::string where = path + ":" + std::to_string(lineNo);
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        nlohmann::json j;
+        try {
+            rules::checkJsonDepth(line);
+            j = nlohmann::json::parse(line);
+        } catch (const nlohmann::json::exception& e) {
+            throw InputError(where + ": not a JSON line (" + e.what() + "); the file is cut short or was edited by hand: write it again");
+        } catch (const InputError& e) {
+            throw InputError(where + ": " + e.what());
+        }
+        const bool fault = j.is_object() && j.contains("fault");
+        if (!j.is_object() || !j.contains("round") || !j["round"].is_number_integer() || !j.contains("cells") || !j["cells"].is_array() ||
+            (!fault && (!j.contains("rule") || !j["rule"].is_string() || !j.contains("after") || !j["after"].is_array() || j["after"].size() != j["cells"].size())))
+            throw InputError(where + ": a step is {\"round\": R, \"rule\": NAME, \"cells\": [[x, y], ...], \"after\": [{...}, ...]}, one state after per cell");
+        const std::int64_t r = j["round"].get<std::int64_t>();
+        if (!round || r != *round) {
+            close();
+            run.steps.push_back({});
+            round = r;
+        }
+        Run::Step& step = run.steps.back();
+        ++rules[fault ? "lost" : j["rule"].get<std::string>()];
+        ++instances;
+        for (std::size_t k = 0; k < j["cells"].size(); ++k) {
+            const int c = cells.of(j["cells"][k], offset, where);
+            const int s = fault ? 0 : states->of(j["after"][k], where);
+            if (s == now[c]) {
+                looked.push_back(c);
+                continue;
+            }
+            now[c] = s;
+            if (seenAt[c] >= 0) step.changes[static_cast<std::size_t>(seenAt[c])].second = s;
+            else seenAt[c] = static_cast<int>(step.changes.size()), step.changes.push_back({c, s});
+        }
+    }
+    close();
+    run.notes.push_back(std::to_string(instances) + " rule instances in " + std::to_string(run.steps.size() - 1) + (kind == "roombots" ? " actions" : kind == "hex" ? " timesteps"
+                                                                                                                                                                    : " rounds"));
+    return run;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// ITF
+
+Run readItf(const nlohmann::json& itf, const std::string& path, const rules::System& system) {
+    Run run;
+    run.kind = "trace";
+    const nlohmann::json meta = itf.contains("#meta") ? itf["#meta"] : nlohmann::json::object();
+    if (!itf.contains("states") || !itf["states"].is_array() || itf["states"].empty()) throw InputError(path + ": an ITF trace needs a non-empty \"states\" list (" + kFormats + ")");
+    const nlohmann::json& states = itf["states"];
+    const auto stateWhere = [&](std::size_t k) { return path + ": state " + std::to_string(k); };
+    const auto mapOf = [&](std::size_t k) -> const nlohmann::json& {
+        const nlohmann::json& s = states[k];
+        if (!s.is_object() || !s.contains("cells") || !s["cells"].is_object() || !s["cells"].contains("#map") || !s["cells"]["#map"].is_array())
+            throw InputError(stateWhere(k) + ": a state's \"cells\" is {\"#map\": [[{\"#tup\": [x, y]}, {FIELD: VALUE}], ...]}");
+        return s["cells"]["#map"];
+    };
+    // The cells: the trace's region, or the box around every cell it names (a monitor's trace).
+    if (const std::string region = text(meta, "region"); !region.empty()) {
+        regionCells(run, region, path);
+    } else {
+        std::vector<Vec> points;
+        bool three = false;
+        for (std::size_t k = 0; k < states.size(); ++k)
+            for (const auto& entry : mapOf(k)) {
+                if (!entry.is_array() || entry.size() != 2) throw InputError(stateWhere(k) + ": a map entry is [{\"#tup\": [x, y]}, {FIELD: VALUE}]");
+                points.push_back(Cells::point(entry[0], stateWhere(k)));
+                three = three || (entry[0].is_object() ? entry[0]["#tup"].size() == 3 : entry[0].size() == 3);
+            }
+        run.lattice = system.lattice ? *system.lattice : three ? rules::LatticeKind::Cubic3D
+                                                               : rules::LatticeKind::Square2D;
+        boxAround(run, points);
+    }
+    limitCells(run, path);
+    const Cells cells(run);
+    States table(run, system, rules::Lattice::get(run.lattice));
+    const auto configuration = [&](std::size_t k) {
+        std::vector<int> c(run.cells.size(), 0);
+        for (const auto& entry : mapOf(k)) {
+            if (!entry.is_array() || entry.size() != 2) throw InputError(stateWhere(k) + ": a map entry is [{\"#tup\": [x, y]}, {FIELD: VALUE}]");
+            c[cells.of(entry[0], Vec{}, stateWhere(k))] = table.of(entry[1], stateWhere(k));
+        }
+        return c;
+    };
+    const auto instanceCells = [&](const nlohmann::json& m, std::size_t k) {
+        std::vector<int> out;
+        const auto add = [&](const nlohmann::json& list) {
+            if (list.is_array())
+                for (const auto& c : list) out.push_back(cells.of(c, Vec{}, stateWhere(k) + ": #meta"));
+        };
+        if (m.contains("cells")) add(m["cells"]);
+        if (m.contains("fired") && m["fired"].is_array())
+            for (const auto& f : m["fired"]) add(f.contains("cells") ? f["cells"] : nlohmann::json());
+        return out;
+    };
+    run.start = configuration(0);
+    if (states[0].contains("inputs")) addInputs(run, cells, states[0]["inputs"], Vec{}, stateWhere(0));
+    run.steps.push_back({"0: initial", {}, {}, {}});
+    std::vector<int> before = run.start;
+    for (std::size_t k = 1; k < states.size(); ++k) {
+        const std::vector<int> after = configuration(k);
+        const nlohmann::json m = states[k].contains("#meta") && states[k]["#meta"].is_object() ? states[k]["#meta"] : nlohmann::json::object();
+        Run::Step step;
+        for (std::size_t i = 0; i < after.size(); ++i)
+            if (after[i] != before[i]) step.changes.push_back({static_cast<int>(i), after[i]});
+        for (int c : instanceCells(m, k))
+            if (after[c] == before[c] && std::find(step.context.begin(), step.context.end(), c) == step.context.end()) step.context.push_back(c);
+        std::string label = text(m, "rule");
+        if (!label.empty() && m.contains("cells") && m["cells"].is_array() && !m["cells"].empty()) label += " at " + m["cells"][0].dump();
+        if (m.contains("fired") && m["fired"].is_array()) label = std::to_string(m["fired"].size()) + " instances fired";
+        step.label = std::to_string(k) + ": " + (label.empty() ? "adjacent, not one rule step away" : label);
+        if (m.contains("marked") && m["marked"].is_array())
+            for (const auto& c : m["marked"]) step.marked.push_back(cells.of(c, Vec{}, stateWhere(k) + ": #meta.marked"));
+        run.steps.push_back(std::move(step));
+        before = after;
+    }
+    const std::string property = text(meta, "property"), description = text(meta, "description");
+    run.title = "trace " + path + " (" + system.name + (text(meta, "region").empty() ? "" : " on " + text(meta, "region")) + ")";
+    if (!property.empty()) {
+        run.violation = static_cast<int>(run.steps.size()) - 1;
+        run.notes.push_back("property " + property + " violated at step " + std::to_string(run.violation) + (description.empty() ? "" : ": " + description));
+    } else if (!description.empty()) {
+        run.notes.push_back(description);
+    }
+    if (itf.contains("loop") && itf["loop"].is_number_integer()) run.notes.push_back("the last state loops back to state " + std::to_string(itf["loop"].get<int>()));
+    return run;
+}
+
+Run readRun(const std::string& path, const std::string& rulesFile) {
+    // Only a file: /dev/zero or a pipe has no end to read to.
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) throw InputError(path + ": a folder, not a file; " + kFormats);
+    if (!std::filesystem::is_regular_file(path, error)) throw InputError(path + ": no such file (or not a regular file); " + kFormats);
+    if (std::filesystem::file_size(path, error) > kMaxFileBytes)
+        throw LimitError(path + ": larger than the viewer's " + std::to_string(kMaxFileBytes >> 20) + " MiB (docs/viewer.md)");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot open the file");
+    std::string first;
+    std::getline(in, first);
+    nlohmann::json head;
+    bool line = false;
+    try {
+        rules::checkJsonDepth(first);
+        head = nlohmann::json::parse(first);
+        line = head.is_object() && !head.contains("states");
+    } catch (const nlohmann::json::exception&) {
+    } catch (const InputError&) {
+    }
+    if (line) return readLines(path, in, head, rulesFile);
+    // One JSON document: an ITF trace (pretty-printed over many lines).
+    std::stringstream rest;
+    rest << first << '\n'
+         << in.rdbuf();
+    const std::string all = rest.str();
+    nlohmann::json itf;
+    try {
+        rules::checkJsonDepth(all);
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
+    try {
+        itf = nlohmann::json::parse(all);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw InputError(path + ":" + lineColumn(all, e.byte == 0 ? 0 : e.byte - 1) + ": not JSON (" + e.what() + "); " + kFormats);
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(path + ":1: not JSON (" + e.what() + "); " + kFormats);
+    }
+    if (!itf.is_object() || !itf.contains("states")) throw InputError(path + ":1: neither an ITF trace (no \"states\") nor JSON Lines; " + std::string(kFormats));
+    const nlohmann::json meta = itf.contains("#meta") ? itf["#meta"] : nlohmann::json::object();
+    return readItf(itf, path, loadNamed(rulesFile, text(meta, "source"), text(meta, "system"), path));
+}
+
+}  // namespace holon::viewer
