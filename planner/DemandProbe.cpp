@@ -25,17 +25,25 @@ DemandProbe::DemandProbe(const Problem& problem) {
     const rules::RuleTables& tables = *problem.tables;
     alphabet_ = static_cast<std::size_t>(tables.alphabet());
     accepting_.resize(static_cast<std::size_t>(tables.comboCount()) * alphabet_);
+    carrier_.assign(accepting_.size(), 0);
     for (int sh = 0; sh < engine.shapeCount(); ++sh)
-        if (engine.kind(sh) == ShapeKind::Motion)
-            for (int c = 0; c < tables.comboCount(); ++c)
-                for (std::size_t v = 0; v < alphabet_; ++v)
-                    for (std::size_t k = 0; k < engine.cellSteps(sh).size(); ++k)
-                        if (tables.test(tables.shape(sh).lhs[k], c, static_cast<rules::CellValue>(v)))
-                            accepting_[static_cast<std::size_t>(c) * alphabet_ + v].push_back({sh, engine.cellSteps(sh)[k]});
+        for (int c = 0; c < tables.comboCount(); ++c)
+            for (std::size_t v = 0; v < alphabet_; ++v)
+                for (std::size_t k = 0; k < engine.cellSteps(sh).size(); ++k) {
+                    if (!tables.test(tables.shape(sh).lhs[k], c, static_cast<rules::CellValue>(v))) continue;
+                    const std::size_t at = static_cast<std::size_t>(c) * alphabet_ + v;
+                    if (engine.kind(sh) == ShapeKind::Motion) accepting_[at].push_back({sh, engine.cellSteps(sh)[k]});
+                    if (engine.kind(sh) == ShapeKind::Transfer) carrier_[at] = 1;
+                }
 }
 
 bool DemandProbe::needsHeavier(const Execution& ex, std::int64_t i) const { return wouldEnable(ex, i, heavier_[ex.cells()[i]]); }
 bool DemandProbe::needsLighter(const Execution& ex, std::int64_t i) const { return wouldEnable(ex, i, lighter_[ex.cells()[i]]); }
+
+bool DemandProbe::carrier(const Execution& ex, std::int64_t i) const {
+    const std::uint8_t combo = ex.engine().combo(i);
+    return combo != BoxEngine::kOutside && carrier_[static_cast<std::size_t>(combo) * alphabet_ + ex.cells()[i]];
+}
 
 bool DemandProbe::wouldEnable(const Execution& ex, std::int64_t i, BoxEngine::Value instead) const {
     const BoxEngine::Value v = ex.cells()[i];

@@ -25,6 +25,9 @@ public:
     bool heavy(BoxEngine::Value v) const { return heavy_[v] != 0; }
     bool light(BoxEngine::Value v) const { return light_[v] != 0; }
     bool final(BoxEngine::Value v) const { return final_[v] != 0; }
+    /// Whether cell i, as it is, can take part in a transfer: only such a cell can pass a
+    /// resource on, so only through it is a demand any nearer.
+    bool carrier(const Execution& ex, std::int64_t i) const;
 
 private:
     bool wouldEnable(const Execution& ex, std::int64_t i, BoxEngine::Value instead) const;
@@ -34,6 +37,7 @@ private:
     // cell whose test that state passes (most instances around a cell fail there, and the fields
     // ask this of every cell near a change).
     std::vector<std::vector<std::pair<int, std::int64_t>>> accepting_;
+    std::vector<char> carrier_;  // per input combination and state: a transfer's pattern cell accepts it
     std::size_t alphabet_ = 0;
 };
 

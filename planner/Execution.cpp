@@ -224,7 +224,7 @@ bool Execution::syncRound(const RunObserver& observer, std::vector<std::int64_t>
         if (engine().kind(shape) == ShapeKind::Transfer) givers.push_back(transferEnds(*this, anchorOf(chosen[k]), shape).first);
         fire(anchorOf(chosen[k]), shape, observer, changed);
     }
-    pipeline(observer, changed, givers);
+    if (options_.pipeline) pipeline(observer, changed, givers);
     return !chosen.empty();
 }
 

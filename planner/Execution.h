@@ -31,6 +31,10 @@ struct RunOptions {
     /// (an allocator shuffling resources forever); 0: 1000 + 20 D^2 for a board of extents
     /// summing to D, far above the diffusion time of the random allocator across the board.
     std::int64_t maxIdleRounds = 0;
+    /// Sync rounds pipeline transfers (Execution.cpp); false: each resource moves at most one hop
+    /// every other round along a queue, as before pipelining (the yardstick PipelineTest holds
+    /// pipelined runs to).
+    bool pipeline = true;
     /// Set (nonzero) asynchronously, by a signal handler: the run stops as "interrupted" at the
     /// next round (sync) or step (async) boundary, where every output is consistent. Null: never.
     const volatile std::sig_atomic_t* interrupt = nullptr;
