@@ -270,8 +270,9 @@ StepObligation invariantConjunct(const rules::Model& model, const rules::Propert
     ob.onWindow = [parts, k, g](SmtEncoding& enc, const Window& w, int q, const State& c, const State& d) {
         const rules::Region& region = w.region();
         smt::Term f = enc.fires(q, c, d);
-        // Every conjunct at every cell whose neighbourhood (as far as the conjuncts read) is inside.
-        for (int i = 0; i < region.size(); ++i) {
+        // Every conjunct at every cell near the instance whose neighbourhood (as far as the
+        // conjuncts read) is inside; cells further away have nothing to do with its step.
+        for (int i : w.around(q, w.margin())) {
             bool inside = true;
             for (int dir = 0; g > 0 && dir < region.lattice().degree(); ++dir) inside = inside && region.neighbour(i, dir) >= 0;
             if (!inside) continue;
