@@ -24,8 +24,8 @@
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -357,9 +357,14 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
         case rules::Property::Kind::Invariant: {
             const std::vector<const rules::Expr*> parts = rules::conjuncts(p.exprs[0]);
             const Window& probe = prover.window(0);
-            std::string why;
-            for (std::size_t k = 0; k < parts.size() && why.empty(); ++k)
-                if (std::string n = notLocal(*parts[k], probe.engine()); !n.empty()) why = "conjunct " + std::to_string(k + 1) + ", " + n;
+            std::string why, others;
+            for (std::size_t k = 0; k < parts.size(); ++k) {
+                const std::string n = notLocal(*parts[k], probe.engine());
+                if (n.empty()) continue;
+                if (why.empty()) why = "conjunct " + std::to_string(k + 1) + ", " + n;
+                else others += (others.empty() ? "" : ", ") + std::to_string(k + 1);
+            }
+            if (!others.empty()) why += "; " + std::string(others.find(',') == std::string::npos ? "conjunct " + others + " is" : "conjuncts " + others + " are") + " not local either";
             if (!why.empty()) {
                 undecided(p, why);
                 break;
