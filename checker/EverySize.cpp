@@ -350,6 +350,13 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
             break;
         }
         case rules::Property::Kind::Ranking: {
+            std::string why;
+            for (const rules::Expr& x : p.exprs)
+                if (why.empty()) why = notLocalNumber(x, prover.window(0).engine());
+            if (!why.empty()) {
+                undecided(p, why);
+                break;
+            }
             auto [o, drawing] = run(ranking(model, p));
             add(o, drawing);
             break;

@@ -45,6 +45,14 @@ std::string notLocal(const rules::Expr& conjunct, const rules::Engine& engine) {
     return "";
 }
 
+std::string notLocalNumber(const rules::Expr& number, const rules::Engine& engine) {
+    if (number.kind == rules::Expr::Kind::Count && !number.kids.empty() && engine.predicateAccepts(number.pred, 0, 0))
+        return "'" + rules::printExpr(engine.model().system(), number) + "' counts empty cells by their neighbours, and a region does not count the empty points outside it";
+    for (const rules::Expr& k : number.kids)
+        if (std::string why = notLocalNumber(k, engine); !why.empty()) return why;
+    return "";
+}
+
 namespace {
 
 /// The points within `margin` steps of `centres`, centres first, without repeats.

@@ -23,6 +23,11 @@ int ruleRadius(const rules::Model& model);
 /// them); empty when it is local.
 std::string notLocal(const rules::Expr& conjunct, const rules::Engine& engine);
 
+/// The same for a number (a ranking's component): a count whose cell guard reads neighbours and
+/// whose predicate holds at an empty point without inputs could change outside a region, where the
+/// region does not count; empty when there is none.
+std::string notLocalNumber(const rules::Expr& number, const rules::Engine& engine);
+
 class Window {
 public:
     Window(const rules::Model& model, int margin);

@@ -181,3 +181,20 @@ invariant whole: all(A: count nbr B == 0) and no(B&!mark) and all(A | _) and som
     CHECK(obligation(r.report, "whole").result.verdict == Verdict::Unknown);
     CHECK(obligation(r.report, "whole").result.summary.find("conjunct 4") != std::string::npos);
 }
+
+TEST_CASE("every size: a ranking counting empty cells by their neighbours is not decided on a window") {
+    // count(_: some nbr A) changes at empty points next to the pattern, which a region leaves out
+    // when they lie outside it: the window would count what no region does.
+    const rules::System system = test::parse(R"(system empties
+states A
+rule grow: A _ => A A
+ranking shore: count(_: some nbr A), count(A)
+ranking size: -count(A)
+)");
+    const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
+    const checker::EverySizeReport r = everySize(model);
+    CHECK(obligation(r.report, "shore").result.verdict == Verdict::Unknown);
+    CHECK(obligation(r.report, "shore").result.summary.find("counts empty cells by their neighbours") != std::string::npos);
+    CHECK(obligation(r.report, "size").result.verdict == Verdict::Holds);
+    CHECK(r.notLocal == std::vector<std::string>{"shore"});
+}
