@@ -44,7 +44,7 @@ Verdict VerifyReport::overall() const {
 nlohmann::json VerifyReport::toJson() const {
     nlohmann::json props = nlohmann::json::array();
     for (const Obligation& o : obligations)
-        props.push_back({{"name", o.result.name}, {"kind", o.result.kind}, {"verdict", proofVerdictName(o.result.verdict)}, {"summary", o.result.summary}, {"witness", o.result.witness}, {"seconds", o.result.seconds}, {"smt_file", o.smtFile.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.smtFile)}});
+        props.push_back({{"name", o.result.name}, {"kind", o.result.kind}, {"verdict", proofVerdictName(o.result.verdict)}, {"summary", o.result.summary}, {"witness", o.result.witness}, {"seconds", o.result.seconds}, {"smt_file", o.smtFile.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.smtFile)}, {"scope", o.scope.empty() ? "region " + region : o.scope}});
     return {{"system", system}, {"region", region}, {"properties", props}};
 }
 

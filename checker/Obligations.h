@@ -27,6 +27,8 @@ struct VerifyOptions {
 struct Obligation {
     PropertyResult result;  // verdict Holds = proved, Violated = counterexample
     std::string smtFile;    // written file, if any
+    /// What the verdict covers: "every region" (EverySize.h), or empty for the report's region.
+    std::string scope;
 };
 
 struct VerifyReport {

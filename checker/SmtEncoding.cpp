@@ -344,6 +344,13 @@ smt::Term SmtEncoding::holds(const Expr& e, const State& s, bool positive) {
     }
 }
 
+smt::Term SmtEncoding::cellCondition(const Expr& e, const State& s, int cell) {
+    const smt::Term m = memberCounted(s, cell, e);
+    if (e.kind == Expr::Kind::No) return !m;
+    if (e.kind != Expr::Kind::All) throw InputError("internal: not a quantifier over cells");
+    return e.kids.empty() ? m : smt::implies(memberPred(s, cell, e.pred), m);
+}
+
 smt::Term SmtEncoding::isCut(const std::vector<smt::Term>& members, const std::vector<smt::Term>& in) const {
     // A non-empty proper subset of the members, closed under adjacency among them.
     const rules::Region& region = engine_.region();

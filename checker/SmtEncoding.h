@@ -27,6 +27,7 @@ public:
     /// can take longer than the solver is given.
     SmtEncoding(smt::Context& ctx, const rules::Engine& engine, Use use = Use::Queries, Budget budget = Budget());
     const Budget& budget() const { return budget_; }
+    const rules::Engine& engine() const { return engine_; }
 
     /// A configuration, one-hot: is[i][v] says cell i holds state v; exactly one per cell (the
     /// domain constraints go to `facts()`).
@@ -47,6 +48,9 @@ public:
     /// witnesses (ranks), and under odd negations by refutations (a cut, a pointer-closed set).
     smt::Term holds(const rules::Expr& e, const State& s, bool positive = true);
     smt::Term number(const rules::Expr& e, const State& s);
+    /// What a region quantifier `all(T: G)`, `all(T)`, `no(T: G)` or `no(T)` asks of one cell: the
+    /// conjunct of holds() for that cell (a local invariant on a window, checker/Window.h).
+    smt::Term cellCondition(const rules::Expr& quantifier, const State& s, int cell);
     /// Every constraint holds; `positive` as for holds() (false where the result is negated).
     smt::Term legal(const State& s, bool positive = true);
     /// The configuration placed instance p leads s to, as expressions over s (no new variables):

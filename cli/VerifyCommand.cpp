@@ -6,6 +6,7 @@
 #include "checker/Obligations.h"
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
+#include "cli/VerifyEverySize.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
@@ -19,15 +20,22 @@ namespace holon::cli {
 namespace {
 
 struct VerifyArgs {
-    std::string file, region, traceOut, svg, smtOut;
+    std::string file, region, traceOut, svg, smtOut, lattice;
     std::vector<std::string> from, inputs, properties, noWarnings;
     int depth = 0;
     double timeout = 120;
     std::uint64_t memoryMiB = 16384;
-    bool json = false, reach = false;
+    bool json = false, reach = false, everySize = false;
 };
 
 int run(const VerifyArgs& a) {
+    if (a.everySize) {
+        if (a.depth > 0 || a.reach || !a.from.empty() || !a.inputs.empty() || !a.traceOut.empty() || !a.svg.empty())
+            throw InputError("--every-size proves one step on a window: --depth, --reach, --from, --input, --trace-out and --svg need --region without it");
+        return runEverySize({a.file, a.lattice, a.region, a.smtOut, a.properties, a.noWarnings, a.timeout, a.memoryMiB, a.json});
+    }
+    if (!a.lattice.empty()) throw InputError("--lattice is for --every-size; a bounded proof takes the lattice of --region");
+    if (a.region.empty()) throw InputError("--region is required: a bounded region such as square:3x3 (or --every-size --lattice L for every region)");
     auto system = loadRules(a.file, a.noWarnings);
     if (!system) return 2;
     const rules::Region region = rules::Region::parse(a.region, 4096);
@@ -148,9 +156,11 @@ int run(const VerifyArgs& a) {
 
 Run addVerifyCommand(CLI::App& app) {
     auto a = std::make_shared<VerifyArgs>();
-    CLI::App* sub = app.add_subcommand("verify", "Prove properties for every configuration of a bounded region with Z3");
+    CLI::App* sub = app.add_subcommand("verify", "Prove properties for every configuration of a bounded region, or of every region (--every-size), with Z3");
     sub->add_option("file", a->file, "rule file (.holon)")->required();
-    sub->add_option("--region", a->region, "bounded region: square:WxH, cubic:WxHxD or hex:rR")->required();
+    sub->add_option("--region", a->region, "bounded region: square:WxH, cubic:WxHxD or hex:rR (with --every-size: the bounded proof for what is not local)");
+    sub->add_flag("--every-size", a->everySize, "prove conservation, rankings and local invariants for every region of the lattice (a window proof)");
+    sub->add_option("--lattice", a->lattice, "with --every-size: square2d, hex2d or cubic3d (default: the system's, or --region's)");
     sub->add_option("--property", a->properties, "prove only this property (repeatable)");
     sub->add_option("--depth", a->depth, "also bounded model checking of the invariants to this depth from --from")->check(CLI::Range(0, 10000));
     sub->add_flag("--reach", a->reach, "also prove the invariants for every state reachable from --from, at any depth (Spacer)");

@@ -78,6 +78,11 @@ Region Region::box(const Lattice& lattice, Vec size) {
     return Region(lattice, spec, std::move(cells));
 }
 
+Region Region::of(const Lattice& lattice, std::string spec, std::vector<Vec> cells) {
+    if (cells.empty()) throw InternalError("a region needs a cell");
+    return Region(lattice, std::move(spec), std::move(cells));
+}
+
 Region Region::hexagon(int radius) {
     std::vector<Vec> cells;
     for (int r = -radius; r <= radius; ++r)

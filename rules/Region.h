@@ -16,6 +16,9 @@ public:
     static Region parse(std::string_view spec, std::size_t maxCells = 1u << 26);
     static Region box(const Lattice& lattice, Vec size);
     static Region hexagon(int radius);
+    /// Any finite set of lattice points (distinct, at least one), named `spec` in messages: the
+    /// windows of proofs for every region (checker/Window.h).
+    static Region of(const Lattice& lattice, std::string spec, std::vector<Vec> cells);
     /// The region and every lattice point within `margin` neighbour steps of it; the region's cells
     /// keep their indices (0..size()-1), the added ones follow.
     Region grown(int margin) const;

@@ -1,0 +1,410 @@
+// Proofs for every region (issue 31). Conservation, a ranking's decrease and the inductiveness of
+// an invariant made of per-cell conditions are each about one step of one rule instance. A step
+// reads and writes a bounded pattern, and lattices are translation invariant, so every step of
+// every region is a translate of a step of one of the shapes placed at the origin of a window
+// (Window.h) whose cells are free. The query per property is the bounded one with its
+// hypotheses cut down to what the window can state honestly:
+//   conserves   the focus instance fires and the amount on its pattern changes
+//   ranking     the focus instance fires and the ranking does not decrease (or, excepted, changes)
+//   invariant   the focus instance fires, every conjunct holds at every window cell whose
+//               neighbours are in the window, and conjunct k fails at a cell within the conjuncts'
+//               radius of the pattern (nothing else can change)
+// Non-local constraints are dropped (the query only gets more models). UNSAT is then a proof for
+// every region; proofs/README.md argues it cell by cell. A model is a window counterexample, which
+// may be spurious (the window is not a region): it counts only once the bounded encoding has
+// completed it on a concrete region around the window, with the instance and the cells it reads
+// fixed, and the reference interpreter has replayed the step and seen the property break.
+
+#include "checker/EverySize.h"
+
+#include "checker/Draw.h"
+#include "checker/SmtEncoding.h"
+#include "checker/SolverLimits.h"
+#include "checker/Window.h"
+#include "rules/Error.h"
+#include "rules/OutputFile.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+namespace holon::checker {
+
+namespace {
+
+using rules::CellValue;
+using State = SmtEncoding::State;
+using Cells = std::vector<CellValue>;
+
+/// One property decided by a step, three ways: on the window (instance q at the origin), on a
+/// bounded region (every hypothesis), and on a concrete step through the compiled engine.
+struct StepObligation {
+    std::string name, kind, proved, broken;  // verdict texts
+    int margin = 0;
+    std::function<smt::Term(SmtEncoding&, const Window&, int q, const State& c, const State& d)> onWindow;
+    std::function<smt::Term(SmtEncoding&, int q, const State& c, const State& d)> onRegion;
+    std::function<bool(const rules::Engine&, const Cells& c, const Cells& d, int q)> breaks;
+};
+
+std::string fileSafe(std::string s) {
+    for (char& c : s)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '_';
+    return s;
+}
+
+std::vector<std::uint32_t> inputsOf(const smt::Model& m, const SmtEncoding& enc) {
+    std::vector<std::uint32_t> in;
+    for (const auto& bits : enc.inputBits()) {
+        std::uint32_t v = 0;
+        for (std::size_t k = 0; k < bits.size(); ++k)
+            if (m.isTrue(bits[k])) v |= 1u << k;
+        in.push_back(v);
+    }
+    return in;
+}
+
+std::vector<rules::Rational> numbers(const rules::Engine& e, const std::vector<rules::Expr>& exprs, const Cells& c) {
+    std::vector<rules::Rational> out;
+    for (const rules::Expr& x : exprs) out.push_back(e.number(x, c.data()));
+    return out;
+}
+
+std::int64_t amount(const rules::Engine& e, bool byMass, const Cells& c) {
+    if (byMass) return e.massUnits(c.data());
+    return static_cast<std::int64_t>(std::count_if(c.begin(), c.end(), [](CellValue v) { return v != 0; }));
+}
+
+class Prover {
+public:
+    Prover(const rules::Model& model, const EverySizeOptions& options) : model_(model), options_(options) {}
+
+    /// The window of `margin`, made once per margin.
+    const Window& window(int margin) {
+        auto& w = windows_[margin];
+        if (!w) w = std::make_unique<Window>(model_, margin);
+        return *w;
+    }
+
+    Obligation prove(const StepObligation& ob, std::string& drawing) {
+        const auto start = std::chrono::steady_clock::now();
+        const Budget budget(options_.timeoutSeconds);
+        const Window& w = window(ob.margin);
+        Obligation o;
+        o.result.name = ob.name;
+        o.result.kind = ob.kind;
+        o.scope = "every region";
+        smt::Context ctx(budget);
+        SmtEncoding enc(ctx, w.engine(), SmtEncoding::Use::Queries, budget);
+        const State c = enc.state("c"), d = enc.state("d");
+        std::vector<smt::Term> act, body;
+        for (int q : w.focus()) {
+            act.push_back(ctx.boolConst("instance_" + std::to_string(q)));
+            body.push_back(ob.onWindow(enc, w, q, c, d));
+        }
+        smt::Solver solver(ctx);
+        for (const smt::Term& f : enc.facts()) solver.add(f);
+        for (std::size_t k = 0; k < act.size(); ++k) solver.add(smt::implies(act[k], body[k]));
+        if (!options_.smtOut.empty()) {
+            budget.check("writing the SMT-LIB2 file");
+            const rules::OutputFile file(options_.smtOutOption.empty() ? "the SMT-LIB2 folder" : options_.smtOutOption,
+                                         (std::filesystem::path(options_.smtOut) /
+                                          (fileSafe(model_.system().name) + ".every-size." + model_.lattice().name() + "." + fileSafe(ob.name) + ".smt2"))
+                                             .string());
+            smt::Solver copy(ctx);
+            for (const smt::Term& f : enc.facts()) copy.add(f);
+            for (std::size_t k = 0; k < act.size(); ++k) copy.add(smt::implies(act[k], body[k]));
+            copy.add(smt::anyOf(ctx, act));
+            file.write("; holon proof obligation for every region: system " + model_.system().name + ", lattice " + model_.lattice().name() +
+                       ", property " + ob.name + "\n; window: every rule shape with its first cell at the origin, and every point within " +
+                       std::to_string(ob.margin) + " steps of its pattern, free (" + std::to_string(w.region().size()) +
+                       " cells; proofs/README.md)\n; expected: unsat (the property holds on every region of the lattice)\n(set-logic ALL)\n" + copy.toSmt2());
+            o.smtFile = file.path();
+        }
+        o.result.verdict = Verdict::Holds;
+        o.result.summary = ob.proved + " (window of radius " + std::to_string(ob.margin) + ", " + std::to_string(w.region().size()) + " cells)";
+        for (std::size_t k = 0; k < act.size(); ++k) {
+            budget.check("solving");
+            if (budget.limited()) solver.setTimeout(std::max(1u, static_cast<unsigned>(budget.remaining() * 1000)));
+            const smt::Result r = solver.check({act[k]});
+            if (r == smt::Result::Unsat) continue;
+            if (r == smt::Result::Unknown) {
+                o.result.verdict = Verdict::Unknown;
+                o.result.summary = "the solver gave up on rule '" + ruleOf(w, w.focus()[k]) + "': " + unknownReason(solver.reasonUnknown());
+                break;
+            }
+            const smt::Model m = solver.model();
+            refuted(ob, w, w.focus()[k], enc.decode(m, c), inputsOf(m, enc), budget, o, drawing);
+            break;
+        }
+        o.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return o;
+    }
+
+private:
+    std::string ruleOf(const Window& w, int q) const { return model_.rules()[w.engine().instances()[q].rule].name; }
+
+    /// A window counterexample: completed on the window grown by one (the bounded encoding, with the
+    /// instance's pattern and the cells its guard reads fixed), then replayed by the interpreter.
+    void refuted(const StepObligation& ob, const Window& w, int q, const Cells& windowBefore, const std::vector<std::uint32_t>& windowInputs,
+                 const Budget& budget, Obligation& o, std::string& drawing) {
+        const rules::Region concrete = w.region().grown(1);  // the window's cells keep their indices
+        const rules::Engine open(model_, concrete, {}, true);
+        const int placed = open.instanceAt(concrete.indexOf({0, 0, 0}), w.engine().instances()[q].shape);
+        const std::string rule = ruleOf(w, q);
+        o.result.witness = {{"rule", rule}, {"window_radius", ob.margin}, {"window_cells", w.region().size()}};
+        std::string why;
+        std::optional<Trace> trace;
+        std::vector<std::uint32_t> inputs;
+        try {
+            smt::Context ctx(budget);
+            SmtEncoding enc(ctx, open, SmtEncoding::Use::Queries, budget);
+            const State c = enc.state("c"), d = enc.state("d");
+            smt::Term query = ob.onRegion(enc, placed, c, d);
+            for (int i : w.around(q, ruleRadius(model_))) {
+                query = query && c.is[i][windowBefore[i]];
+                for (std::size_t k = 0; k < enc.inputBits()[i].size(); ++k)
+                    query = query && (((windowInputs[i] >> k) & 1u) ? enc.inputBits()[i][k] : !enc.inputBits()[i][k]);
+            }
+            smt::Solver solver(ctx);
+            solver.add(query);
+            solver.add(enc.instantiate().all);
+            for (const smt::Term& f : enc.facts()) solver.add(f);
+            if (budget.limited()) solver.setTimeout(std::max(1u, static_cast<unsigned>(budget.remaining() * 1000)));
+            switch (solver.check()) {
+            case smt::Result::Sat: {
+                const smt::Model m = solver.model();
+                inputs = inputsOf(m, enc);
+                trace = Trace{{{enc.decode(m, c), -1}, {enc.decode(m, d), placed}}, {}, ob.name, ob.broken, {}};
+                break;
+            }
+            case smt::Result::Unsat: why = "no configuration of " + concrete.spec() + " around it breaks the property"; break;
+            case smt::Result::Unknown: why = "the solver gave up completing it: " + unknownReason(solver.reasonUnknown()); break;
+            }
+        } catch (const OutOfTime& e) {
+            why = e.what();
+        }
+        bool confirmed = false;
+        if (trace) {
+            const rules::Engine engine(model_, concrete, inputs);
+            const rules::Interpreter in(model_, concrete);
+            confirmed = replay(*trace, engine, in, &why) && ob.breaks(engine, trace->steps[0].cells, trace->steps[1].cells, placed);
+            if (confirmed) drawing = drawTraceAscii(*trace, engine);
+            else if (why.empty()) why = "the interpreter's step keeps the property";
+        }
+        o.result.witness["confirmed"] = confirmed;
+        if (confirmed) {
+            o.result.verdict = Verdict::Violated;
+            o.result.summary = "rule '" + rule + "' " + ob.broken + " (a window counterexample, confirmed on region " + concrete.spec() + " by the reference interpreter)";
+            o.result.witness["confirmed_on"] = concrete.spec();
+            o.result.trace = trace;
+            o.result.inputs = inputs;
+            return;
+        }
+        o.result.verdict = Verdict::Unknown;
+        o.result.summary = "not proved for every size: rule '" + rule + "' " + ob.broken + " on the window, but that is not confirmed on region " + concrete.spec() + " (" + why + ")";
+        o.result.witness["why_unconfirmed"] = why;
+    }
+
+    const rules::Model& model_;
+    const EverySizeOptions& options_;
+    std::map<int, std::unique_ptr<Window>> windows_;
+};
+
+/// Conservation of mass or of the module count: the amount on the pattern (the frame keeps the rest).
+StepObligation conserves(const rules::Model& model, const rules::Property& p) {
+    const bool byMass = p.quantity == rules::Property::Quantity::Mass;
+    auto changed = [byMass](SmtEncoding& enc, const rules::Engine& e, int q, const State& c, const State& d) {
+        smt::Context& ctx = c.is[0][0].context();
+        smt::Term before = ctx.intVal(0), after = ctx.intVal(0);
+        auto cellAmount = [&](const State& s, int cell) { return byMass ? enc.cellMassUnits(s, cell) : smt::ite(s.is[cell][0], ctx.intVal(0), ctx.intVal(1)); };
+        const rules::Engine::Placed& placed = e.instances()[q];
+        for (int k = 0; k < placed.size; ++k) before = before + cellAmount(c, placed.cells[k]), after = after + cellAmount(d, placed.cells[k]);
+        return enc.fires(q, c, d) && before != after;
+    };
+    StepObligation ob;
+    ob.name = p.name, ob.kind = "conserves", ob.margin = ruleRadius(model);
+    ob.proved = "every rule keeps it, on every region";
+    ob.broken = std::string("changes the ") + (byMass ? "mass" : "count");
+    ob.onWindow = [changed](SmtEncoding& enc, const Window& w, int q, const State& c, const State& d) { return changed(enc, w.engine(), q, c, d); };
+    ob.onRegion = [changed](SmtEncoding& enc, int q, const State& c, const State& d) {
+        return enc.legal(c) && enc.legal(d) && changed(enc, enc.engine(), q, c, d);
+    };
+    ob.breaks = [byMass](const rules::Engine& e, const Cells& c, const Cells& d, int) { return amount(e, byMass, c) != amount(e, byMass, d); };
+    return ob;
+}
+
+/// A ranking: its change is a sum over the cells a step can affect. A count with a cell guard
+/// (count(H: no nbr _)) changes within one step of the pattern and reads one further: margin 2.
+StepObligation ranking(const rules::Model& model, const rules::Property& p) {
+    int countRadius = 0;
+    for (const rules::Expr& x : p.exprs) countRadius = std::max(countRadius, readRadius(x));
+    auto excepted = [&model, &p](const rules::Engine& e, int q) { return model.ruleNamed(e.instances()[q].rule, p.except); };
+    auto notDecreased = [&p, excepted](SmtEncoding& enc, int q, const State& c, const State& d) {
+        return enc.fires(q, c, d) && !(excepted(enc.engine(), q) ? enc.keptAfter(p.exprs, q, d, c) : enc.lexLessAfter(p.exprs, q, d, c));
+    };
+    StepObligation ob;
+    ob.name = p.name, ob.kind = "ranking", ob.margin = std::max(ruleRadius(model), 2 * countRadius);
+    ob.proved = "every step decreases it lexicographically" + exceptText(p) + ", on every region";
+    ob.broken = "does not decrease it (or, excepted, changes it)";
+    ob.onWindow = [notDecreased](SmtEncoding& enc, const Window&, int q, const State& c, const State& d) { return notDecreased(enc, q, c, d); };
+    ob.onRegion = [notDecreased](SmtEncoding& enc, int q, const State& c, const State& d) { return enc.legal(c) && enc.legal(d) && notDecreased(enc, q, c, d); };
+    ob.breaks = [&p, excepted](const rules::Engine& e, const Cells& c, const Cells& d, int q) {
+        const auto before = numbers(e, p.exprs, c), after = numbers(e, p.exprs, d);
+        return excepted(e, q) ? before != after : !std::lexicographical_compare(after.begin(), after.end(), before.begin(), before.end());
+    };
+    return ob;
+}
+
+/// Conjunct k of an invariant whose conjuncts are all per-cell conditions of radius g: after a step,
+/// only cells within g of the pattern can change their condition, and each reads within 2g.
+StepObligation invariantConjunct(const rules::Model& model, const rules::Property& p, const std::vector<const rules::Expr*>& parts, std::size_t k) {
+    int g = 0;
+    for (const rules::Expr* x : parts) g = std::max(g, readRadius(*x));
+    StepObligation ob;
+    ob.name = parts.size() > 1 ? p.name + "." + std::to_string(k + 1) : p.name;
+    ob.kind = "invariant", ob.margin = std::max(ruleRadius(model), 2 * g);
+    ob.proved = "inductive: every step from a state where it holds keeps it, on every region";
+    ob.broken = "breaks it" + std::string(parts.size() > 1 ? " (conjunct " + std::to_string(k + 1) + ")" : "");
+    ob.onWindow = [parts, k, g](SmtEncoding& enc, const Window& w, int q, const State& c, const State& d) {
+        const rules::Region& region = w.region();
+        smt::Term f = enc.fires(q, c, d);
+        // Every conjunct at every cell near the instance whose neighbourhood (as far as the
+        // conjuncts read) is inside; cells further away have nothing to do with its step.
+        for (int i : w.around(q, w.margin())) {
+            bool inside = true;
+            for (int dir = 0; g > 0 && dir < region.lattice().degree(); ++dir) inside = inside && region.neighbour(i, dir) >= 0;
+            if (!inside) continue;
+            for (const rules::Expr* x : parts) f = f && enc.cellCondition(*x, c, i);
+        }
+        smt::Term fails = c.is[0][0].context().boolVal(false);
+        for (int i : w.around(q, g)) fails = fails || !enc.cellCondition(*parts[k], d, i);
+        return f && fails;
+    };
+    ob.onRegion = [&p, parts, k](SmtEncoding& enc, int q, const State& c, const State& d) {
+        return enc.legal(c) && enc.legal(d) && enc.holds(p.exprs[0], c, true) && enc.fires(q, c, d) && !enc.holds(*parts[k], d, false);
+    };
+    ob.breaks = [&p](const rules::Engine& e, const Cells& c, const Cells& d, int) { return e.holds(p.exprs[0], c.data()) && !e.holds(p.exprs[0], d.data()); };
+    return ob;
+}
+
+const char* kindName(rules::Property::Kind kind) {
+    switch (kind) {
+    case rules::Property::Kind::Conserves: return "conserves";
+    case rules::Property::Kind::Invariant: return "invariant";
+    case rules::Property::Kind::Ranking: return "ranking";
+    case rules::Property::Kind::Progress: return "progress";
+    case rules::Property::Kind::Holonomic: return "holonomic";
+    }
+    throw InternalError("every size: a property kind with no name");
+}
+
+}  // namespace
+
+EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOptions& options, const std::function<void(const std::string&)>& onObligation) {
+    const rules::System& system = model.system();
+    if (!options.smtOut.empty()) rules::prepareOutputDir(options.smtOutOption.empty() ? "the SMT-LIB2 folder" : options.smtOutOption, options.smtOut);
+    for (const std::string& name : options.properties)
+        if (!system.property(name)) throw InputError("system '" + system.name + "' has no property '" + name + "'");
+    limitSolverMemory(options.memoryMiB);
+    EverySizeReport out;
+    out.report.system = system.name;
+    out.report.region = "every region of the " + model.lattice().name() + " lattice";
+    Prover prover(model, options);
+    auto add = [&](Obligation o, std::string drawing = "") {
+        out.report.obligations.push_back(std::move(o));
+        out.drawings.push_back(std::move(drawing));
+    };
+    auto undecided = [&](const rules::Property& p, const std::string& why) {
+        Obligation o;
+        o.result.name = p.name, o.result.kind = kindName(p.kind);
+        o.result.summary = "not proved for every size: " + why;
+        o.scope = "every region";
+        out.notLocal.push_back(p.name);
+        add(o);
+    };
+    // Runs one step obligation within its limits: a timeout or Z3 out of memory is unknown.
+    auto run = [&](const StepObligation& ob) {
+        if (onObligation) onObligation(ob.name);
+        std::string drawing;
+        Obligation o;
+        try {
+            o = prover.prove(ob, drawing);
+        } catch (const OutOfTime& e) {
+            o.result.name = ob.name, o.result.kind = ob.kind, o.scope = "every region";
+            o.result.summary = e.what();
+        } catch (const smt::Failure& e) {
+            o.result.name = ob.name, o.result.kind = ob.kind, o.scope = "every region";
+            o.result.summary = solverFailure(e);
+            recoverSolverMemory();
+        }
+        return std::make_pair(o, drawing);
+    };
+    for (const rules::Property& p : system.properties) {
+        if (!options.properties.empty() && std::find(options.properties.begin(), options.properties.end(), p.name) == options.properties.end()) continue;
+        switch (p.kind) {
+        case rules::Property::Kind::Conserves: {
+            auto [o, drawing] = run(conserves(model, p));
+            add(o, drawing);
+            break;
+        }
+        case rules::Property::Kind::Ranking: {
+            std::string why;
+            for (const rules::Expr& x : p.exprs)
+                if (why.empty()) why = notLocalNumber(x, prover.window(0).engine());
+            if (!why.empty()) {
+                undecided(p, why);
+                break;
+            }
+            auto [o, drawing] = run(ranking(model, p));
+            add(o, drawing);
+            break;
+        }
+        case rules::Property::Kind::Invariant: {
+            const std::vector<const rules::Expr*> parts = rules::conjuncts(p.exprs[0]);
+            const Window& probe = prover.window(0);
+            std::string why, others;
+            for (std::size_t k = 0; k < parts.size(); ++k) {
+                const std::string n = notLocal(*parts[k], probe.engine());
+                if (n.empty()) continue;
+                if (why.empty()) why = "conjunct " + std::to_string(k + 1) + ", " + n;
+                else others += (others.empty() ? "" : ", ") + std::to_string(k + 1);
+            }
+            if (!others.empty()) why += "; " + std::string(others.find(',') == std::string::npos ? "conjunct " + others + " is" : "conjuncts " + others + " are") + " not local either";
+            if (!why.empty()) {
+                undecided(p, why);
+                break;
+            }
+            // One conjunct at a time; the first that fails decides.
+            Obligation total;
+            total.result.name = p.name, total.result.kind = "invariant", total.scope = "every region";
+            total.result.verdict = Verdict::Holds;
+            std::string drawing;
+            for (std::size_t k = 0; k < parts.size(); ++k) {
+                auto [part, d] = run(invariantConjunct(model, p, parts, k));
+                total.result.seconds += part.result.seconds;
+                if (!part.smtFile.empty()) total.smtFile += (total.smtFile.empty() ? "" : " ") + part.smtFile;
+                total.result.summary = part.result.summary;
+                if (part.result.verdict == Verdict::Holds) continue;
+                part.result.name = p.name;
+                part.result.seconds = total.result.seconds;
+                part.smtFile = total.smtFile;
+                total = part, drawing = d;
+                break;
+            }
+            add(total, drawing);
+            break;
+        }
+        case rules::Property::Kind::Progress:
+            undecided(p, "progress is about a whole configuration (every stuck state, anywhere), not about one step on a window");
+            break;
+        case rules::Property::Kind::Holonomic:
+            undecided(p, "holonomy relates two whole configurations, not one step on a window");
+            break;
+        }
+    }
+    return out;
+}
+
+}  // namespace holon::checker

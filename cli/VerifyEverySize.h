@@ -1,0 +1,22 @@
+#pragma once
+// `holon verify FILE --every-size --lattice L [--region R]`: the proofs for every region of a
+// lattice (checker/EverySize.h); with --region, the properties that are not local get the bounded
+// proof on R instead, and say so in their scope.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace holon::cli {
+
+struct EverySizeArgs {
+    std::string file, lattice, region, smtOut;
+    std::vector<std::string> properties, noWarnings;
+    double timeout = 120;
+    std::uint64_t memoryMiB = 16384;
+    bool json = false;
+};
+
+int runEverySize(const EverySizeArgs& a);
+
+}  // namespace holon::cli

@@ -1,0 +1,200 @@
+// holon verify --every-size (issue 31): per-rule obligations and local invariants proved on a
+// window for every region of square2d, hex2d and cubic3d; broken variants refuted by a window
+// counterexample that replays on a concrete region; and every proof for every region agreeing with
+// the bounded proofs on small regions.
+
+#include "CheckSupport.h"
+#include "checker/EverySize.h"
+#include "checker/Window.h"
+
+using namespace holon;
+using checker::Verdict;
+
+namespace {
+
+rules::System broken(const std::string& stem) {
+    return test::parse(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/checker/broken/" + stem + ".holon"));
+}
+
+checker::EverySizeReport everySize(const rules::Model& model, std::vector<std::string> properties = {}) {
+    checker::EverySizeOptions o;
+    o.properties = std::move(properties);
+    o.timeoutSeconds = 120;
+    return checker::verifyEverySize(model, o);
+}
+
+const checker::Obligation& obligation(const checker::VerifyReport& r, const std::string& name) {
+    for (const auto& o : r.obligations)
+        if (o.result.name == name) return o;
+    FAIL("no obligation " << name);
+    return r.obligations.front();
+}
+
+/// The bounded proof of one property on a region.
+Verdict bounded(const rules::Model& model, const std::string& spec, const std::string& property) {
+    const rules::Region region = rules::Region::parse(spec);
+    checker::VerifyOptions o;
+    o.properties = {property};
+    o.timeoutSeconds = 120;
+    return checker::verify(model, region, o).overall();
+}
+
+/// A counterexample for every size replays on the region it names (the window grown by one),
+/// under its inputs, through the reference interpreter, and breaks the property there.
+void checkRefuted(const rules::Model& model, const checker::Obligation& o, const std::function<bool(const rules::Engine&, const checker::Trace&)>& breaks) {
+    REQUIRE(o.result.verdict == Verdict::Violated);
+    CHECK(o.scope == "every region");
+    CHECK(o.result.witness.value("confirmed", false));
+    REQUIRE(o.result.trace);
+    REQUIRE(o.result.trace->steps.size() == 2);
+    const checker::Window window(model, o.result.witness.at("window_radius").get<int>());
+    const rules::Region concrete = window.region().grown(1);
+    CHECK(o.result.witness.at("confirmed_on") == concrete.spec());
+    const rules::Engine engine(model, concrete, *o.result.inputs);
+    const rules::Interpreter in(model, concrete);
+    std::string why;
+    CHECK_MESSAGE(checker::replay(*o.result.trace, engine, in, &why), why);
+    CHECK(breaks(engine, *o.result.trace));
+}
+
+}  // namespace
+
+TEST_CASE("every size: the planners' termination and mass conservation on square2d, hex2d and cubic3d") {
+    for (const char* lattice : {"square2d", "hex2d", "cubic3d"}) {
+        const rules::Lattice& l = *rules::Lattice::byName(lattice);
+        for (const char* stem : {"planner_intermediate", "planner_general1"}) {
+            CAPTURE(lattice);
+            CAPTURE(stem);
+            const rules::System system = rules::librarySystem(stem);
+            const rules::Model model(system, l);
+            const checker::EverySizeReport r = everySize(model);
+            const checker::Obligation& termination = obligation(r.report, "termination");
+            CHECK(termination.result.verdict == Verdict::Holds);
+            CHECK(termination.scope == "every region");
+            if (system.property("mass_conservation")) CHECK(obligation(r.report, "mass_conservation").result.verdict == Verdict::Holds);
+            // Safety (connectivity, reachability) and Progress are not decided on a window.
+            CHECK(obligation(r.report, "safety").result.verdict == Verdict::Unknown);
+            CHECK(obligation(r.report, "progress").result.verdict == Verdict::Unknown);
+            CHECK(r.notLocal == std::vector<std::string>{"safety", "progress"});
+            CHECK(r.report.toJson()["properties"][1]["scope"] == "every region");
+        }
+    }
+}
+
+TEST_CASE("every size: a local invariant (every hole is whole) is proved for hex_migrate and hex_growth") {
+    for (const char* stem : {"hex_migrate", "hex_growth"}) {
+        CAPTURE(stem);
+        const rules::System system = rules::librarySystem(stem);
+        const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Hex2D));
+        const checker::Obligation& holes = obligation(everySize(model, {"holes"}).report, "holes");
+        CHECK(holes.result.verdict == Verdict::Holds);
+        CHECK(holes.result.summary.find("window of radius 2") != std::string::npos);
+    }
+}
+
+TEST_CASE("every size: broken variants are refuted by window counterexamples the interpreter confirms on a concrete region") {
+    SUBCASE("general1_leaky creates mass") {
+        const rules::System system = broken("general1_leaky");
+        const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
+        checkRefuted(model, obligation(everySize(model).report, "mass_conservation"), [](const rules::Engine& e, const checker::Trace& t) {
+            return e.massUnits(t.steps[0].cells.data()) != e.massUnits(t.steps[1].cells.data());
+        });
+    }
+    SUBCASE("transfer_livelock's ranking does not decrease") {
+        const rules::System system = broken("transfer_livelock");
+        const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
+        const rules::Property& p = *system.property("creators");
+        checkRefuted(model, obligation(everySize(model).report, "creators"), [&](const rules::Engine& e, const checker::Trace& t) {
+            return e.number(p.exprs[0], t.steps[1].cells.data()) >= e.number(p.exprs[0], t.steps[0].cells.data());
+        });
+    }
+    SUBCASE("hex_growth_overlap breaks a hole") {
+        const rules::System system = broken("hex_growth_overlap");
+        const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Hex2D));
+        const rules::Property& p = *system.property("holes");
+        checkRefuted(model, obligation(everySize(model, {"holes"}).report, "holes"), [&](const rules::Engine& e, const checker::Trace& t) {
+            return e.holds(p.exprs[0], t.steps[0].cells.data()) && !e.holds(p.exprs[0], t.steps[1].cells.data());
+        });
+    }
+}
+
+TEST_CASE("every size agrees with the bounded proofs on small regions") {
+    struct Case {
+        const char* stem;
+        rules::LatticeKind lattice;
+        std::vector<const char*> regions;
+    };
+    const std::vector<Case> cases = {
+        {"planner_general1", rules::LatticeKind::Square2D, {"square:2x2", "square:3x2", "square:3x3"}},
+        {"planner_general1", rules::LatticeKind::Hex2D, {"hex:r1"}},
+        {"planner_general1", rules::LatticeKind::Cubic3D, {"cubic:2x2x2"}},
+        {"hex_migrate", rules::LatticeKind::Hex2D, {"hex:r1", "hex:r2"}},
+    };
+    for (const Case& c : cases) {
+        const rules::System system = rules::librarySystem(c.stem);
+        const rules::Model model(system, rules::Lattice::get(c.lattice));
+        const checker::EverySizeReport r = everySize(model);
+        int proved = 0;
+        for (const checker::Obligation& o : r.report.obligations) {
+            if (o.result.verdict != Verdict::Holds) continue;
+            ++proved;
+            for (const char* spec : c.regions) {
+                CAPTURE(c.stem);
+                CAPTURE(spec);
+                CAPTURE(o.result.name);
+                CHECK(bounded(model, spec, o.result.name) == Verdict::Holds);
+            }
+        }
+        CHECK(proved >= 1);
+    }
+    // And a refutation for every size shows on the bounded region it was confirmed on.
+    const rules::System leaky = broken("general1_leaky");
+    const rules::Model model(leaky, rules::Lattice::get(rules::LatticeKind::Square2D));
+    CHECK(bounded(model, "square:3x2", "mass_conservation") == Verdict::Violated);
+}
+
+TEST_CASE("every size: which invariant conjuncts are local, and the window's radius") {
+    const rules::System system = test::parse(R"(system locality
+states A | B
+input mark
+rule grow: A _ => A A if no nbr@1 B
+invariant whole: all(A: count nbr B == 0) and no(B&!mark) and all(A | _) and some(A) and connected and no(_&!mark)
+)");
+    const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
+    CHECK(checker::ruleRadius(model) == 1);
+    const checker::Window window(model, 2);
+    const auto parts = rules::conjuncts(system.property("whole")->exprs[0]);
+    REQUIRE(parts.size() == 6);
+    CHECK(checker::readRadius(*parts[0]) == 1);
+    CHECK(checker::readRadius(*parts[1]) == 0);
+    CHECK(checker::notLocal(*parts[0], window.engine()).empty());
+    CHECK(checker::notLocal(*parts[1], window.engine()).empty());
+    CHECK(checker::notLocal(*parts[2], window.engine()).empty());  // empty points satisfy it
+    CHECK(checker::notLocal(*parts[3], window.engine()).find("not a condition on each cell") != std::string::npos);
+    CHECK(checker::notLocal(*parts[4], window.engine()).find("not a condition on each cell") != std::string::npos);
+    // An empty point outside a region is _ without inputs: no(_&!mark) would fail there.
+    CHECK(checker::notLocal(*parts[5], window.engine()).find("empty cells") != std::string::npos);
+    // One instance per shape at the origin (2 cells, 8 orientations, 4 distinct shapes here).
+    CHECK(window.focus().size() == model.shapes().size());
+    for (int q : window.focus()) CHECK(window.around(q, 0).size() == 2);
+    const checker::EverySizeReport r = everySize(model);
+    CHECK(obligation(r.report, "whole").result.verdict == Verdict::Unknown);
+    CHECK(obligation(r.report, "whole").result.summary.find("conjunct 4") != std::string::npos);
+}
+
+TEST_CASE("every size: a ranking counting empty cells by their neighbours is not decided on a window") {
+    // count(_: some nbr A) changes at empty points next to the pattern, which a region leaves out
+    // when they lie outside it: the window would count what no region does.
+    const rules::System system = test::parse(R"(system empties
+states A
+rule grow: A _ => A A
+ranking shore: count(_: some nbr A), count(A)
+ranking size: -count(A)
+)");
+    const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
+    const checker::EverySizeReport r = everySize(model);
+    CHECK(obligation(r.report, "shore").result.verdict == Verdict::Unknown);
+    CHECK(obligation(r.report, "shore").result.summary.find("counts empty cells by their neighbours") != std::string::npos);
+    CHECK(obligation(r.report, "size").result.verdict == Verdict::Holds);
+    CHECK(r.notLocal == std::vector<std::string>{"shore"});
+}
