@@ -6,7 +6,7 @@
 #include "checker/Draw.h"
 #include "checker/Path.h"
 #include "cli/Commands.h"
-#include "cli/ExploreLimits.h"
+#include "cli/Limits.h"
 #include "cli/Inputs.h"
 #include "rules/OutputFile.h"
 
@@ -53,6 +53,7 @@ int run(const PathArgs& a) {
             throw InputError("--to " + a.to + ": its inputs differ from those of --from " + a.from + "; a path never changes an input");
     }
     query.limits = a.limits.limits();
+    const rules::StopSignals guard(true);  // a signal stops the search: undecided, 128 + the signal
     const bool terminal = isatty(2) && !a.json;
     if (terminal)
         query.onProgress = [](const checker::ExploreStats& s) {
@@ -75,10 +76,11 @@ int run(const PathArgs& a) {
     if (found && svgOut) svgOut->write(checker::drawTraceSvg(result.trace, engine, title));
 
     const auto& s = result.stats;
-    const int code = !found ? (result.outcome == checker::PathOutcome::Unreachable ? kExitViolated : kExitUndecided) : replayed ? kExitOk
-                                                                                                                                : kExitInternal;
+    const int code = found ? (replayed ? kExitOk : kExitInternal) : result.outcome == checker::PathOutcome::Unreachable ? kExitViolated
+                                                                                                                    : s.stopped == StopReason::Interrupted ? exitCodeFor(s.stopped, caughtSignal())
+                                                                                                                                                                 : kExitUndecided;
     if (a.json) {
-        nlohmann::json j = {{"system", system->name}, {"region", region.spec()}, {"outcome", outcomeName(result.outcome)}, {"states", s.states}, {"depth", s.depth}, {"seconds", s.seconds}, {"stopped", checker::stopReasonName(s.stopped)}};
+        nlohmann::json j = {{"system", system->name}, {"region", region.spec()}, {"outcome", outcomeName(result.outcome)}, {"states", s.states}, {"depth", s.depth}, {"seconds", s.seconds}, {"stopped", stopReasonName(s.stopped)}};
         if (found) j["length"] = length, j["replayed"] = replayed, j["path"] = traceJson(result.trace, engine, in);
         std::cout << j.dump(2) << '\n';
         return code;
@@ -95,9 +97,8 @@ int run(const PathArgs& a) {
                   << (a.goal ? "goal configuration" : "configuration equal to the target") << '\n';
         break;
     case checker::PathOutcome::Undecided:
-        std::cout << "  undecided: stopped by " << checker::stopReasonName(s.stopped) << " after " << s.states << " states (none within " << checker::stepCount(static_cast<std::size_t>(s.depth))
-                  << "); raise " << limitOption(s.stopped)
-                  << " to search further\n";
+        std::cout << "  undecided: stopped by " << stopReasonName(s.stopped) << " after " << s.states << " states (none within " << checker::stepCount(static_cast<std::size_t>(s.depth))
+                  << ")" << raiseAdvice(s.stopped, " to search further") << '\n';
         break;
     }
     return code;
@@ -108,7 +109,7 @@ int run(const PathArgs& a) {
 Run addPathCommand(CLI::App& app) {
     auto a = std::make_shared<PathArgs>();
     CLI::App* sub = app.add_subcommand("path", "A shortest sequence of rule steps from one configuration to another, or to the goal");
-    sub->add_option("file", a->file, "rule file (.holon) or bundled system name")->required();
+    addRulesFile(sub, "file", a->file)->required();
     sub->add_option("--region", a->region, "bounded region: square:WxH, cubic:WxHxD or hex:rR")->required();
     sub->add_option("--from", a->from, "start configuration (JSON, ITF#N or ASCII art)")->required();
     sub->add_option("--to", a->to, "target configuration (JSON, ITF#N or ASCII art)");
