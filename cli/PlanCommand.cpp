@@ -56,7 +56,7 @@ struct PlanArgs {
     double drop = 0;
     std::optional<std::uint64_t> faultSeed;
     int scale = 1;
-    std::uint64_t seed = 1;
+    std::uint64_t seed = planner::RunOptions{}.seed;
     std::uint64_t maxSteps = 0, maxRounds = 0;
     double timeout = 0;  // 0: the option left out, no limit
     std::uint64_t memoryMiB = kDefaultMemoryMiB;
@@ -292,9 +292,9 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--from", a->from, "start shape")->required();
     sub->add_option("--to", a->to, "target shape")->required();
     sub->add_option("--scale", a->scale, "every cell becomes a KxK (3D: KxKxK) block (1 to 2^29: beyond it no cell fits the coordinate range)")->check(CLI::Range(1, planner::kMaxCoordinate));
-    sub->add_option("--allocator", a->allocator, "resource allocator for general_n: random, gradient, demand or optimal (default random)");
+    sub->add_option("--allocator", a->allocator, "resource allocator for general_n: random, gradient, demand or optimal (default " + a->allocator + ")");
     sub->add_option("--scheduler", a->scheduler, "sync (rounds, default), async (one instance at a time) or adversarial");
-    sub->add_option("--seed", a->seed, "random seed (default 1)");
+    sub->add_option("--seed", a->seed, "random seed (default " + std::to_string(a->seed) + ")");
     sub->add_option("--seed-cell", a->seedCell, "the seed metamodule x,y[,z] (default: the overlap cell nearest its centre)");
     sub->add_flag("--check", a->check, "monitor after every step or round that the ensemble stays connected, conserves mass (where the system says so) and holds only states of its alphabet");
     sub->add_flag("--json", a->json, "print the summary as JSON");

@@ -35,7 +35,8 @@ namespace rb = planner::roombots;
 struct RoombotsArgs {
     std::string structure = "cube", recipe = "given", clouds, makeClouds, out;
     std::vector<std::string> metamodules{"PAR", "PER", "SRS", "SRZ"}, strategies{"greedy", "slope", "step"};
-    int runs = 0, threads = 0, stall = 12;  // runs, threads 0: the option left out (the paper's runs, the machine's cores)
+    int runs = 0, threads = 0;  // 0: the option left out (the paper's runs, the machine's cores)
+    int stall = planner::roombots::AssemblyOptions{}.stallSteps;
     double timeout = 0;                     // 0: the option left out, no limit
     std::uint64_t memoryMiB = kDefaultMemoryMiB;
     std::uint64_t seed = 1;
@@ -280,7 +281,7 @@ Run addRoombotsCommand(CLI::App& app) {
     sub->add_option("--recipe", a->recipe, "given (the structure's seeding order, default), auto (derived from the kinematics) or a recipe file");
     sub->add_option("--runs", a->runs, "runs per configuration and strategy, 1 to 1000 (default: the paper's 3 for cube, 4 for chair)")->check(CLI::Range(1, 1000));
     sub->add_option("--seed", a->seed, "random seed of the shifted starts");
-    sub->add_option("--stall", a->stall, "K: a deadlock is K steps in which no metamodule comes closer to an active seed (1 to 10000)")->check(CLI::Range(1, 10000));
+    sub->add_option("--stall", a->stall, "K: a deadlock is K steps in which no metamodule comes closer to an active seed (1 to 10000; default " + std::to_string(a->stall) + ")")->check(CLI::Range(1, 10000));
     sub->add_option("--clouds", a->clouds, "collision-cloud table (default: the one shipped with holon)");
     sub->add_option("--make-clouds", a->makeClouds, "compute the collision-cloud table from the kinematics, write it to FILE and stop");
     addThreads(sub, a->threads, "one run each");
