@@ -7,8 +7,8 @@
 #include "checker/Draw.h"
 #include "checker/Graph.h"
 #include "cli/Commands.h"
-#include "cli/Limits.h"
 #include "cli/Inputs.h"
+#include "cli/Limits.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
@@ -141,7 +141,8 @@ int run(const CheckArgs& a) {
         if (p.verdict == checker::Verdict::Violated) violated.push_back(&p);
     }
     const auto exitCode = [&] {
-        return unreplayed ? kExitInternal : report.stats.stopped == StopReason::Interrupted ? exitCodeFor(StopReason::Interrupted, caughtSignal()) : exitCodeFor(report.overall());
+        return unreplayed ? kExitInternal : report.stats.stopped == StopReason::Interrupted ? exitCodeFor(StopReason::Interrupted, caughtSignal())
+                                                                                            : exitCodeFor(report.overall());
     };
     // Every violated property gets its own trace file (named after it when there are several).
     std::vector<std::string> written;

@@ -6,8 +6,8 @@
 #include "checker/Diff.h"
 #include "checker/Draw.h"
 #include "cli/Commands.h"
-#include "cli/Limits.h"
 #include "cli/Inputs.h"
+#include "cli/Limits.h"
 #include "rules/OutputFile.h"
 
 #include <iostream>
@@ -46,7 +46,7 @@ std::unique_ptr<Side> explore(const DiffArgs& a, const std::string& file, const 
     side->engine = std::make_unique<rules::Engine>(*side->model, region, starts.empty() ? inputs : starts.front().inputs);
     checker::Explorer::Options options;
     options.limits = a.limits.limits(2);  // two designs share --memory
-    options.budget = budget;                // and one --timeout
+    options.budget = budget;              // and one --timeout
     side->explorer = std::make_unique<checker::Explorer>(*side->engine, options);
     if (a.all) side->explorer->addAllLegal();
     for (const auto& s : starts) side->explorer->addInitial(s.cells.data());

@@ -173,7 +173,9 @@ int run(HexArgs a) {
         std::cout << j.dump() << '\n';
     } else {
         std::cout << std::fixed << std::setprecision(2) << a.setup.from << " -> " << a.setup.to << " on " << a.setup.size << "x" << a.setup.size
-                  << ", " << runs.size() << " reps of " << steps << " timesteps" << (stopped == StopReason::Timeout ? " (stopped by --timeout)" : stopped == StopReason::Interrupted ? " (interrupted)" : "") << ", " << runs[0].triRegions << " tri-regions"
+                  << ", " << runs.size() << " reps of " << steps << " timesteps" << (stopped == StopReason::Timeout ? " (stopped by --timeout)" : stopped == StopReason::Interrupted ? " (interrupted)"
+                                                                                                                                                                                     : "")
+                  << ", " << runs[0].triRegions << " tri-regions"
                   << (improvements(a.setup.options).empty() ? "" : ", holon's improvements:");
         for (const std::string& i : improvements(a.setup.options)) std::cout << " --" << i;
         std::cout << '\n'

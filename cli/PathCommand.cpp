@@ -6,8 +6,8 @@
 #include "checker/Draw.h"
 #include "checker/Path.h"
 #include "cli/Commands.h"
-#include "cli/Limits.h"
 #include "cli/Inputs.h"
+#include "cli/Limits.h"
 #include "rules/OutputFile.h"
 
 #include <iomanip>
@@ -77,8 +77,8 @@ int run(const PathArgs& a) {
 
     const auto& s = result.stats;
     const int code = found ? (replayed ? kExitOk : kExitInternal) : result.outcome == checker::PathOutcome::Unreachable ? kExitViolated
-                                                                                                                    : s.stopped == StopReason::Interrupted ? exitCodeFor(s.stopped, caughtSignal())
-                                                                                                                                                                 : kExitUndecided;
+                                                                : s.stopped == StopReason::Interrupted                  ? exitCodeFor(s.stopped, caughtSignal())
+                                                                                                                        : kExitUndecided;
     if (a.json) {
         nlohmann::json j = {{"system", system->name}, {"region", region.spec()}, {"outcome", outcomeName(result.outcome)}, {"states", s.states}, {"depth", s.depth}, {"seconds", s.seconds}, {"stopped", stopReasonName(s.stopped)}};
         if (found) j["length"] = length, j["replayed"] = replayed, j["path"] = traceJson(result.trace, engine, in);

@@ -37,7 +37,7 @@ struct RoombotsArgs {
     std::vector<std::string> metamodules{"PAR", "PER", "SRS", "SRZ"}, strategies{"greedy", "slope", "step"};
     int runs = 0, threads = 0;  // 0: the option left out (the paper's runs, the machine's cores)
     int stall = planner::roombots::AssemblyOptions{}.stallSteps;
-    double timeout = 0;                     // 0: the option left out, no limit
+    double timeout = 0;  // 0: the option left out, no limit
     std::uint64_t memoryMiB = kDefaultMemoryMiB;
     std::uint64_t seed = 1;
     bool json = false, quiet = false;

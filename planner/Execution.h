@@ -46,7 +46,7 @@ struct RunStats {
     std::int64_t rounds = 0, steps = 0;
     std::int64_t evaluations = 0;  // rule instances tested against the decision tables
     double seconds = 0;
-    bool complete = false;  // the system's goal was reached
+    bool complete = false;                  // the system's goal was reached
     StopReason stopped = StopReason::Goal;  // why the run ended
 };
 

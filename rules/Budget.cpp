@@ -60,7 +60,8 @@ Budget Budget::onSignals() { return stopFlag(rules::StopSignals::caught()); }
 
 Budget operator||(Budget a, const Budget& b) {
     // The smaller of two caps, 0 meaning none.
-    const auto cap = [](std::uint64_t x, std::uint64_t y) { return x == 0 ? y : y == 0 ? x : std::min(x, y); };
+    const auto cap = [](std::uint64_t x, std::uint64_t y) { return x == 0 ? y : y == 0 ? x
+                                                                                       : std::min(x, y); };
     if (b.limited() && (!a.limited() || b.start_ + std::chrono::duration_cast<Budget::Clock::duration>(std::chrono::duration<double>(b.seconds_)) <
                                             a.start_ + std::chrono::duration_cast<Budget::Clock::duration>(std::chrono::duration<double>(a.seconds_))))
         a.seconds_ = b.seconds_, a.start_ = b.start_;

@@ -17,18 +17,18 @@ namespace holon {
 
 /// Why a run stopped, in one list for every subcommand. The first three are a run that did its job
 /// (or found its answer), the next four one that cannot go on, the rest a limit or a signal.
-enum class StopReason { Finished,     // explored everything / every run and timestep made
-                        Goal,         // the plan reached its target
-                        Decided,      // every question asked is answered before the end
-                        Stuck,        // nothing is enabled and the goal is not reached
-                        NoProgress,   // only transfers fired for too long
-                        Monitor,      // the run-time monitor saw a violation
-                        Fault,        // an injected fault broke what the rules assume
-                        MaxStates,    // the state cap
-                        MaxSteps,     // the step cap
-                        MaxRounds,    // the round cap
-                        Memory,       // the memory bound
-                        Timeout,      // the deadline
+enum class StopReason { Finished,       // explored everything / every run and timestep made
+                        Goal,           // the plan reached its target
+                        Decided,        // every question asked is answered before the end
+                        Stuck,          // nothing is enabled and the goal is not reached
+                        NoProgress,     // only transfers fired for too long
+                        Monitor,        // the run-time monitor saw a violation
+                        Fault,          // an injected fault broke what the rules assume
+                        MaxStates,      // the state cap
+                        MaxSteps,       // the step cap
+                        MaxRounds,      // the round cap
+                        Memory,         // the memory bound
+                        Timeout,        // the deadline
                         Interrupted };  // SIGINT or SIGTERM
 
 /// The name used in messages ("stopped by max-states") and JSON ("stopped": "no-progress").
