@@ -39,7 +39,7 @@ void runCase(const Case& c, double timeout) {
     auto r = bench::layoutPlan(c.rules, c.from, c.to, c.scale, 1);
     auto allocator = planner::makeAllocator(c.allocator, r->problem, 1);
     planner::RunOptions options;
-    options.timeoutSeconds = timeout;
+    options.budget = Budget(timeout);
     r->stats = planner::Execution(r->problem, *allocator, options).run();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     rusage usage{};

@@ -48,10 +48,10 @@ Outcome run(const rules::Model& model, const bench::ShapePair& pair, const std::
     planner::Problem problem = planner::makeProblem(model, pair.start, pair.target, rules::Vec{}, seed);
     auto alloc = planner::makeAllocator(allocator, problem, seed);
     planner::RunOptions options;
-    options.scheduler = planner::Scheduler::Sync, options.seed = seed, options.timeoutSeconds = timeout;
+    options.scheduler = planner::Scheduler::Sync, options.seed = seed, options.budget = Budget(timeout);
     planner::Execution ex(problem, *alloc, options);
     const planner::RunStats s = ex.run();
-    return {s.complete, s.transfers, s.rounds, s.seconds, s.stopped};
+    return {s.complete, s.transfers, s.rounds, s.seconds, stopReasonName(s.stopped)};
 }
 
 struct Distribution {

@@ -8,10 +8,10 @@
 
 #include "checker/Check.h"
 
-#include "checker/Budget.h"
 #include "checker/FailureCells.h"
 #include "checker/Graph.h"
 #include "checker/Holonomy.h"
+#include "rules/Budget.h"
 #include "rules/Error.h"
 #include "rules/Printer.h"
 
@@ -189,7 +189,7 @@ PhaseCost rankingCost(std::size_t terms) { return {128.0 + 16.0 * static_cast<do
 }  // namespace
 
 CheckReport check(const rules::Model& model, const rules::Region& region, const CheckOptions& options, Exploration* keep) {
-    const Budget budget(options.limits.timeoutSeconds);
+    const Budget budget = options.limits.budget();
     const rules::System& system = model.system();
     const auto known = checkableProperties(system);
     for (const std::string& name : options.properties)

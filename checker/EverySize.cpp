@@ -89,7 +89,7 @@ public:
 
     Obligation prove(const StepObligation& ob, std::string& drawing) {
         const auto start = std::chrono::steady_clock::now();
-        const Budget budget(options_.timeoutSeconds);
+        const Budget budget = Budget(options_.timeoutSeconds) || options_.budget;
         const Window& w = window(ob.margin);
         Obligation o;
         o.result.name = ob.name;

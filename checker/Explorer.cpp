@@ -21,20 +21,9 @@
 
 namespace holon::checker {
 
-std::string stopReasonName(StopReason r) {
-    switch (r) {
-    case StopReason::Finished: return "finished";
-    case StopReason::MaxStates: return "max-states";
-    case StopReason::Timeout: return "timeout";
-    case StopReason::Memory: return "memory";
-    case StopReason::Decided: return "decided";
-    }
-    return "";
-}
-
 Explorer::Explorer(const rules::Engine& engine, Options options)
     : engine_(&engine), constraints_(engine), options_(std::move(options)),
-      budget_(options_.budget.limited() ? options_.budget : Budget(options_.limits.timeoutSeconds)),
+      budget_(options_.budget || options_.limits.budget()),
       store_(StateLayout(engine.region().size(), engine.model().alphabet().size(), options_.onWords && WordSuccessors::fits(engine))) {
     if (store_.layout().planeMajor()) words_ = std::make_unique<WordSuccessors>(constraints_, store_.layout());
 }
@@ -115,7 +104,7 @@ void Explorer::addAllLegal() {
     auto stop = [&] {
         std::uint64_t n = 0;
         for (const Count& c : listed) n += c.n.load(std::memory_order_relaxed);
-        if (budget_.expired()) halt(StopReason::Timeout);
+        if (const auto why = budget_.reached()) halt(*why);
         else if (n > options_.limits.maxStates) halt(StopReason::MaxStates);
         else if (fixedBytes + 16 * n >= options_.limits.memoryBytes) halt(StopReason::Memory);
         return halted() != StopReason::Finished;
@@ -601,7 +590,7 @@ const ExploreStats& Explorer::explore() {
                 want = std::min<std::uint64_t>(want, held < options_.limits.memoryBytes ? (options_.limits.memoryBytes - held) / perState : 0);
                 StopReason limit = StopReason::Finished;
                 if (store_.size() >= options_.limits.maxStates) limit = StopReason::MaxStates;
-                else if (budget_.expired()) limit = StopReason::Timeout;
+                else if (const auto why = budget_.reached()) limit = *why;
                 else if (held >= options_.limits.memoryBytes || want < std::max<std::uint64_t>(refused, complete_ ? 0 : 1)) limit = StopReason::Memory;
                 room_ = static_cast<std::int64_t>(want);
                 for (Worker& w : workers) w.room = 0;

@@ -3,12 +3,13 @@
 // or over every legal configuration of a region, on all cores, with limits that stop the search
 // cleanly and say what was left.
 
-#include "checker/Budget.h"
 #include "checker/Evaluator.h"
 #include "checker/StateStore.h"
 #include "checker/WordConstraints.h"
 #include "checker/WordSuccessors.h"
+#include "rules/Budget.h"
 #include "rules/Engine.h"
+#include "rules/Limits.h"
 
 #include <atomic>
 #include <bit>
@@ -28,16 +29,13 @@ namespace holon::checker {
 struct Limits {
     std::uint64_t maxStates = 50'000'000;
     double timeoutSeconds = 0;  // 0: none
-    std::uint64_t memoryBytes = 16ull << 30;
+    std::uint64_t memoryBytes = rules::kDefaultMemoryBytes;
     int threads = 2;
+    /// Set by a signal handler (rules::StopSignals): the search stops as interrupted; null: never.
+    const volatile std::sig_atomic_t* stopFlag = nullptr;
+    /// The deadline (from now) and the stop flag as one budget.
+    Budget budget() const { return Budget(timeoutSeconds) || Budget::stopFlag(stopFlag); }
 };
-
-enum class StopReason { Finished,
-                        MaxStates,
-                        Timeout,
-                        Memory,
-                        Decided };
-std::string stopReasonName(StopReason r);
 
 struct ExploreStats {
     std::uint64_t states = 0, edges = 0, frontier = 0;
@@ -67,8 +65,8 @@ public:
         std::function<bool()> decided;
         /// Progress reports, about every half second, from the thread that runs explore().
         std::function<void(const ExploreStats&)> onProgress;
-        /// The job's deadline, when it started before the explorer (the check's setup counts);
-        /// without one, limits.timeoutSeconds runs from the explorer's construction.
+        /// The job's budget, when it started before the explorer (the check's setup counts), with
+        /// its stop flag; limits.timeoutSeconds also runs, from the explorer's construction.
         Budget budget;
     };
 
@@ -171,7 +169,7 @@ private:
     bool stopping(Worker& w, std::uint32_t work) {
         if ((w.ticks += work) >= 4096) {
             w.ticks = 0;
-            if (budget_.expired()) halt(StopReason::Timeout);
+            if (const auto why = budget_.reached()) halt(*why);
         }
         return abandon_.load(std::memory_order_relaxed);
     }

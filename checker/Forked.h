@@ -3,7 +3,7 @@
 // child ends with _exit, skipping destructors (Z3 4.8.12 takes longer to free a context after
 // Spacer than to solve).
 
-#include "checker/Budget.h"
+#include "rules/Budget.h"
 
 #include <functional>
 #include <nlohmann/json.hpp>

@@ -2,10 +2,10 @@
 // Holonomy of a reconfiguration graph (seed 000 §II-C): configurations adjacent in state space are
 // one rule step apart, or unreachable from each other.
 
-#include "checker/Budget.h"
 #include "checker/Explorer.h"
 #include "checker/Graph.h"
 #include "checker/Verdict.h"
+#include "rules/Budget.h"
 #include "rules/Ir.h"
 
 namespace holon::checker {

@@ -449,7 +449,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
     for (const rules::Property& p : system.properties) {
         if (!selected(p.name)) continue;
         announce(p.name);
-        const Budget budget(options.timeoutSeconds);
+        const Budget budget = Budget(options.timeoutSeconds) || options.budget;
         report.obligations.push_back(withinLimits(p.name, kindName(p.kind), [&]() -> Obligation {
             smt::Context ctx(budget);
             SmtEncoding enc(ctx, e, SmtEncoding::Use::Queries, budget);
@@ -652,7 +652,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
     // (and the timeout): a bad state within k steps, for k = 0, 1, ..., so the first one found
     // is at the end of a shortest path. The last query asked is the whole obligation.
     auto bmc = [&](const Target& target, int depth, const std::string& name) {
-        const Budget budget(options.timeoutSeconds);
+        const Budget budget = Budget(options.timeoutSeconds) || options.budget;
         smt::Context ctx(budget);
         SmtEncoding enc(ctx, e, SmtEncoding::Use::Queries, budget);
         std::vector<SmtEncoding::State> path{enc.state("s0")};
@@ -718,7 +718,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             });
             if (!initially) continue;
             auto asked = std::find_if(report.obligations.begin(), report.obligations.end(), [&](const Obligation& o) { return o.result.name == p->name; });
-            const Budget budget(options.timeoutSeconds);
+            const Budget budget = Budget(options.timeoutSeconds) || options.budget;
             const auto proved = [&] { return withinLimits(p->name, "invariant", [&] { return proveInductive(quietRun, *p, budget); }).result.verdict; };
             if ((asked != report.obligations.end() ? asked->result.verdict : proved()) == Verdict::Holds) known.push_back(p);
         }
@@ -734,7 +734,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             announce(name);
             const std::optional<rules::OutputFile> file = options.smtOut.empty() ? std::nullopt : std::optional(run.smtPath(name));
             const bool isKnown = std::find(known.begin(), known.end(), t.property) != known.end();
-            const ReachProof proof = isKnown ? ReachProof{} : proveUnreachable(e, t.bad, options.initial, Budget(options.timeoutSeconds), file ? &*file : nullptr, known.empty() ? BadStates() : BadStates(knownAt));
+            const ReachProof proof = isKnown ? ReachProof{} : proveUnreachable(e, t.bad, options.initial, Budget(options.timeoutSeconds) || options.budget, file ? &*file : nullptr, known.empty() ? BadStates() : BadStates(knownAt));
             Obligation o = Runner::named(name, "reach");
             for (const std::string& f : proof.certificateFiles) o.smtFile += (o.smtFile.empty() ? "" : " ") + f;
             o.result.verdict = proof.verdict;

@@ -3,6 +3,7 @@
 
 #include "checker/Trace.h"
 #include "checker/Verdict.h"
+#include "rules/Budget.h"
 #include "rules/Engine.h"
 #include "rules/Interpreter.h"
 
@@ -15,6 +16,7 @@ namespace holon::checker {
 
 struct VerifyOptions {
     double timeoutSeconds = 120;  // per obligation: building, writing and solving it
+    Budget budget;                // the whole job's: no obligation runs past it
     std::uint64_t memoryMiB = 0;  // Z3's memory limit for this process; 0: none
     int depth = 0;                // > 0: bounded model checking from `initial`
     bool reach = false;           // every state reachable from `initial` (Spacer)

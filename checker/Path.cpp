@@ -67,7 +67,15 @@ PathResult forwardPath(const rules::Engine& engine, const PathQuery& query) {
     case StopReason::MaxStates:
     case StopReason::Timeout:
     case StopReason::Memory:
+    case StopReason::Interrupted:
     case StopReason::Decided: result.outcome = PathOutcome::Undecided; break;
+    case StopReason::Goal:  // the planner's reasons: an exploration does not stop by them
+    case StopReason::Stuck:
+    case StopReason::NoProgress:
+    case StopReason::Monitor:
+    case StopReason::Fault:
+    case StopReason::MaxSteps:
+    case StopReason::MaxRounds: throw InternalError("findPath: the exploration stopped by " + stopReasonName(result.stats.stopped));
     }
     return result;
 }

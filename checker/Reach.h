@@ -2,9 +2,9 @@
 // Unbounded reachability on a fixed region: an invariant proved for every state reachable from
 // given configurations, by Z3's Spacer engine over constrained Horn clauses.
 
-#include "checker/Budget.h"
 #include "checker/SmtEncoding.h"
 #include "checker/Verdict.h"
+#include "rules/Budget.h"
 #include "rules/Interpreter.h"
 #include "rules/OutputFile.h"
 

@@ -4,7 +4,7 @@
 // and Z3's process-wide memory accounting. Every Z3 error surfaces as `smt::Failure`. What a
 // failure or an unknown answer means for an obligation is in SolverLimits.h.
 
-#include "checker/Budget.h"
+#include "rules/Budget.h"
 
 #include <cstdint>
 #include <memory>

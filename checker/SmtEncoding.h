@@ -2,8 +2,8 @@
 // The one translation from the rule IR (through the engine's compiled tables) to SMT terms (Smt.h).
 // Z3's limits and failures are in SolverLimits.h.
 
-#include "checker/Budget.h"
 #include "checker/Smt.h"
+#include "rules/Budget.h"
 #include "rules/Engine.h"
 
 #include <functional>

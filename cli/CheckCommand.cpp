@@ -7,8 +7,8 @@
 #include "checker/Draw.h"
 #include "checker/Graph.h"
 #include "cli/Commands.h"
-#include "cli/ExploreLimits.h"
 #include "cli/Inputs.h"
+#include "cli/Limits.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
@@ -38,7 +38,7 @@ struct CheckArgs {
 /// False when the exploration stopped at a limit, so the table would be of part of the graph.
 bool printComponents(const checker::Explorer& explorer, const rules::System& system, nlohmann::json* json) {
     const rules::Engine& engine = explorer.engine();
-    if (explorer.stats().stopped != checker::StopReason::Finished) {
+    if (explorer.stats().stopped != StopReason::Finished) {
         if (json) (*json)["component_table"] = nullptr;
         else std::cout << "\ncomponents: not computed, the exploration stopped at a limit before the whole graph was seen\n";
         return false;
@@ -120,6 +120,7 @@ int run(const CheckArgs& a) {
                       << s.depth << ", " << std::fixed << std::setprecision(1) << s.seconds << " s   " << std::flush;
         };
     checker::Exploration kept;
+    const rules::StopSignals guard(true);  // a signal stops the exploration: the report so far, 128 + the signal
     checker::CheckReport report = checker::check(model, region, options, &kept);
     if (terminal) std::cerr << "\r" << std::string(90, ' ') << "\r";
     const rules::Engine& engine = *kept.engine;
@@ -142,7 +143,10 @@ int run(const CheckArgs& a) {
         }
         if (p.verdict == checker::Verdict::Violated) violated.push_back(&p);
     }
-    const auto exitCode = [&] { return unreplayed ? kExitInternal : exitCodeFor(report.overall()); };
+    const auto exitCode = [&] {
+        return unreplayed ? kExitInternal : report.stats.stopped == StopReason::Interrupted ? exitCodeFor(StopReason::Interrupted, caughtSignal())
+                                                                                            : exitCodeFor(report.overall());
+    };
     // Every violated property gets its own trace file (named after it when there are several).
     std::vector<std::string> written;
     for (const checker::PropertyResult* p : violated) {
@@ -181,12 +185,12 @@ int run(const CheckArgs& a) {
     std::cout << "  " << s.states << " states, " << s.edges << " edges, "
               << (report.components < 0 ? std::string("? components") : std::to_string(report.components) + (report.components == 1 ? " component" : " components"))
               << ", depth " << s.depth << ", " << std::fixed << std::setprecision(2) << s.seconds << " s, " << report.bytesPerState << " bytes/state";
-    if (s.stopped == checker::StopReason::Decided) std::cout << "\n  stopped early: every property asked for is violated; explored " << s.states << ", frontier " << s.frontier;
-    else if (s.stopped != checker::StopReason::Finished)
-        std::cout << "\n  stopped by " << checker::stopReasonName(s.stopped)
+    if (s.stopped == StopReason::Decided) std::cout << "\n  stopped early: every property asked for is violated; explored " << s.states << ", frontier " << s.frontier;
+    else if (s.stopped != StopReason::Finished)
+        std::cout << "\n  stopped by " << stopReasonName(s.stopped)
                   << (s.enumerating ? " while listing the legal configurations of the region (" + std::to_string(s.frontier) + " found)"
                                     : ": explored " + std::to_string(s.states) + ", frontier " + std::to_string(s.frontier))
-                  << "; raise " << limitOption(s.stopped) << " to go further";
+                  << raiseAdvice(s.stopped, " to go further");
     std::cout << "\n\n  " << std::left << std::setw(20) << "property" << std::setw(10) << "verdict" << std::setw(10) << "time"
               << "evidence\n";
     for (const auto& p : report.properties)
@@ -209,7 +213,7 @@ int run(const CheckArgs& a) {
 Run addCheckCommand(CLI::App& app) {
     auto a = std::make_shared<CheckArgs>();
     CLI::App* sub = app.add_subcommand("check", "Explore the reconfiguration graph on a bounded region and check properties");
-    sub->add_option("file", a->file, "rule file (.holon)")->required();
+    addRulesFile(sub, "file", a->file)->required();
     sub->add_option("--region", a->region, "bounded region: square:WxH, cubic:WxHxD or hex:rR")->required();
     sub->add_flag("--all", a->all, "explore every legal configuration of the region");
     sub->add_option("--from", a->from, "initial configuration (JSON or ASCII art); repeatable");

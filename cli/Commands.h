@@ -3,7 +3,9 @@
 // returns the process exit code, the same contract for every subcommand (ExitCode below).
 
 #include "checker/Verdict.h"
+#include "rules/Budget.h"
 #include "rules/Error.h"
+#include "rules/Limits.h"
 
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -32,6 +34,28 @@ inline int exitCodeFor(checker::Verdict v) {
     case checker::Verdict::Holds: return kExitOk;
     case checker::Verdict::Violated: return kExitViolated;
     case checker::Verdict::Unknown: return kExitUndecided;
+    }
+    return kExitInternal;
+}
+
+/// Why a run stopped, as an exit code, the same for every subcommand: a run that did its job 0; one
+/// that cannot go on (stuck, no progress, a monitor's or a fault's stop) 1; a limit the user set or
+/// can raise 3; a signal 128 + `signal` (the one the budget caught).
+inline int exitCodeFor(StopReason r, int signal) {
+    switch (r) {
+    case StopReason::Finished:
+    case StopReason::Goal:
+    case StopReason::Decided: return kExitOk;
+    case StopReason::Stuck:
+    case StopReason::NoProgress:
+    case StopReason::Monitor:
+    case StopReason::Fault: return kExitViolated;
+    case StopReason::MaxStates:
+    case StopReason::MaxSteps:
+    case StopReason::MaxRounds:
+    case StopReason::Memory:
+    case StopReason::Timeout: return kExitUndecided;
+    case StopReason::Interrupted: return 128 + signal;
     }
     return kExitInternal;
 }
@@ -71,8 +95,9 @@ inline CLI::Validator countValidator() { return CLI::Range(std::int64_t{1}, std:
 /// --threads: 1 to 64 (more than the machine has only costs memory; 1000 aborted on thread creation).
 inline CLI::Validator threadsValidator() { return CLI::Range(1, 64); }
 
-/// --memory in MiB, for every subcommand that allocates by its input: 16 MiB to 16 TiB.
-constexpr std::uint64_t kDefaultMemoryMiB = 16384;
+/// --memory in MiB, for every subcommand that allocates by its input: 16 MiB to 16 TiB; the
+/// default is the library's (rules::kDefaultMemoryBytes).
+constexpr std::uint64_t kDefaultMemoryMiB = rules::kDefaultMemoryBytes >> 20;
 inline CLI::Validator memoryValidator() { return CLI::Range(std::uint64_t{16}, std::uint64_t{1} << 24); }
 
 /// Runs a job under --memory: std::bad_alloc during it (the estimate fell short, or the machine
@@ -85,9 +110,6 @@ inline int withinMemory(std::uint64_t memoryMiB, const std::function<int()>& job
                          " MiB: this machine gives less; lower --memory to what it has (then such jobs are refused before they start) or give a smaller job");
     }
 }
-
-/// --memory values in MiB: from 16 MiB to 16 TiB.
-inline CLI::Range memoryRange() { return CLI::Range(std::uint64_t{16}, std::uint64_t{1} << 24); }
 
 using Run = std::function<int()>;
 

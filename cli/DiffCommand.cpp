@@ -6,8 +6,8 @@
 #include "checker/Diff.h"
 #include "checker/Draw.h"
 #include "cli/Commands.h"
-#include "cli/ExploreLimits.h"
 #include "cli/Inputs.h"
+#include "cli/Limits.h"
 #include "rules/OutputFile.h"
 
 #include <iostream>
@@ -33,7 +33,7 @@ struct Side {
     std::unique_ptr<checker::Explorer> explorer;
 };
 
-std::unique_ptr<Side> explore(const DiffArgs& a, const std::string& file, const rules::Region& region) {
+std::unique_ptr<Side> explore(const DiffArgs& a, const std::string& file, const rules::Region& region, const Budget& budget) {
     auto system = loadRules(file, a.noWarnings);
     if (!system) return nullptr;
     auto side = std::make_unique<Side>();
@@ -46,6 +46,7 @@ std::unique_ptr<Side> explore(const DiffArgs& a, const std::string& file, const 
     side->engine = std::make_unique<rules::Engine>(*side->model, region, starts.empty() ? inputs : starts.front().inputs);
     checker::Explorer::Options options;
     options.limits = a.limits.limits(2);  // two designs share --memory
+    options.budget = budget;              // and one --timeout
     side->explorer = std::make_unique<checker::Explorer>(*side->engine, options);
     if (a.all) side->explorer->addAllLegal();
     for (const auto& s : starts) side->explorer->addInitial(s.cells.data());
@@ -56,19 +57,21 @@ std::unique_ptr<Side> explore(const DiffArgs& a, const std::string& file, const 
 int run(const DiffArgs& a) {
     if (a.all == !a.from.empty()) throw InputError("say where both designs start: --from CONFIG (repeatable), or --all for every legal configuration, not both");
     const rules::Region region = rules::Region::parse(a.region, 1u << 22);
+    const rules::StopSignals guard(true);  // a signal stops the exploration: undecided, 128 + the signal
+    const Budget budget = a.limits.limits().budget();
     std::optional<rules::OutputFile> svgOut;
     if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
-    const auto sideA = explore(a, a.a, region);
+    const auto sideA = explore(a, a.a, region, budget);
     if (!sideA) return kExitBadInput;
-    const auto sideB = explore(a, a.b, region);
+    const auto sideB = explore(a, a.b, region, budget);
     if (!sideB) return kExitBadInput;
     const std::string names[2] = {sideA->system.name, sideB->system.name};
     const Side* sides[2] = {sideA.get(), sideB.get()};
     for (const Side* s : sides)
-        if (const auto& st = s->explorer->stats(); st.stopped != checker::StopReason::Finished) {
-            std::cout << "undecided: exploring " << s->system.name << " stopped by " << checker::stopReasonName(st.stopped) << " after " << st.states
-                      << " states; raise the limit (--max-states, --timeout or --memory) to compare whole graphs\n";
-            return kExitUndecided;
+        if (const auto& st = s->explorer->stats(); st.stopped != StopReason::Finished) {
+            std::cout << "undecided: exploring " << s->system.name << " stopped by " << stopReasonName(st.stopped) << " after " << st.states << " states"
+                      << (limitOption(st.stopped).empty() ? "" : "; raise the limit (--max-states, --timeout or --memory) to compare whole graphs") << '\n';
+            return exitCodeFor(st.stopped, caughtSignal());
         }
     const checker::DesignDifference d = checker::compareDesigns({sideA->engine.get(), sideA->explorer.get()}, {sideB->engine.get(), sideB->explorer.get()});
     const int code = d.same() ? kExitOk : kExitViolated;
@@ -117,8 +120,8 @@ int run(const DiffArgs& a) {
 Run addDiffCommand(CLI::App& app) {
     auto a = std::make_shared<DiffArgs>();
     CLI::App* sub = app.add_subcommand("diff", "Compare two designs' reconfiguration graphs on one region");
-    sub->add_option("a", a->a, "design A: rule file (.holon) or bundled system name")->required();
-    sub->add_option("b", a->b, "design B: rule file (.holon) or bundled system name")->required();
+    addRulesFile(sub, "a", a->a, "design A")->required();
+    addRulesFile(sub, "b", a->b, "design B")->required();
     sub->add_option("--region", a->region, "bounded region: square:WxH, cubic:WxHxD or hex:rR")->required();
     sub->add_flag("--all", a->all, "compare on every legal configuration of the region");
     sub->add_option("--from", a->from, "start configuration for both designs (JSON or ASCII art); repeatable");

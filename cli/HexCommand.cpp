@@ -3,15 +3,17 @@
 // as the paper's Table I row: modules, maximum compliance (mean, std), islands. The --out folder
 // is checked before the runs; a file that cannot be written is reported after the table.
 
-#include "checker/Budget.h"
 #include "cli/Commands.h"
+#include "cli/Limits.h"
 #include "cli/Parallel.h"
 #include "cli/WriteErrors.h"
 #include "planner/hex/SculptRun.h"
 #include "planner/hex/SculptSteps.h"
+#include "rules/Budget.h"
 #include "rules/Error.h"
 #include "rules/Limits.h"
 #include "rules/OutputFile.h"
+#include "rules/StopSignals.h"
 #include "rules/Svg.h"
 
 #include <nlohmann/json.hpp>
@@ -116,7 +118,10 @@ std::vector<std::string> improvements(const planner::hex::SculptOptions& o) {
 }
 
 int run(HexArgs a) {
-    const checker::Budget budget(a.timeout);  // one deadline for every run and every timestep
+    // One budget for every run and every timestep: the deadline, and SIGINT or SIGTERM, which stop
+    // the runs at a timestep boundary so that the table and the files hold whole timesteps.
+    const Budget budget = Budget(a.timeout) || Budget::onSignals();
+    const rules::StopSignals guard(true);  // one-shot: a second signal ends holon at once
     if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
     std::optional<rules::OutputStream> stepsFile;  // the first run, instance by instance
     if (!a.stepsOut.empty()) stepsFile.emplace(rules::OutputFile("--steps-out", a.stepsOut).open());
@@ -128,7 +133,6 @@ int run(HexArgs a) {
                              std::to_string(a.setup.size) + " (" + std::to_string(parallel) + " at once)");
     std::vector<planner::hex::SculptResult> runs(a.reps);
     std::vector<char> ran(a.reps, 0);
-    const std::function<bool()> expired = [&] { return budget.expired(); };
     WriteErrors errors;  // written only by run 0 (the frames), read after every run has ended
     runParallel(
         a.reps, a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int r) {
@@ -143,24 +147,27 @@ int run(HexArgs a) {
                         errors.attempt([&] {
                             rules::OutputFile("--out", (std::filesystem::path(a.out) / ("frame_" + std::to_string(s.time()) + ".svg")).string()).write(planner::hex::sculptSvg(s));
                         });
-                    } },
-                budget.limited() ? expired : std::function<bool()>(),
+                    }
+                },
+                budget,
                 [&](const planner::hex::HoleSculptor& s) {
                     if (stepsFile && r == 0) steps.emplace(stepsFile->stream(), s);
                 });
             ran[r] = runs[r].steps > 0;
         },
-        budget.limited() ? expired : std::function<bool()>());
-    // Stopped by --timeout: the runs that made at least one timestep, compared over the timesteps
+        budget);
+    // Stopped by the budget: the runs that made at least one timestep, compared over the timesteps
     // all of them made; the files written are whole, and say so by their length.
     std::vector<planner::hex::SculptResult> kept;
     for (int r = 0; r < a.reps; ++r)
         if (ran[r]) kept.push_back(std::move(runs[r]));
+    if (kept.empty() && budget.interrupted()) throw Interrupted(budget.signal());
     if (kept.empty()) throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached before the first timestep; nothing was written; raise --timeout");
     runs = std::move(kept);
     int steps = a.setup.steps;
     for (const auto& r : runs) steps = std::min(steps, r.steps);
-    const bool stopped = steps < a.setup.steps || static_cast<int>(runs.size()) < a.reps;
+    const bool cut = steps < a.setup.steps || static_cast<int>(runs.size()) < a.reps;
+    const StopReason stopped = cut ? budget.reached().value_or(StopReason::Timeout) : StopReason::Finished;
 
     const Stat compliance = stat(runs, [](const auto& r) { return r.maxCompliance; });
     const Stat completeness = stat(runs, [](const auto& r) { return r.maxCompleteness; });
@@ -172,11 +179,13 @@ int run(HexArgs a) {
     if (stepsFile) errors.attempt([&] { stepsFile->commit(); });
     if (a.json) {
         auto js = [](Stat s) { return nlohmann::json{{"mean", s.mean}, {"std", s.std}}; };
-        nlohmann::json j{{"from", a.setup.from}, {"to", a.setup.to}, {"size", a.setup.size}, {"reps", runs.size()}, {"modules", js(modules)}, {"steps", steps}, {"stopped", stopped ? "timeout" : "done"}, {"tri_regions", runs[0].triRegions}, {"completeness", js(completeness)}, {"stability", js(stability)}, {"compliance", js(compliance)}, {"islands", js(islands)}, {"seconds", js(seconds)}, {"improvements", improvements(a.setup.options)}};
+        nlohmann::json j{{"from", a.setup.from}, {"to", a.setup.to}, {"size", a.setup.size}, {"reps", runs.size()}, {"modules", js(modules)}, {"steps", steps}, {"stopped", stopReasonName(stopped)}, {"tri_regions", runs[0].triRegions}, {"completeness", js(completeness)}, {"stability", js(stability)}, {"compliance", js(compliance)}, {"islands", js(islands)}, {"seconds", js(seconds)}, {"improvements", improvements(a.setup.options)}};
         std::cout << j.dump() << '\n';
     } else {
         std::cout << std::fixed << std::setprecision(2) << a.setup.from << " -> " << a.setup.to << " on " << a.setup.size << "x" << a.setup.size
-                  << ", " << runs.size() << " reps of " << steps << " timesteps" << (stopped ? " (stopped by --timeout)" : "") << ", " << runs[0].triRegions << " tri-regions"
+                  << ", " << runs.size() << " reps of " << steps << " timesteps" << (stopped == StopReason::Timeout ? " (stopped by --timeout)" : stopped == StopReason::Interrupted ? " (interrupted)"
+                                                                                                                                                                                     : "")
+                  << ", " << runs[0].triRegions << " tri-regions"
                   << (improvements(a.setup.options).empty() ? "" : ", holon's improvements:");
         for (const std::string& i : improvements(a.setup.options)) std::cout << " --" << i;
         std::cout << '\n'
@@ -191,7 +200,7 @@ int run(HexArgs a) {
                   << " target points empty (" << runs[0].residue.walledIn << " walled in), " << runs[0].residue.holeCellsOutside << " hole cells outside\n";
     }
     errors.raise();  // after the table: the runs' results are printed even when their files are not written
-    return stopped ? kExitUndecided : kExitOk;
+    return exitCodeFor(stopped, budget.signal());
 }
 
 }  // namespace
@@ -222,9 +231,9 @@ Run addHexCommand(CLI::App& app) {
     sub->add_flag("--keep-connected", a->setup.options.keepConnected, "refuse every deletion and collapse that would cut the mass apart");
     sub->add_flag("--migrate", a->setup.options.migrate, "modules outside the target move along the surface toward empty target points");
     sub->add_flag("--balance", a->setup.options.balance, "hold the live holes at (target area - modules) / 7: creation stops there, deletion below it only as growth asks, surplus holes deleted at the surface");
-    sub->add_option("--threads", a->threads, "parallel runs, 1 to 64 (default: the machine's cores)")->check(threadsValidator());
-    sub->add_option("--timeout", a->timeout, "stop every run after this many seconds in all, with the timesteps made so far (exit 3; default: no limit)")->check(secondsValidator());
-    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB, checked before the arrays are made (default 16384)")->check(memoryValidator());
+    addThreads(sub, a->threads, "one run each");
+    addTimeout(sub, a->timeout, "every run keeps the timesteps made so far");
+    addMemory(sub, a->memoryMiB, "checked before the arrays are made");
     sub->add_option("--out", a->out, "directory for series.csv, series.svg (metrics over time) and SVG frames of the first run (created if missing; its parent must exist)");
     sub->add_option("--steps-out", a->stepsOut, "write the first run as JSON Lines, one rule instance a line, for holon view (large: keep --size and --steps small)");
     sub->add_flag("--json", a->json, "print a JSON summary");

@@ -34,6 +34,18 @@ std::string rulesPath(const std::string& name) {
     return std::filesystem::exists(bundled) ? bundled : name;  // a missing file is reported by the reader
 }
 
+namespace {
+const char* const kRulesHelp = "rule file (.holon), or the name of a bundled system (planner_general1 reads rules/library/planner_general1.holon)";
+}  // namespace
+
+CLI::Option* addRulesFile(CLI::App* sub, const std::string& name, std::string& file, const std::string& what) {
+    return sub->add_option(name, file, (what.empty() ? "" : what + ": ") + kRulesHelp + (file.empty() ? "" : " (default " + file + ")"));
+}
+
+CLI::Option* addRulesFiles(CLI::App* sub, const std::string& name, std::vector<std::string>& files) {
+    return sub->add_option(name, files, std::string(kRulesHelp) + "; several may be given");
+}
+
 std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings) {
     return rules::loadSystem(rulesPath(file), std::cerr, loadOptions(noWarnings));
 }

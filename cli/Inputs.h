@@ -5,6 +5,7 @@
 #include "rules/Interpreter.h"
 #include "rules/Library.h"
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -17,6 +18,11 @@ rules::LoadOptions loadOptions(const std::vector<std::string>& noWarnings);
 /// A rule file, or the stem of a bundled system ("planner_general1"): the path to read. Every
 /// subcommand that takes a rule file takes a bundled name this way.
 std::string rulesPath(const std::string& name);
+/// Registers the rule file argument or option `name` ("file", "--rules") of a subcommand, with the
+/// one help text every subcommand shares: a file or a bundled name. `what` says whose rules they are
+/// ("design A"); a default already in `file` is stated.
+CLI::Option* addRulesFile(CLI::App* sub, const std::string& name, std::string& file, const std::string& what = "");
+CLI::Option* addRulesFiles(CLI::App* sub, const std::string& name, std::vector<std::string>& files);
 /// Parses a rule file or bundled system (rulesPath), printing diagnostics to stderr; nothing when
 /// it has errors.
 std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings);

@@ -2,7 +2,9 @@
 // Independent jobs spread over the machine's cores (or `threads`), with an optional progress line on
 // a terminal. The first exception a job throws stops the others and is rethrown as it was (an
 // InputError stays exit 2, a std::bad_alloc or LimitError a limit), once every worker has joined.
-// `stop`, when given, is asked before each job: once it says so, no job starts (a --timeout).
+// `budget` is asked before each job: once it is spent, no job starts (a deadline, a signal).
+
+#include "rules/Budget.h"
 
 #include <algorithm>
 #include <atomic>
@@ -17,13 +19,13 @@
 namespace holon::cli {
 
 inline void runParallel(int jobs, int threads, bool progress, const std::string& unit, const std::function<void(int)>& job,
-                        const std::function<bool()>& stop = {}) {
+                        const Budget& budget = Budget()) {
     std::atomic<int> next{0}, done{0};
     std::mutex io;
     std::exception_ptr firstError;
     auto worker = [&] {
         for (int j; (j = next++) < jobs;) {
-            if (stop && stop()) return;
+            if (budget.reached()) return;
             try {
                 job(j);
             } catch (...) {

@@ -9,8 +9,8 @@
 #include "checker/Path.h"
 #include "checker/PathSchedule.h"
 #include "cli/Commands.h"
-#include "cli/ExploreLimits.h"
 #include "cli/Inputs.h"
+#include "cli/Limits.h"
 #include "rules/OutputFile.h"
 #include "viewer/Page.h"
 #include "viewer/Readers.h"
@@ -67,6 +67,7 @@ int run(const PathArgs& a) {
     }
     query.limits = a.limits.limits();
     query.search = search;
+    const rules::StopSignals guard(true);  // a signal stops the search: undecided, 128 + the signal
     const bool terminal = isatty(2) && !a.json;
     if (terminal)
         query.onProgress = [](const checker::ExploreStats& s) {
@@ -100,10 +101,12 @@ int run(const PathArgs& a) {
 
     const auto& s = result.stats;
     int code = kExitOk;
-    if (!found) code = result.outcome == checker::PathOutcome::Unreachable ? kExitViolated : kExitUndecided;
+    if (!found) code = result.outcome == checker::PathOutcome::Unreachable ? kExitViolated
+                       : s.stopped == StopReason::Interrupted              ? exitCodeFor(s.stopped, caughtSignal())
+                                                                           : kExitUndecided;
     else if (!replayed || (schedule && !scheduled)) code = kExitInternal;
     if (a.json) {
-        nlohmann::json j = {{"system", system->name}, {"region", region.spec()}, {"outcome", outcomeName(result.outcome)}, {"states", s.states}, {"depth", s.depth}, {"seconds", s.seconds}, {"stopped", checker::stopReasonName(s.stopped)}};
+        nlohmann::json j = {{"system", system->name}, {"region", region.spec()}, {"outcome", outcomeName(result.outcome)}, {"states", s.states}, {"depth", s.depth}, {"seconds", s.seconds}, {"stopped", stopReasonName(s.stopped)}};
         j["search"] = checker::pathSearchName(result.search);
         if (!result.fallback.empty()) j["fallback"] = result.fallback;
         if (result.bound >= 0) j["bound"] = result.bound;
@@ -142,9 +145,8 @@ int run(const PathArgs& a) {
                       << " (all searched backwards), and the start is not one of them\n";
         break;
     case checker::PathOutcome::Undecided:
-        std::cout << "  undecided: stopped by " << checker::stopReasonName(s.stopped) << " after " << s.states << " states (none within " << checker::stepCount(static_cast<std::size_t>(s.depth))
-                  << "); raise " << limitOption(s.stopped)
-                  << " to search further\n";
+        std::cout << "  undecided: stopped by " << stopReasonName(s.stopped) << " after " << s.states << " states (none within " << checker::stepCount(static_cast<std::size_t>(s.depth))
+                  << ")" << raiseAdvice(s.stopped, " to search further") << '\n';
         break;
     }
     return code;
@@ -155,7 +157,7 @@ int run(const PathArgs& a) {
 Run addPathCommand(CLI::App& app) {
     auto a = std::make_shared<PathArgs>();
     CLI::App* sub = app.add_subcommand("path", "A shortest sequence of rule steps from one configuration to another, or to the goal");
-    sub->add_option("file", a->file, "rule file (.holon) or bundled system name")->required();
+    addRulesFile(sub, "file", a->file)->required();
     sub->add_option("--region", a->region, "bounded region: square:WxH, cubic:WxHxD or hex:rR")->required();
     sub->add_option("--from", a->from, "start configuration (JSON, ITF#N or ASCII art)")->required();
     sub->add_option("--to", a->to, "target configuration (JSON, ITF#N or ASCII art)");

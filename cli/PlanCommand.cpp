@@ -3,9 +3,9 @@
 // Every output path is checked before the run; SIGINT or SIGTERM stops the run at the next round,
 // writes what it has as complete files (the summary marked interrupted) and exits 128 + signal.
 
-#include "checker/Budget.h"
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
+#include "cli/Limits.h"
 #include "cli/WriteErrors.h"
 #include "planner/Diagnosis.h"
 #include "planner/Execution.h"
@@ -13,6 +13,7 @@
 #include "planner/Monitor.h"
 #include "planner/Report.h"
 #include "planner/hex/DiskMetamodules.h"
+#include "rules/Budget.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
@@ -57,8 +58,8 @@ struct PlanArgs {
     double drop = 0;
     std::optional<std::uint64_t> faultSeed;
     int scale = 1;
-    std::uint64_t seed = 1;
-    std::int64_t maxSteps = 0, maxRounds = 0;
+    std::uint64_t seed = planner::RunOptions{}.seed;
+    std::uint64_t maxSteps = 0, maxRounds = 0;
     double timeout = 0;  // 0: the option left out, no limit
     std::uint64_t memoryMiB = kDefaultMemoryMiB;
     bool check = false, json = false, quiet = false;
@@ -154,15 +155,10 @@ void requirePlanLattice(const rules::System& system, const rules::Lattice& latti
                      (otherDimension ? ", or --from and --to as " + std::to_string(fixed.dimension()) + "D shapes" : std::string()));
 }
 
-/// Why a run ended, as an exit code: a limit the user set is undecided (3), not a failed plan (1).
-int exitCodeFor(const planner::RunStats& stats) {
-    if (stats.complete) return kExitOk;
-    return stats.stopped == "timeout" || stats.stopped == "max-steps" || stats.stopped == "max-rounds" ? kExitUndecided : kExitViolated;
-}
-
 int run(const PlanArgs& a) {
-    // One --timeout for every phase: setup (shapes, board) and the run share this deadline.
-    const checker::Budget budget(a.timeout);
+    // One budget for every phase: setup (shapes, board) and the run share the deadline; the stop
+    // flag is raised once the signal catcher below is installed.
+    const Budget budget = Budget(a.timeout) || Budget::onSignals();
     const auto during = [&](const std::string& phase) {
         if (budget.expired()) throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached while " + phase + ", before the plan ran; nothing was written; raise --timeout");
     };
@@ -196,8 +192,8 @@ int run(const PlanArgs& a) {
     else if (a.scheduler == "async") options.scheduler = planner::Scheduler::Async;
     else if (a.scheduler == "adversarial") options.scheduler = planner::Scheduler::Adversarial;
     else throw InputError("--scheduler '" + a.scheduler + "': choose sync, async or adversarial");
-    options.seed = a.seed, options.maxSteps = a.maxSteps, options.maxRounds = a.maxRounds;
-    options.interrupt = rules::StopSignals::caught();
+    options.seed = a.seed;
+    options.budget = budget || Budget::maxSteps(a.maxSteps) || Budget::maxRounds(a.maxRounds);
 
     planner::FaultOptions faultOptions;
     for (const std::string& text : a.lose) faultOptions.losses.push_back(planner::parseLoss("--lose", text, lattice.dimension(), true));
@@ -217,7 +213,6 @@ int run(const PlanArgs& a) {
     // From here on a signal stops the run at a round boundary and the files are still written.
     const rules::StopSignals guard(true);  // one-shot: a second signal ends holon at once
     during("preparing the run");
-    if (budget.limited()) options.timeoutSeconds = std::max(budget.remaining(), 1e-6);
     planner::Execution execution(problem, *allocator, options);
     running = &execution;
     planner::Report report(problem, execution, {a.out, a.planOut, "--out", "--plan-out", !a.quiet && isatty(STDERR_FILENO) != 0});
@@ -244,7 +239,7 @@ int run(const PlanArgs& a) {
     // After a loss that broke the lemmas' hypotheses the end is the fault's configuration, not the
     // planner's: the monitor's last word is the round before it.
     if (monitor && !(faults && !faults->broken().empty())) monitor->finish(stats);
-    const bool interrupted = stats.stopped == "interrupted";
+    const bool interrupted = stats.stopped == StopReason::Interrupted;
     // The transfer bound is a min-cost flow over the board: skipped once --timeout has passed.
     const std::int64_t lowerBound = budget.expired() ? -1 : planner::transferLowerBound(problem);
     if (faults) report.addSummary("faults", faults->json());
@@ -254,7 +249,7 @@ int run(const PlanArgs& a) {
     if (!a.html.empty() && report.writeErrors().empty()) errors.attempt([&] { rules::OutputFile("--html", a.html).write(viewer::page(viewer::readRun(a.planOut))); });
 
     if (a.json) {
-        nlohmann::json j = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", lowerBound >= 0 ? nlohmann::json(lowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"relabels", stats.relabels}, {"evaluations", stats.evaluations}, {"stopped", stats.stopped}, {"system", system->name}, {"allocator", allocator->name()}, {"scheduler", a.scheduler}, {"seed", a.seed}};
+        nlohmann::json j = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", lowerBound >= 0 ? nlohmann::json(lowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"relabels", stats.relabels}, {"evaluations", stats.evaluations}, {"stopped", stopReasonName(stats.stopped)}, {"system", system->name}, {"allocator", allocator->name()}, {"scheduler", a.scheduler}, {"seed", a.seed}};
         if (faults) j["faults"] = faults->json();
         std::cout << j.dump(2) << '\n';
     } else {
@@ -267,9 +262,9 @@ int run(const PlanArgs& a) {
         std::cout << ", relabels " << stats.relabels << "\n  " << stats.rounds << " rounds, " << stats.steps << " steps, " << stats.evaluations
                   << " rule evaluations, " << std::fixed << std::setprecision(3) << stats.seconds << " s\n  ";
         if (stats.complete) std::cout << "complete: the target is reached\n";
-        else if (interrupted) std::cout << "NOT complete: interrupted by " << (*rules::StopSignals::caught() == SIGTERM ? "SIGTERM" : "SIGINT") << " after round " << stats.rounds << "\n";
+        else if (interrupted) std::cout << "NOT complete: interrupted by " << (budget.signal() == SIGTERM ? "SIGTERM" : "SIGINT") << " after round " << stats.rounds << "\n";
         else if (faults && !faults->broken().empty()) std::cout << "NOT complete: stopped by a fault: " << faults->broken() << '\n';
-        else std::cout << "NOT complete: stopped by " << stats.stopped << '\n';
+        else std::cout << "NOT complete: stopped by " << stopReasonName(stats.stopped) << '\n';
         if (faults) std::cout << "  faults: " << faults->summary() << '\n';
         if (!stats.complete) printShortOfGoal(problem, execution);
         if (monitor) std::cout << "  monitor: " << monitor->summary() << '\n';
@@ -287,9 +282,8 @@ int run(const PlanArgs& a) {
     }
     // A file that could not be written outranks the verdict: the summary above is all there is.
     errors.raise();
-    if (interrupted) return 128 + *rules::StopSignals::caught();
-    if (!disksOk || violated) return kExitViolated;
-    return exitCodeFor(stats);
+    if (!interrupted && (!disksOk || violated)) return kExitViolated;
+    return exitCodeFor(stats.stopped, budget.signal());
 }
 
 }  // namespace
@@ -300,13 +294,13 @@ Run addPlanCommand(CLI::App& app) {
     std::string shapes;
     for (const auto& [name, what] : planner::shapeGenerators()) shapes += "\n    " + name + ": " + what;
     sub->footer("SHAPE is a generator or a file (.json cell list, .xyz voxels, .binvox, a VisibleSim world .xml or its target WORLD.xml#target, ASCII art):" + shapes);
-    sub->add_option("--rules", a->rules, "planner rule file, or a bundled name (default planner_intermediate)");
+    addRulesFile(sub, "--rules", a->rules, "the planner");
     sub->add_option("--from", a->from, "start shape")->required();
     sub->add_option("--to", a->to, "target shape")->required();
     sub->add_option("--scale", a->scale, "every cell becomes a KxK (3D: KxKxK) block (1 to 2^29: beyond it no cell fits the coordinate range)")->check(CLI::Range(1, planner::kMaxCoordinate));
-    sub->add_option("--allocator", a->allocator, "resource allocator for general_n: random, gradient, demand or optimal (default random)");
+    sub->add_option("--allocator", a->allocator, "resource allocator for general_n: random, gradient, demand or optimal (default " + a->allocator + ")");
     sub->add_option("--scheduler", a->scheduler, "sync (rounds, default), async (one instance at a time) or adversarial");
-    sub->add_option("--seed", a->seed, "random seed (default 1)");
+    sub->add_option("--seed", a->seed, "random seed (default " + std::to_string(a->seed) + ")");
     sub->add_option("--seed-cell", a->seedCell, "the seed metamodule x,y[,z] (default: the overlap cell nearest its centre)");
     sub->add_flag("--check", a->check, "monitor after every step or round that the ensemble stays connected, conserves mass (where the system says so) and holds only states of its alphabet");
     sub->add_flag("--json", a->json, "print the summary as JSON");
@@ -314,10 +308,10 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--hex-disks", a->hexDisks, "2D general_n plans: realise every template as pivot moves of hex-lattice disks (seed 000 Fig. 4a); write disk_moves.jsonl and disks.svg into this folder");
     sub->add_option("--plan-out", a->planOut, "write the plan as JSON Lines (one fired instance per line)");
     sub->add_option("--html", a->html, "with --plan-out: write the plan as a self-contained HTML viewer (docs/viewer.md)");
-    sub->add_option("--max-steps", a->maxSteps, "stop after this many steps (exit 3; default: no limit)")->check(countValidator());
-    sub->add_option("--max-rounds", a->maxRounds, "stop after this many rounds (exit 3; default: no limit)")->check(countValidator());
-    sub->add_option("--timeout", a->timeout, "stop after this many seconds, setup included (exit 3; default: no limit)")->check(secondsValidator());
-    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB, checked before the shapes and the board are made (default 16384)")->check(memoryValidator());
+    addCap(sub, "--max-steps", a->maxSteps, "steps");
+    addCap(sub, "--max-rounds", a->maxRounds, "rounds");
+    addTimeout(sub, a->timeout, "the plan so far is written");
+    addMemory(sub, a->memoryMiB, "checked before the shapes and the board are made");
     sub->add_option("--trace-out", a->traceOut, "with --check: write the violating round as an ITF JSON trace (default DIR/violation.itf.json with --out)");
     sub->add_option("--lose", a->lose, "fault: lose the metamodule at x,y[,z] after round ROUND (ROUND:x,y[,z]; repeatable); the run goes on when seed 000's lemmas still cover it, else stops and names what the loss broke (exit 1)");
     sub->add_option("--lose-random", a->loseRandom, "fault: lose a metamodule drawn at random (--fault-seed) after round ROUND (repeatable)");

@@ -142,7 +142,7 @@ int run(const Args& a) {
 Run addReplayCommand(CLI::App& app) {
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("replay", "check a plan (holon plan --plan-out) step by step with the reference interpreter");
-    sub->add_option("rules", a->rules, "the plan's rule file, or a bundled name (as plan --rules)")->required();
+    addRulesFile(sub, "rules", a->rules, "the plan's rules, as plan --rules")->required();
     sub->add_option("plan", a->plan, "the plan, JSON Lines from holon plan --plan-out")->required();
     return [a] { return run(*a); };
 }

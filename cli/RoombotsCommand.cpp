@@ -4,14 +4,16 @@
 // per metamodule). `--make-clouds FILE` regenerates the collision-cloud look-up table. Output
 // paths are checked before the runs; a file that cannot be written is reported after the tables.
 
-#include "checker/Budget.h"
 #include "cli/Commands.h"
+#include "cli/Limits.h"
 #include "cli/Parallel.h"
 #include "cli/WriteErrors.h"
 #include "planner/roombots/Draw.h"
+#include "rules/Budget.h"
 #include "rules/Error.h"
 #include "rules/Limits.h"
 #include "rules/OutputFile.h"
+#include "rules/StopSignals.h"
 
 #include <nlohmann/json.hpp>
 
@@ -33,8 +35,9 @@ namespace rb = planner::roombots;
 struct RoombotsArgs {
     std::string structure = "cube", recipe = "given", clouds, makeClouds, out;
     std::vector<std::string> metamodules{"PAR", "PER", "SRS", "SRZ"}, strategies{"greedy", "slope", "step"};
-    int runs = 0, threads = 0, stall = 12;  // runs, threads 0: the option left out (the paper's runs, the machine's cores)
-    double timeout = 0;                     // 0: the option left out, no limit
+    int runs = 0, threads = 0;  // 0: the option left out (the paper's runs, the machine's cores)
+    int stall = planner::roombots::AssemblyOptions{}.stallSteps;
+    double timeout = 0;  // 0: the option left out, no limit
     std::uint64_t memoryMiB = kDefaultMemoryMiB;
     std::uint64_t seed = 1;
     bool json = false, quiet = false;
@@ -142,8 +145,10 @@ int run(const RoombotsArgs& a) {
         std::cout << "wrote " << table.size() << " transitions to " << a.makeClouds << '\n';
         return 0;
     }
-    const checker::Budget budget(a.timeout);  // one deadline for the recipes and every run
-    const std::function<bool()> expired = budget.limited() ? std::function<bool()>([&] { return budget.expired(); }) : std::function<bool()>();
+    // One budget for the recipes and every run: the deadline, and SIGINT or SIGTERM, which stop the
+    // runs before their next action (a run cut short is dropped) so the tables hold whole runs.
+    const Budget budget = Budget(a.timeout) || Budget::onSignals();
+    const rules::StopSignals guard(true);  // one-shot: a second signal ends holon at once
     if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
     // A name that is neither built in nor a file: the message lists the names.
     const auto known = [](const char* option, const std::string& name, const std::string& first, const std::string& second) {
@@ -174,12 +179,13 @@ int run(const RoombotsArgs& a) {
             static_cast<int>(keys.size()), a.threads, false, "recipes", [&](int k) {
                 rb::Setting& s = runSettings[keys[k]];
                 try {
-                    s.recipe = rb::automaticRecipe(table, keys[k].first, s, expired);
+                    s.recipe = rb::automaticRecipe(table, keys[k].first, s, budget);
                     ++derived;
                 } catch (const rb::AssemblyStopped&) {
                 }
             },
-            expired);
+            budget);
+        if (derived < static_cast<int>(keys.size()) && budget.interrupted()) throw Interrupted(budget.signal());
         if (derived < static_cast<int>(keys.size()))
             throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached while deriving the recipes, before any run; nothing was written; raise --timeout");
     }
@@ -202,7 +208,7 @@ int run(const RoombotsArgs& a) {
                          std::to_string(jobs.size()) + " runs (" + std::to_string(parallel) + " at once)");
     rb::AssemblyOptions options;
     options.stallSteps = a.stall;
-    options.stop = expired;  // a run the deadline cuts short is dropped, not counted
+    options.budget = budget;  // a run the budget cuts short is dropped, not counted
     runParallel(
         static_cast<int>(jobs.size()), a.threads, !a.quiet && !a.json && isatty(STDERR_FILENO), "runs", [&](int k) {
             try {
@@ -211,12 +217,12 @@ int run(const RoombotsArgs& a) {
             } catch (const rb::AssemblyStopped&) {
             }
         },
-        expired);
-    // Stopped by --timeout: the tables and files hold the runs made, each whole.
+        budget);
+    // Stopped by the budget: the tables and files hold the runs made, each whole.
     const std::size_t planned = jobs.size();
     jobs.erase(std::remove_if(jobs.begin(), jobs.end(), [](const Job& j) { return !j.ran; }), jobs.end());
-    const bool stopped = jobs.size() < planned;
-    const std::string stoppedText = "stopped by --timeout: " + std::to_string(jobs.size()) + " of " + std::to_string(planned) + " runs made";
+    const StopReason stopped = jobs.size() < planned ? budget.reached().value_or(StopReason::Timeout) : StopReason::Finished;
+    const std::string stoppedText = (stopped == StopReason::Interrupted ? "interrupted: " : "stopped by --timeout: ") + std::to_string(jobs.size()) + " of " + std::to_string(planned) + " runs made";
     WriteErrors errors;
     if (!a.out.empty())
         for (const Job& j : jobs) writeRun(a.out, j, runSettings.at({j.coupling, j.run}), errors);
@@ -233,10 +239,10 @@ int run(const RoombotsArgs& a) {
         nlohmann::json runs = nlohmann::json::array();
         for (const Job& j : jobs)
             runs.push_back({{"metamodule", rb::couplingName(j.coupling)}, {"strategy", rb::strategyName(j.strategy)}, {"run", j.run}, {"recipe", runSettings.at({j.coupling, j.run}).recipe.name}, {"completed", j.result.completed}, {"deadlocked", j.result.deadlocked}, {"collisions", j.result.collisions}, {"moves", j.result.moves}, {"mean_moves", j.result.meanMoves}, {"seconds", j.result.seconds}, {"deadlock_reason", j.result.reason}});
-        std::cout << nlohmann::json{{"structure", a.structure}, {"runs", runs}, {"completed", completed}, {"collisions", clean}, {"collisions_all_runs", all}, {"deadlocks", dl}, {"mean_moves", moves}, {"stopped", stopped ? "timeout" : "done"}}.dump()
+        std::cout << nlohmann::json{{"structure", a.structure}, {"runs", runs}, {"completed", completed}, {"collisions", clean}, {"collisions_all_runs", all}, {"deadlocks", dl}, {"mean_moves", moves}, {"stopped", stopReasonName(stopped)}}.dump()
                   << '\n';
         errors.raise();
-        return stopped ? kExitUndecided : kExitOk;
+        return exitCodeFor(stopped, budget.signal());
     }
     std::cout << a.structure << ": " << settings.front().recipe.seeds.size() << " metamodules, " << settings.size() << (settings.size() == 1 ? " run" : " runs") << " per cell (";
     for (int r = 0; r < static_cast<int>(settings.size()); ++r) std::cout << (r ? ", " : "") << runSettings.at({couplings.front(), r}).recipe.name;
@@ -260,9 +266,9 @@ int run(const RoombotsArgs& a) {
               << completed << " of " << jobs.size() << " runs completed, " << dl << " deadlocked; " << clean
               << " collisions in runs that did not deadlock (" << all << " in all); " << std::setprecision(1) << moves
               << " moves per metamodule\n";
-    if (stopped) std::cout << stoppedText << '\n';
+    if (stopped != StopReason::Finished) std::cout << stoppedText << '\n';
     errors.raise();  // after the tables: the runs' results are printed even when their files are not written
-    return stopped ? kExitUndecided : kExitOk;
+    return exitCodeFor(stopped, budget.signal());
 }
 
 }  // namespace
@@ -276,12 +282,12 @@ Run addRoombotsCommand(CLI::App& app) {
     sub->add_option("--recipe", a->recipe, "given (the structure's seeding order, default), auto (derived from the kinematics) or a recipe file");
     sub->add_option("--runs", a->runs, "runs per configuration and strategy, 1 to 1000 (default: the paper's 3 for cube, 4 for chair)")->check(CLI::Range(1, 1000));
     sub->add_option("--seed", a->seed, "random seed of the shifted starts");
-    sub->add_option("--stall", a->stall, "K: a deadlock is K steps in which no metamodule comes closer to an active seed (1 to 10000)")->check(CLI::Range(1, 10000));
+    sub->add_option("--stall", a->stall, "K: a deadlock is K steps in which no metamodule comes closer to an active seed (1 to 10000; default " + std::to_string(a->stall) + ")")->check(CLI::Range(1, 10000));
     sub->add_option("--clouds", a->clouds, "collision-cloud table (default: the one shipped with holon)");
     sub->add_option("--make-clouds", a->makeClouds, "compute the collision-cloud table from the kinematics, write it to FILE and stop");
-    sub->add_option("--threads", a->threads, "parallel runs, 1 to 64 (default: the machine's cores)")->check(threadsValidator());
-    sub->add_option("--timeout", a->timeout, "stop after this many seconds in all, a run in progress dropped; the tables hold the runs made (exit 3; default: no limit)")->check(secondsValidator());
-    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB, checked before the runs (default 16384)")->check(memoryValidator());
+    addThreads(sub, a->threads, "one run each");
+    addTimeout(sub, a->timeout, "a run in progress is dropped and the tables hold the runs made");
+    addMemory(sub, a->memoryMiB, "checked before the runs");
     sub->add_option("--out", a->out, "directory for per-run traces (CSV), foot-trace pictures and assembly snapshots (SVG), and each run action by action for holon view (steps_*.jsonl) (created if missing; its parent must exist)");
     sub->add_flag("--json", a->json, "print a JSON summary");
     sub->add_flag("--quiet", a->quiet, "no progress bar");

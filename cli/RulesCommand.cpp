@@ -191,7 +191,7 @@ void printHuman(const nlohmann::ordered_json& j, std::ostream& out) {
 Run addRulesCommand(CLI::App& app) {
     auto opts = std::make_shared<RulesOptions>();
     CLI::App* sub = app.add_subcommand("rules", "Parse .holon rule files, report diagnostics and summarise each system");
-    sub->add_option("files", opts->files, "rule files (.holon)")->required();
+    addRulesFiles(sub, "files", opts->files)->required();
     sub->add_option("-W", opts->noWarnings,
                     "silence a warning: -W no-NAME (names: unused-value, unused-input, "
                     "unmassed-value, duplicate-rule, no-rules)");

@@ -7,6 +7,7 @@
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
 #include "cli/VerifyEverySize.h"
+#include "cli/Limits.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
@@ -23,16 +24,18 @@ struct VerifyArgs {
     std::string file, region, traceOut, svg, smtOut, lattice;
     std::vector<std::string> from, inputs, properties, noWarnings;
     int depth = 0;
-    double timeout = 120;
-    std::uint64_t memoryMiB = 16384;
+    double timeout = 0;  // the whole job; 0: the option left out, no limit
+    double obligationTimeout = checker::VerifyOptions{}.timeoutSeconds;
+    std::uint64_t memoryMiB = kDefaultMemoryMiB;
     bool json = false, reach = false, everySize = false;
 };
 
 int run(const VerifyArgs& a) {
+    const Budget budget(a.timeout);  // from the start: loading and encoding count
     if (a.everySize) {
         if (a.depth > 0 || a.reach || !a.from.empty() || !a.inputs.empty() || !a.traceOut.empty() || !a.svg.empty())
             throw InputError("--every-size proves one step on a window: --depth, --reach, --from, --input, --trace-out and --svg need --region without it");
-        return runEverySize({a.file, a.lattice, a.region, a.smtOut, a.properties, a.noWarnings, a.timeout, a.memoryMiB, a.json});
+        return runEverySize({a.file, a.lattice, a.region, a.smtOut, a.properties, a.noWarnings, budget, a.obligationTimeout, a.memoryMiB, a.json});
     }
     if (!a.lattice.empty()) throw InputError("--lattice is for --every-size; a bounded proof takes the lattice of --region");
     if (a.region.empty()) throw InputError("--region is required: a bounded region such as square:3x3 (or --every-size --lattice L for every region)");
@@ -46,7 +49,8 @@ int run(const VerifyArgs& a) {
     if (!a.traceOut.empty()) traceOut.emplace("--trace-out", a.traceOut);
     if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
     checker::VerifyOptions options;
-    options.timeoutSeconds = a.timeout;
+    options.timeoutSeconds = a.obligationTimeout;
+    options.budget = budget;
     options.memoryMiB = a.memoryMiB;
     options.depth = a.depth;
     options.reach = a.reach;
@@ -157,7 +161,7 @@ int run(const VerifyArgs& a) {
 Run addVerifyCommand(CLI::App& app) {
     auto a = std::make_shared<VerifyArgs>();
     CLI::App* sub = app.add_subcommand("verify", "Prove properties for every configuration of a bounded region, or of every region (--every-size), with Z3");
-    sub->add_option("file", a->file, "rule file (.holon)")->required();
+    addRulesFile(sub, "file", a->file)->required();
     sub->add_option("--region", a->region, "bounded region: square:WxH, cubic:WxHxD or hex:rR (with --every-size: the bounded proof for what is not local)");
     sub->add_flag("--every-size", a->everySize, "prove conservation, rankings and local invariants for every region of the lattice (a window proof)");
     sub->add_option("--lattice", a->lattice, "with --every-size: square2d, hex2d or cubic3d (default: the system's, or --region's)");
@@ -166,8 +170,9 @@ Run addVerifyCommand(CLI::App& app) {
     sub->add_flag("--reach", a->reach, "also prove the invariants for every state reachable from --from, at any depth (Spacer)");
     sub->add_option("--from", a->from, "initial configuration for --depth and --reach (JSON or ASCII art); repeatable");
     sub->add_option("--input", a->inputs, "inputs of the initial configurations: NAME=FILE (ASCII mask), NAME=none or NAME=all; each input must be given with --from");
-    sub->add_option("--timeout", a->timeout, "seconds per obligation, encoding and solving (default 120)")->check(secondsValidator());
-    sub->add_option("--memory", a->memoryMiB, "memory bound for Z3 in MiB (default 16384)")->check(memoryRange());
+    addTimeout(sub, a->timeout, "the obligations not decided by then are unknown");
+    sub->add_option("--obligation-timeout", a->obligationTimeout, "seconds per obligation, encoding and solving (default " + defaultText(a->obligationTimeout) + ")")->check(secondsValidator());
+    addMemory(sub, a->memoryMiB, "for Z3");
     sub->add_flag("--json", a->json, "print the report as JSON");
     sub->add_option("--smt-out", a->smtOut, "write every obligation as SMT-LIB2 into this directory");
     sub->add_option("--trace-out", a->traceOut, "write each counterexample as an ITF JSON trace (several: FILE with the obligation's name inserted)");

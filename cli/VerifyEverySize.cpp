@@ -41,7 +41,8 @@ int runEverySize(const EverySizeArgs& a) {
     if (!a.region.empty()) region = rules::Region::parse(a.region, 4096);
     const rules::Model model(*system, latticeFor(a, *system, region));
     checker::EverySizeOptions options;
-    options.timeoutSeconds = a.timeout;
+    options.timeoutSeconds = a.obligationTimeout;
+    options.budget = a.budget;
     options.memoryMiB = a.memoryMiB;
     options.properties = a.properties;
     options.smtOut = a.smtOut;
@@ -58,7 +59,8 @@ int runEverySize(const EverySizeArgs& a) {
     bool unconfirmed = false;
     if (region && !every.notLocal.empty()) {
         checker::VerifyOptions bounded;
-        bounded.timeoutSeconds = a.timeout;
+        bounded.timeoutSeconds = a.obligationTimeout;
+        bounded.budget = a.budget;
         bounded.memoryMiB = a.memoryMiB;
         bounded.properties = every.notLocal;
         const checker::VerifyReport local = checker::verify(model, *region, bounded, announce);

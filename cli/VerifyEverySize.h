@@ -3,6 +3,8 @@
 // lattice (checker/EverySize.h); with --region, the properties that are not local get the bounded
 // proof on R instead, and say so in their scope.
 
+#include "rules/Budget.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -12,8 +14,9 @@ namespace holon::cli {
 struct EverySizeArgs {
     std::string file, lattice, region, smtOut;
     std::vector<std::string> properties, noWarnings;
-    double timeout = 120;
-    std::uint64_t memoryMiB = 16384;
+    Budget budget;                 // the whole job's
+    double obligationTimeout = 0;  // seconds per property
+    std::uint64_t memoryMiB = 0;
     bool json = false;
 };
 

@@ -274,34 +274,32 @@ RunStats Execution::run(const RunObserver& observer) {
     for (std::uint64_t iteration = 0;; ++iteration) {
         // Reaching the goal ends the run even while transfers are still enabled.
         if (offGoal_ == 0) {
-            stats_.stopped = "goal";
+            stats_.stopped = StopReason::Goal;
             break;
         }
-        if (options_.interrupt && *options_.interrupt) {
-            stats_.stopped = "interrupted";
+        // A signal first, then a halt, the caps, no progress and the deadline. A sync round is long
+        // enough to read the clock each time; async steps are short.
+        if (options_.budget.interrupted()) {
+            stats_.stopped = StopReason::Interrupted;
             break;
         }
-        if (!halt_.empty()) {
-            stats_.stopped = halt_;
+        if (halt_) {
+            stats_.stopped = *halt_;
             break;
         }
-        if (options_.maxRounds && stats_.rounds >= options_.maxRounds) {
-            stats_.stopped = "max-rounds";
+        const bool clock = options_.scheduler == Scheduler::Sync || (iteration & 255) == 0;
+        const Progress done{0, static_cast<std::uint64_t>(stats_.steps), static_cast<std::uint64_t>(stats_.rounds)};
+        if (const auto why = options_.budget.reached(done, false)) {
+            stats_.stopped = *why;
             break;
         }
         if (stats_.steps - stats_.transfers != plannerSteps) plannerSteps = stats_.steps - stats_.transfers, idleSince = stats_.rounds;
         if (stats_.rounds - idleSince > maxIdle) {
-            stats_.stopped = "no-progress";
+            stats_.stopped = StopReason::NoProgress;
             break;
         }
-        if (options_.maxSteps && stats_.steps >= options_.maxSteps) {
-            stats_.stopped = "max-steps";
-            break;
-        }
-        // A sync round is long enough to read the clock each time; async steps are short.
-        const bool clock = options_.scheduler == Scheduler::Sync || (iteration & 255) == 0;
-        if (options_.timeoutSeconds > 0 && clock && elapsed() > options_.timeoutSeconds) {
-            stats_.stopped = "timeout";
+        if (clock && options_.budget.expired()) {
+            stats_.stopped = StopReason::Timeout;
             break;
         }
         changed.clear();
@@ -331,16 +329,16 @@ RunStats Execution::run(const RunObserver& observer) {
         // new round, so delays expire).
         if (!fired && deferred_ && options_.scheduler != Scheduler::Sync) sinceUpdate = updateEvery;
         if (!fired && !allocatorMoved && !deferred_) {
-            stats_.stopped = "stuck";
+            stats_.stopped = StopReason::Stuck;
             break;
         }
         recheckAround(changed);
         if (observer.roundEnd && !observer.roundEnd(stats_)) {
-            stats_.stopped = "monitor";
+            stats_.stopped = StopReason::Monitor;
             break;
         }
     }
-    stats_.complete = stats_.stopped == "goal";
+    stats_.complete = stats_.stopped == StopReason::Goal;
     stats_.metamodules = std::count_if(cells_.begin(), cells_.end(), [](BoxEngine::Value v) { return v != 0; });
     stats_.seconds = elapsed();
     return stats_;

@@ -8,10 +8,11 @@
 #include "planner/Allocator.h"
 #include "planner/Problem.h"
 #include "planner/Random.h"
+#include "rules/Budget.h"
 
 #include <chrono>
-#include <csignal>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -24,9 +25,11 @@ enum class Scheduler { Async,
 struct RunOptions {
     Scheduler scheduler = Scheduler::Sync;
     std::uint64_t seed = 1;
-    std::int64_t maxSteps = 0;   // 0: no limit; every fired instance is a step
-    std::int64_t maxRounds = 0;  // 0: no limit
-    double timeoutSeconds = 0;   // 0: no limit
+    /// When to stop short of the goal: its step cap (every fired instance is a step), round cap,
+    /// deadline and stop flag. The flag is set asynchronously, by a signal handler: the run stops
+    /// as interrupted at the next round (sync) or step (async) boundary, where every output is
+    /// consistent. Default: no limit.
+    Budget budget;
     /// Rounds in a row in which only transfers fire before the run stops as "no-progress"
     /// (an allocator shuffling resources forever); 0: 1000 + 20 D^2 for a board of extents
     /// summing to D, far above the diffusion time of the random allocator across the board.
@@ -35,9 +38,6 @@ struct RunOptions {
     /// every other round along a queue, as before pipelining (the yardstick PipelineTest holds
     /// pipelined runs to).
     bool pipeline = true;
-    /// Set (nonzero) asynchronously, by a signal handler: the run stops as "interrupted" at the
-    /// next round (sync) or step (async) boundary, where every output is consistent. Null: never.
-    const volatile std::sig_atomic_t* interrupt = nullptr;
     /// A fault model's veto (planner/Faults.h): an instance it refuses waits for a later step or
     /// round. A step or round in which refusals alone kept everything from firing is not stuck:
     /// time passes. Empty: every instance is admitted.
@@ -50,8 +50,8 @@ struct RunStats {
     std::int64_t rounds = 0, steps = 0;
     std::int64_t evaluations = 0;  // rule instances tested against the decision tables
     double seconds = 0;
-    bool complete = false;  // the system's goal was reached
-    std::string stopped;    // why the run ended: "goal", "stuck", "no-progress", "max-steps", "max-rounds", "timeout", "monitor", "interrupted", "fault"
+    bool complete = false;                  // the system's goal was reached
+    StopReason stopped = StopReason::Goal;  // why the run ended
 };
 
 /// Hooks for output while a plan runs; every hook is optional.
@@ -80,7 +80,7 @@ public:
     /// empty and the enabled set follows. Returns the state it held.
     BoxEngine::Value lose(std::int64_t cell);
     /// Ends the run before the next step or round, with `why` as RunStats::stopped.
-    void halt(std::string why) { halt_ = std::move(why); }
+    void halt(StopReason why) { halt_ = why; }
 
 private:
     /// Where the enabled bit of an instance lives in bits_ (its listed bit is in the next word):
@@ -121,7 +121,7 @@ private:
     std::vector<std::pair<int, std::int64_t>> pipelined_;  // transfer shapes that may chain, and the step of each of their cells
     std::int64_t offGoal_ = 0;                             // cells not as the goal wants them
     bool deferred_ = false;                                // options_.admit refused an instance in the current step or round
-    std::string halt_;
+    std::optional<StopReason> halt_;
     RunStats stats_;
 };
 

@@ -114,7 +114,7 @@ void Faults::roundEnd(Execution& execution, const std::function<void(std::int64_
         lost(cell, old);
         events_[k] = "lost " + describe(cell, old) + " " + when;
         broken_ = judge(execution, cell, old, round);
-        if (!broken_.empty()) execution.halt("fault");
+        if (!broken_.empty()) execution.halt(StopReason::Fault);
     }
 }
 

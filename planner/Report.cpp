@@ -98,7 +98,7 @@ void Report::finish(const RunStats& stats, std::int64_t transferLowerBound) {
         cell["waits_on"] = waitingOn(*problem_, *board, i);
         unfinished.push_back(cell);
     }
-    nlohmann::json summary = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", transferLowerBound >= 0 ? nlohmann::json(transferLowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"stopped", stats.stopped}, {"interrupted", stats.stopped == "interrupted"}, {"cells_short_of_goal", shortCount}, {"short_of_goal", unfinished}};
+    nlohmann::json summary = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", transferLowerBound >= 0 ? nlohmann::json(transferLowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"stopped", stopReasonName(stats.stopped)}, {"interrupted", stats.stopped == StopReason::Interrupted}, {"cells_short_of_goal", shortCount}, {"short_of_goal", unfinished}};
     summary.update(extra_);
     attempt([&] { rules::OutputFile(options_.outOption, options_.outDir + "/summary.json").write(summary.dump(2) + '\n'); });
 }

@@ -21,6 +21,9 @@
 
 namespace holon::rules {
 
+/// The memory bound of every job (--memory) unless the user sets one.
+constexpr std::uint64_t kDefaultMemoryBytes = std::uint64_t{16} << 30;
+
 /// Bytes read from any one input file (rule file, configuration, mask, picture, shape).
 constexpr std::size_t kMaxFileBytes = std::size_t(64) << 20;
 /// Bytes of a rule file: its tokens take about 50 bytes per byte of text in the worst case.

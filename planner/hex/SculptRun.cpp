@@ -17,7 +17,7 @@ std::uint64_t sculptBytes(const SculptSetup& setup) {
     return static_cast<std::uint64_t>(HexArray::boardSize(setup.size)) * 96;
 }
 
-SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame, const std::function<bool()>& stop,
+SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame, const Budget& budget,
                        const std::function<void(const HoleSculptor&)>& started) {
     const auto begin = std::chrono::steady_clock::now();
     const HexArray array(setup.size);
@@ -32,7 +32,11 @@ SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const 
     result.series.reserve(setup.steps);
     if (started) started(sculptor);
     int t = 0;
-    for (; t < setup.steps && !(stop && stop()); ++t) {
+    for (; t < setup.steps; ++t) {
+        if (const auto why = budget.reached(Progress{0, static_cast<std::uint64_t>(t), 0})) {
+            result.stopped = *why;
+            break;
+        }
         sculptor.step();
         const SculptSample s{static_cast<float>(sculptor.completeness()), static_cast<float>(sculptor.stability()),
                              static_cast<float>(sculptor.compliance()), static_cast<std::int32_t>(sculptor.holes())};

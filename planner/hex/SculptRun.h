@@ -3,6 +3,7 @@
 // run for a number of timesteps, with the three metrics of §V-A recorded every timestep.
 
 #include "planner/hex/HoleSculptor.h"
+#include "rules/Budget.h"
 
 #include <functional>
 #include <string>
@@ -18,6 +19,7 @@ struct SculptSample {
 struct SculptResult {
     std::int64_t modules = 0, startHoles = 0, endHoles = 0, holeBudget = 0, islands = 0;
     int steps = 0, triRegions = 0;
+    StopReason stopped = StopReason::Finished;  // every timestep made, or the limit that came first
     double maxCompleteness = 0, maxStability = 0, maxCompliance = 0, finalCompliance = 0, seconds = 0;
     SculptCounts counts;
     SculptResidue residue;             // at the end of the run
@@ -36,10 +38,11 @@ struct SculptSetup {
 /// bytes measured at N = 800, counted as 96). Its series takes a SculptSample per timestep more.
 std::uint64_t sculptBytes(const SculptSetup& setup);
 
-/// Runs one experiment. `frame(sculptor)` is called after every timestep (may be empty); `stop`
-/// (may be empty) is asked before each: once it says so the run ends there, result.steps telling
-/// how many timesteps it ran. `started(sculptor)` (may be empty) is called before the first timestep.
-SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame = {}, const std::function<bool()>& stop = {},
+/// Runs one experiment. `frame(sculptor)` is called after every timestep (may be empty); `budget`
+/// is asked before each: once it is spent the run ends there, result.steps telling how many
+/// timesteps it ran and result.stopped why. `started(sculptor)` (may be empty) is called before the
+/// first timestep.
+SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame = {}, const Budget& budget = Budget(),
                        const std::function<void(const HoleSculptor&)>& started = {});
 
 /// An SVG picture of the ensemble: modules, hole cells, and the target's outline points left empty.

@@ -5,6 +5,7 @@
 
 #include "planner/roombots/CollisionClouds.h"
 #include "planner/roombots/Structures.h"
+#include "rules/Budget.h"
 
 #include <cstdint>
 #include <functional>
@@ -52,18 +53,18 @@ struct AssemblyResult {
 
 struct AssemblyOptions {
     int stallSteps = 12;  // K: deadlock when no metamodule came closer to an active seed for K steps
-    /// Asked before every action; once it says so the run stops and assemble() throws
-    /// AssemblyStopped (a --timeout: a run cut short is not a run, so no result is made of it).
-    std::function<bool()> stop;
+    /// Asked before every action; once it is spent the run stops and assemble() throws
+    /// AssemblyStopped (a deadline or a signal: a run cut short is not a run, so no result is made of it).
+    Budget budget;
 };
 
-/// Thrown by assemble() when AssemblyOptions::stop said so.
+/// Thrown by assemble() when AssemblyOptions::budget is spent.
 struct AssemblyStopped {};
 
 /// A seeding order derived from the seeds' cells and the kinematics: each seed, when its turn comes,
 /// can be walked to and filled, and leaves every later seed fillable. The given order if none exists.
-/// `stop` is asked before each candidate seed; once it says so, AssemblyStopped is thrown.
-Recipe automaticRecipe(const CloudTable& table, Coupling coupling, const Setting& setting, const std::function<bool()>& stop = {});
+/// `budget` is asked before each candidate seed; once it is spent, AssemblyStopped is thrown.
+Recipe automaticRecipe(const CloudTable& table, Coupling coupling, const Setting& setting, const Budget& budget = Budget());
 
 /// The seeds no metamodule of this configuration can change shape into, even on an empty floor
 /// (indices into the recipe).

@@ -14,7 +14,7 @@ using detail::CellSet;
 // one a metamodule can walk to and fill now and after which the hardest later seed keeps the most
 // postures it can be filled from (seatings); ties go to the seed farthest from the starts. If no
 // seed leaves every later one fillable, the given order is kept.
-Recipe automaticRecipe(const CloudTable& table, Coupling coupling, const Setting& setting, const std::function<bool()>& stop) {
+Recipe automaticRecipe(const CloudTable& table, Coupling coupling, const Setting& setting, const Budget& budget) {
     detail::Reservation probe(table, coupling, setting);
     const auto& seeds = setting.recipe.seeds;
     double cx = 0, cy = 0;
@@ -28,7 +28,7 @@ Recipe automaticRecipe(const CloudTable& table, Coupling coupling, const Setting
         std::pair<int, double> best{0, 0};  // (seatings of the hardest later seed, distance from the starts)
         for (std::size_t s = 0; s < seeds.size(); ++s) {
             if (done[s]) continue;
-            if (stop && stop()) throw AssemblyStopped{};
+            if (budget.reached()) throw AssemblyStopped{};
             CellSet after = built;
             after.insert(seeds[s].cells.begin(), seeds[s].cells.end());
             int hardest = std::numeric_limits<int>::max();

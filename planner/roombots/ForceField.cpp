@@ -20,7 +20,7 @@ class ForceField : public World {
 public:
     ForceField(const CloudTable& table, Coupling coupling, Strategy strategy, const Setting& setting, const AssemblyOptions& options)
         : World(table, coupling, setting), strategy_(strategy), options_(options), claimed_(setting.recipe.seeds.size()) {
-        stopWhen(options.stop);
+        stopWhen(options.budget);
     }
     AssemblyResult run();
 

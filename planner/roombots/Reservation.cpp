@@ -213,7 +213,7 @@ void Reservation::advance(int i) {
 
 AssemblyResult assembleByReservation(const CloudTable& table, Coupling coupling, const Setting& setting, const AssemblyOptions& options) {
     Reservation r(table, coupling, setting);
-    r.stopWhen(options.stop);
+    r.stopWhen(options.budget);
     return r.run();
 }
 

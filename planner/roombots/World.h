@@ -72,8 +72,8 @@ struct Floor {
 class World {
 public:
     World(const CloudTable& table, Coupling coupling, const Setting& setting);
-    /// The predicate asked before every action (AssemblyOptions::stop); none: never stop.
-    void stopWhen(std::function<bool()> stop) { stop_ = std::move(stop); }
+    /// The budget asked before every action (AssemblyOptions::budget).
+    void stopWhen(const Budget& budget) { budget_ = budget; }
 
 protected:
     static constexpr double kLatchSeconds = 1.0;  // choice: head latches, foot unlatches (§III gives no figure)
@@ -83,9 +83,9 @@ protected:
     /// The seating transition from a standing state into seed s whose cloud avoids `blocked`.
     std::optional<Move> seat(const Cell& foot, int yaw, const Joints& joints, const Seed& s, const CellSet& blocked) const;
     bool done() const;
-    /// Throws AssemblyStopped when the run's stop predicate says so; called before every action.
+    /// Throws AssemblyStopped once the run's budget is spent; called before every action.
     void stopIfAsked() const {
-        if (stop_ && stop_()) throw AssemblyStopped{};
+        if (budget_.reached()) throw AssemblyStopped{};
     }
     /// Starts an action: the body takes its new state at once, and sweeps `cloud` until the end.
     void start(int i, const Move& m, bool seatAction, double fx, double fy);
@@ -106,7 +106,7 @@ protected:
     std::priority_queue<Event, std::vector<Event>, std::greater<>> events_;
     double now_ = 0;
     AssemblyResult result_;
-    std::function<bool()> stop_;
+    Budget budget_;
 };
 
 AssemblyResult assembleByForceField(const CloudTable& table, Coupling coupling, Strategy strategy, const Setting& setting,

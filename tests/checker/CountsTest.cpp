@@ -77,7 +77,7 @@ TEST_CASE("limits stop the search cleanly with a partial report") {
     checker::Limits limits;
     limits.maxStates = 1000;
     auto c = test::checkFrom(rules::librarySystem("planner_intermediate"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###", limits);
-    CHECK(c.report.stats.stopped == checker::StopReason::MaxStates);
+    CHECK(c.report.stats.stopped == StopReason::MaxStates);
     CHECK(c.report.stats.frontier > 0);
     CHECK(c.report.stats.states >= 1000);
     CHECK(c.report.components == -1);
@@ -85,7 +85,7 @@ TEST_CASE("limits stop the search cleanly with a partial report") {
     limits = {};
     limits.timeoutSeconds = 1e-9;
     auto t = test::checkAll(rules::librarySystem("intermediate"), "square:4x3", limits);
-    CHECK(t.report.stats.stopped == checker::StopReason::Timeout);
+    CHECK(t.report.stats.stopped == StopReason::Timeout);
 }
 
 TEST_CASE("a region too large for --all is refused with a message") {

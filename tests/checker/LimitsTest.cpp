@@ -46,7 +46,7 @@ TEST_CASE("a worker that cannot allocate stops the search as a memory limit, on 
         checker::Explorer ex(b.engine, options);
         ex.addInitial(b.start.cells.data());
         const checker::ExploreStats& stats = ex.explore();
-        CHECK(stats.stopped == checker::StopReason::Memory);
+        CHECK(stats.stopped == StopReason::Memory);
         CHECK(stats.states >= 5000);
         CHECK(stats.states < 591161);
         checkConsistent(ex);
@@ -73,7 +73,7 @@ TEST_CASE("--max-states stops within one state's successors of the limit") {
     checker::Explorer ex(b.engine, options);
     ex.addInitial(b.start.cells.data());
     const checker::ExploreStats& stats = ex.explore();
-    CHECK(stats.stopped == checker::StopReason::MaxStates);
+    CHECK(stats.stopped == StopReason::MaxStates);
     CHECK(stats.states >= 1000);
     CHECK(stats.states <= 1000 + b.engine.instances().size());
     checkConsistent(ex);
@@ -97,7 +97,7 @@ TEST_CASE("--memory bounds what the explorer holds, on a region much larger than
         CHECK(stats.bytes <= memory);
         CHECK(stats.states >= 1);
         // 8 MiB holds 100 states and the buffers of two workers (a word per instance); 512 KiB does not.
-        CHECK(stats.stopped == (memory == std::uint64_t{8} << 20 ? checker::StopReason::MaxStates : checker::StopReason::Memory));
+        CHECK(stats.stopped == (memory == std::uint64_t{8} << 20 ? StopReason::MaxStates : StopReason::Memory));
         checkConsistent(ex);
     }
 }

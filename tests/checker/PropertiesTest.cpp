@@ -126,8 +126,8 @@ TEST_CASE("the budget bounds the holonomy check too, not only the exploration") 
     auto c = test::checkAll(rules::librarySystem("pixel"), "square:3x3");
     const auto& ex = *c.kept.explorer;
     const rules::Property& p = *c.world.system.property("holonomy");
-    CHECK(checker::checkHolonomy(ex, checker::components(ex), p, checker::Budget()).verdict == Verdict::Holds);
-    const checker::Budget spent(1e-9);
+    CHECK(checker::checkHolonomy(ex, checker::components(ex), p, Budget()).verdict == Verdict::Holds);
+    const Budget spent(1e-9);
     const auto r = checker::checkHolonomy(ex, checker::components(ex), p, spent);
     CHECK(r.verdict == Verdict::Unknown);
     CHECK(r.summary.find("stopped by the timeout") != std::string::npos);
@@ -368,7 +368,7 @@ TEST_CASE("hex collapse (seed 003 §IV-F): every collapse keeps the mass connect
     // Without the arc test the pieces wander apart and the graph is huge; asked only about
     // invariants, the checker stops once each has its shortest violation.
     auto cut = test::checkFrom(test::parse(text), "hex:r3", blob, "", {}, {"one_mass"});
-    CHECK(cut.report.stats.stopped == checker::StopReason::Decided);
+    CHECK(cut.report.stats.stopped == StopReason::Decided);
     const auto& split = cut.property("one_mass");
     REQUIRE(split.verdict == Verdict::Violated);
     CHECK_FALSE(split.trace->marked.empty());  // the modules cut off

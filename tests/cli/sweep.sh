@@ -10,7 +10,8 @@ set -u
 holon=$1
 root=$(cd "$(dirname "$0")/../.." && pwd)
 L=$root/rules/library B=$root/tests/checker/broken C=$root/tests/cli E=$root/examples X=$root/examples/hex/checker
-limits="--timeout 30"
+# check: 30 s for the whole check; verify: 30 s for each obligation (--timeout would bound the job).
+declare -A limits=([check]="--timeout 30" [verify]="--obligation-timeout 30")
 
 # file | check arguments | check exit | verify arguments | verify exit   (# starts a comment line)
 table="
@@ -73,12 +74,12 @@ while IFS='|' read -r file checkArgs checkExit verifyArgs verifyExit; do
         want=$(echo $want)
         start=$(date +%s.%N)
         # shellcheck disable=SC2086 # the table's arguments are words
-        out=$("$holon" $command "$file" $args $limits 2>&1)
+        out=$("$holon" $command "$file" $args ${limits[$command]} 2>&1)
         got=$?
         seconds=$(echo "$(date +%s.%N) - $start" | bc)
         printf '%-6s %-40s exit %s (want %s) %6.1f s\n' "$command" "$(basename "$file")" "$got" "$want" "$seconds"
         if [ "$got" != "$want" ]; then
-            printf 'MISMATCH: holon %s %s %s %s\n%s\n' "$command" "$file" "$args" "$limits" "$out"
+            printf 'MISMATCH: holon %s %s %s %s\n%s\n' "$command" "$file" "$args" "${limits[$command]}" "$out"
             failed=1
         fi
     done

@@ -34,7 +34,7 @@ Outcome run(int dimension, int index, const std::string& allocator) {
             auto runOn = [](const planner::Problem& problem, const std::string& name) {
                 auto a = planner::makeAllocator(name, problem, 1);
                 planner::RunOptions options;
-                options.seed = 1, options.maxRounds = 100000;
+                options.seed = 1, options.budget = Budget::maxRounds(100000);
                 planner::Execution ex(problem, *a, options);
                 return ex.run();
             };

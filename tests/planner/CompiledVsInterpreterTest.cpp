@@ -80,7 +80,7 @@ int sideBySide(const std::string& stem, int dimension, planner::Scheduler schedu
         }
         auto allocator = planner::makeAllocator("random", problem, static_cast<std::uint64_t>(run));
         planner::RunOptions options;
-        options.scheduler = scheduler, options.seed = static_cast<std::uint64_t>(run), options.maxSteps = 200000;
+        options.scheduler = scheduler, options.seed = static_cast<std::uint64_t>(run), options.budget = Budget::maxSteps(200000);
         planner::Execution ex(problem, *allocator, options);
         SideBySide both(problem);
         both.compare(ex);
@@ -92,7 +92,7 @@ int sideBySide(const std::string& stem, int dimension, planner::Scheduler schedu
         };
         const planner::RunStats stats = ex.run(observer);
         both.compare(ex);
-        INFO(stem << " run " << run << " stopped by " << stats.stopped);
+        INFO(stem << " run " << run << " stopped by " << stopReasonName(stats.stopped));
         CHECK(stats.complete == both.in.atGoal(both.config));
         if (mayDeadlock) {
             // A stuck run must be stuck in the reference semantics too: nothing enabled, goal not reached.

@@ -15,7 +15,7 @@ TEST_CASE("a P cell with an undecided neighbour waits on delete, blocked by that
     const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape("box:8x3"), planner::parseShape("box:3x8"), std::nullopt, 1);
     auto allocator = planner::makeAllocator("random", p, 1);
     planner::RunOptions options;
-    options.maxRounds = 3;
+    options.budget = Budget::maxRounds(3);
     planner::Execution ex(p, *allocator, options);
     ex.run();
     const planner::BoardConfiguration board(p, ex.cells());

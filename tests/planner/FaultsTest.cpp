@@ -23,7 +23,7 @@ Outcome runWithFaults(const planner::Problem& problem, planner::Scheduler schedu
     auto allocator = planner::makeAllocator("random", problem, seed);
     planner::Faults faults(problem, faultOptions);
     planner::RunOptions options;
-    options.scheduler = scheduler, options.seed = seed, options.maxRounds = 50000;
+    options.scheduler = scheduler, options.seed = seed, options.budget = Budget::maxRounds(50000);
     const planner::Execution* running = nullptr;
     options.admit = [&](std::int64_t anchor, int shape) { return faults.admit(*running, anchor, shape); };
     planner::Execution ex(problem, *allocator, options);
@@ -70,7 +70,7 @@ TEST_CASE("after a loss a run goes on only where the planner cannot disconnect, 
                     CAPTURE(dimension);
                     CAPTURE(seed);
                     const Outcome o = runWithFaults(problem, scheduler, seed, faults);
-                    CAPTURE(o.stats.stopped);
+                    CAPTURE(stopReasonName(o.stats.stopped));
                     CAPTURE(o.broken);
                     CHECK_FALSE(o.monitorViolated);
                     if (o.broken.empty()) {
@@ -78,7 +78,7 @@ TEST_CASE("after a loss a run goes on only where the planner cannot disconnect, 
                         CHECK(o.stats.complete);
                         survived += o.lost > 0;
                     } else {
-                        CHECK(o.stats.stopped == "fault");
+                        CHECK(o.stats.stopped == StopReason::Fault);
                         ++broken;
                     }
                 }

@@ -22,7 +22,7 @@ using planner::Vec;
 bool expand(const planner::Problem& problem, planner::hex::DiskMetamodules& disks) {
     auto allocator = planner::makeAllocator("random", problem, 1);
     planner::RunOptions options;
-    options.maxRounds = 200000;
+    options.budget = Budget::maxRounds(200000);
     planner::Execution ex(problem, *allocator, options);
     bool ok = true;
     planner::RunObserver observer;

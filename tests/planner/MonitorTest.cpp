@@ -48,7 +48,7 @@ struct Outcome {
 Outcome watch(const planner::Problem& problem, planner::Scheduler scheduler, std::uint64_t seed) {
     auto allocator = planner::makeAllocator("random", problem, seed);
     planner::RunOptions options;
-    options.scheduler = scheduler, options.seed = seed, options.maxRounds = 20000;
+    options.scheduler = scheduler, options.seed = seed, options.budget = Budget::maxRounds(20000);
     planner::Execution ex(problem, *allocator, options);
     planner::Monitor monitor(problem, ex);
     Outcome o;

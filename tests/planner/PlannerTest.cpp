@@ -16,7 +16,7 @@ planner::RunStats plan(const planner::Problem& problem, planner::Scheduler sched
                        const std::string& allocatorName = "random") {
     auto allocator = planner::makeAllocator(allocatorName, problem, seed);
     planner::RunOptions options;
-    options.scheduler = scheduler, options.seed = seed, options.maxRounds = 200000;  // a regression fails, it does not hang
+    options.scheduler = scheduler, options.seed = seed, options.budget = Budget::maxRounds(200000);  // a regression fails, it does not hang
     planner::Execution ex(problem, *allocator, options);
     planner::Monitor monitor(problem, ex);
     planner::RunObserver observer;
@@ -128,7 +128,7 @@ TEST_CASE("a run where only transfers fire for too long stops as no-progress, it
     options.maxIdleRounds = 1;  // two transfer-only rounds in a row end it
     planner::Execution ex(p, *allocator, options);
     const planner::RunStats stats = ex.run();
-    CHECK(stats.stopped == "no-progress");
+    CHECK(stats.stopped == StopReason::NoProgress);
     CHECK_FALSE(stats.complete);
 }
 

@@ -33,7 +33,7 @@ TEST_CASE("an interrupt stops the run at the next round boundary") {
     auto allocator = planner::makeAllocator("random", p, 1);
     volatile std::sig_atomic_t flag = 0;
     planner::RunOptions options;
-    options.interrupt = &flag;
+    options.budget = Budget::stopFlag(&flag);
     planner::Execution ex(p, *allocator, options);
     planner::RunObserver observer;
     observer.roundEnd = [&](const planner::RunStats& stats) {
@@ -41,7 +41,7 @@ TEST_CASE("an interrupt stops the run at the next round boundary") {
         return true;
     };
     const planner::RunStats stats = ex.run(observer);
-    CHECK(stats.stopped == "interrupted");
+    CHECK(stats.stopped == StopReason::Interrupted);
     CHECK(stats.rounds == 3);
     CHECK_FALSE(stats.complete);
 }
@@ -74,7 +74,7 @@ TEST_CASE("an interrupted plan's files are whole and the summary says so, an aba
     auto allocator = planner::makeAllocator("random", p, 1);
     volatile std::sig_atomic_t flag = 0;
     planner::RunOptions options;
-    options.interrupt = &flag;
+    options.budget = Budget::stopFlag(&flag);
     planner::Execution ex(p, *allocator, options);
     planner::Report report(p, ex, ro);
     planner::RunObserver observer;
@@ -136,7 +136,7 @@ TEST_CASE("a plan that stops short can be diagnosed: its start in the plan, its 
     const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape("box:6x3"), planner::parseShape("box:3x6"), std::nullopt, 1);
     auto allocator = planner::makeAllocator("random", p, 1);
     planner::RunOptions options;
-    options.maxSteps = 30;
+    options.budget = Budget::maxSteps(30);
     planner::Execution ex(p, *allocator, options);
     const std::vector<planner::BoxEngine::Value> start = ex.cells();
     {
