@@ -75,8 +75,8 @@ void ProofRunner::limitTime(smt::Solver& solver, const Budget& budget, double sh
 }
 
 Obligation ProofRunner::solve(const std::string& name, const std::string& kind, smt::Context& ctx, SmtEncoding& enc, const smt::Term& query,
-                 const std::function<void(const smt::Model&, PropertyResult&)>& decode, const std::string& provedText,
-                 double timeoutShare, const std::optional<smt::Term>& earlierLemmas) {
+                              const std::function<void(const smt::Model&, PropertyResult&)>& decode, const std::string& provedText,
+                              double timeoutShare, const std::optional<smt::Term>& earlierLemmas) {
     const auto start = std::chrono::steady_clock::now();
     Obligation o = named(name, kind);
     const SmtEncoding::Lemmas lemmas = enc.instantiate();
@@ -148,8 +148,8 @@ void ProofRunner::recordInputs(const smt::Model& m, smt::Context& ctx, PropertyR
 }
 
 Obligation ProofRunner::stepwise(const std::string& name, const std::string& kind, smt::Context& ctx, SmtEncoding& enc, const smt::Term& base,
-                    const std::function<smt::Term(int)>& perInstance,
-                    const std::function<void(const smt::Model&, int, PropertyResult&)>& decode, const std::string& provedText) {
+                                 const std::function<smt::Term(int)>& perInstance,
+                                 const std::function<void(const smt::Model&, int, PropertyResult&)>& decode, const std::string& provedText) {
     const auto start = std::chrono::steady_clock::now();
     Obligation o = named(name, kind);
     const int count = static_cast<int>(engine_.instances().size());

@@ -58,7 +58,7 @@ struct ProofContext {
 struct BadTarget {
     std::function<smt::Term(SmtEncoding&, const SmtEncoding::State&)> bad;
     std::function<bool(const std::vector<CellValue>&, const rules::Engine&)> isBad;
-    std::string failure;  // "invariant 'safety' fails", "a deadlock outside the goal"
+    std::string failure;   // "invariant 'safety' fails", "a deadlock outside the goal"
     bool atDepth = false;  // --depth checks it too (the invariants); --reach checks every target
 };
 
