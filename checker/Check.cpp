@@ -13,7 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <mutex>
+#include <map>
 #include <optional>
 
 namespace holon::checker {
@@ -130,7 +130,8 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
 
     // Each phase after the exploration starts only within the limits; one that cannot is unknown
     // with the limit to raise.
-    const ExploredGraph graph{model, region, e, *ex, comps, budget, complete};
+    std::map<const rules::Expr*, Stuck> stuck;
+    const ExploredGraph graph{model, region, e, *ex, comps, budget, complete, stuck};
     const rules::Interpreter in(model, region);
     for (const auto& t : types) {
         const auto t0 = Clock::now();

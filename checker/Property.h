@@ -16,6 +16,7 @@
 #include "rules/Interpreter.h"
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,6 +35,13 @@ struct PhaseCost {
 /// The weak components of the whole graph (Graph.h), which check() counts and holonomy reads.
 inline constexpr PhaseCost kComponentsCost{16, 0};
 
+/// The terminal states outside the goal (and where an assumption holds), split into deadlocks and
+/// edge effects of the bounded region (checker/properties/Progress.cpp).
+struct Stuck {
+    std::vector<StateId> deadlocks, edgeEffects;
+    std::uint64_t unclassified = 0;
+};
+
 /// What an explicit-state check reads: the explored graph and whether it is whole.
 struct ExploredGraph {
     const rules::Model& model;
@@ -43,6 +51,9 @@ struct ExploredGraph {
     const Components& components;  // weak components of the whole graph; empty when not computed
     const Budget& budget;
     bool complete;  // the search finished: every reachable state is in the graph
+    /// Stuck states by progress assumption (none: deadlock freedom), classified once for every
+    /// property that judges them.
+    std::map<const rules::Expr*, Stuck>& stuck;
 };
 
 /// What an obligation is proved with: the runner (solver, SMT-LIB2 export), the obligation's

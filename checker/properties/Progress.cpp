@@ -30,11 +30,6 @@ int ruleReach(const rules::Model& model) {
 /// inputs false) some instance is enabled, so only the region's bound stops the system, not the
 /// design. At most kClassified states are tried on the grown region, within the budget; the rest
 /// stay unclassified (never called deadlocks: an edge effect reported as a flaw is a wrong answer).
-struct Stuck {
-    std::vector<StateId> deadlocks, edgeEffects;
-    std::uint64_t unclassified = 0;
-};
-
 Stuck stuckStates(const Explorer& ex, const rules::Engine& e, const rules::Expr* assume, const Budget& budget) {
     constexpr std::size_t kClassified = 10'000;
     const rules::Model& model = e.model();
@@ -128,8 +123,9 @@ public:
 
     PropertyResult check(const ExploredGraph& g) const override {
         PropertyResult r = named();
-        judgeStuck(r, g.explorer, stuckStates(g.explorer, g.engine, assumption_, g.budget), g.complete, words_.which, words_.description,
-                   words_.countKey, words_.holds);
+        auto known = g.stuck.find(assumption_);
+        if (known == g.stuck.end()) known = g.stuck.emplace(assumption_, stuckStates(g.explorer, g.engine, assumption_, g.budget)).first;
+        judgeStuck(r, g.explorer, known->second, g.complete, words_.which, words_.description, words_.countKey, words_.holds);
         return r;
     }
 
