@@ -44,8 +44,10 @@ struct Exploration {
     std::unique_ptr<Explorer> explorer;
 };
 
-/// Runs the exploration and every selected property. Throws InputError for bad input (an unknown
-/// property, an illegal initial configuration).
+/// Runs the exploration and every selected property. Every trace returned has been replayed
+/// through the reference interpreter (its result's `confirmation`, witness["replayed"]): one that
+/// does not replay is a bug in holon. Throws InputError for bad input (an unknown property, an
+/// illegal initial configuration).
 CheckReport check(const rules::Model& model, const rules::Region& region, const CheckOptions& options, Exploration* keep = nullptr);
 
 }  // namespace holon::checker

@@ -42,13 +42,10 @@ struct VerifyReport {
     nlohmann::json toJson() const;
 };
 
-/// Checks a counterexample with the reference interpreter: a trace replays step by step; a
-/// progress witness is legal, outside the goal, with nothing enabled; a holonomy witness is two legal
-/// configurations no single step connects.
-bool confirmCounterexample(const PropertyResult& r, const rules::Model& model, const rules::Region& region, std::string* why = nullptr);
-
-/// Builds and discharges every obligation of the system's properties on the region. Counterexample
-/// traces are decoded from the model and replayed through the reference interpreter by the caller.
+/// Builds and discharges every obligation of the system's properties on the region. Every
+/// counterexample is decoded from the model and confirmed by the reference interpreter (its
+/// result's `confirmation`, witness["confirmed"]; checker/Property.h says what each kind's claims):
+/// one not confirmed is a bug in holon.
 /// The smtOut folder is created (or checked) first, before any work; it and every file written
 /// into it throw InputError with the reason when they cannot be written.
 VerifyReport verify(const rules::Model& model, const rules::Region& region, const VerifyOptions& options,

@@ -114,4 +114,16 @@ std::string nameFailingConjunct(PropertyResult& r, const rules::Property& invari
     return which;
 }
 
+nlohmann::json traceJson(const Trace& trace, const rules::Engine& engine, const rules::Interpreter& in) {
+    nlohmann::json states = nlohmann::json::array();
+    for (const Trace::Step& step : trace.steps) {
+        nlohmann::json state = {{"configuration", rules::configToJson(in, {step.cells, engine.inputs()})}};
+        if (step.placed >= 0) state["rule"] = engine.model().rules()[engine.instances()[step.placed].rule].name;
+        states.push_back(std::move(state));
+    }
+    nlohmann::json j = {{"states", states}};
+    if (trace.loop) j["loop"] = *trace.loop;
+    return j;
+}
+
 }  // namespace holon::checker

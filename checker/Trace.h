@@ -39,6 +39,8 @@ Trace traceAlong(const Explorer& explorer, const std::vector<StateId>& states);
 /// the instance's cells in pattern order; the last state's "#meta" also has "marked" when the trace marks cells;
 /// a system with inputs also has the variable "inputs", the engine's, by name: {"target": {"#set": [...]}}.
 nlohmann::json toItf(const Trace& trace, const rules::Engine& engine, const std::string& source);
+/// A trace as configurations, for --json: each state with the rule that led to it.
+nlohmann::json traceJson(const Trace& trace, const rules::Engine& engine, const rules::Interpreter& in);
 /// Replays every step through the reference interpreter: true when each step is an enabled instance
 /// whose successor is exactly the next state (and the first state is legal).
 bool replay(const Trace& trace, const rules::Engine& engine, const rules::Interpreter& in, std::string* why = nullptr);

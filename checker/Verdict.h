@@ -43,6 +43,13 @@ inline std::string exceptText(const rules::Property& ranking) {
     return names.empty() ? "" : ", and every step of " + names + " keeps it";
 }
 
+/// The reference interpreter's judgement of a counterexample (checker/Property.h): its trace
+/// replays, and it has what it claims. One that is not confirmed is a bug in holon.
+struct Confirmation {
+    bool confirmed = false;
+    std::string why;  // what failed, when not confirmed
+};
+
 struct PropertyResult {
     std::string name, kind;
     Verdict verdict = Verdict::Unknown;
@@ -53,6 +60,9 @@ struct PropertyResult {
     /// Per cell, the input bits (bit k: input k) the evidence holds under, where the check chose
     /// them (verify's solver, over every input value or the given ones); unset: the problem's.
     std::optional<std::vector<std::uint32_t>> inputs;
+    /// Set by check() and verify() on every counterexample they return.
+    std::optional<Confirmation> confirmation;
+    bool confirmed() const { return confirmation && confirmation->confirmed; }
 };
 
 /// For an invariant false in `last`: names the first conjunct that is false (in r.witness["conjunct"]

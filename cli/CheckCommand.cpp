@@ -1,6 +1,7 @@
 // `holon check FILE --region SPEC [--all | --from CONFIG]`: explore the reconfiguration graph on a
 // bounded region and report each property with a verdict and evidence; a violation comes with a
-// shortest counterexample trace, replayed through the reference interpreter before it is shown.
+// shortest counterexample trace, replayed through the reference interpreter (by checker::check) before
+// it is shown.
 
 #include "checker/Check.h"
 #include "checker/ComponentTable.h"
@@ -121,24 +122,19 @@ int run(const CheckArgs& a) {
         };
     checker::Exploration kept;
     const rules::StopSignals guard(true);  // a signal stops the exploration: the report so far, 128 + the signal
-    checker::CheckReport report = checker::check(model, region, options, &kept);
+    const checker::CheckReport report = checker::check(model, region, options, &kept);
     if (terminal) std::cerr << "\r" << std::string(90, ' ') << "\r";
     const rules::Engine& engine = *kept.engine;
 
-    // Every trace is replayed through the reference interpreter before anyone sees it; one that
-    // does not replay is a bug in holon, shown for the report and said by the exit code.
+    // check() replays every trace through the reference interpreter; one that does not replay is
+    // a bug in holon, shown for the report and said by the exit code.
     bool unreplayed = false;
     std::vector<const checker::PropertyResult*> violated;
-    for (checker::PropertyResult& p : report.properties) {
+    for (const checker::PropertyResult& p : report.properties) {
         if (!p.trace) continue;
-        std::string why;
-        const bool ok = checker::replay(*p.trace, engine, in, &why);
-        if (!p.witness.is_object()) p.witness = nlohmann::json::object();
-        p.witness["replayed"] = ok;
-        p.witness["trace"] = traceJson(*p.trace, engine, in);
-        if (!ok) {
+        if (!p.confirmed()) {
             unreplayed = true;
-            std::cerr << "holon check: internal error: the trace for '" << p.name << "' does not replay: " << why
+            std::cerr << "holon check: internal error: the trace for '" << p.name << "' does not replay: " << p.confirmation.value_or(checker::Confirmation{}).why
                       << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
         }
         if (p.verdict == checker::Verdict::Violated) violated.push_back(&p);
@@ -198,7 +194,7 @@ int run(const CheckArgs& a) {
                   << (std::to_string(static_cast<int>(p.seconds * 1000)) + " ms ") << p.summary << '\n';
     for (const checker::PropertyResult* p : violated)
         std::cout << "\ncounterexample for '" << p->name << "'" << (p->trace->description.empty() ? "" : ": " + p->trace->description)
-                  << (p->witness["replayed"] == true ? " (replayed through the reference interpreter)" : " (NOT confirmed by the reference interpreter)") << '\n'
+                  << (p->confirmed() ? " (replayed through the reference interpreter)" : " (NOT confirmed by the reference interpreter)") << '\n'
                   << checker::drawTraceAscii(*p->trace, engine);
     if (violated.size() > 1 && !written.empty()) {
         std::cout << "\ntraces written:";

@@ -87,18 +87,6 @@ std::string pathFor(const std::string& path, const std::string& property, bool s
     return dot == std::string::npos ? path + "." + property : path.substr(0, dot) + "." + property + path.substr(dot);
 }
 
-nlohmann::json traceJson(const checker::Trace& trace, const rules::Engine& engine, const rules::Interpreter& in) {
-    nlohmann::json states = nlohmann::json::array();
-    for (const checker::Trace::Step& step : trace.steps) {
-        nlohmann::json state = {{"configuration", rules::configToJson(in, {step.cells, engine.inputs()})}};
-        if (step.placed >= 0) state["rule"] = engine.model().rules()[engine.instances()[step.placed].rule].name;
-        states.push_back(std::move(state));
-    }
-    nlohmann::json j = {{"states", states}};
-    if (trace.loop) j["loop"] = *trace.loop;
-    return j;
-}
-
 namespace {
 
 std::string missingInput(const rules::System& system, int k, const std::string& where) {

@@ -38,8 +38,6 @@ std::string namedInFile(const std::string& path, const std::string& key);
 /// Where the trace of one of several violated properties goes: "out/t.itf.json" becomes
 /// "out/t.safety.itf.json"; with one violated property, the path as given.
 std::string pathFor(const std::string& path, const std::string& property, bool several);
-/// A trace as configurations, for --json: each state with the rule that led to it.
-nlohmann::json traceJson(const checker::Trace& trace, const rules::Engine& engine, const rules::Interpreter& in);
 
 /// The start configurations of --from, each with the inputs of `inputSpecs` (--input) added, every
 /// declared input set by one or the other (an input left out is not silently false everywhere), and

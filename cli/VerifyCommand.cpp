@@ -1,6 +1,6 @@
 // `holon verify FILE --region SPEC`: prove a system's properties for every configuration of a
-// bounded region with Z3, print a table of obligations, and confirm each counterexample with the
-// reference interpreter before showing it.
+// bounded region with Z3, print a table of obligations, and show each counterexample, confirmed by
+// the reference interpreter (in checker::verify).
 
 #include "checker/Draw.h"
 #include "checker/Obligations.h"
@@ -29,6 +29,9 @@ struct VerifyArgs {
     std::uint64_t memoryMiB = kDefaultMemoryMiB;
     bool json = false, reach = false, everySize = false;
 };
+
+/// What the reference interpreter found wrong with a counterexample.
+std::string whyNot(const checker::PropertyResult& r) { return r.confirmation ? r.confirmation->why : "it was not checked"; }
 
 int run(const VerifyArgs& a) {
     const Budget budget(a.timeout);  // from the start: loading and encoding count
@@ -64,55 +67,42 @@ int run(const VerifyArgs& a) {
         throw InputError("--input sets the inputs of --from configurations; without --from, verify proves for every input value");
     if (!a.from.empty()) options.initial = readStarts(in, a.from, a.inputs);
     const bool terminal = isatty(2) && !a.json;
-    auto report = checker::verify(model, region, options, [&](const std::string& name) {
+    const auto report = checker::verify(model, region, options, [&](const std::string& name) {
         if (terminal) std::cerr << "\r  proving " << name << "...                    " << std::flush;
     });
     if (terminal) std::cerr << "\r" << std::string(60, ' ') << "\r";
 
-    // Every counterexample is confirmed by the reference interpreter under the inputs it uses. One
-    // that is not is a bug in holon: it is shown for the report, and the exit code says so.
-    struct Shown {
-        checker::PropertyResult* result;
-        bool confirmed;
-        std::string why;
-    };
-    std::vector<Shown> shown;
+    // verify() confirms every counterexample with the reference interpreter under the inputs it
+    // uses. One that is not confirmed is a bug in holon: it is shown for the report, and the exit
+    // code says so.
+    std::vector<const checker::PropertyResult*> shown;
     bool unconfirmed = false;
-    for (auto& o : report.obligations) {
+    for (const auto& o : report.obligations) {
         if (o.result.verdict != checker::Verdict::Violated) continue;
-        std::string why;
-        const bool ok = checker::confirmCounterexample(o.result, model, region, &why);
-        o.result.witness["confirmed"] = ok;
-        if (!ok) {
+        if (!o.result.confirmed()) {
             unconfirmed = true;
-            std::cerr << "holon verify: internal error: the counterexample for '" << o.result.name << "' is not confirmed: " << why
+            std::cerr << "holon verify: internal error: the counterexample for '" << o.result.name << "' is not confirmed: " << whyNot(o.result)
                       << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
         }
-        // An invariant's counterexample names the conjunct that is false in its last state.
-        const rules::Property* property = system->property(o.result.name.substr(0, o.result.name.find('@')));
-        if (ok && o.result.trace && property && property->kind == rules::Property::Kind::Invariant)
-            checker::nameFailingConjunct(o.result, *property, in,
-                                         {o.result.trace->steps.back().cells, o.result.inputs.value_or(std::vector<std::uint32_t>(region.size(), 0))});
-        shown.push_back({&o.result, ok, why});
+        shown.push_back(&o.result);
     }
     // A path from --from (NAME@bmcK, NAME@reach) is reachable: those come first.
-    std::stable_partition(shown.begin(), shown.end(), [](const Shown& s) { return s.result->kind == "bmc" || s.result->kind == "reach"; });
+    std::stable_partition(shown.begin(), shown.end(), [](const checker::PropertyResult* r) { return r->kind == "bmc" || r->kind == "reach"; });
     const std::vector<std::uint32_t> noInputs(region.size(), 0);
     auto drawingFor = [&](const checker::PropertyResult& r) { return rules::Engine(model, region, r.inputs.value_or(noInputs)); };
     std::vector<std::string> written;
-    for (const Shown& s : shown) {
-        if (!s.result->trace) continue;
-        const rules::Engine drawing = drawingFor(*s.result);
-        s.result->witness["trace"] = traceJson(*s.result->trace, drawing, in);
+    for (const checker::PropertyResult* r : shown) {
+        if (!r->trace) continue;
+        const rules::Engine drawing = drawingFor(*r);
         const bool several = shown.size() > 1;
         if (traceOut) {
-            const rules::OutputFile file("--trace-out", pathFor(traceOut->path(), s.result->name, several));
-            file.write(checker::toItf(*s.result->trace, drawing, a.file).dump(2) + "\n");
+            const rules::OutputFile file("--trace-out", pathFor(traceOut->path(), r->name, several));
+            file.write(checker::toItf(*r->trace, drawing, a.file).dump(2) + "\n");
             written.push_back(file.path());
         }
         if (svgOut) {
-            const rules::OutputFile file("--svg", pathFor(svgOut->path(), s.result->name, several));
-            file.write(checker::drawTraceSvg(*s.result->trace, drawing, system->name + " on " + region.spec() + ": " + s.result->name + " -- " + s.result->trace->description));
+            const rules::OutputFile file("--svg", pathFor(svgOut->path(), r->name, several));
+            file.write(checker::drawTraceSvg(*r->trace, drawing, system->name + " on " + region.spec() + ": " + r->name + " -- " + r->trace->description));
             written.push_back(file.path());
         }
     }
@@ -138,15 +128,15 @@ int run(const VerifyArgs& a) {
         for (std::size_t k = 0; k < shown; ++k) std::cout << "  " << clauses[k].get<std::string>() << '\n';
         if (shown < clauses.size()) std::cout << "  ... " << clauses.size() - shown << " more (--json prints all)\n";
     }
-    for (const Shown& s : shown) {
-        if (!s.result->trace) continue;
-        std::cout << "\ncounterexample for '" << s.result->name << "' "
-                  << (s.confirmed ? "(confirmed by the reference interpreter)" : "(NOT confirmed by the reference interpreter: " + s.why + ")") << '\n';
+    for (const checker::PropertyResult* r : shown) {
+        if (!r->trace) continue;
+        std::cout << "\ncounterexample for '" << r->name << "' "
+                  << (r->confirmed() ? "(confirmed by the reference interpreter)" : "(NOT confirmed by the reference interpreter: " + whyNot(*r) + ")") << '\n';
         for (const auto& o : report.obligations)
-            if (o.result.name == s.result->name + "@reach" && o.result.verdict == checker::Verdict::Holds && !options.initial.empty() &&
-                s.result->inputs.value_or(noInputs) == options.initial.front().inputs)
+            if (o.result.name == r->name + "@reach" && o.result.verdict == checker::Verdict::Holds && !options.initial.empty() &&
+                r->inputs.value_or(noInputs) == options.initial.front().inputs)
                 std::cout << "(no run from the given start reaches it: '" << o.result.name << "' is proved)\n";
-        std::cout << checker::drawTraceAscii(*s.result->trace, drawingFor(*s.result));  // with one mask per input
+        std::cout << checker::drawTraceAscii(*r->trace, drawingFor(*r));  // with one mask per input
     }
     if (shown.size() > 1 && !written.empty()) {
         std::cout << "\ntraces written:";

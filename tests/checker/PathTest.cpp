@@ -218,7 +218,7 @@ TEST_CASE("a path search stopped by a limit is undecided, not unreachable") {
         query.limits.maxStates = 20;
         const auto stopped = checker::shortestPath(engine, query);
         CHECK(stopped.outcome == checker::PathOutcome::Undecided);
-        CHECK(stopped.stats.stopped == checker::StopReason::MaxStates);
+        CHECK(stopped.stats.stopped == StopReason::MaxStates);
         query.limits.maxStates = 1'000'000;
         const auto found = checker::shortestPath(engine, query);
         REQUIRE(found.outcome == checker::PathOutcome::Found);

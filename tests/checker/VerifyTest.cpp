@@ -146,7 +146,7 @@ TEST_CASE("the planner over general1: Progress proved on square:4x3, and refuted
     const auto r = prove(unbounded, {"progress"});
     const auto& stuck = result(r, "progress");
     REQUIRE(stuck.verdict == Verdict::Violated);
-    CHECK(checker::confirmCounterexample(stuck, *unbounded.model, unbounded.region));
+    CHECK(stuck.confirmed());
 }
 
 TEST_CASE("a ranking with excepted rules: transfers must keep it, the planner's own steps decrease it") {
@@ -176,7 +176,7 @@ TEST_CASE("a ranking with excepted rules: transfers must keep it, the planner's 
         }
         REQUIRE(proof.verdict == Verdict::Violated);
         CHECK(proof.witness["rule"].get<std::string>().rfind(k.rule, 0) == 0);
-        CHECK(checker::confirmCounterexample(proof, *w.model, w.region));
+        CHECK(proof.confirmed());
         CHECK(check.verdict == Verdict::Violated);
         explored.replayAll();
     }
@@ -198,7 +198,7 @@ invariant joined: reaches(U, nbr, F)
         const auto report = prove(w);
         const auto& v = result(report, "joined");
         CHECK(v.verdict == (guarded ? Verdict::Holds : Verdict::Violated));
-        if (!guarded) CHECK(checker::confirmCounterexample(v, *w.model, w.region));
+        if (!guarded) CHECK(v.confirmed());
         CHECK(explorerFindsInductivenessBreak(w, w.system.property("joined")->exprs[0], {}) == !guarded);
     }
 }
@@ -216,8 +216,7 @@ TEST_CASE("deletion without its guard: Safety is refuted, confirmed, and the exp
     auto r = prove(w, {"safety"});
     const auto& s = result(r, "safety");
     REQUIRE(s.verdict == Verdict::Violated);
-    std::string why;
-    CHECK(checker::confirmCounterexample(s, *w.model, w.region, &why));
+    CHECK(s.confirmed());
     REQUIRE(s.inputs);
     const auto inputs = *s.inputs;
     CHECK(s.witness["inputs"].contains("target"));  // by name, as a configuration's JSON writes them
@@ -240,7 +239,7 @@ TEST_CASE("mass conservation: proved for general_n, refuted for the leaky create
     REQUIRE(m.verdict == Verdict::Violated);
     const std::string rule = m.witness["rule"].get<std::string>();
     CHECK((rule == "create" || rule == "destroy"));  // both directions of the leaky rule change the mass
-    CHECK(checker::confirmCounterexample(m, *leaky.model, leaky.region));
+    CHECK(m.confirmed());
     CHECK(test::checkAll(broken("general1_leaky"), "square:3x2").property("mass_conservation").verdict == Verdict::Violated);
 }
 
@@ -254,10 +253,7 @@ TEST_CASE("progress under non-local constraints: a rule enables only into a lega
     const auto r = prove(blocking, {"progress"});
     const auto& stuck = result(r, "progress");
     REQUIRE(stuck.verdict == Verdict::Violated);
-    std::string why;
-    const bool confirmed = checker::confirmCounterexample(stuck, *blocking.model, blocking.region, &why);
-    CAPTURE(why);
-    CHECK(confirmed);
+    CHECK(stuck.confirmed());
 }
 
 TEST_CASE("holonomy means one thing: verify and check give the same verdict, and verify's witness is a path") {
@@ -275,9 +271,7 @@ TEST_CASE("holonomy means one thing: verify and check give the same verdict, and
     const auto r = prove(pivot);
     const auto& h = result(r, "holonomy");
     REQUIRE(h.verdict == Verdict::Violated);
-    std::string why;
-    CHECK(checker::confirmCounterexample(h, *pivot.model, pivot.region, &why));
-    CAPTURE(why);
+    CHECK(h.confirmed());
     CHECK(h.trace->steps.size() >= 3);
     CHECK(h.witness["distance"].get<std::size_t>() + 1 == h.trace->steps.size());
     int modules = 0;
@@ -305,7 +299,7 @@ TEST_CASE("bounded model checking finds the same shortest violation as the explo
     const auto& bmc = result(r, "safety@bmc4");
     REQUIRE(bmc.verdict == Verdict::Violated);
     CHECK(bmc.trace->steps.size() == 4);
-    CHECK(checker::confirmCounterexample(bmc, *w.model, w.region));
+    CHECK(bmc.confirmed());
 }
 
 TEST_CASE("a path that needs an input: --depth and --reach traces carry the solver's inputs and are confirmed") {
@@ -330,9 +324,7 @@ TEST_CASE("a path that needs an input: --depth and --reach traces carry the solv
         CHECK(w.model->rules()[e.instances()[path.trace->steps[1].placed].rule].name == "finalize");
         REQUIRE(path.inputs);
         CHECK(*path.inputs == start.inputs);
-        std::string why;
-        CHECK(checker::confirmCounterexample(path, *w.model, w.region, &why));
-        CAPTURE(why);
+        CHECK(path.confirmed());
         // The ITF trace carries them too, in every state.
         const auto itf = checker::toItf(*path.trace, rules::Engine(*w.model, w.region, *path.inputs), "planner_no_guard.holon");
         CHECK(itf["vars"].size() == 2);
@@ -388,7 +380,7 @@ TEST_CASE("Spacer proves general2's Progress for every reachable state, which no
     auto r = checker::verify(*w.model, w.region, o);
     const auto& stuck = result(r, "progress");
     REQUIRE(stuck.verdict == Verdict::Violated);
-    CHECK(checker::confirmCounterexample(stuck, *w.model, w.region));
+    CHECK(stuck.confirmed());
     const auto& reached = result(r, "progress@reach");
     REQUIRE(reached.verdict == Verdict::Holds);
     CHECK_FALSE(reached.witness["inductive_invariant"].empty());
@@ -430,7 +422,7 @@ TEST_CASE("a reachable violation: Spacer refutes, deepening BMC gives a trace as
     auto r = checker::verify(*w.model, w.region, o);
     const auto& s = result(r, "safety@reach");
     REQUIRE(s.verdict == Verdict::Violated);
-    CHECK(checker::confirmCounterexample(s, *w.model, w.region));
+    CHECK(s.confirmed());
     auto c = test::checkFrom(broken("planner_no_guard"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###", {}, {"safety"});
     REQUIRE(c.property("safety").verdict == Verdict::Violated);
     CHECK(s.trace->steps.size() == c.property("safety").trace->steps.size());

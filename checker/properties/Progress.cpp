@@ -1,0 +1,196 @@
+// Progress and deadlock freedom (seed 000 §II, Lemma 2): outside the goal (and where a progress
+// property's assumption holds) some rule is enabled. Deadlock freedom is progress with no
+// assumption, built in for every system with a goal; one type checks, proves and confirms both,
+// differing only in their words. Explicit state: the terminal states of the explored graph,
+// each tried on the region grown by the rules' reach so that a state stuck only because the
+// region ends (an edge effect) is not called a deadlock. Proof: a state where every invariant
+// holds, outside the goal, with no instance enabled; the same stuck states are what --reach shows
+// unreachable. A proved counterexample is confirmed as a legal stuck state outside the goal.
+
+#include "checker/ProofRunner.h"
+#include "checker/properties/Kinds.h"
+
+#include <algorithm>
+
+namespace holon::checker::properties {
+
+namespace {
+
+/// How far a rule instance reaches, in lattice steps: the largest pattern, twice its radius (an
+/// instance touching the region lies within this of it).
+int ruleReach(const rules::Model& model) {
+    int radius = 0;
+    for (const rules::RuleShape& s : model.shapes())
+        for (rules::Vec v : s.offsets) radius = std::max(radius, std::abs(v.x) + std::abs(v.y) + std::abs(v.z));
+    return std::max(1, 2 * radius);
+}
+
+/// States with no enabled rule, outside the goal and where `assume` holds, split into deadlocks and
+/// edge effects of the bounded region: on the region grown by the rules' reach (outside cells empty,
+/// inputs false) some instance is enabled, so only the region's bound stops the system, not the
+/// design. At most kClassified states are tried on the grown region, within the budget; the rest
+/// stay unclassified (never called deadlocks: an edge effect reported as a flaw is a wrong answer).
+Stuck stuckStates(const Explorer& ex, const rules::Engine& e, const rules::Expr* assume, const Budget& budget) {
+    constexpr std::size_t kClassified = 10'000;
+    const rules::Model& model = e.model();
+    const rules::Region& region = e.region();
+    const rules::Region grown = region.grown(ruleReach(model));
+    const rules::Interpreter wide(model, grown);
+    Stuck out;
+    std::size_t tried = 0;
+    for (StateId s : ex.terminal()) {
+        const auto cells = ex.cells(s);
+        if (model.system().goal && e.holds(*model.system().goal, cells.data())) continue;
+        if (assume && !e.holds(*assume, cells.data())) continue;
+        if (tried++ >= kClassified || budget.expired()) {
+            ++out.unclassified;
+            continue;
+        }
+        rules::Configuration c = wide.empty();
+        std::copy(cells.begin(), cells.end(), c.cells.begin());
+        std::copy(e.inputs().begin(), e.inputs().end(), c.inputs.begin());
+        (wide.enabled(c).empty() ? out.deadlocks : out.edgeEffects).push_back(s);
+    }
+    return out;
+}
+
+/// What a verdict adds about edge effects: ", except 3 states stuck only at the region's edge ...".
+std::string edgeText(const Stuck& stuck) {
+    if (stuck.edgeEffects.empty()) return "";
+    return "; " + std::to_string(stuck.edgeEffects.size()) + " states are stuck only at the region's edge (a rule instance needs cells outside it)";
+}
+
+/// A property decided by stuck states: violated by a deadlock (the nearest has a trace), else
+/// unknown while the search or the classification is incomplete, else holds.
+void judgeStuck(PropertyResult& r, const Explorer& ex, const Stuck& stuck, bool complete, const std::string& which,
+                const std::string& description, const char* countKey, const std::string& holdsText) {
+    r.witness = nullptr;
+    if (!violatedAtNearest(
+            r, ex, stuck.deadlocks, [](StateId) { return true; }, which, description, countKey)) {
+        r.verdict = complete && stuck.unclassified == 0 ? Verdict::Holds : Verdict::Unknown;
+        r.summary = !complete            ? "no violation among the " + std::to_string(ex.stats().states) + " states explored before the limit"
+                    : stuck.unclassified ? std::to_string(stuck.unclassified) + " stuck states not classified (deadlock or edge effect) within the limits"
+                                         : holdsText;
+        r.summary += edgeText(stuck);
+    }
+    r.witness["edge_effects"] = stuck.edgeEffects.size();
+    r.witness["unclassified"] = stuck.unclassified;
+}
+
+/// Progress fails at s (Lemma 2): outside the goal, under the property's assumption, and no
+/// instance is enabled. With non-local constraints s is legal and an instance is enabled only if
+/// its successor is legal too (seed 000 §II-C): each one fails to match or leads to an illegal
+/// configuration (its successor written over s's variables, no new ones).
+smt::Term stuck(SmtEncoding& enc, const SmtEncoding::State& s, const rules::Engine& e, const rules::Expr* assumption) {
+    const rules::System& system = e.model().system();
+    smt::Term q = system.goal ? !enc.holds(*system.goal, s, false) : s.is[0][0].context().boolVal(true);
+    if (assumption) q = q && enc.holds(*assumption, s, true);
+    const bool constrained = !system.constraints.empty();
+    if (constrained) q = q && enc.legal(s);
+    for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed)
+        q = q && (constrained ? !(enc.matches(placed, s) && enc.legal(enc.successor(placed, s), false)) : !enc.matches(placed, s));
+    enc.leftSideSets(s);
+    return q;
+}
+
+/// The concrete test of the same.
+bool stuckAt(const std::vector<CellValue>& c, const rules::Engine& e, const rules::Expr* assumption) {
+    const rules::System& system = e.model().system();
+    if (system.goal && e.holds(*system.goal, c.data())) return false;
+    if (assumption && !e.holds(*assumption, c.data())) return false;
+    std::vector<CellValue> next;
+    for (int placed = 0; placed < static_cast<int>(e.instances().size()); ++placed) {
+        if (!e.matches(c.data(), placed)) continue;
+        CellValue saved[rules::Engine::kMaxCells];
+        next = c;
+        e.apply(next.data(), placed, saved);
+        if (e.legal(next.data())) return false;
+    }
+    return true;
+}
+
+/// How a verdict of progress or of deadlock freedom reads.
+struct Words {
+    std::string which, description;
+    const char* countKey;
+    std::string holds;
+};
+
+class Progress : public PropertyType {
+public:
+    Progress(std::string name, std::string kind, const rules::Expr* assumption, Words words)
+        : PropertyType(std::move(name), std::move(kind)), assumption_(assumption), words_(std::move(words)) {}
+
+    PropertyResult check(const ExploredGraph& g) const override {
+        PropertyResult r = named();
+        auto known = g.stuck.find(assumption_);
+        if (known == g.stuck.end()) known = g.stuck.emplace(assumption_, stuckStates(g.explorer, g.engine, assumption_, g.budget)).first;
+        judgeStuck(r, g.explorer, known->second, g.complete, words_.which, words_.description, words_.countKey, words_.holds);
+        return r;
+    }
+
+    Obligation prove(const ProofContext& proof) const override {
+        ProofRunner& run = proof.run;
+        const rules::Engine& e = run.engine();
+        const rules::System& system = e.model().system();
+        smt::Context ctx(proof.budget);
+        SmtEncoding enc(ctx, e, SmtEncoding::Use::Queries, proof.budget);
+        auto c = enc.state("c");
+        smt::Term q = stuck(enc, c, e, assumption_);
+        for (const rules::Property* inv : proof.invariants) q = q && enc.holds(inv->exprs[0], c, true);
+        auto decode = [&](const smt::Model& m, PropertyResult& r) {
+            Trace t;
+            t.steps.push_back({enc.decode(m, c), -1});
+            t.description = "every invariant holds, the goal is not reached, and no rule is enabled" +
+                            std::string(system.constraints.empty() ? "" : " (or each leads to an illegal configuration)");
+            r.trace = t;
+            r.summary = t.description;
+            r.witness = nlohmann::json::object();
+        };
+        return run.solve(name(), kind(), ctx, enc, q, decode, "outside the goal, some rule is enabled wherever the invariants hold");
+    }
+
+    std::optional<BadTarget> target(const rules::Engine& e) const override {
+        const rules::Expr* assumption = assumption_;
+        return BadTarget{[assumption, &e](SmtEncoding& enc, const SmtEncoding::State& s) { return stuck(enc, s, e, assumption); },
+                         [assumption](const std::vector<CellValue>& c, const rules::Engine& en) { return stuckAt(c, en, assumption); },
+                         "a deadlock outside the goal"};
+    }
+
+    /// A proved counterexample is one state: legal, outside the goal, with nothing enabled.
+    bool confirm(const PropertyResult& r, Evidence evidence, const rules::Interpreter& in, const rules::Engine& engine, std::string* why) const override {
+        if (evidence == Evidence::Path) return PropertyType::confirm(r, evidence, in, engine, why);
+        auto fail = [&](const std::string& m) {
+            if (why) *why = m;
+            return false;
+        };
+        if (!r.trace || r.trace->steps.empty()) return fail("the counterexample has no trace");
+        rules::Configuration c = in.empty();
+        c.inputs = engine.inputs();
+        c.cells = r.trace->steps.front().cells;
+        if (!in.legal(c)) return fail("the state is not legal");
+        if (in.atGoal(c)) return fail("the state is a goal");
+        if (!in.enabled(c).empty()) return fail("a rule is enabled");
+        return true;
+    }
+
+private:
+    const rules::Expr* assumption_;  // none: deadlock freedom
+    Words words_;
+};
+
+}  // namespace
+
+std::unique_ptr<PropertyType> progress(const rules::Property& p) {
+    return std::make_unique<Progress>(p.name, "progress", p.exprs.empty() ? nullptr : &p.exprs[0],
+                                      Words{"outside the goal with no enabled rule", "stuck outside the goal: no rule is enabled", "stuck",
+                                            "some rule is enabled in every state outside the goal"});
+}
+
+std::unique_ptr<PropertyType> deadlock() {
+    return std::make_unique<Progress>("deadlock", "deadlock", nullptr,
+                                      Words{"with no enabled rule outside the goal", "a deadlock: no rule is enabled and the goal is not reached", "deadlocks",
+                                            "every state outside the goal has an enabled rule"});
+}
+
+}  // namespace holon::checker::properties

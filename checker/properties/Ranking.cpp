@@ -1,0 +1,144 @@
+// Rankings (seed 000 §IV-C, Lemma 3 Termination): a vector of numbers that every step decreases
+// lexicographically, except the steps of excepted rules (resource moves), which keep it.
+// Explicit state: the non-decreasing edges of the explored graph; termination fails exactly when a
+// cycle passes through a step of a covered rule, shown as a lasso (a livelock, on which the ranking
+// never decreases, first; BGL strong components). Proof: one step from c to c', instance by
+// instance, that does not decrease it.
+
+#include "checker/ProofRunner.h"
+#include "checker/properties/Kinds.h"
+
+#include <algorithm>
+
+namespace holon::checker::properties {
+
+namespace {
+
+bool lexLess(const std::vector<rules::Rational>& a, const std::vector<rules::Rational>& b) {
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end());
+}
+
+/// Two strong-component runs and a shortest path, a flag per edge, and per state a vector of
+/// `terms` ranking values.
+PhaseCost rankingCost(std::size_t terms) { return {128.0 + 16.0 * static_cast<double>(terms), 13}; }
+
+class Ranking : public PropertyType {
+public:
+    explicit Ranking(const rules::Property& p) : PropertyType(p.name, "ranking"), p_(p) {}
+
+    std::optional<PhaseCost> cost(bool) const override { return rankingCost(p_.exprs.size()); }
+
+    PropertyResult check(const ExploredGraph& g) const override {
+        PropertyResult r = named();
+        const rules::Property& p = p_;
+        const rules::Model& model = g.model;
+        const rules::Engine& e = g.engine;
+        const Explorer* ex = &g.explorer;
+        const auto ids = ex->ids();
+        const auto& row = ex->rowStart();
+        const auto& succ = ex->successors();
+        std::vector<std::vector<rules::Rational>> rank(ex->store().capacityUsed());
+        for (StateId s : ids) {
+            const auto cells = ex->cells(s);
+            for (const rules::Expr& x : p.exprs) rank[s].push_back(e.number(x, cells.data()));
+        }
+        // A step of an excepted rule (a resource move) must keep the ranking; every other step decreases it.
+        std::vector<char> excepted(model.rules().size());
+        for (std::size_t q = 0; q < excepted.size(); ++q) excepted[q] = model.ruleNamed(static_cast<int>(q), p.except);
+        auto keptBy = [&](std::uint64_t k) { return excepted[e.instances()[ex->successorVia()[k]].rule] != 0; };
+        std::vector<char> flat(succ.size(), 0);
+        std::uint64_t badEdges = 0, firstBad = 0;
+        StateId firstFrom = kNoState;
+        for (StateId s : ids)
+            for (std::uint64_t k = row[s]; k < row[s + 1]; ++k)
+                if (keptBy(k) ? rank[succ[k]] != rank[s] : !lexLess(rank[succ[k]], rank[s])) {
+                    flat[k] = 1;
+                    if (badEdges++ == 0) firstBad = k, firstFrom = s;
+                }
+        if (badEdges == 0) {
+            holdsOrUnknown(r, g, "every step decreases it" + exceptText(p));
+            return r;
+        }
+        r.verdict = Verdict::Violated;
+        // Termination fails exactly when the reachable graph has a cycle through a step of a
+        // covered rule (one not excepted), whatever mix of decreasing and non-decreasing steps
+        // it takes; a cycle of excepted steps that keep the ranking is the allocator's (seed
+        // 000 Lemma 3). A cycle on which the ranking never decreases (a livelock) is shown first.
+        const Components flatScc = strongComponents(*ex, flat);
+        const Components whole = strongComponents(*ex, std::vector<char>(succ.size(), 1));
+        StateId cycleFrom = kNoState;
+        std::uint64_t cycleEdge = 0;
+        bool livelock = false;
+        for (StateId s : ids)
+            for (std::uint64_t k = row[s]; k < row[s + 1] && !livelock; ++k) {
+                if (flat[k] && flatScc.of[succ[k]] == flatScc.of[s]) cycleFrom = s, cycleEdge = k, livelock = true;
+                else if (cycleFrom == kNoState && !keptBy(k) && whole.of[succ[k]] == whole.of[s]) cycleFrom = s, cycleEdge = k;
+            }
+        if (cycleFrom == kNoState) {
+            r.trace = traceWithStep(*ex, firstFrom, firstBad);
+            r.summary = std::to_string(badEdges) + " steps do not decrease it; the reachable graph has no cycle, so runs still terminate here";
+            r.trace->description = "the last step " + std::string(keptBy(firstBad) ? "changes" : "does not decrease") + " '" + p.name + "'";
+            r.witness = {{"non_decreasing_steps", badEdges}, {"cycle", false}, {"livelock", false}};
+            return r;
+        }
+        // Lasso: reach the cycle, take its step, and come back by a shortest path inside the
+        // same strong component (of the non-decreasing steps for a livelock); a self-loop is a
+        // cycle of one step.
+        const StateId next = succ[cycleEdge];
+        std::vector<StateId> loop{cycleFrom};
+        if (next == cycleFrom) loop.push_back(cycleFrom);
+        else
+            for (StateId b : GraphView(*ex, livelock ? &flat : nullptr).shortestPath(next, cycleFrom)) loop.push_back(b);
+        const Trace cycle = traceAlong(*ex, loop);
+        Trace t = traceTo(*ex, cycleFrom);
+        t.loop = static_cast<int>(t.steps.size()) - 1;
+        // ITF: the last state steps back to states[loop], so the repeated state is not written twice.
+        t.steps.insert(t.steps.end(), cycle.steps.begin() + 1, cycle.steps.end() - 1);
+        // Can a fair scheduler leave a livelock? Only if some step from its strong component (in
+        // the whole graph) decreases the ranking; and a mixed cycle only if a step leaves its component.
+        bool escapable = false;
+        for (StateId s : ids)
+            if (whole.of[s] == whole.of[cycleFrom])
+                for (std::uint64_t k = row[s]; k < row[s + 1] && !escapable; ++k)
+                    escapable = livelock ? !flat[k] : whole.of[succ[k]] != whole.of[s];
+        r.trace = t;
+        const std::size_t length = loop.size() - 1;
+        r.summary = "not terminating: " +
+                    (livelock ? "a cycle of " + stepCount(length) + " on which it never decreases"
+                              : "a cycle of " + stepCount(length) + " that undoes what it decreases") +
+                    (escapable ? " (a fair scheduler can leave it)" : " (trapped: no step leaves it)");
+        r.trace->description = r.summary;
+        r.witness = {{"non_decreasing_steps", badEdges}, {"cycle", true}, {"livelock", livelock}, {"length", length}, {"escapable", escapable}};
+        return r;
+    }
+
+    Obligation prove(const ProofContext& proof) const override {
+        const rules::Property& p = p_;
+        ProofRunner& run = proof.run;
+        const rules::Engine& e = run.engine();
+        const rules::Model& model = e.model();
+        smt::Context ctx(proof.budget);
+        SmtEncoding enc(ctx, e, SmtEncoding::Use::Queries, proof.budget);
+        auto c = enc.state("c"), d = enc.state("d");
+        auto kept = [&](int q) { return model.ruleNamed(e.instances()[q].rule, p.except); };
+        return run.stepwise(
+            p.name, "ranking", ctx, enc, enc.legal(c) && enc.legal(d),
+            [&](int q) { return enc.fires(q, c, d) && !(kept(q) ? enc.keptAfter(p.exprs, q, d, c) : enc.lexLessAfter(p.exprs, q, d, c)); },
+            [&](const smt::Model& m, int q, PropertyResult& r) {
+                const std::string why = kept(q) ? "changes it (an excepted rule must keep it)" : "does not decrease it";
+                r.trace = Trace{{{enc.decode(m, c), -1}, {enc.decode(m, d), q}}, {}, {}, "a step that " + why, {}};
+                r.summary = "rule '" + model.rules()[e.instances()[q].rule].name + "' " + why;
+                r.witness = {{"rule", model.rules()[e.instances()[q].rule].name}};
+            },
+            "every step decreases it lexicographically" + exceptText(p));
+    }
+
+private:
+    const rules::Property& p_;
+};
+
+}  // namespace
+
+std::unique_ptr<PropertyType> ranking(const rules::Property& p) { return std::make_unique<Ranking>(p); }
+
+}  // namespace holon::checker::properties
