@@ -65,14 +65,14 @@ bool legalNear(Evaluator& evaluator, const rules::Engine::Placed& instance, cons
     return legal;
 }
 
-SearchMeter::SearchMeter(const PathQuery& query) : query_(&query), budget_(query.limits.timeoutSeconds) {}
+SearchMeter::SearchMeter(const PathQuery& query) : query_(&query), budget_(query.limits.budget()) {}
 
 StopReason SearchMeter::check(std::uint64_t states, std::size_t bytes, int depth) {
     if (states >= query_->limits.maxStates) return StopReason::MaxStates;
     if (bytes >= query_->limits.memoryBytes) return StopReason::Memory;
     if (++ticks_ < 1024) return StopReason::Finished;
     ticks_ = 0;
-    if (budget_.expired()) return StopReason::Timeout;
+    if (const auto why = budget_.reached()) return *why;  // the deadline, or a signal: interrupted
     if (query_->onProgress && budget_.elapsed() - lastReport_ >= 0.5) {
         lastReport_ = budget_.elapsed();
         query_->onProgress(finish(states, bytes, depth, StopReason::Finished));
