@@ -23,6 +23,7 @@
 #include "checker/Window.h"
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
+#include "rules/Printer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -289,17 +290,6 @@ StepObligation invariantConjunct(const rules::Model& model, const rules::Propert
     return ob;
 }
 
-const char* kindName(rules::Property::Kind kind) {
-    switch (kind) {
-    case rules::Property::Kind::Conserves: return "conserves";
-    case rules::Property::Kind::Invariant: return "invariant";
-    case rules::Property::Kind::Ranking: return "ranking";
-    case rules::Property::Kind::Progress: return "progress";
-    case rules::Property::Kind::Holonomic: return "holonomic";
-    }
-    throw InternalError("every size: a property kind with no name");
-}
-
 }  // namespace
 
 EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOptions& options, const std::function<void(const std::string&)>& onObligation) {
@@ -318,7 +308,7 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
     };
     auto undecided = [&](const rules::Property& p, const std::string& why) {
         Obligation o;
-        o.result.name = p.name, o.result.kind = kindName(p.kind);
+        o.result.name = p.name, o.result.kind = rules::propertyKindName(p.kind);
         o.result.summary = "not proved for every size: " + why;
         o.scope = "every region";
         out.notLocal.push_back(p.name);

@@ -34,17 +34,6 @@ std::vector<const rules::Lattice*> latticesOf(const rules::System& s) {
     return rules::Lattice::all();
 }
 
-const char* kindName(rules::Property::Kind k) {
-    switch (k) {
-    case rules::Property::Kind::Invariant: return "invariant";
-    case rules::Property::Kind::Progress: return "progress";
-    case rules::Property::Kind::Ranking: return "ranking";
-    case rules::Property::Kind::Holonomic: return "holonomic";
-    case rules::Property::Kind::Conserves: return "conserves";
-    }
-    return "";
-}
-
 nlohmann::ordered_json summarise(const rules::System& s) {
     using json = nlohmann::ordered_json;
     json j{{"file", s.sourceName}, {"system", s.name}, {"lattice", s.lattice ? rules::Lattice::get(*s.lattice).name() : "any"}};
@@ -97,7 +86,7 @@ nlohmann::ordered_json summarise(const rules::System& s) {
     j["constraints"] = constraints;
     j["goal"] = s.goal ? json(rules::printExpr(s, *s.goal)) : json(nullptr);
     json props = json::array();
-    for (const rules::Property& p : s.properties) props.push_back({{"name", p.name}, {"kind", kindName(p.kind)}});
+    for (const rules::Property& p : s.properties) props.push_back({{"name", p.name}, {"kind", rules::propertyKindName(p.kind)}});
     j["properties"] = props;
     return j;
 }

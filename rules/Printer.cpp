@@ -5,6 +5,8 @@
 
 #include "rules/Printer.h"
 
+#include "rules/Error.h"
+
 #include <sstream>
 
 namespace holon::rules {
@@ -214,6 +216,17 @@ std::string printSystem(const System& s) {
         out << '\n';
     }
     return out.str();
+}
+
+const char* propertyKindName(Property::Kind kind) {
+    switch (kind) {
+    case Property::Kind::Invariant: return "invariant";
+    case Property::Kind::Progress: return "progress";
+    case Property::Kind::Ranking: return "ranking";
+    case Property::Kind::Holonomic: return "holonomic";
+    case Property::Kind::Conserves: return "conserves";
+    }
+    throw InternalError("a property kind with no name");
 }
 
 }  // namespace holon::rules

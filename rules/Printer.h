@@ -16,5 +16,7 @@ std::string printTerm(const System& system, const CellTerm& term, const RefPrint
 std::string printPredicate(const System& system, const CellPredicate& pred, const RefPrinter& ref = {});
 std::string printExpr(const System& system, const Expr& expr, const RefPrinter& ref = {});
 std::string printRule(const System& system, const Rule& rule);
+/// The keyword a property kind is declared with ("invariant", "ranking", ...), as reports name it.
+const char* propertyKindName(Property::Kind kind);
 
 }  // namespace holon::rules
