@@ -3,10 +3,10 @@
 // make an obligation unknown. Each property kind's obligation (checker/properties/) is written
 // against it; verify() (Obligations.cpp) runs them.
 
-#include "rules/Budget.h"
 #include "checker/Obligations.h"
 #include "checker/Smt.h"
 #include "checker/SmtEncoding.h"
+#include "rules/Budget.h"
 #include "rules/Engine.h"
 #include "rules/OutputFile.h"
 

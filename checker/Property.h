@@ -6,12 +6,12 @@
 // compile until each of the three is written. The built-in properties of a system with a goal
 // (deadlock freedom, goal reachability) are types of the same interface.
 
-#include "rules/Budget.h"
 #include "checker/Explorer.h"
 #include "checker/Graph.h"
 #include "checker/Obligations.h"
 #include "checker/SmtEncoding.h"
 #include "checker/Verdict.h"
+#include "rules/Budget.h"
 #include "rules/Engine.h"
 #include "rules/Interpreter.h"
 

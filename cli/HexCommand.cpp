@@ -147,8 +147,7 @@ int run(HexArgs a) {
                         errors.attempt([&] {
                             rules::OutputFile("--out", (std::filesystem::path(a.out) / ("frame_" + std::to_string(s.time()) + ".svg")).string()).write(planner::hex::sculptSvg(s));
                         });
-                    }
-                },
+                    } },
                 budget,
                 [&](const planner::hex::HoleSculptor& s) {
                     if (stepsFile && r == 0) steps.emplace(stepsFile->stream(), s);
