@@ -154,7 +154,7 @@ int run(const CheckArgs& a) {
         }
         if (htmlOut) {
             const rules::OutputFile file("--html", pathFor(htmlOut->path(), p->name, several));
-            file.write(viewer::page(viewer::readItf(checker::toItf(*p->trace, engine, a.file), file.path(), *system)));
+            file.write(viewer::page(viewer::readItf(checker::toItf(*p->trace, engine, a.file), "the counterexample for '" + p->name + "'", *system)));
             written.push_back(file.path());
         }
         if (svgOut) {

@@ -97,7 +97,7 @@ int run(const PathArgs& a) {
     const std::string title = system->name + " on " + region.spec() + ": " + (found ? "a shortest path, " + checker::stepCount(length) : outcomeName(result.outcome));
     if (found && traceOut) traceOut->write(checker::toItf(result.trace, engine, a.file).dump(2) + "\n");
     if (found && svgOut) svgOut->write(checker::drawTraceSvg(result.trace, engine, title));
-    if (found && htmlOut) htmlOut->write(viewer::page(viewer::readItf(checker::toItf(result.trace, engine, a.file), a.html, *system)));
+    if (found && htmlOut) htmlOut->write(viewer::page(viewer::readItf(checker::toItf(result.trace, engine, a.file), "the shortest path", *system)));
 
     const auto& s = result.stats;
     int code = kExitOk;
