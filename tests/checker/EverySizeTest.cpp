@@ -86,7 +86,8 @@ TEST_CASE("every size: a local invariant (every hole is whole) is proved for hex
         CAPTURE(stem);
         const rules::System system = rules::librarySystem(stem);
         const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Hex2D));
-        const checker::Obligation& holes = obligation(everySize(model, {"holes"}).report, "holes");
+        const checker::EverySizeReport r = everySize(model, {"holes"});  // kept: `holes` refers into it
+        const checker::Obligation& holes = obligation(r.report, "holes");
         CHECK(holes.result.verdict == Verdict::Holds);
         CHECK(holes.result.summary.find("window of radius 2") != std::string::npos);
     }
