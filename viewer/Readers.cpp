@@ -103,7 +103,7 @@ private:
 /// Lattice positions to cell indices.
 class Cells {
 public:
-    explicit Cells(Run& run) : run_(&run) {
+    explicit Cells(const Run& run) {
         for (std::size_t i = 0; i < run.cells.size(); ++i) index_[key(run.cells[i])] = static_cast<int>(i);
     }
     /// [x, y] or [x, y, z] plus `offset`: its cell, or an error naming `where`.
@@ -126,7 +126,6 @@ public:
 
 private:
     static std::tuple<int, int, int> key(Vec v) { return {v.x, v.y, v.z}; }
-    Run* run_;
     std::map<std::tuple<int, int, int>, int> index_;
 };
 
