@@ -63,6 +63,8 @@ struct PropertyResult {
     /// Set by check() and verify() on every counterexample they return.
     std::optional<Confirmation> confirmation;
     bool confirmed() const { return confirmation && confirmation->confirmed; }
+    /// Why it is not confirmed (meaningful when !confirmed()).
+    std::string whyNotConfirmed() const { return confirmation ? confirmation->why : "it was not checked"; }
 };
 
 /// For an invariant false in `last`: names the first conjunct that is false (in r.witness["conjunct"]

@@ -86,7 +86,7 @@ int runHolon(int argc, char** argv) {
         std::cerr << "holon " << command << ": stopped: the machine has no memory left for this job; " << memoryAdvice(command) << '\n';
         return kExitUndecided;
     } catch (const std::exception& e) {
-        std::cerr << "holon: internal error: " << rules::escapeText(e.what(), true) << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+        reportInternalError("", rules::escapeText(e.what(), true));
         return kExitInternal;
     }
     return kExitInternal;

@@ -134,8 +134,7 @@ int run(const CheckArgs& a) {
         if (!p.trace) continue;
         if (!p.confirmed()) {
             unreplayed = true;
-            std::cerr << "holon check: internal error: the trace for '" << p.name << "' does not replay: " << p.confirmation.value_or(checker::Confirmation{}).why
-                      << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+            reportInternalError("check", "the trace for '" + p.name + "' does not replay: " + p.whyNotConfirmed());
         }
         if (p.verdict == checker::Verdict::Violated) violated.push_back(&p);
     }

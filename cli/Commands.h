@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <functional>
 #include <iomanip>
+#include <iostream>
 #include <new>
 #include <sstream>
 #include <string>
@@ -28,6 +29,13 @@ enum ExitCode : int { kExitOk = 0,
                       kExitBadInput = 2,
                       kExitUndecided = 3,
                       kExitInternal = 4 };
+
+/// Tells the user that holon itself went wrong (never their input), in one wording for every
+/// subcommand: "holon COMMAND: internal error: WHAT" and what to do about it.
+inline void reportInternalError(const std::string& command, const std::string& what) {
+    std::cerr << "holon" << (command.empty() ? "" : " ") << command << ": internal error: " << what
+              << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+}
 
 inline int exitCodeFor(checker::Verdict v) {
     switch (v) {

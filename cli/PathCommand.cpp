@@ -82,8 +82,7 @@ int run(const PathArgs& a) {
     std::string why;
     const bool replayed = found && checker::replay(result.trace, engine, in, &why);
     if (found && !replayed)
-        std::cerr << "holon path: internal error: the path does not replay: " << why
-                  << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+        reportInternalError("path", "the path does not replay: " + why);
     const std::size_t length = found ? result.trace.steps.size() - 1 : 0;
     std::optional<checker::Schedule> schedule;
     bool scheduled = false;
@@ -91,8 +90,7 @@ int run(const PathArgs& a) {
         schedule = checker::compactSteps(result.trace, engine, checker::Footprints(engine));
         scheduled = checker::replaySchedule(*schedule, result.trace, engine, in, &why);
         if (!scheduled)
-            std::cerr << "holon path: internal error: the parallel schedule does not replay: " << why
-                      << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+            reportInternalError("path", "the parallel schedule does not replay: " + why);
     }
     const std::string title = system->name + " on " + region.spec() + ": " + (found ? "a shortest path, " + checker::stepCount(length) : outcomeName(result.outcome));
     if (found && traceOut) traceOut->write(checker::toItf(result.trace, engine, a.file).dump(2) + "\n");

@@ -31,8 +31,6 @@ struct VerifyArgs {
 };
 
 /// What the reference interpreter found wrong with a counterexample.
-std::string whyNot(const checker::PropertyResult& r) { return r.confirmation ? r.confirmation->why : "it was not checked"; }
-
 int run(const VerifyArgs& a) {
     const Budget budget(a.timeout);  // from the start: loading and encoding count
     if (a.everySize) {
@@ -81,8 +79,7 @@ int run(const VerifyArgs& a) {
         if (o.result.verdict != checker::Verdict::Violated) continue;
         if (!o.result.confirmed()) {
             unconfirmed = true;
-            std::cerr << "holon verify: internal error: the counterexample for '" << o.result.name << "' is not confirmed: " << whyNot(o.result)
-                      << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+            reportInternalError("verify", "the counterexample for '" + o.result.name + "' is not confirmed: " + o.result.whyNotConfirmed());
         }
         shown.push_back(&o.result);
     }
@@ -131,7 +128,7 @@ int run(const VerifyArgs& a) {
     for (const checker::PropertyResult* r : shown) {
         if (!r->trace) continue;
         std::cout << "\ncounterexample for '" << r->name << "' "
-                  << (r->confirmed() ? "(confirmed by the reference interpreter)" : "(NOT confirmed by the reference interpreter: " + whyNot(*r) + ")") << '\n';
+                  << (r->confirmed() ? "(confirmed by the reference interpreter)" : "(NOT confirmed by the reference interpreter: " + r->whyNotConfirmed() + ")") << '\n';
         for (const auto& o : report.obligations)
             if (o.result.name == r->name + "@reach" && o.result.verdict == checker::Verdict::Holds && !options.initial.empty() &&
                 r->inputs.value_or(noInputs) == options.initial.front().inputs)

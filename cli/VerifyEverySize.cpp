@@ -75,9 +75,7 @@ int runEverySize(const EverySizeArgs& a) {
             // verify() confirmed it with the reference interpreter (checker/Property.h).
             if (!o.result.confirmed()) {
                 unconfirmed = true;
-                std::cerr << "holon verify: internal error: the counterexample for '" << o.result.name
-                          << "' is not confirmed: " << (o.result.confirmation ? o.result.confirmation->why : "it was not checked")
-                          << "\n  this is a bug in holon, not in your input; please report it with the command line\n";
+                reportInternalError("verify", "the counterexample for '" + o.result.name + "' is not confirmed: " + o.result.whyNotConfirmed());
             }
             if (o.result.trace)
                 every.drawings[k] = checker::drawTraceAscii(*o.result.trace, rules::Engine(model, *region, o.result.inputs.value_or(std::vector<std::uint32_t>(region->size(), 0))));
