@@ -18,6 +18,7 @@
 #include "checker/EverySize.h"
 
 #include "checker/Draw.h"
+#include "checker/Property.h"
 #include "checker/SmtEncoding.h"
 #include "checker/SolverLimits.h"
 #include "checker/Window.h"
@@ -46,7 +47,7 @@ struct StepObligation {
     int margin = 0;
     std::function<smt::Term(SmtEncoding&, const Window&, int q, const State& c, const State& d)> onWindow;
     std::function<smt::Term(SmtEncoding&, int q, const State& c, const State& d)> onRegion;
-    std::function<bool(const rules::Engine&, const Cells& c, const Cells& d, int q)> breaks;
+    const rules::Property* property = nullptr;  // whose type confirms a counterexample (checker/Property.h)
 };
 
 std::string fileSafe(std::string s) {
@@ -64,17 +65,6 @@ std::vector<std::uint32_t> inputsOf(const smt::Model& m, const SmtEncoding& enc)
         in.push_back(v);
     }
     return in;
-}
-
-std::vector<rules::Rational> numbers(const rules::Engine& e, const std::vector<rules::Expr>& exprs, const Cells& c) {
-    std::vector<rules::Rational> out;
-    for (const rules::Expr& x : exprs) out.push_back(e.number(x, c.data()));
-    return out;
-}
-
-std::int64_t amount(const rules::Engine& e, bool byMass, const Cells& c) {
-    if (byMass) return e.massUnits(c.data());
-    return static_cast<std::int64_t>(std::count_if(c.begin(), c.end(), [](CellValue v) { return v != 0; }));
 }
 
 class Prover {
@@ -186,23 +176,27 @@ private:
         } catch (const OutOfTime& e) {
             why = e.what();
         }
-        bool confirmed = false;
         if (trace) {
+            // Confirmed as verify() confirms a bounded counterexample: by the property's own type.
             const rules::Engine engine(model_, concrete, inputs);
             const rules::Interpreter in(model_, concrete);
-            confirmed = replay(*trace, engine, in, &why) && ob.breaks(engine, trace->steps[0].cells, trace->steps[1].cells, placed);
-            if (confirmed) drawing = drawTraceAscii(*trace, engine);
-            else if (why.empty()) why = "the interpreter's step keeps the property";
-        }
-        o.result.witness["confirmed"] = confirmed;
-        if (confirmed) {
-            o.result.verdict = Verdict::Violated;
-            o.result.summary = "rule '" + rule + "' " + ob.broken + " (a window counterexample, confirmed on region " + concrete.spec() + " by the reference interpreter)";
-            o.result.witness["confirmed_on"] = concrete.spec();
+            const auto type = propertyType(*ob.property);
             o.result.trace = trace;
             o.result.inputs = inputs;
-            return;
+            confirmInto(o.result, *type, Evidence::Obligation, in, engine, "confirmed");
+            if (o.result.confirmed()) {
+                type->explain(o.result, in, engine);
+                drawing = drawTraceAscii(*trace, engine);
+                o.result.verdict = Verdict::Violated;
+                o.result.summary = "rule '" + rule + "' " + ob.broken + " (a window counterexample, confirmed on region " + concrete.spec() + " by the reference interpreter)";
+                o.result.witness["confirmed_on"] = concrete.spec();
+                return;
+            }
+            why = o.result.whyNotConfirmed();
+            o.result.trace.reset();
+            o.result.inputs.reset();
         }
+        o.result.witness["confirmed"] = false;
         o.result.verdict = Verdict::Unknown;
         o.result.summary = "not proved for every size: rule '" + rule + "' " + ob.broken + " on the window, but that is not confirmed on region " + concrete.spec() + " (" + why + ")";
         o.result.witness["why_unconfirmed"] = why;
@@ -225,14 +219,13 @@ StepObligation conserves(const rules::Model& model, const rules::Property& p) {
         return enc.fires(q, c, d) && before != after;
     };
     StepObligation ob;
-    ob.name = p.name, ob.kind = "conserves", ob.margin = ruleRadius(model);
+    ob.name = p.name, ob.kind = "conserves", ob.margin = ruleRadius(model), ob.property = &p;
     ob.proved = "every rule keeps it, on every region";
     ob.broken = std::string("changes the ") + (byMass ? "mass" : "count");
     ob.onWindow = [changed](SmtEncoding& enc, const Window& w, int q, const State& c, const State& d) { return changed(enc, w.engine(), q, c, d); };
     ob.onRegion = [changed](SmtEncoding& enc, int q, const State& c, const State& d) {
         return enc.legal(c) && enc.legal(d) && changed(enc, enc.engine(), q, c, d);
     };
-    ob.breaks = [byMass](const rules::Engine& e, const Cells& c, const Cells& d, int) { return amount(e, byMass, c) != amount(e, byMass, d); };
     return ob;
 }
 
@@ -246,15 +239,11 @@ StepObligation ranking(const rules::Model& model, const rules::Property& p) {
         return enc.fires(q, c, d) && !(excepted(enc.engine(), q) ? enc.keptAfter(p.exprs, q, d, c) : enc.lexLessAfter(p.exprs, q, d, c));
     };
     StepObligation ob;
-    ob.name = p.name, ob.kind = "ranking", ob.margin = std::max(ruleRadius(model), 2 * countRadius);
+    ob.name = p.name, ob.kind = "ranking", ob.margin = std::max(ruleRadius(model), 2 * countRadius), ob.property = &p;
     ob.proved = "every step decreases it lexicographically" + exceptText(p) + ", on every region";
     ob.broken = "does not decrease it (or, excepted, changes it)";
     ob.onWindow = [notDecreased](SmtEncoding& enc, const Window&, int q, const State& c, const State& d) { return notDecreased(enc, q, c, d); };
     ob.onRegion = [notDecreased](SmtEncoding& enc, int q, const State& c, const State& d) { return enc.legal(c) && enc.legal(d) && notDecreased(enc, q, c, d); };
-    ob.breaks = [&p, excepted](const rules::Engine& e, const Cells& c, const Cells& d, int q) {
-        const auto before = numbers(e, p.exprs, c), after = numbers(e, p.exprs, d);
-        return excepted(e, q) ? before != after : !std::lexicographical_compare(after.begin(), after.end(), before.begin(), before.end());
-    };
     return ob;
 }
 
@@ -265,6 +254,7 @@ StepObligation invariantConjunct(const rules::Model& model, const rules::Propert
     for (const rules::Expr* x : parts) g = std::max(g, readRadius(*x));
     StepObligation ob;
     ob.name = parts.size() > 1 ? p.name + "." + std::to_string(k + 1) : p.name;
+    ob.property = &p;
     ob.kind = "invariant", ob.margin = std::max(ruleRadius(model), 2 * g);
     ob.proved = "inductive: every step from a state where it holds keeps it, on every region";
     ob.broken = "breaks it" + std::string(parts.size() > 1 ? " (conjunct " + std::to_string(k + 1) + ")" : "");
@@ -286,7 +276,6 @@ StepObligation invariantConjunct(const rules::Model& model, const rules::Propert
     ob.onRegion = [&p, parts, k](SmtEncoding& enc, int q, const State& c, const State& d) {
         return enc.legal(c) && enc.legal(d) && enc.holds(p.exprs[0], c, true) && enc.fires(q, c, d) && !enc.holds(*parts[k], d, false);
     };
-    ob.breaks = [&p](const rules::Engine& e, const Cells& c, const Cells& d, int) { return e.holds(p.exprs[0], c.data()) && !e.holds(p.exprs[0], d.data()); };
     return ob;
 }
 

@@ -39,6 +39,15 @@ bool PropertyType::confirm(const PropertyResult& r, Evidence, const rules::Inter
     return replay(*r.trace, engine, in, why);
 }
 
+bool PropertyType::confirmBrokenStep(const PropertyResult& r, const rules::Interpreter& in, const rules::Engine& engine, std::string* why, const char* keeps,
+                                     const std::function<bool(const CellValue*, const CellValue*, int)>& broken) const {
+    if (!PropertyType::confirm(r, Evidence::Path, in, engine, why)) return false;
+    const auto& steps = r.trace->steps;
+    if (steps.size() == 2 && broken(steps[0].cells.data(), steps[1].cells.data(), steps[1].placed)) return true;
+    if (why) *why = steps.size() == 2 ? std::string("the interpreter's step ") + keeps : "the counterexample is not one step";
+    return false;
+}
+
 void confirmInto(PropertyResult& r, const PropertyType& type, Evidence evidence, const rules::Interpreter& in, const rules::Engine& engine, const char* flag) {
     std::string why;
     const bool ok = type.confirm(r, evidence, in, engine, &why);

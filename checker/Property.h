@@ -117,6 +117,13 @@ public:
     /// that is false).
     virtual void explain(PropertyResult&, const rules::Interpreter&, const rules::Engine&) const {}
 
+protected:
+    /// An obligation's counterexample of one step (conservation, rankings, inductive invariants):
+    /// its trace replays, and the step breaks the property, as `broken(before, after, instance)`
+    /// judges on the interpreter's configurations; `keeps` says what the step did instead.
+    bool confirmBrokenStep(const PropertyResult& r, const rules::Interpreter& in, const rules::Engine& engine, std::string* why, const char* keeps,
+                           const std::function<bool(const CellValue* before, const CellValue* after, int instance)>& broken) const;
+
 private:
     std::string name_, kind_;
 };

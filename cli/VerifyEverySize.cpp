@@ -99,8 +99,8 @@ int runEverySize(const EverySizeArgs& a) {
         if (every.drawings[k].empty()) continue;
         const auto& r = report.obligations[k].result;
         std::cout << "\ncounterexample for '" << r.name << "'"
-                  << (r.witness.value("confirmed", false) ? " (confirmed by the reference interpreter on region " + r.witness.value("confirmed_on", std::string(a.region)) + ")"
-                                                          : " (NOT confirmed)")
+                  << (r.confirmed() ? " (confirmed by the reference interpreter on region " + r.witness.value("confirmed_on", std::string(a.region)) + ")"
+                                    : " (NOT confirmed)")
                   << '\n'
                   << every.drawings[k];
     }

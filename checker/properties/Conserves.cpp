@@ -14,6 +14,12 @@ namespace {
 
 constexpr PhaseCost kConservesCost{8, 0};
 
+/// The amount a configuration holds: its mass in units, or its number of modules.
+std::int64_t amountOf(const rules::Engine& e, bool byMass, const CellValue* cells) {
+    if (byMass) return e.massUnits(cells);
+    return std::count_if(cells, cells + e.region().size(), [](CellValue v) { return v != 0; });
+}
+
 class Conserves : public PropertyType {
 public:
     explicit Conserves(const rules::Property& p) : PropertyType(p.name, "conserves"), p_(p) {}
@@ -32,7 +38,7 @@ public:
         std::vector<std::int64_t> amount(ex->store().capacityUsed(), 0);
         for (StateId s : ids) {
             const auto cells = ex->cells(s);
-            amount[s] = byMass ? e.massUnits(cells.data()) : std::count_if(cells.begin(), cells.end(), [](CellValue v) { return v != 0; });
+            amount[s] = amountOf(e, byMass, cells.data());
         }
         for (StateId s : ids)
             for (std::uint64_t k = row[s]; k < row[s + 1] && r.verdict != Verdict::Violated; ++k)
@@ -46,6 +52,15 @@ public:
                 }
         if (r.verdict != Verdict::Violated) holdsOrUnknown(r, g, "every one of the " + std::to_string(ex->stats().edges) + " steps keeps it");
         return r;
+    }
+
+    /// An obligation's counterexample is one step that changes the amount.
+    bool confirm(const PropertyResult& r, Evidence evidence, const rules::Interpreter& in, const rules::Engine& engine, std::string* why) const override {
+        if (evidence == Evidence::Path) return PropertyType::confirm(r, evidence, in, engine, why);
+        const bool byMass = p_.quantity == rules::Property::Quantity::Mass;
+        return confirmBrokenStep(r, in, engine, why, "keeps the amount", [&](const CellValue* before, const CellValue* after, int) {
+            return amountOf(engine, byMass, before) != amountOf(engine, byMass, after);
+        });
     }
 
     Obligation prove(const ProofContext& proof) const override {

@@ -141,6 +141,16 @@ public:
                          "invariant '" + p.name + "' fails", true};
     }
 
+    /// An obligation's counterexample is one step from a configuration where the invariant holds to
+    /// one where it fails.
+    bool confirm(const PropertyResult& r, Evidence evidence, const rules::Interpreter& in, const rules::Engine& engine, std::string* why) const override {
+        if (evidence == Evidence::Path) return PropertyType::confirm(r, evidence, in, engine, why);
+        return confirmBrokenStep(r, in, engine, why, "does not go from a configuration where it holds to one where it fails",
+                                 [&](const CellValue* before, const CellValue* after, int) {
+                                     return engine.holds(p_.exprs[0], before) && !engine.holds(p_.exprs[0], after);
+                                 });
+    }
+
     void explain(PropertyResult& r, const rules::Interpreter& in, const rules::Engine& engine) const override {
         if (r.trace) nameFailingConjunct(r, p_, in, {r.trace->steps.back().cells, engine.inputs()});
     }

@@ -157,7 +157,8 @@ public:
                          "a deadlock outside the goal"};
     }
 
-    /// A proved counterexample is one state: legal, outside the goal, with nothing enabled.
+    /// A proved counterexample is one state: legal, where the assumption holds, outside the goal, with
+    /// nothing enabled.
     bool confirm(const PropertyResult& r, Evidence evidence, const rules::Interpreter& in, const rules::Engine& engine, std::string* why) const override {
         if (evidence == Evidence::Path) return PropertyType::confirm(r, evidence, in, engine, why);
         auto fail = [&](const std::string& m) {
@@ -169,6 +170,7 @@ public:
         c.inputs = engine.inputs();
         c.cells = r.trace->steps.front().cells;
         if (!in.legal(c)) return fail("the state is not legal");
+        if (assumption_ && !in.holds(*assumption_, c)) return fail("the progress assumption does not hold there");
         if (in.atGoal(c)) return fail("the state is a goal");
         if (!in.enabled(c).empty()) return fail("a rule is enabled");
         return true;

@@ -18,6 +18,12 @@ bool lexLess(const std::vector<rules::Rational>& a, const std::vector<rules::Rat
     return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end());
 }
 
+std::vector<rules::Rational> rankOf(const rules::Engine& e, const rules::Property& p, const CellValue* cells) {
+    std::vector<rules::Rational> rank;
+    for (const rules::Expr& x : p.exprs) rank.push_back(e.number(x, cells));
+    return rank;
+}
+
 /// Two strong-component runs and a shortest path, a flag per edge, and per state a vector of
 /// `terms` ranking values.
 PhaseCost rankingCost(std::size_t terms) { return {128.0 + 16.0 * static_cast<double>(terms), 13}; }
@@ -39,8 +45,7 @@ public:
         const auto& succ = ex->successors();
         std::vector<std::vector<rules::Rational>> rank(ex->store().capacityUsed());
         for (StateId s : ids) {
-            const auto cells = ex->cells(s);
-            for (const rules::Expr& x : p.exprs) rank[s].push_back(e.number(x, cells.data()));
+            rank[s] = rankOf(e, p, ex->cells(s).data());
         }
         // A step of an excepted rule (a resource move) must keep the ranking; every other step decreases it.
         std::vector<char> excepted(model.rules().size());
@@ -110,6 +115,16 @@ public:
         r.trace->description = r.summary;
         r.witness = {{"non_decreasing_steps", badEdges}, {"cycle", true}, {"livelock", livelock}, {"length", length}, {"escapable", escapable}};
         return r;
+    }
+
+    /// An obligation's counterexample is one step that does not decrease the ranking (an excepted
+    /// rule's: that changes it).
+    bool confirm(const PropertyResult& r, Evidence evidence, const rules::Interpreter& in, const rules::Engine& engine, std::string* why) const override {
+        if (evidence == Evidence::Path) return PropertyType::confirm(r, evidence, in, engine, why);
+        return confirmBrokenStep(r, in, engine, why, "decreases the ranking (an excepted rule's keeps it)", [&](const CellValue* before, const CellValue* after, int q) {
+            const auto from = rankOf(engine, p_, before), to = rankOf(engine, p_, after);
+            return engine.model().ruleNamed(engine.instances()[q].rule, p_.except) ? from != to : !lexLess(to, from);
+        });
     }
 
     Obligation prove(const ProofContext& proof) const override {

@@ -58,4 +58,30 @@ TEST_CASE("verify() on a broken system returns its counterexample confirmed, wit
     CHECK(it->result.witness.contains("trace"));
 }
 
+TEST_CASE("an obligation's counterexample is confirmed only when its step breaks the property") {
+    // A transfer (C D -> D C) replays but keeps the mass: as evidence that mass is not conserved
+    // it is refused, with the interpreter's reason; the creation that conjures a D is accepted.
+    test::World w(broken("general1_leaky"), "square:3x2");
+    const rules::Configuration start = w.ascii("CD.\n...");
+    const rules::Engine engine(*w.model, w.region, start.inputs);
+    const auto type = checker::propertyType(conserved(w.system));
+    auto stepBy = [&](const std::string& rule) {
+        checker::PropertyResult r;
+        for (int q = 0; q < static_cast<int>(engine.instances().size()); ++q) {
+            if (w.model->rules()[engine.instances()[q].rule].name != rule || !engine.matches(start.cells.data(), q)) continue;
+            std::vector<rules::CellValue> after = start.cells;
+            rules::CellValue saved[rules::Engine::kMaxCells];
+            engine.apply(after.data(), q, saved);
+            r.trace = checker::Trace{{{start.cells, -1}, {after, q}}, {}, {}, "one step", {}};
+            return r;
+        }
+        FAIL("no enabled instance of " << rule);
+        return r;
+    };
+    std::string why;
+    CHECK_FALSE(type->confirm(stepBy("transfer"), checker::Evidence::Obligation, *w.in, engine, &why));
+    CHECK(why.find("keeps the amount") != std::string::npos);
+    CHECK(type->confirm(stepBy("create"), checker::Evidence::Obligation, *w.in, engine, &why));
+}
+
 }  // namespace holon
