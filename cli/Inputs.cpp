@@ -28,12 +28,6 @@ rules::LoadOptions loadOptions(const std::vector<std::string>& noWarnings) {
     return load;
 }
 
-std::string rulesPath(const std::string& name) {
-    if (std::filesystem::exists(name)) return name;
-    const std::string bundled = rules::libraryDir() + "/" + name + ".holon";
-    return std::filesystem::exists(bundled) ? bundled : name;  // a missing file is reported by the reader
-}
-
 namespace {
 const char* const kRulesHelp = "rule file (.holon), or the name of a bundled system (planner_general1 reads rules/library/planner_general1.holon)";
 }  // namespace
@@ -47,7 +41,7 @@ CLI::Option* addRulesFiles(CLI::App* sub, const std::string& name, std::vector<s
 }
 
 std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings) {
-    return rules::loadSystem(rulesPath(file), std::cerr, loadOptions(noWarnings));
+    return rules::loadSystem(rules::rulesPath(file), std::cerr, loadOptions(noWarnings));
 }
 
 std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::vector<std::string>& specs, std::uint32_t* named) {

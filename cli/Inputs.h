@@ -15,9 +15,6 @@ namespace holon::cli {
 
 /// The load options of -W arguments ("no-unused-value"); an unknown name throws InputError.
 rules::LoadOptions loadOptions(const std::vector<std::string>& noWarnings);
-/// A rule file, or the stem of a bundled system ("planner_general1"): the path to read. Every
-/// subcommand that takes a rule file takes a bundled name this way.
-std::string rulesPath(const std::string& name);
 /// Registers the rule file argument or option `name` ("file", "--rules") of a subcommand, with the
 /// one help text every subcommand shares: a file or a bundled name. `what` says whose rules they are
 /// ("design A"); a default already in `file` is stated.

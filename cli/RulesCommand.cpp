@@ -196,7 +196,7 @@ Run addRulesCommand(CLI::App& app) {
             // their summaries, and the exit code says something failed.
             std::optional<rules::System> system;
             try {
-                system = rules::loadSystem(rulesPath(file), std::cerr, load);
+                system = rules::loadSystem(rules::rulesPath(file), std::cerr, load);
             } catch (const InputError& e) {
                 std::cerr << "holon: error: " << rules::escapeText(e.what(), true) << '\n';
             }

@@ -30,6 +30,12 @@ std::string libraryDir() {
     return HOLON_LIBRARY_DIR;
 }
 
+std::string rulesPath(const std::string& name) {
+    if (std::filesystem::exists(name)) return name;
+    const std::string bundled = libraryDir() + "/" + name + ".holon";
+    return std::filesystem::exists(bundled) ? bundled : name;  // a missing file is reported by the reader
+}
+
 std::vector<std::string> libraryFiles() {
     std::vector<std::string> files;
     for (const auto& entry : std::filesystem::directory_iterator(libraryDir()))

@@ -34,15 +34,12 @@ const char* const kFormats =
 std::string text(const nlohmann::json& j, const char* key) { return j.is_object() && j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : ""; }
 
 /// The system a file's states belong to: --rules, else the file it names, else the bundled one.
-rules::System loadNamed(const std::string& rules, const std::string& source, const std::string& name, const std::string& where) {
-    std::string path = rules;
-    if (path.empty() && !source.empty() && std::filesystem::exists(source)) path = source;
-    if (path.empty() && !name.empty() && std::filesystem::exists(rules::libraryDir() + "/" + name + ".holon")) path = rules::libraryDir() + "/" + name + ".holon";
-    if (path.empty() && !rules.empty()) path = rules;
-    if (path.empty())
-        throw InputError(where + ": the rule file it names ('" + (source.empty() ? name : source) + "') is not there; give it with --rules FILE");
-    if (!rules.empty() && !std::filesystem::exists(rules) && std::filesystem::exists(rules::libraryDir() + "/" + rules + ".holon"))
-        path = rules::libraryDir() + "/" + rules + ".holon";
+rules::System loadNamed(const std::string& rulesFile, const std::string& source, const std::string& name, const std::string& where) {
+    const std::string path = rules::rulesPath(!rulesFile.empty() ? rulesFile : !source.empty() && std::filesystem::exists(source) ? source
+                                                                                                                                  : name);
+    if (!std::filesystem::exists(path))
+        throw InputError(!rulesFile.empty() ? "--rules " + rulesFile + ": no such file or bundled system"
+                                            : where + ": the rule file it names ('" + (source.empty() ? name : source) + "') is not there; give it with --rules FILE");
     std::optional<rules::System> system = rules::loadSystem(path, std::cerr);
     if (!system) throw InputError(path + ": the rule file has errors (above); fix it or give another with --rules FILE");
     if (!name.empty() && system->name != name)
@@ -78,7 +75,7 @@ public:
             const std::vector<int>& values = model_->alphabet().fields(static_cast<rules::CellValue>(it->second));
             const rules::System& system = model_->system();
             const bool filled = fill_ >= 0 && values[fill_] != rules::kAbsent;
-            colour = filled ? checker::valueColour(system.fields[fill_], values[fill_]) : checker::traceColours().noFill;
+            colour = checker::stateColour(*model_, static_cast<rules::CellValue>(it->second));  // as the SVG traces fill it
             label = filled ? system.fields[fill_].name + " = " + system.fields[fill_].values[values[fill_]] : "no " + (fill_ >= 0 ? system.fields[fill_].name : "fill field");
             words = checker::cellText(system, values);
         } else {
