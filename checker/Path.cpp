@@ -75,7 +75,7 @@ PathResult forwardPath(const rules::Engine& engine, const PathQuery& query) {
     case StopReason::Monitor:
     case StopReason::Fault:
     case StopReason::MaxSteps:
-    case StopReason::MaxRounds: throw InternalError("findPath: the exploration stopped by " + stopReasonName(result.stats.stopped));
+    case StopReason::MaxRounds: throw InternalError("forwardPath: the exploration stopped by " + stopReasonName(result.stats.stopped));
     }
     return result;
 }

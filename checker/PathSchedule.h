@@ -18,7 +18,7 @@ struct Schedule {
 
 /// A greedy compaction of `path` (not a shortest parallel path): each step in turn goes into the
 /// earliest round after the last one holding an earlier step it interferes with (Footprints) where
-/// the schedule stays valid (validSchedule, on the engine), else into a new last round.
+/// the schedule stays valid (validFrom, on the engine), else into a new last round.
 Schedule compactSteps(const Trace& path, const rules::Engine& engine, const Footprints& footprints);
 
 /// The schedule replayed through the reference interpreter: every step of the path in exactly one

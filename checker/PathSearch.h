@@ -19,8 +19,6 @@ namespace holon::checker {
 class Footprints {
 public:
     explicit Footprints(const rules::Engine& engine);
-    const std::vector<int>& writes(int placed) const { return writes_[placed]; }
-    const std::vector<int>& reads(int placed) const { return reads_[placed]; }
     /// The most cells one instance writes: a step changes at most this many cells.
     int maxWrites() const { return maxWrites_; }
     /// a's reads meet b's writes or b's reads meet a's writes: the two cannot fire together.

@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -166,7 +167,13 @@ int run(HexArgs a) {
     int steps = a.setup.steps;
     for (const auto& r : runs) steps = std::min(steps, r.steps);
     const bool cut = steps < a.setup.steps || static_cast<int>(runs.size()) < a.reps;
-    const StopReason stopped = cut ? budget.reached().value_or(StopReason::Timeout) : StopReason::Finished;
+    // Why: the first kept run's own reason, else (every kept run finished, others never started)
+    // the budget's.
+    StopReason stopped = StopReason::Finished;
+    if (cut) {
+        const auto short_ = std::find_if(runs.begin(), runs.end(), [](const auto& r) { return r.stopped != StopReason::Finished; });
+        stopped = short_ != runs.end() ? short_->stopped : budget.reached().value_or(StopReason::Timeout);
+    }
 
     const Stat compliance = stat(runs, [](const auto& r) { return r.maxCompliance; });
     const Stat completeness = stat(runs, [](const auto& r) { return r.maxCompleteness; });

@@ -123,8 +123,6 @@ std::string assemblySvg(const Setting& setting, const AssemblyResult& result) {
     return svg.document(x, height);
 }
 
-const char* metamoduleColour(int module) { return colourOf(module); }
-
 std::string runSteps(const Setting& setting, const AssemblyResult& result, const std::string& title) {
     // The region: the box around every cell the run touches and every seed's.
     Cell lo = result.start.empty() ? Cell{} : result.start[0][0], hi = lo;

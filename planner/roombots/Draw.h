@@ -14,8 +14,6 @@ std::string isometricSvg(const Setting& setting, const std::vector<std::array<Ce
 /// The assembly as a strip of isometric views, one each time a seed was filled (and the end of a
 /// deadlocked run), as the snapshot series of Fig. 7.
 std::string assemblySvg(const Setting& setting, const AssemblyResult& result);
-/// The fill of metamodule `module` in every picture of a run.
-const char* metamoduleColour(int module);
 /// The run action by action for the browser viewer (holon view), JSON Lines in holon plan
 /// --plan-out's format: a first line {"run": "roombots", "title", "colours": [per metamodule],
 /// "start": {"region": "cubic:WxHxD", "offset": [x, y, z], "cells": [{"at": [x, y, z], "module": M},
