@@ -109,6 +109,14 @@ TEST_CASE("every size: broken variants are refuted by window counterexamples the
             return e.number(p.exprs[0], t.steps[1].cells.data()) >= e.number(p.exprs[0], t.steps[0].cells.data());
         });
     }
+    SUBCASE("general_lock2_ranked's ranking does not decrease") {
+        const rules::System system = broken("general_lock2_ranked");
+        const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
+        const rules::Property& p = *system.property("partial");
+        checkRefuted(model, obligation(everySize(model, {"partial"}).report, "partial"), [&](const rules::Engine& e, const checker::Trace& t) {
+            return e.number(p.exprs[0], t.steps[1].cells.data()) >= e.number(p.exprs[0], t.steps[0].cells.data());
+        });
+    }
     SUBCASE("hex_growth_overlap breaks a hole") {
         const rules::System system = broken("hex_growth_overlap");
         const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Hex2D));
@@ -129,6 +137,7 @@ TEST_CASE("every size agrees with the bounded proofs on small regions") {
         {"planner_general1", rules::LatticeKind::Square2D, {"square:2x2", "square:3x2", "square:3x3"}},
         {"planner_general1", rules::LatticeKind::Hex2D, {"hex:r1"}},
         {"planner_general1", rules::LatticeKind::Cubic3D, {"cubic:2x2x2"}},
+        {"planner_intermediate", rules::LatticeKind::Square2D, {"square:3x2"}},
         {"hex_migrate", rules::LatticeKind::Hex2D, {"hex:r1", "hex:r2"}},
     };
     for (const Case& c : cases) {
