@@ -8,7 +8,11 @@
 // with how many runs did not complete (exit 1 when any did not). Seed 000 §V measured allocators on
 // blocks only.
 // Usage: shape_bench [--pairs2d N] [--pairs3d N] [--cells N] [--seed S] [--system NAME]
-//                    [--allocators a,b,c] [--timeout SECONDS] [--csv FILE]
+//                    [--allocators a,b,c] [--timeout SECONDS] [--csv FILE] [--only I]
+//                    [--shapes-out DIR]
+// --only I runs problem I alone (each problem is drawn from the seed and its index, so it is the
+// same as in the whole bench); --shapes-out writes each problem's start and target as JSON cell
+// lists (DIR/2d_I_start.json, ...) for `holon plan --from ... --to ...`.
 
 #include "PlanSupport.h"
 #include "ShapeGenerator.h"
@@ -34,7 +38,8 @@ struct Options {
     std::string system = "planner_general1";
     std::vector<std::string> allocators = {"random", "gradient", "demand", "optimal"};
     double timeout = 120;
-    std::string csv;
+    std::string csv, shapesOut;
+    int only = -1;
 };
 
 struct Outcome {
@@ -72,6 +77,19 @@ struct Tally {
     double seconds = 0;
 };
 
+void writeCells(const std::string& path, const planner::Shape& shape) {
+    std::ofstream out(path);
+    out << '[';
+    for (std::size_t k = 0; k < shape.cells.size(); ++k) {
+        const rules::Vec v = shape.cells[k];
+        out << (k ? "," : "") << '[' << v.x << ',' << v.y;
+        if (shape.dimension == 3) out << ',' << v.z;
+        out << ']';
+    }
+    out << "]\n";
+    if (!out) throw std::runtime_error("cannot write " + path);
+}
+
 std::vector<std::string> splitCommas(const std::string& text) {
     std::vector<std::string> out;
     std::stringstream in(text);
@@ -94,8 +112,11 @@ Options parse(int argc, char** argv) {
         else if (flag == "--allocators") o.allocators = splitCommas(value);
         else if (flag == "--timeout") o.timeout = std::stod(value);
         else if (flag == "--csv") o.csv = value;
+        else if (flag == "--only") o.only = std::stoi(value);
+        else if (flag == "--shapes-out") o.shapesOut = value;
         else throw std::invalid_argument("unknown option " + flag);
     }
+    if (o.only >= std::max(o.pairs2d, o.pairs3d)) throw std::invalid_argument("--only must be below --pairs2d or --pairs3d");
     if (o.pairs2d < 0 || o.pairs3d < 0 || o.cells < 4 || o.timeout <= 0) throw std::invalid_argument("pairs >= 0, --cells >= 4, --timeout > 0");
     return o;
 }
@@ -121,6 +142,7 @@ int main(int argc, char** argv) try {
         int redrawn = 0;
         std::vector<double> sizes;
         for (int index = 0; index < pairs; ++index) {
+            if (o.only >= 0 && index != o.only) continue;
             bench::ShapePair pair;
             std::int64_t bound = -1;
             for (int attempt = 0;; ++attempt) {
@@ -134,6 +156,9 @@ int main(int argc, char** argv) try {
                 }
             }
             sizes.push_back(double(pair.start.cells.size()));
+            if (!o.shapesOut.empty())
+                for (const auto& [name, shape] : {std::pair{"start", &pair.start}, std::pair{"target", &pair.target}})
+                    writeCells(o.shapesOut + "/" + std::to_string(dimension) + "d_" + std::to_string(index) + "_" + name + ".json", *shape);
             const Outcome base = run(intermediateModel, pair, "random", o.timeout, o.seed);
             for (const std::string& allocator : o.allocators) {
                 const Outcome r = run(generalModel, pair, allocator, o.timeout, o.seed);
@@ -151,6 +176,7 @@ int main(int argc, char** argv) try {
                         << r.stopped << '\n';
             }
         }
+        if (sizes.empty()) continue;  // --only names no problem of this dimension
         std::sort(sizes.begin(), sizes.end());
         std::printf("\n%dD: %d pairs (%d draws refused by the mass check and redrawn); start sizes %g..%g, median %g\n", dimension, pairs, redrawn, sizes.front(),
                     sizes.back(), sizes[sizes.size() / 2]);

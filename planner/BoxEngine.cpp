@@ -21,9 +21,9 @@ struct BoardCells {
     const BoxEngine::Value* cells;
     const std::uint8_t* combos;
     const Board* board;
-    std::int64_t overridden;
-    BoxEngine::Value replacement;
-    BoxEngine::Value value(std::int64_t i) const { return i == overridden ? replacement : cells[i]; }
+    std::int64_t overridden, overridden2;
+    BoxEngine::Value replacement, replacement2;
+    BoxEngine::Value value(std::int64_t i) const { return i == overridden ? replacement : i == overridden2 ? replacement2 : cells[i]; }
     // Padding cells are empty; as combination 0 they are exactly what a guard sees outside the
     // region, so neighbours need no bounds test (and no load of their combination first).
     int combo(std::int64_t i) const { return combos[i] == BoxEngine::kOutside ? 0 : combos[i]; }
@@ -127,16 +127,16 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
     influence_.erase(std::unique(influence_.begin(), influence_.end()), influence_.end());
 }
 
-bool BoxEngine::matches(const Value* cells, std::int64_t anchor, int shape, std::int64_t cell, Value value) const {
+bool BoxEngine::matches(const Value* cells, std::int64_t anchor, int shape, std::int64_t cell, Value value, std::int64_t cell2, Value value2) const {
     const rules::RuleTables::Shape& t = tables_->shape(shape);
     const std::span<const std::int64_t> steps = cellSteps(shape);
     std::int32_t at[rules::RuleTables::kMaxCells];
     for (std::size_t k = 0; k < steps.size(); ++k) {
         const std::int64_t i = anchor + steps[k];
-        if (combo_[i] == kOutside || !tables_->test(t.lhs[k], combo_[i], i == cell ? value : cells[i])) return false;
+        if (combo_[i] == kOutside || !tables_->test(t.lhs[k], combo_[i], i == cell ? value : i == cell2 ? value2 : cells[i])) return false;
         at[k] = static_cast<std::int32_t>(i);
     }
-    return !t.hasGuard || tables_->guard(t.guard, BoardCells{cells, combo_.data(), board_, cell, value}, at);
+    return !t.hasGuard || tables_->guard(t.guard, BoardCells{cells, combo_.data(), board_, cell, cell2, value, value2}, at);
 }
 
 bool BoxEngine::guardHolds(const Value* cells, std::int64_t anchor, int shape) const {
@@ -144,7 +144,7 @@ bool BoxEngine::guardHolds(const Value* cells, std::int64_t anchor, int shape) c
     const std::int64_t* step = steps_.data() + p.at;
     std::int32_t at[rules::RuleTables::kMaxCells];
     for (int k = 0; k < p.cells; ++k) at[k] = static_cast<std::int32_t>(anchor + step[k]);
-    return tables_->guard(tables_->shape(shape).guard, BoardCells{cells, combo_.data(), board_, -1, 0}, at);
+    return tables_->guard(tables_->shape(shape).guard, BoardCells{cells, combo_.data(), board_, -1, -1, 0, 0}, at);
 }
 
 void BoxEngine::apply(Value* cells, std::int64_t anchor, int shape, Value* old) const {

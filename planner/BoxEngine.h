@@ -50,9 +50,10 @@ public:
     /// Union over shapes of readSteps: a change at cell c can only affect anchors c - r.
     const std::vector<std::int64_t>& influence() const { return influence_; }
 
-    /// Left side and guard of the instance hold. With `cell` >= 0, as if that cell held `value`
-    /// (an allocator asking "would this rule fire if the resource here were different?").
-    bool matches(const Value* cells, std::int64_t anchor, int shape, std::int64_t cell = -1, Value value = 0) const;
+    /// Left side and guard of the instance hold. With `cell` >= 0, as if that cell held `value`, and
+    /// `cell2` >= 0 held `value2` (an allocator asking "would this rule fire if the resources here
+    /// were different?").
+    bool matches(const Value* cells, std::int64_t anchor, int shape, std::int64_t cell = -1, Value value = 0, std::int64_t cell2 = -1, Value value2 = 0) const;
     /// Calls f(shape) for each shape enabled at the anchor (only shapes whose first cell accepts
     /// the anchor's state are evaluated); returns the number of evaluations.
     template <class F>

@@ -17,7 +17,8 @@ class DemandProbe {
 public:
     explicit DemandProbe(const Problem& problem);
     /// Whether cell i holds a resource and a motion instance it takes part in is disabled now but
-    /// would be enabled with i one creator heavier (a C) or one destroyer lighter (a D).
+    /// would be enabled with i one creator heavier (a C) or one destroyer lighter (a D); when i is
+    /// the instance's anchor, also when one other cell of it had the other resource as well.
     bool needsHeavier(const Execution& ex, std::int64_t i) const;
     bool needsLighter(const Execution& ex, std::int64_t i) const;
     /// Whether a value's resource is the creator (C) or the full one (D); whether it is labelled F
