@@ -23,7 +23,10 @@ struct BoardCells {
     const Board* board;
     std::int64_t overridden, overridden2;
     BoxEngine::Value replacement, replacement2;
-    BoxEngine::Value value(std::int64_t i) const { return i == overridden ? replacement : i == overridden2 ? replacement2 : cells[i]; }
+    BoxEngine::Value value(std::int64_t i) const {
+        if (i == overridden) return replacement;
+        return i == overridden2 ? replacement2 : cells[i];
+    }
     // Padding cells are empty; as combination 0 they are exactly what a guard sees outside the
     // region, so neighbours need no bounds test (and no load of their combination first).
     int combo(std::int64_t i) const { return combos[i] == BoxEngine::kOutside ? 0 : combos[i]; }
@@ -133,7 +136,11 @@ bool BoxEngine::matches(const Value* cells, std::int64_t anchor, int shape, std:
     std::int32_t at[rules::RuleTables::kMaxCells];
     for (std::size_t k = 0; k < steps.size(); ++k) {
         const std::int64_t i = anchor + steps[k];
-        if (combo_[i] == kOutside || !tables_->test(t.lhs[k], combo_[i], i == cell ? value : i == cell2 ? value2 : cells[i])) return false;
+        if (combo_[i] == kOutside) return false;
+        Value now = cells[i];
+        if (i == cell) now = value;
+        else if (i == cell2) now = value2;
+        if (!tables_->test(t.lhs[k], combo_[i], now)) return false;
         at[k] = static_cast<std::int32_t>(i);
     }
     return !t.hasGuard || tables_->guard(t.guard, BoardCells{cells, combo_.data(), board_, cell, cell2, value, value2}, at);
