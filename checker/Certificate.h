@@ -44,15 +44,15 @@ std::string certificateText(const Certificate& c);
 
 enum class CertificateStatus { Valid,
                                Missing,
-                               Unreadable,   // not a certificate (not JSON, fields missing)
-                               Tampered,     // the seal does not match the content
-                               Stale,        // the rule file has changed since
-                               OtherLattice, // written for another lattice
-                               OtherHolon }; // written by another holon version
+                               Unreadable,    // not a certificate (not JSON, fields missing)
+                               Tampered,      // the seal does not match the content
+                               Stale,         // the rule file has changed since
+                               OtherLattice,  // written for another lattice
+                               OtherHolon };  // written by another holon version
 
 struct CertificateCheck {
     CertificateStatus status = CertificateStatus::Missing;
-    std::string path, why;  // why: what is wrong with it, in a sentence; empty when valid
+    std::string path, why;    // why: what is wrong with it, in a sentence; empty when valid
     Certificate certificate;  // as read; trust it only when valid
 };
 

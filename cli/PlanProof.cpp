@@ -62,7 +62,7 @@ PlanProof planProof(const std::string& rules, const rules::System& system, const
 std::string PlanProof::line() const {
     const std::string lattice = check.certificate.lattice.empty() ? "the lattice" : check.certificate.lattice;
     if (!valid(*this))
-        return "NO proof for every region: these rules run unproved beyond the regions checked by hand (" + check.why + "); to prove what can be: " + verify;
+        return "NO proof for every region: the rules run without one (" + check.why + "); to prove what can be: " + verify;
     std::string out = proved.empty() ? "nothing proved for every region" : joined(proved) + " proved for every region of " + lattice;
     out += " (certificate " + check.path + ")";
     if (!notProved.empty()) out += "; NOT proved for every region: " + joined(notProved);
