@@ -130,6 +130,7 @@ int runEverySize(const EverySizeArgs& a) {
     std::optional<rules::OutputFile> traceOut, svgOut;
     if (!a.traceOut.empty()) traceOut.emplace("--trace-out", a.traceOut);
     if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
+    const std::string ruleText = certificate ? rules::readTextFile(rulePath) : "";  // hashed as it was proved, not as it may be after
     std::optional<TempDir> hashed;  // the obligations a certificate hashes, when --smt-out keeps none
     if (certificate && a.smtOut.empty()) hashed.emplace();
     checker::EverySizeOptions options;
@@ -175,7 +176,7 @@ int runEverySize(const EverySizeArgs& a) {
     }
     if (terminal) std::cerr << "\r" << std::string(60, ' ') << "\r";
     if (certificate) {
-        certificate->write(checker::certificateText(checker::certificateOf(report, rulePath, rules::readTextFile(rulePath), model.lattice().name())));
+        certificate->write(checker::certificateText(checker::certificateOf(report, rulePath, ruleText, model.lattice().name())));
         if (hashed)
             for (checker::Obligation& o : report.obligations) o.smtFile.clear();  // hashed, and gone with the temporary folder
     }
