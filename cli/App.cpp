@@ -34,7 +34,7 @@ std::string memoryAdvice(const std::string& command) {
 int runHolon(int argc, char** argv) {
     CLI::App app{"holon: check, verify and run rule systems for lattice modular robots"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "holon 0.1.0");
+    app.set_version_flag("--version", "holon " HOLON_VERSION);
     std::map<CLI::App*, Run> runs;
     auto add = [&](Run (*factory)(CLI::App&)) {
         const std::size_t before = app.get_subcommands({}).size();

@@ -6,6 +6,7 @@
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
 #include "cli/Limits.h"
+#include "cli/PlanProof.h"
 #include "cli/WriteErrors.h"
 #include "planner/Diagnosis.h"
 #include "planner/Execution.h"
@@ -53,6 +54,8 @@ void printShortOfGoal(const planner::Problem& problem, const planner::Execution&
 
 struct PlanArgs {
     std::string rules = "planner_intermediate", from, to, allocator = "random", scheduler = "sync", out, planOut, seedCell, traceOut, hexDisks, html;
+    std::string requireProof;  // --require-proof's list; every declared property when given bare
+    const CLI::Option* requireProofOption = nullptr;
     std::vector<std::string> noWarnings, lose, loseRandom;
     std::int64_t delay = 0;
     double drop = 0;
@@ -181,6 +184,9 @@ int run(const PlanArgs& a) {
     during("making the shapes");
     const rules::Lattice& lattice = rules::Lattice::get(from.dimension == 3 ? rules::LatticeKind::Cubic3D : rules::LatticeKind::Square2D);
     requirePlanLattice(*system, lattice);
+    // Before any work: a plan --require-proof refuses is refused at once.
+    const PlanProof proof = planProof(a.rules, *system, lattice.name());
+    if (a.requireProofOption->count() > 0) requireProof(proof, requiredProperties(a.requireProof, *system));
     rules::Model model(*system, lattice);
     const std::optional<planner::Vec> seedCell = parseCell(a.seedCell, from.dimension);
     planner::Problem problem = planner::makeProblem(model, std::move(from), std::move(to), seedCell, a.seed, memory);
@@ -249,12 +255,13 @@ int run(const PlanArgs& a) {
     if (!a.html.empty() && report.writeErrors().empty()) errors.attempt([&] { rules::OutputFile("--html", a.html).write(viewer::page(viewer::readRun(a.planOut))); });
 
     if (a.json) {
-        nlohmann::json j = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", lowerBound >= 0 ? nlohmann::json(lowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"relabels", stats.relabels}, {"evaluations", stats.evaluations}, {"stopped", stopReasonName(stats.stopped)}, {"system", system->name}, {"allocator", allocator->name()}, {"scheduler", a.scheduler}, {"seed", a.seed}};
+        nlohmann::json j = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", lowerBound >= 0 ? nlohmann::json(lowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"relabels", stats.relabels}, {"evaluations", stats.evaluations}, {"stopped", stopReasonName(stats.stopped)}, {"system", system->name}, {"allocator", allocator->name()}, {"scheduler", a.scheduler}, {"seed", a.seed}, {"proof", proof.json()}};
         if (faults) j["faults"] = faults->json();
         std::cout << j.dump(2) << '\n';
     } else {
         std::cout << "plan " << problem.start.name << " -> " << problem.target.name << " with " << system->name << " (" << a.scheduler
                   << ", allocator " << allocator->name() << ", seed " << a.seed << ")\n"
+                  << "  proof: " << proof.line() << '\n'
                   << "  start " << problem.start.cells.size() << " metamodules, target " << problem.target.cells.size() << ", seed cell ("
                   << problem.seed.x << "," << problem.seed.y << (lattice.dimension() == 3 ? "," + std::to_string(problem.seed.z) : "") << ")\n"
                   << "  creations " << stats.creations << ", deletions " << stats.deletions << ", transfers " << stats.transfers;
@@ -318,6 +325,10 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--delay", a->delay, "fault: every state change reaches the neighbours 1 to D rounds later, drawn at random; an instance waits for the states it reads (1 to 10^6)")->check(CLI::Range(std::int64_t{1}, std::int64_t{1000000}));
     sub->add_option("--drop", a->drop, "fault: each time a relabel would fire, its message is lost with probability P and sent again later (0 < P < 1)")->check(probabilityValidator());
     sub->add_option("--fault-seed", a->faultSeed, "random seed of the faults: random losses, delays, drops (default: --seed)");
+    a->requireProofOption = sub->add_option("--require-proof", a->requireProof,
+                                            "refuse to run (exit 2) unless the rules' certificate (holon verify --every-size) is valid and proves these properties "
+                                            "for every region: --require-proof alone requires every declared property, --require-proof=termination,mass_conservation those")
+                                ->expected(0, 1);
     sub->add_flag("--quiet", a->quiet, "no progress bar");
     sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");
     return [a] { return withinMemory(a->memoryMiB, [&] { return run(*a); }); };

@@ -21,23 +21,26 @@ namespace holon::cli {
 namespace {
 
 struct VerifyArgs {
-    std::string file, region, traceOut, svg, smtOut, lattice;
+    std::string file, region, traceOut, svg, smtOut, lattice, certificate;
     std::vector<std::string> from, inputs, properties, noWarnings;
     int depth = 0;
     double timeout = 0;  // the whole job; 0: the option left out, no limit
     double obligationTimeout = checker::VerifyOptions{}.timeoutSeconds;
     std::uint64_t memoryMiB = kDefaultMemoryMiB;
-    bool json = false, reach = false, everySize = false;
+    bool json = false, reach = false, everySize = false, noCertificate = false;
 };
 
 /// What the reference interpreter found wrong with a counterexample.
 int run(const VerifyArgs& a) {
     const Budget budget(a.timeout);  // from the start: loading and encoding count
     if (a.everySize) {
-        if (a.depth > 0 || a.reach || !a.from.empty() || !a.inputs.empty() || !a.traceOut.empty() || !a.svg.empty())
-            throw InputError("--every-size proves one step on a window: --depth, --reach, --from, --input, --trace-out and --svg need --region without it");
-        return runEverySize({a.file, a.lattice, a.region, a.smtOut, a.properties, a.noWarnings, budget, a.obligationTimeout, a.memoryMiB, a.json});
+        if (a.depth > 0 || a.reach || !a.from.empty() || !a.inputs.empty())
+            throw InputError("--every-size proves one step on a window: --depth, --reach, --from and --input need --region without it");
+        if (!a.certificate.empty() && a.noCertificate) throw InputError("--certificate and --no-certificate: give one of them");
+        return runEverySize({a.file, a.lattice, a.region, a.smtOut, a.traceOut, a.svg, a.certificate, a.noCertificate, a.properties, a.noWarnings, budget,
+                             a.obligationTimeout, a.memoryMiB, a.json});
     }
+    if (!a.certificate.empty() || a.noCertificate) throw InputError("--certificate records a proof for every region: it needs --every-size");
     if (!a.lattice.empty()) throw InputError("--lattice is for --every-size; a bounded proof takes the lattice of --region");
     if (a.region.empty()) throw InputError("--region is required: a bounded region such as square:3x3 (or --every-size --lattice L for every region)");
     auto system = loadRules(a.file, a.noWarnings);
@@ -162,6 +165,8 @@ Run addVerifyCommand(CLI::App& app) {
     addMemory(sub, a->memoryMiB, "for Z3");
     sub->add_flag("--json", a->json, "print the report as JSON");
     sub->add_option("--smt-out", a->smtOut, "write every obligation as SMT-LIB2 into this directory");
+    sub->add_option("--certificate", a->certificate, "with --every-size: write the certificate here (default: certificates/STEM.LATTICE.json beside the rule file, for a run of every property without --region)");
+    sub->add_flag("--no-certificate", a->noCertificate, "with --every-size: write no certificate");
     sub->add_option("--trace-out", a->traceOut, "write each counterexample as an ITF JSON trace (several: FILE with the obligation's name inserted)");
     sub->add_option("--svg", a->svg, "draw each counterexample as SVG (several: FILE with the obligation's name inserted)");
     sub->add_option("-W", a->noWarnings, "silence a warning: -W no-NAME");

@@ -4,12 +4,18 @@
 
 #include "cli/VerifyEverySize.h"
 
+#include "checker/Certificate.h"
 #include "checker/Draw.h"
 #include "checker/EverySize.h"
+#include "checker/NamedRegion.h"
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
 #include "rules/Error.h"
+#include "rules/OutputFile.h"
+#include "rules/Parser.h"
 
+#include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -32,6 +38,83 @@ const rules::Lattice& latticeFor(const EverySizeArgs& a, const rules::System& sy
     throw InputError("--every-size needs the lattice: --lattice square2d, hex2d or cubic3d");
 }
 
+/// Writes each counterexample's trace (ITF) and picture (SVG): a window counterexample on the named
+/// region the interpreter confirms it on again (checker/NamedRegion.h), a bounded one on --region.
+/// Returns what was written, with the region a re-check needs.
+std::vector<std::string> writeCounterexamples(const EverySizeArgs& a, const rules::Model& model, const std::optional<rules::Region>& region,
+                                              const checker::VerifyReport& report, const std::optional<rules::OutputFile>& traceOut,
+                                              const std::optional<rules::OutputFile>& svgOut) {
+    std::vector<std::string> written;
+    if (!traceOut && !svgOut) return written;
+    std::vector<const checker::PropertyResult*> shown;
+    for (const checker::Obligation& o : report.obligations)
+        if (o.result.verdict == checker::Verdict::Violated && o.result.trace) shown.push_back(&o.result);
+    for (const checker::PropertyResult* r : shown) {
+        std::optional<checker::NamedCounterexample> named;
+        if (r->witness.contains("window_radius")) {
+            std::string why;
+            named = checker::onNamedRegion(model, *r, why);
+            if (!named) {
+                std::cerr << "holon verify: the counterexample for '" << r->name << "' is not written: " << why << '\n';
+                continue;
+            }
+        } else {
+            named = checker::NamedCounterexample{*region, *r->trace, r->inputs.value_or(std::vector<std::uint32_t>(region->size(), 0))};
+        }
+        const rules::Engine engine(model, named->region, named->inputs);
+        const bool several = shown.size() > 1;
+        const std::string on = " (on " + named->region.spec() + ")";
+        if (traceOut) {
+            const rules::OutputFile file("--trace-out", pathFor(traceOut->path(), r->name, several));
+            file.write(checker::toItf(named->trace, engine, a.file).dump(2) + "\n");
+            written.push_back(file.path() + on);
+        }
+        if (svgOut) {
+            const rules::OutputFile file("--svg", pathFor(svgOut->path(), r->name, several));
+            file.write(checker::drawTraceSvg(named->trace, engine, model.system().name + " on " + named->region.spec() + ": " + r->name + " -- " + named->trace.description));
+            written.push_back(file.path() + on);
+        }
+    }
+    return written;
+}
+
+/// Where the certificate goes: --certificate, or the rule file's default place for a run that
+/// proves every property on windows alone (a subset, or bounded proofs standing in, would replace
+/// the record `holon plan` reads with a partial one); `note` says why none is written.
+std::optional<rules::OutputFile> certificateFile(const EverySizeArgs& a, const std::string& rulePath, const std::string& lattice, std::string& note) {
+    if (a.noCertificate) return std::nullopt;
+    if (!a.certificate.empty()) return rules::OutputFile("--certificate", a.certificate);
+    if (!a.properties.empty() || !a.region.empty()) {
+        note = "none written: --" + std::string(a.properties.empty() ? "region" : "property") + " makes it a partial record; give --certificate PATH to write one";
+        return std::nullopt;
+    }
+    const std::string path = checker::certificatePath(rulePath, lattice);
+    const std::string option = "the certificate (default place; --certificate PATH or --no-certificate to change it)";
+    rules::prepareOutputDir(option, std::filesystem::path(path).parent_path().string());
+    return rules::OutputFile(option, path);
+}
+
+/// A folder of its own under the system's temporary folder, removed with its files at the end: the
+/// obligations a certificate hashes when --smt-out does not keep them.
+class TempDir {
+public:
+    TempDir() {
+        std::string pattern = (std::filesystem::temp_directory_path() / "holon-certificate-XXXXXX").string();
+        if (!::mkdtemp(pattern.data())) throw InputError("cannot make a temporary folder in " + std::filesystem::temp_directory_path().string() + " for the certificate's obligations");
+        path_ = pattern;
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    ~TempDir() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path_, ignored);
+    }
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+};
+
 }  // namespace
 
 int runEverySize(const EverySizeArgs& a) {
@@ -40,13 +123,23 @@ int runEverySize(const EverySizeArgs& a) {
     std::optional<rules::Region> region;
     if (!a.region.empty()) region = rules::Region::parse(a.region, 4096);
     const rules::Model model(*system, latticeFor(a, *system, region));
+    // Output paths are checked before the proofs, so finished work is never lost to a bad path.
+    const std::string rulePath = rules::rulesPath(a.file);
+    std::string certificateNote;
+    const std::optional<rules::OutputFile> certificate = certificateFile(a, rulePath, model.lattice().name(), certificateNote);
+    std::optional<rules::OutputFile> traceOut, svgOut;
+    if (!a.traceOut.empty()) traceOut.emplace("--trace-out", a.traceOut);
+    if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
+    const std::string ruleText = certificate ? rules::readTextFile(rulePath) : "";  // hashed as it was proved, not as it may be after
+    std::optional<TempDir> hashed;  // the obligations a certificate hashes, when --smt-out keeps none
+    if (certificate && a.smtOut.empty()) hashed.emplace();
     checker::EverySizeOptions options;
     options.timeoutSeconds = a.obligationTimeout;
     options.budget = a.budget;
     options.memoryMiB = a.memoryMiB;
     options.properties = a.properties;
-    options.smtOut = a.smtOut;
-    options.smtOutOption = "--smt-out";
+    options.smtOut = hashed ? hashed->path() : a.smtOut;
+    options.smtOutOption = hashed ? "the certificate's temporary folder" : "--smt-out";
     const bool terminal = isatty(2) && !a.json;
     auto announce = [&](const std::string& name) {
         if (terminal) std::cerr << "\r  proving " << name << "...                    " << std::flush;
@@ -82,10 +175,17 @@ int runEverySize(const EverySizeArgs& a) {
         }
     }
     if (terminal) std::cerr << "\r" << std::string(60, ' ') << "\r";
+    if (certificate) {
+        certificate->write(checker::certificateText(checker::certificateOf(report, rulePath, ruleText, model.lattice().name())));
+        if (hashed)
+            for (checker::Obligation& o : report.obligations) o.smtFile.clear();  // hashed, and gone with the temporary folder
+    }
+    const std::vector<std::string> written = writeCounterexamples(a, model, region, report, traceOut, svgOut);
     const int code = unconfirmed ? kExitInternal : exitCodeFor(report.overall());
     if (a.json) {
         nlohmann::json j = report.toJson();
         j["lattice"] = model.lattice().name();
+        j["certificate"] = certificate ? nlohmann::json(certificate->path()) : nlohmann::json();
         std::cout << j.dump(2) << '\n';
         return code;
     }
@@ -104,6 +204,13 @@ int runEverySize(const EverySizeArgs& a) {
                   << '\n'
                   << every.drawings[k];
     }
+    if (!written.empty()) {
+        std::cout << "\nwritten:";
+        for (const std::string& w : written) std::cout << "\n  " << w;
+        std::cout << '\n';
+    }
+    std::cout << "\ncertificate: " << (certificate ? certificate->path() + " (holon plan reads it; docs/every-size.md, \"Certificates\")" : certificateNote.empty() ? "none written (--no-certificate)" : certificateNote)
+              << '\n';
     return code;
 }
 

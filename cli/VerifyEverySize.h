@@ -1,7 +1,8 @@
 #pragma once
 // `holon verify FILE --every-size --lattice L [--region R]`: the proofs for every region of a
 // lattice (checker/EverySize.h); with --region, the properties that are not local get the bounded
-// proof on R instead, and say so in their scope.
+// proof on R instead, and say so in their scope. It writes a certificate for `holon plan` and, on
+// request, each confirmed counterexample as an ITF trace and an SVG picture.
 
 #include "rules/Budget.h"
 
@@ -12,7 +13,11 @@
 namespace holon::cli {
 
 struct EverySizeArgs {
-    std::string file, lattice, region, smtOut;
+    std::string file, lattice, region, smtOut, traceOut, svg;
+    /// Where the certificate goes (checker/Certificate.h); empty: the rule file's default place
+    /// when every property is proved on windows alone (no --property, no --region), else none.
+    std::string certificate;
+    bool noCertificate = false;
     std::vector<std::string> properties, noWarnings;
     Budget budget;                 // the whole job's
     double obligationTimeout = 0;  // seconds per property

@@ -1,0 +1,68 @@
+// Certificates of proofs for every region (checker/Certificate.h): the text is deterministic, and
+// checkCertificate tells a valid one from one that is missing, not a certificate, edited by hand,
+// stale, for another lattice or written by another holon (the last cannot be made through the
+// CLI, so it is tested here; the others also end to end in tests/cli).
+
+#include "checker/Certificate.h"
+
+#include "rules/Sha256.h"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace holon;
+using checker::CertificateStatus;
+
+namespace {
+
+const std::string kRules = "system s\nstates A\n";
+
+checker::Certificate sample() {
+    checker::VerifyReport report;
+    report.system = "s";
+    checker::Obligation o;
+    o.result.name = "termination", o.result.kind = "ranking", o.result.verdict = checker::Verdict::Holds;
+    o.result.summary = "every step decreases it";
+    o.scope = "every region";
+    report.obligations.push_back(o);
+    return checker::certificateOf(report, "/some/folder/s.holon", kRules, "square2d");
+}
+
+std::string written(const std::string& name, const std::string& text) {
+    const std::string path = (std::filesystem::temp_directory_path() / ("holon_certificate_test_" + name + ".json")).string();
+    std::ofstream(path) << text;
+    return path;
+}
+
+}  // namespace
+
+TEST_CASE("a certificate's text is deterministic and names the file without its folder") {
+    const checker::Certificate c = sample();
+    CHECK(checker::certificateText(c) == checker::certificateText(sample()));
+    CHECK(c.rulesFile == "s.holon");
+    CHECK(c.rulesSha256 == rules::sha256Hex(kRules));
+    CHECK(c.properties.at(0).provedEverywhere());
+    CHECK(checker::certificatePath("/some/folder/s.holon", "hex2d") == "/some/folder/certificates/s.hex2d.json");
+}
+
+TEST_CASE("checkCertificate trusts only a certificate that matches") {
+    const std::string text = checker::certificateText(sample());
+    CHECK(checker::checkCertificate(written("valid", text), kRules, "square2d").status == CertificateStatus::Valid);
+    CHECK(checker::checkCertificate("/nonexistent/c.json", kRules, "square2d").status == CertificateStatus::Missing);
+    CHECK(checker::checkCertificate(written("stale", text), kRules + "// edited\n", "square2d").status == CertificateStatus::Stale);
+    CHECK(checker::checkCertificate(written("lattice", text), kRules, "hex2d").status == CertificateStatus::OtherLattice);
+    CHECK(checker::checkCertificate(written("json", "{\"certificate\": "), kRules, "square2d").status == CertificateStatus::Unreadable);
+    CHECK(checker::checkCertificate(written("fields", "{\"certificate\": \"x\"}"), kRules, "square2d").status == CertificateStatus::Unreadable);
+
+    std::string edited = text;
+    edited.replace(edited.find("\"proved\""), 8, "\"unknown\"");
+    CHECK(checker::checkCertificate(written("tampered", edited), kRules, "square2d").status == CertificateStatus::Tampered);
+
+    checker::Certificate older = sample();
+    older.holon = "0.0.1";  // sealed by its own writer: only the version tells
+    const checker::CertificateCheck check = checker::checkCertificate(written("older", checker::certificateText(older)), kRules, "square2d");
+    CHECK(check.status == CertificateStatus::OtherHolon);
+    CHECK(check.why.find("written by holon 0.0.1, not by this holon " + checker::holonVersion()) != std::string::npos);
+}
