@@ -128,9 +128,10 @@ smt::Term stepsAlong(SmtEncoding& enc, const State& s, int i, int field, int dir
 /// neighbourhood they read lies in the window, and, for each reaches(T, f, S), that a T cell
 /// steps to a T or S cell (a consequence of the conjunct at every cell of a region, and vacuous at
 /// the empty points outside one). Both hold at every point of a region's embedding.
-smt::Term before(SmtEncoding& enc, const Window& w, int q, const State& c, const std::vector<const Expr*>& local, int g, const std::vector<const Expr*>& reaching) {
+/// Conjoined to `f` (the step), in the order the exported obligations have always had.
+smt::Term before(SmtEncoding& enc, const Window& w, int q, const State& c, const std::vector<const Expr*>& local, int g, const std::vector<const Expr*>& reaching,
+                 smt::Term f) {
     const rules::Region& region = w.region();
-    smt::Term f = c.is[0][0].context().boolVal(true);
     for (int i : w.around(q, w.margin())) {
         const bool whole = inside(region, i);
         if (g == 0 || whole)
@@ -273,14 +274,16 @@ InvariantPlan planInvariant(const rules::Model& model, const rules::Property& p,
             // Only cells within the conjunct's radius of the pattern can change their condition.
             const int r = readRadius(*x);
             ob.onWindow = [local, reaching, g, x, r](SmtEncoding& enc, const Window& w, int q, const State& c, const State& d) {
+                const smt::Term f = before(enc, w, q, c, local, g, reaching, enc.fires(q, c, d));
                 smt::Term fails = c.is[0][0].context().boolVal(false);
                 for (int i : w.around(q, r)) fails = fails || !enc.cellCondition(*x, d, i);
-                return enc.fires(q, c, d) && before(enc, w, q, c, local, g, reaching) && fails;
+                return f && fails;
             };
         } else {
             ob.broken = "breaks it (" + std::string(parts.size() > 1 ? "conjunct " + std::to_string(k + 1) + ": " : "") + "its frame condition fails)";
             ob.onWindow = [local, reaching, g, x](SmtEncoding& enc, const Window& w, int q, const State& c, const State& d) {
-                return enc.fires(q, c, d) && before(enc, w, q, c, local, g, reaching) && !frame(enc, w, q, c, d, *x);
+                const smt::Term f = before(enc, w, q, c, local, g, reaching, enc.fires(q, c, d));
+                return f && !frame(enc, w, q, c, d, *x);
             };
         }
         ob.onRegion = [&p, x](SmtEncoding& enc, int q, const State& c, const State& d) {
