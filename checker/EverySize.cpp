@@ -8,7 +8,8 @@
 //   ranking     the focus instance fires and the ranking does not decrease (or, excepted, changes)
 //   invariant   the focus instance fires, every conjunct holds at every window cell whose
 //               neighbours are in the window, and conjunct k fails at a cell within the conjuncts'
-//               radius of the pattern (nothing else can change)
+//               radius of the pattern (nothing else can change); a some/connected/reaches
+//               conjunct: its frame condition fails instead (EverySizeInvariant.h plans the conjuncts)
 // Non-local constraints are dropped (the query only gets more models). UNSAT is then a proof for
 // every region; proofs/README.md argues it cell by cell. A model is a window counterexample, which
 // may be spurious (the window is not a region): it counts only once the bounded encoding has

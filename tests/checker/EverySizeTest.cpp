@@ -248,7 +248,7 @@ rule grow: F U => F F
         bool implied;
     };
     for (const Case& c : {Case{"some(F) and connected(F) and reaches(P | U | V, nbr, F) and connected", true},
-                          Case{"some(F) and connected(F) and reaches(P, nbr, F) and connected", false},         // U, V cells uncovered
+                          Case{"some(F) and connected(F) and reaches(P, nbr, F) and connected", false},                     // U, V cells uncovered
                           Case{"some(F) and connected(F) and reaches(P | U | V, nbr, F) and connected(F | P | U)", false},  // paths through V
                           Case{"some(F) and connected(F) and reaches(U | V, nbr, P) and reaches(P, nbr, F) and connected", true},
                           Case{"some(F) and reaches(P | U | V, nbr, F) and connected", false}}) {  // no connected(A) to hang from
