@@ -124,20 +124,20 @@ TEST_CASE("every size: broken variants are refuted by window counterexamples the
     }
     // Deletion without its guard: a P with a child (or a U neighbour) is deleted. The frame
     // condition of reaches(P, parent, F) fails on the window, and the completion breaks the tree.
-    for (const char* stem : {"planner_no_guard", "planner_general1_no_guard"})
-        for (rules::LatticeKind lattice : {rules::LatticeKind::Square2D, rules::LatticeKind::Hex2D}) {
-            CAPTURE(stem);
-            CAPTURE(rules::Lattice::get(lattice).name());
-            const rules::System system = broken(stem);
-            const rules::Model model(system, rules::Lattice::get(lattice));
-            const rules::Property& p = *system.property("safety");
-            const checker::EverySizeReport r = everySize(model, {"safety"});
-            const checker::Obligation& o = obligation(r.report, "safety");
-            CHECK(o.result.summary.find("rule 'delete' breaks it (conjunct 4: its frame condition fails)") != std::string::npos);
-            checkRefuted(model, o, [&](const rules::Engine& e, const checker::Trace& t) {
-                return e.holds(p.exprs[0], t.steps[0].cells.data()) && !e.holds(p.exprs[0], t.steps[1].cells.data());
-            });
-        }
+    // (planner_no_guard on square2d and the other broken planners: tests/cli.)
+    for (auto [stem, lattice] : {std::pair{"planner_no_guard", rules::LatticeKind::Hex2D}, std::pair{"planner_general1_no_guard", rules::LatticeKind::Square2D}}) {
+        CAPTURE(std::string(stem));
+        CAPTURE(rules::Lattice::get(lattice).name());
+        const rules::System system = broken(stem);
+        const rules::Model model(system, rules::Lattice::get(lattice));
+        const rules::Property& p = *system.property("safety");
+        const checker::EverySizeReport r = everySize(model, {"safety"});
+        const checker::Obligation& o = obligation(r.report, "safety");
+        CHECK(o.result.summary.find("rule 'delete' breaks it (conjunct 4: its frame condition fails)") != std::string::npos);
+        checkRefuted(model, o, [&](const rules::Engine& e, const checker::Trace& t) {
+            return e.holds(p.exprs[0], t.steps[0].cells.data()) && !e.holds(p.exprs[0], t.steps[1].cells.data());
+        });
+    }
     SUBCASE("hex_growth_overlap breaks a hole") {
         const rules::System system = broken("hex_growth_overlap");
         const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Hex2D));
