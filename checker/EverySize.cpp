@@ -8,7 +8,8 @@
 //   ranking     the focus instance fires and the ranking does not decrease (or, excepted, changes)
 //   invariant   the focus instance fires, every conjunct holds at every window cell whose
 //               neighbours are in the window, and conjunct k fails at a cell within the conjuncts'
-//               radius of the pattern (nothing else can change)
+//               radius of the pattern (nothing else can change); a some/connected/reaches
+//               conjunct: its frame condition fails instead (EverySizeInvariant.h plans the conjuncts)
 // Non-local constraints are dropped (the query only gets more models). UNSAT is then a proof for
 // every region; proofs/README.md argues it cell by cell. A model is a window counterexample, which
 // may be spurious (the window is not a region): it counts only once the bounded encoding has
@@ -18,9 +19,11 @@
 #include "checker/EverySize.h"
 
 #include "checker/Draw.h"
+#include "checker/EverySizeInvariant.h"
 #include "checker/Property.h"
 #include "checker/SmtEncoding.h"
 #include "checker/SolverLimits.h"
+#include "checker/StepObligation.h"
 #include "checker/Window.h"
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
@@ -39,16 +42,6 @@ namespace {
 using rules::CellValue;
 using State = SmtEncoding::State;
 using Cells = std::vector<CellValue>;
-
-/// One property decided by a step, three ways: on the window (instance q at the origin), on a
-/// bounded region (every hypothesis), and on a concrete step through the compiled engine.
-struct StepObligation {
-    std::string name, kind, proved, broken;  // verdict texts
-    int margin = 0;
-    std::function<smt::Term(SmtEncoding&, const Window&, int q, const State& c, const State& d)> onWindow;
-    std::function<smt::Term(SmtEncoding&, int q, const State& c, const State& d)> onRegion;
-    const rules::Property* property = nullptr;  // whose type confirms a counterexample (checker/Property.h)
-};
 
 std::string fileSafe(std::string s) {
     for (char& c : s)
@@ -247,38 +240,6 @@ StepObligation ranking(const rules::Model& model, const rules::Property& p) {
     return ob;
 }
 
-/// Conjunct k of an invariant whose conjuncts are all per-cell conditions of radius g: after a step,
-/// only cells within g of the pattern can change their condition, and each reads within 2g.
-StepObligation invariantConjunct(const rules::Model& model, const rules::Property& p, const std::vector<const rules::Expr*>& parts, std::size_t k) {
-    int g = 0;
-    for (const rules::Expr* x : parts) g = std::max(g, readRadius(*x));
-    StepObligation ob;
-    ob.name = parts.size() > 1 ? p.name + "." + std::to_string(k + 1) : p.name;
-    ob.property = &p;
-    ob.kind = "invariant", ob.margin = std::max(ruleRadius(model), 2 * g);
-    ob.proved = "inductive: every step from a state where it holds keeps it, on every region";
-    ob.broken = "breaks it" + std::string(parts.size() > 1 ? " (conjunct " + std::to_string(k + 1) + ")" : "");
-    ob.onWindow = [parts, k, g](SmtEncoding& enc, const Window& w, int q, const State& c, const State& d) {
-        const rules::Region& region = w.region();
-        smt::Term f = enc.fires(q, c, d);
-        // Every conjunct at every cell near the instance whose neighbourhood (as far as the
-        // conjuncts read) is inside; cells further away have nothing to do with its step.
-        for (int i : w.around(q, w.margin())) {
-            bool inside = true;
-            for (int dir = 0; g > 0 && dir < region.lattice().degree(); ++dir) inside = inside && region.neighbour(i, dir) >= 0;
-            if (!inside) continue;
-            for (const rules::Expr* x : parts) f = f && enc.cellCondition(*x, c, i);
-        }
-        smt::Term fails = c.is[0][0].context().boolVal(false);
-        for (int i : w.around(q, g)) fails = fails || !enc.cellCondition(*parts[k], d, i);
-        return f && fails;
-    };
-    ob.onRegion = [&p, parts, k](SmtEncoding& enc, int q, const State& c, const State& d) {
-        return enc.legal(c) && enc.legal(d) && enc.holds(p.exprs[0], c, true) && enc.fires(q, c, d) && !enc.holds(*parts[k], d, false);
-    };
-    return ob;
-}
-
 }  // namespace
 
 EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOptions& options, const std::function<void(const std::string&)>& onObligation) {
@@ -341,27 +302,18 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
             break;
         }
         case rules::Property::Kind::Invariant: {
-            const std::vector<const rules::Expr*> parts = rules::conjuncts(p.exprs[0]);
-            const Window& probe = prover.window(0);
-            std::string why, others;
-            for (std::size_t k = 0; k < parts.size(); ++k) {
-                const std::string n = notLocal(*parts[k], probe.engine());
-                if (n.empty()) continue;
-                if (why.empty()) why = "conjunct " + std::to_string(k + 1) + ", " + n;
-                else others += (others.empty() ? "" : ", ") + std::to_string(k + 1);
-            }
-            if (!others.empty()) why += "; " + std::string(others.find(',') == std::string::npos ? "conjunct " + others + " is" : "conjuncts " + others + " are") + " not local either";
-            if (!why.empty()) {
-                undecided(p, why);
+            // Conjunct by conjunct (checker/EverySizeInvariant.h); the first that fails decides.
+            const InvariantPlan plan = planInvariant(model, p, prover.window(0).engine());
+            if (plan.steps.empty()) {
+                undecided(p, plan.undecided);
                 break;
             }
-            // One conjunct at a time; the first that fails decides.
             Obligation total;
             total.result.name = p.name, total.result.kind = "invariant", total.scope = "every region";
             total.result.verdict = Verdict::Holds;
             std::string drawing;
-            for (std::size_t k = 0; k < parts.size(); ++k) {
-                auto [part, d] = run(invariantConjunct(model, p, parts, k));
+            for (const StepObligation& step : plan.steps) {
+                auto [part, d] = run(step);
                 total.result.seconds += part.result.seconds;
                 if (!part.smtFile.empty()) total.smtFile += (total.smtFile.empty() ? "" : " ") + part.smtFile;
                 total.result.summary = part.result.summary;
@@ -371,6 +323,15 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
                 part.smtFile = total.smtFile;
                 total = part, drawing = d;
                 break;
+            }
+            if (total.result.verdict == Verdict::Holds) {
+                if (!plan.undecided.empty()) {
+                    total.result.verdict = Verdict::Unknown;
+                    total.result.summary = "not proved for every size: " + plan.undecided;
+                    out.notLocal.push_back(p.name);
+                } else if (!plan.trusted.empty()) {
+                    total.result.summary += "; " + plan.trusted;
+                }
             }
             add(total, drawing);
             break;

@@ -96,9 +96,13 @@ public:
     /// Decodes a configuration from a model.
     std::vector<rules::CellValue> decode(const smt::Model& m, const State& s) const;
 
-private:
+    /// Cell `cell` of s is accepted (its state and input combination); a cell < 0 lies outside the
+    /// region: empty, without inputs.
     smt::Term member(const State& s, int cell, const std::function<bool(int combo, rules::CellValue v)>& accepts);
+    /// Cell `cell` of s satisfies a predicate of the system's expressions.
     smt::Term memberPred(const State& s, int cell, const rules::CellPredicate& pred);
+
+private:
     smt::Term inputCombo(int cell, int combo) const;
     /// Per state some input combination lets `accepts` take: the condition on the cell's input
     /// bits under which it does (true when every combination does).

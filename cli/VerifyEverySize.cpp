@@ -14,6 +14,7 @@
 #include "rules/OutputFile.h"
 #include "rules/Parser.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iomanip>
@@ -189,11 +190,13 @@ int runEverySize(const EverySizeArgs& a) {
         std::cout << j.dump(2) << '\n';
         return code;
     }
+    int scopeWidth = 16;  // "region hex:r2" and longer region names get their column too
+    for (const auto& o : report.obligations) scopeWidth = std::max(scopeWidth, static_cast<int>(o.scope.size()) + 2);
     std::cout << system->name << ": " << report.region << " (window proofs, proofs/README.md)" << (region ? "; scope 'region " + region->spec() + "': the bounded proof" : "")
-              << "\n\n  " << std::left << std::setw(22) << "obligation" << std::setw(16) << "verdict" << std::setw(16) << "scope" << std::setw(10) << "time"
+              << "\n\n  " << std::left << std::setw(22) << "obligation" << std::setw(16) << "verdict" << std::setw(scopeWidth) << "scope" << std::setw(10) << "time"
               << "evidence\n";
     for (const auto& o : report.obligations)
-        std::cout << "  " << std::setw(22) << o.result.name << std::setw(16) << checker::proofVerdictName(o.result.verdict) << std::setw(16) << o.scope << std::setw(10)
+        std::cout << "  " << std::setw(22) << o.result.name << std::setw(16) << checker::proofVerdictName(o.result.verdict) << std::setw(scopeWidth) << o.scope << std::setw(10)
                   << (std::to_string(static_cast<int>(o.result.seconds * 1000)) + " ms ") << o.result.summary << '\n';
     for (std::size_t k = 0; k < report.obligations.size(); ++k) {
         if (every.drawings[k].empty()) continue;

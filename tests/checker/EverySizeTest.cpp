@@ -5,6 +5,7 @@
 
 #include "CheckSupport.h"
 #include "checker/EverySize.h"
+#include "checker/EverySizeInvariant.h"
 #include "checker/Window.h"
 
 using namespace holon;
@@ -72,10 +73,14 @@ TEST_CASE("every size: the planners' termination and mass conservation on square
             CHECK(termination.result.verdict == Verdict::Holds);
             CHECK(termination.scope == "every region");
             if (system.property("mass_conservation")) CHECK(obligation(r.report, "mass_conservation").result.verdict == Verdict::Holds);
-            // Safety (connectivity, reachability) and Progress are not decided on a window.
-            CHECK(obligation(r.report, "safety").result.verdict == Verdict::Unknown);
+            // Safety through frame lemmas and Lemma C (saying so); Progress is not decided on a window.
+            const checker::Obligation& safety = obligation(r.report, "safety");
+            CHECK(safety.result.verdict == Verdict::Holds);
+            CHECK(safety.scope == "every region");
+            CHECK(safety.result.summary.find("conjuncts 1, 2, 4, 5 through frame lemmas") != std::string::npos);
+            CHECK(safety.result.summary.find("conjunct 6 follows from conjuncts 2, 4, 5 (Lemma C): lemmas proved on paper") != std::string::npos);
             CHECK(obligation(r.report, "progress").result.verdict == Verdict::Unknown);
-            CHECK(r.notLocal == std::vector<std::string>{"safety", "progress"});
+            CHECK(r.notLocal == std::vector<std::string>{"progress"});
             CHECK(r.report.toJson()["properties"][1]["scope"] == "every region");
         }
     }
@@ -115,6 +120,22 @@ TEST_CASE("every size: broken variants are refuted by window counterexamples the
         const rules::Property& p = *system.property("partial");
         checkRefuted(model, obligation(everySize(model, {"partial"}).report, "partial"), [&](const rules::Engine& e, const checker::Trace& t) {
             return e.number(p.exprs[0], t.steps[1].cells.data()) >= e.number(p.exprs[0], t.steps[0].cells.data());
+        });
+    }
+    // Deletion without its guard: a P with a child (or a U neighbour) is deleted. The frame
+    // condition of reaches(P, parent, F) fails on the window, and the completion breaks the tree.
+    // (planner_no_guard on square2d and the other broken planners: tests/cli.)
+    for (auto [stem, lattice] : {std::pair{"planner_no_guard", rules::LatticeKind::Hex2D}, std::pair{"planner_general1_no_guard", rules::LatticeKind::Square2D}}) {
+        CAPTURE(std::string(stem));
+        CAPTURE(rules::Lattice::get(lattice).name());
+        const rules::System system = broken(stem);
+        const rules::Model model(system, rules::Lattice::get(lattice));
+        const rules::Property& p = *system.property("safety");
+        const checker::EverySizeReport r = everySize(model, {"safety"});
+        const checker::Obligation& o = obligation(r.report, "safety");
+        CHECK(o.result.summary.find("rule 'delete' breaks it (conjunct 4: its frame condition fails)") != std::string::npos);
+        checkRefuted(model, o, [&](const rules::Engine& e, const checker::Trace& t) {
+            return e.holds(p.exprs[0], t.steps[0].cells.data()) && !e.holds(p.exprs[0], t.steps[1].cells.data());
         });
     }
     SUBCASE("hex_growth_overlap breaks a hole") {
@@ -188,8 +209,14 @@ invariant whole: all(A: count nbr B == 0) and no(B&!mark) and all(A | _) and som
     CHECK(window.focus().size() == model.shapes().size());
     for (int q : window.focus()) CHECK(window.around(q, 0).size() == 2);
     const checker::EverySizeReport r = everySize(model);
+    // some(A) and connected have frame lemmas (connected is not implied: no connected(T) before
+    // it); no(_&!mark) is not decided, so neither is the invariant.
     CHECK(obligation(r.report, "whole").result.verdict == Verdict::Unknown);
-    CHECK(obligation(r.report, "whole").result.summary.find("conjunct 4") != std::string::npos);
+    CHECK(obligation(r.report, "whole").result.summary.find("not proved for every size: conjunct 6") != std::string::npos);
+    const checker::InvariantPlan plan = checker::planInvariant(model, *system.property("whole"), window.engine());
+    CHECK(plan.steps.size() == 5);
+    CHECK(plan.implied.empty());
+    CHECK(plan.trusted.find("conjuncts 4, 5 through frame lemmas") == 0);
 }
 
 TEST_CASE("every size: a ranking counting empty cells by their neighbours is not decided on a window") {
@@ -207,4 +234,59 @@ ranking size: -count(A)
     CHECK(obligation(r.report, "shore").result.summary.find("counts empty cells by their neighbours") != std::string::npos);
     CHECK(obligation(r.report, "size").result.verdict == Verdict::Holds);
     CHECK(r.notLocal == std::vector<std::string>{"shore"});
+}
+
+TEST_CASE("every size: Lemma C gives connected(X) only when the tree conjuncts cover X exactly") {
+    // connected follows when one connected(A) and the reaches conjuncts joining cells to it cover
+    // its cells exactly, in any order; otherwise it gets its own frame condition (still decided).
+    const char* head = R"(system lemma_c
+states U | P | F | V
+rule grow: F U => F F
+)";
+    struct Case {
+        const char* invariant;
+        bool implied;
+    };
+    for (const Case& c : {Case{"some(F) and connected(F) and reaches(P | U | V, nbr, F) and connected", true},
+                          Case{"some(F) and connected(F) and reaches(P, nbr, F) and connected", false},                     // U, V cells uncovered
+                          Case{"some(F) and connected(F) and reaches(P | U | V, nbr, F) and connected(F | P | U)", false},  // paths through V
+                          Case{"some(F) and connected(F) and reaches(U | V, nbr, P) and reaches(P, nbr, F) and connected", true},
+                          Case{"some(F) and reaches(P | U | V, nbr, F) and connected", false}}) {  // no connected(A) to hang from
+        CAPTURE(std::string(c.invariant));
+        const rules::System system = test::parse(std::string(head) + "invariant i: " + c.invariant + "\n");
+        const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
+        const checker::Window window(model, 1);
+        const checker::InvariantPlan plan = checker::planInvariant(model, *system.property("i"), window.engine());
+        CHECK(plan.implied.size() == (c.implied ? 1u : 0u));
+        CHECK(plan.undecided.empty());
+    }
+}
+
+TEST_CASE("every size: the frame condition of reaches(P, parent, F), and the empty points outside a region") {
+    // A P that a child points at becomes U: the child's chain breaks (frame condition (c)); as F
+    // it ends the chain instead. reaches(P, parent, F | _) would count the empty points outside a
+    // region as ends of chains: no frame lemma.
+    const char* head = R"(system cut
+field label: U | P | F
+field parent: dir if P
+)";
+    for (const char* rhs : {"U", "F"}) {
+        CAPTURE(rhs);
+        const rules::System system = test::parse(std::string(head) + "rule cut: P&parent=@1 P => P&parent=@1 " + rhs +
+                                                 "\ninvariant tree: some(F) and reaches(P, parent, F)\ninvariant open: reaches(P, parent, F | _)\n");
+        const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
+        const checker::EverySizeReport r = everySize(model);
+        const checker::Obligation& tree = obligation(r.report, "tree");
+        if (std::string(rhs) == "F") {
+            CHECK(tree.result.verdict == Verdict::Holds);
+        } else {
+            const rules::Property& p = *system.property("tree");
+            CHECK(tree.result.summary.find("conjunct 2: its frame condition fails") != std::string::npos);
+            checkRefuted(model, tree, [&](const rules::Engine& e, const checker::Trace& t) {
+                return e.holds(p.exprs[0], t.steps[0].cells.data()) && !e.holds(p.exprs[0], t.steps[1].cells.data());
+            });
+        }
+        CHECK(obligation(r.report, "open").result.verdict == Verdict::Unknown);
+        CHECK(obligation(r.report, "open").result.summary.find("accepts empty cells") != std::string::npos);
+    }
 }
