@@ -70,6 +70,24 @@ std::string beyondLimits(const ExploreStats& stats, const Limits& limits, const 
 
 }  // namespace
 
+std::unique_ptr<rules::Engine> checkEngine(const rules::Model& model, const rules::Region& region, const CheckOptions& options) {
+    return std::make_unique<rules::Engine>(model, region, !options.all && !options.initial.empty() ? options.initial.front().inputs : options.inputs);
+}
+
+std::unique_ptr<Explorer> startExplorer(const rules::Engine& engine, const CheckOptions& options, Explorer::Options xo) {
+    auto ex = std::make_unique<Explorer>(engine, std::move(xo));
+    if (options.all) {
+        ex->addAllLegal();
+        return ex;
+    }
+    if (options.initial.empty()) throw InputError("give initial configurations with --from, or explore every legal configuration with --all");
+    for (const rules::Configuration& c : options.initial) {
+        if (!engine.legal(c.cells.data())) throw InputError("the initial configuration violates a constraint of '" + engine.model().system().name + "'");
+        ex->addInitial(c.cells.data());
+    }
+    return ex;
+}
+
 CheckReport check(const rules::Model& model, const rules::Region& region, const CheckOptions& options, Exploration* keep) {
     const Budget budget = options.limits.budget();
     const rules::System& system = model.system();
@@ -86,9 +104,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
     };
     std::erase_if(types, [&](const auto& t) { return !selected(t->name()); });
 
-    std::vector<std::uint32_t> inputs = options.inputs;
-    if (!options.all && !options.initial.empty()) inputs = options.initial.front().inputs;
-    auto engine = std::make_unique<rules::Engine>(model, region, inputs);
+    auto engine = checkEngine(model, region, options);
     const rules::Engine& e = *engine;
 
     // Properties of single states (invariants) are checked on every state as it is stored.
@@ -107,16 +123,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
     // Asked only about such properties: once each is decided, the rest of the graph can wait.
     if (!options.properties.empty() && watchers.size() == options.properties.size())
         xo.decided = [&] { return std::all_of(watchers.begin(), watchers.end(), [](const PropertyType* w) { return w->decided(); }); };
-    auto ex = std::make_unique<Explorer>(e, xo);
-    if (options.all) {
-        ex->addAllLegal();
-    } else {
-        if (options.initial.empty()) throw InputError("give initial configurations with --from, or explore every legal configuration with --all");
-        for (const rules::Configuration& c : options.initial) {
-            if (!e.legal(c.cells.data())) throw InputError("the initial configuration violates a constraint of '" + system.name + "'");
-            ex->addInitial(c.cells.data());
-        }
-    }
+    auto ex = startExplorer(e, options, std::move(xo));
     CheckReport report;
     report.system = system.name;
     report.region = region.spec();

@@ -44,6 +44,13 @@ struct Exploration {
     std::unique_ptr<Explorer> explorer;
 };
 
+/// The set-up of a check, shared with diff (checker/Diff.h): the engine on the region, with the
+/// inputs of the first initial configuration (options.inputs with `all` or no initial one).
+std::unique_ptr<rules::Engine> checkEngine(const rules::Model& model, const rules::Region& region, const CheckOptions& options);
+/// An explorer of `engine` with `xo`, given the starts `options` says: every legal configuration,
+/// or the initial configurations, each legal (else InputError).
+std::unique_ptr<Explorer> startExplorer(const rules::Engine& engine, const CheckOptions& options, Explorer::Options xo);
+
 /// Runs the exploration and every selected property. Every trace returned has been replayed
 /// through the reference interpreter (its result's `confirmation`, witness["replayed"]): one that
 /// does not replay is a bug in holon. Throws InputError for bad input (an unknown property, an

@@ -6,6 +6,8 @@
 
 #include "checker/Diff.h"
 
+#include "rules/Budget.h"
+
 #include <map>
 #include <unordered_map>
 #include <unordered_set>
@@ -100,6 +102,61 @@ DesignDifference compareDesigns(const ExploredDesign& a, const ExploredDesign& b
         if (nearest != kNoState) diff.transitionWitness[side] = traceWithStep(ex, nearest, nearestEdge);
     }
     return diff;
+}
+
+int DiffReport::stopped() const {
+    for (int side = 0; side < 2; ++side)
+        if (explored[side].explorer->stats().stopped != StopReason::Finished) return side;
+    return -1;
+}
+
+std::string DiffReport::witnessText(int side) const {
+    const Trace& t = *difference->transitionWitness[side];
+    const rules::Engine& engine = *explored[side].engine;
+    const std::string& rule = engine.model().rules()[engine.instances()[t.steps.back().placed].rule].name;
+    return systems[side] + " fires '" + rule + "' after " + stepCount(t.steps.size() - 2) + "; " + systems[1 - side] + " has no such step";
+}
+
+nlohmann::json DiffReport::toJson() const {
+    const DesignDifference& d = *difference;
+    nlohmann::json j = {{"a", systems[0]}, {"b", systems[1]}, {"region", region}, {"same", d.same()}};
+    for (int side = 0; side < 2; ++side) {
+        nlohmann::json s = {{"system", systems[side]},
+                            {"states", d.states[side]},
+                            {"transitions", d.transitions[side]},
+                            {"only_states", d.onlyStates[side]},
+                            {"only_transitions", d.onlyTransitions[side]}};
+        if (d.transitionWitness[side]) {
+            const rules::Engine& engine = *explored[side].engine;
+            s["witness"] = {{"description", witnessText(side)}, {"trace", traceJson(*d.transitionWitness[side], engine, rules::Interpreter(engine.model(), engine.region()))}};
+        }
+        j[side == 0 ? "in_a" : "in_b"] = s;
+    }
+    return j;
+}
+
+DiffReport diff(const rules::Model& a, const rules::Model& b, const rules::Region& region, const DiffOptions& options) {
+    DiffReport report;
+    report.region = region.spec();
+    const Budget budget = options.limits.budget();  // one timeout for both
+    const rules::Model* models[2] = {&a, &b};
+    for (int side = 0; side < 2; ++side) {
+        CheckOptions co;
+        co.limits = options.limits;
+        co.limits.memoryBytes /= 2;
+        co.all = options.all, co.initial = options.initial[side], co.inputs = options.inputs[side];
+        Explorer::Options xo;
+        xo.limits = co.limits;
+        xo.budget = budget;
+        Exploration& x = report.explored[side];
+        x.engine = checkEngine(*models[side], region, co);
+        x.explorer = startExplorer(*x.engine, co, xo);
+        x.explorer->explore();
+        report.systems[side] = models[side]->system().name;
+    }
+    if (report.stopped() < 0)
+        report.difference = compareDesigns({report.explored[0].engine.get(), report.explored[0].explorer.get()}, {report.explored[1].engine.get(), report.explored[1].explorer.get()});
+    return report;
 }
 
 }  // namespace holon::checker

@@ -4,8 +4,11 @@
 // a variant with other value numbers, or extra states, still compares), and the transitions and
 // configurations one has and the other lacks, each kind with its witness nearest a start.
 
+#include "checker/Check.h"
 #include "checker/Explorer.h"
 #include "checker/Trace.h"
+
+#include <nlohmann/json.hpp>
 
 #include <optional>
 #include <string>
@@ -32,5 +35,32 @@ struct DesignDifference {
 
 /// Compares two fully explored designs (the caller checks that neither stopped at a limit).
 DesignDifference compareDesigns(const ExploredDesign& a, const ExploredDesign& b);
+
+struct DiffOptions {
+    /// For the whole comparison: one timeout, and memoryBytes shared by the two explorations.
+    Limits limits;
+    bool all = false;  // every legal configuration instead of the ones reachable from `initial`
+    /// Per design (A, B), in its own cell states: the starts (when !all) and the inputs, as in
+    /// CheckOptions.
+    std::vector<rules::Configuration> initial[2];
+    std::vector<std::uint32_t> inputs[2];
+};
+
+struct DiffReport {
+    std::string systems[2], region;
+    Exploration explored[2];
+    /// Set when both explorations finished.
+    std::optional<DesignDifference> difference;
+    /// The first design (0 for A, 1 for B) whose exploration a limit stopped, or -1.
+    int stopped() const;
+    /// What a side's transition witness shows: "A fires 'rule' after 2 steps; B has no such step".
+    std::string witnessText(int side) const;
+    /// The counts, and each side's witness as its description and ITF trace (needs `difference`).
+    nlohmann::json toJson() const;
+};
+
+/// Explores both designs on the region from the same starts, with check's set-up (checkEngine,
+/// startExplorer), and compares them when neither stopped at a limit. Throws InputError as check.
+DiffReport diff(const rules::Model& a, const rules::Model& b, const rules::Region& region, const DiffOptions& options);
 
 }  // namespace holon::checker

@@ -9,38 +9,18 @@
 
 namespace holon::checker {
 
-namespace {
-
-/// The pattern cells a guard quantifies around (its sites are their neighbours).
-void guardCentres(const rules::Engine::GuardNode& g, std::vector<int>& out) {
-    if (g.around >= 0) out.push_back(g.around);
-    for (const auto& kid : g.kids) guardCentres(kid, out);
-}
-
-}  // namespace
-
 Footprints::Footprints(const rules::Engine& engine) {
     const auto& placed = engine.instances();
-    const int alphabet = engine.tables().alphabet();
+    const rules::RuleTables& tables = engine.tables();
     const rules::Region& region = engine.region();
     writes_.resize(placed.size()), reads_.resize(placed.size());
     for (std::size_t p = 0; p < placed.size(); ++p) {
         const auto& inst = placed[p];
-        const int pi = static_cast<int>(p);
-        for (int k = 0; k < inst.size; ++k) {
-            const int cell = inst.cells[k], combo = engine.comboOfCell(cell), from = engine.rhsCopyFrom(pi, k);
-            bool writes = from >= 0 && from != k;
-            for (int v = 0; v < alphabet && !writes && from < 0; ++v)
-                writes = engine.lhsAccepts(pi, k, combo, static_cast<CellValue>(v)) && engine.rhsValue(pi, k, static_cast<CellValue>(v)) != v;
-            if (writes) writes_[p].push_back(cell);
-            reads_[p].push_back(cell);
-        }
-        if (const auto* guard = engine.guardOf(pi)) {
-            std::vector<int> centres;
-            guardCentres(*guard, centres);
-            for (int k : centres)
-                for (int d = 0; d < region.lattice().degree(); ++d)
-                    if (const int n = region.neighbour(inst.cells[k], d); n >= 0) reads_[p].push_back(n);
+        for (int k = 0; k < inst.size; ++k)
+            if (tables.mayWrite(inst.shape, k, engine.comboOfCell(inst.cells[k]))) writes_[p].push_back(inst.cells[k]);
+        for (const rules::RuleTables::Site site : tables.readSites(inst.shape)) {
+            const int cell = inst.cells[site.cell];
+            if (const int n = site.direction < 0 ? cell : region.neighbour(cell, site.direction); n >= 0) reads_[p].push_back(n);
         }
         for (auto* cells : {&writes_[p], &reads_[p]}) {
             std::sort(cells->begin(), cells->end());

@@ -1,7 +1,8 @@
 // `holon replay RULES PLAN.jsonl`: a plan written by `holon plan --plan-out` checked step by step by
 // the reference interpreter, knowing nothing of the planner that made it (CaDiCaL's proofs checked
 // by someone else). The first line gives the start configuration (target input included); each
-// further line one fired instance, its rule, its pattern cells in order and their states after it.
+// further line one fired instance, its rule, its pattern cells in order and their states after it
+// (read by rules::PlanLineReader, holon view's reader too).
 // A step is found as the shape of that rule whose pattern cells are exactly those cells, replayed
 // with planner::replayStep (the conformance harness's judge: enabled, constraints kept) and its
 // after-states compared with the interpreter's. Instances of one synchronous round are replayed in
@@ -14,6 +15,7 @@
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
+#include "rules/PlanLines.h"
 
 #include <filesystem>
 #include <fstream>
@@ -28,43 +30,17 @@ struct Args {
     std::string rules, plan;
 };
 
-/// A lattice point given as [x, y] or [x, y, z].
-rules::Vec pointOf(const nlohmann::json& j, const std::string& where) {
-    if (!j.is_array() || j.size() < 2 || j.size() > 3) throw InputError(where + ": a cell must be [x, y] or [x, y, z]");
-    for (const auto& c : j)
-        if (!c.is_number_integer()) throw InputError(where + ": a cell must be [x, y] or [x, y, z] of integers");
-    return {j[0].get<int>(), j[1].get<int>(), j.size() == 3 ? j[2].get<int>() : 0};
-}
-
-/// The string field `key` of `j`, or "" when it is missing or no string.
-std::string text(const nlohmann::json& j, const char* key) { return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : ""; }
-
 int run(const Args& a) {
     const std::optional<rules::System> system = loadRules(a.rules, {});
     if (!system) return kExitBadInput;
     std::ifstream file(a.plan);
     if (!file) throw InputError(a.plan + ": cannot open the plan");
-    std::string line;
-    int lineNo = 0;
-    const auto where = [&] { return a.plan + ":" + std::to_string(lineNo); };
-    const auto next = [&](nlohmann::json& j) {
-        if (!std::getline(file, line)) return false;
-        ++lineNo;
-        try {
-            j = nlohmann::json::parse(line);
-        } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number past a double
-            throw InputError(where() + ": not a JSON line (" + e.what() + ")");
-        }
-        if (!j.is_object()) throw InputError(where() + ": expected a JSON object");
-        return true;
-    };
-
-    nlohmann::json head;
-    if (!next(head) || text(head, "plan") != "holon" || !head.contains("start") || !head["start"].is_object())
+    rules::PlanLineReader plan(file, a.plan);
+    if (plan.kind() != "plan" || !plan.head().contains("start") || !plan.head()["start"].is_object())
         throw InputError(a.plan + ":1: not a holon plan: its first line must be {\"plan\":\"holon\",...,\"start\":CONFIGURATION} (holon plan --plan-out)");
-    if (text(head, "system") != system->name)
-        throw InputError(a.plan + ":1: the plan is for system '" + text(head, "system") + "', not " + system->name + "; give its rule file");
-    const nlohmann::json& start = head["start"];
+    const nlohmann::json& of = plan.head().contains("system") ? plan.head()["system"] : nlohmann::json();
+    if (of != system->name) throw InputError(a.plan + ":1: the plan is for system '" + (of.is_string() ? of.get<std::string>() : "") + "', not " + system->name + "; give its rule file");
+    const nlohmann::json& start = plan.start();
     if (!start.contains("region") || !start["region"].is_string()) throw InputError(a.plan + ":1: the start configuration names no region");
     const rules::Region region = rules::Region::parse(start["region"].get<std::string>());
     const rules::Model model(*system, region.lattice());
@@ -75,33 +51,23 @@ int run(const Args& a) {
     } catch (const InputError& e) {
         throw InputError(a.plan + ":1: " + e.what());
     }
-    const rules::Vec offset = start.contains("offset") ? pointOf(start["offset"], a.plan + ":1") : rules::Vec{};
 
     std::int64_t steps = 0, losses = 0;
-    nlohmann::json step;
-    while (next(step)) {
+    rules::PlanLine step;
+    while (plan.next(step)) {
+        for (std::size_t k = 0; k < step.cells.size(); ++k)
+            if (!region.contains(step.cells[k]))
+                throw InputError(plan.where() + ": cell " + step.json["cells"][k].dump() + " lies outside the plan's region " + region.spec());
         // A metamodule lost to an injected fault (plan --lose): not a step to judge, the cell empties.
-        if (step.contains("fault")) {
-            if (text(step, "fault") != "lose" || !step.contains("cells") || !step["cells"].is_array() || step["cells"].size() != 1)
-                throw InputError(where() + ": a fault must be {\"round\":R,\"fault\":\"lose\",\"cells\":[[x,y]]}");
-            const rules::Vec p = pointOf(step["cells"][0], where()) + offset;
-            if (!region.contains(p)) throw InputError(where() + ": cell " + step["cells"][0].dump() + " lies outside the plan's region " + region.spec());
-            now.cells[region.indexOf(p)] = 0;
+        if (step.fault) {
+            now.cells[region.indexOf(step.cells[0])] = 0;
             ++losses;
             continue;
         }
-        if (!step.contains("round") || !step["round"].is_number_integer() || !step.contains("rule") || !step["rule"].is_string() || !step.contains("cells") || !step["cells"].is_array() || !step.contains("after") ||
-            !step["after"].is_array() || step["after"].size() != step["cells"].size())
-            throw InputError(where() + ": a step must be {\"round\":R,\"rule\":NAME,\"cells\":[[x,y],...],\"after\":[{...},...]}, one state after per cell");
-        const std::string rule = step["rule"];
-        std::vector<rules::Vec> cells;
+        const std::string& rule = step.rule;
+        const std::vector<rules::Vec>& cells = step.cells;
         std::string named;
-        for (const auto& c : step["cells"]) {
-            const rules::Vec p = pointOf(c, where());
-            named += (named.empty() ? "" : " ") + c.dump();
-            if (!region.contains(p + offset)) throw InputError(where() + ": cell " + c.dump() + " lies outside the plan's region " + region.spec());
-            cells.push_back(p + offset);
-        }
+        for (const auto& c : step.json["cells"]) named += (named.empty() ? "" : " ") + c.dump();
         // Every shape of that rule on exactly those cells; the first that replays legally counts.
         std::string why = "the system has no rule '" + rule + "' whose pattern lies on these cells";
         bool legal = false;
@@ -119,13 +85,13 @@ int run(const Args& a) {
             }
             legal = true;
             for (std::size_t k = 0; k < cells.size() && legal; ++k)
-                if (const nlohmann::json is = rules::stateFields(model, after.cells[region.indexOf(cells[k])]); is != step["after"][k])
-                    why = "the after-states differ: cell " + step["cells"][k].dump() + " becomes " + is.dump() + ", the plan says " + step["after"][k].dump(),
+                if (const nlohmann::json is = rules::stateFields(model, after.cells[region.indexOf(cells[k])]); is != step.json["after"][k])
+                    why = "the after-states differ: cell " + step.json["cells"][k].dump() + " becomes " + is.dump() + ", the plan says " + step.json["after"][k].dump(),
                     legal = false;
             if (legal) now = std::move(after);
         }
         if (!legal) {
-            std::cout << "replay " << a.plan << ": ILLEGAL step at line " << lineNo << " (round " << step["round"].get<std::int64_t>() << ", rule " << rule << ", cells " << named
+            std::cout << "replay " << a.plan << ": ILLEGAL step at line " << plan.lineNumber() << " (round " << step.round << ", rule " << rule << ", cells " << named
                       << "): " << why << '\n';
             return kExitViolated;
         }

@@ -91,17 +91,10 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
         const Vec origin = shape.offsets[0];
         for (Vec v : shape.offsets) cells.push_back(board.offset(v - origin));
         const rules::RuleTables::Shape& t = tables.shape(s);
-        for (std::size_t k = 0; k < shape.offsets.size(); ++k) {
-            bool identity = t.copyFrom[k] < 0 || t.copyFrom[k] == static_cast<int>(k);
-            for (int c = 0; c < tables.comboCount() && t.copyFrom[k] < 0; ++c)
-                for (int v = 0; v < tables.alphabet(); ++v)
-                    if (tables.test(t.lhs[k], c, static_cast<rules::CellValue>(v)) && t.rhs[k][v] != v) identity = false;
-            if (!identity) writes.push_back(cells[k]);
-        }
-        reads = cells;
-        if (tables.shape(s).hasGuard)
-            for (Vec v : shape.offsets)
-                for (int d = 0; d < lattice.degree(); ++d) reads.push_back(board.offset(v - origin + lattice.direction(d)));
+        for (std::size_t k = 0; k < shape.offsets.size(); ++k)
+            if (tables.mayWrite(s, static_cast<int>(k))) writes.push_back(cells[k]);
+        for (const rules::RuleTables::Site site : tables.readSites(s, rules::RuleTables::GuardReads::Neighbourhood))
+            reads.push_back(board.offset(shape.offsets[site.cell] - origin + (site.direction < 0 ? Vec{} : lattice.direction(site.direction))));
         std::sort(reads.begin(), reads.end());
         reads.erase(std::unique(reads.begin(), reads.end()), reads.end());
         influence_.insert(influence_.end(), reads.begin(), reads.end());

@@ -43,9 +43,10 @@ public:
     void prefetchCombo(std::int64_t cell) const { __builtin_prefetch(&combo_[cell]); }
     /// Index steps of a shape's pattern cells from its anchor.
     std::span<const std::int64_t> cellSteps(int shape) const { return {steps_.data() + programs_[shape].at, static_cast<std::size_t>(programs_[shape].cells)}; }
-    /// Index steps of the pattern cells an instance of the shape may change.
+    /// Index steps of the pattern cells an instance of the shape may change (RuleTables::mayWrite).
     std::span<const std::int64_t> writeSteps(int shape) const { return {writePool_.data() + programs_[shape].writeAt, programs_[shape].writes}; }
-    /// Index steps of every cell a shape's instance reads (pattern and guard neighbourhoods).
+    /// Index steps of every cell a shape's instance reads (RuleTables::readSites: its pattern cells
+    /// and, for a guarded shape, their neighbours: GuardReads::Neighbourhood).
     std::span<const std::int64_t> readSteps(int shape) const { return {readPool_.data() + programs_[shape].readAt, programs_[shape].reads}; }
     /// Union over shapes of readSteps: a change at cell c can only affect anchors c - r.
     const std::vector<std::int64_t>& influence() const { return influence_; }

@@ -46,15 +46,7 @@ Report::Report(const Problem& problem, const Execution& execution, ReportOptions
 Report::~Report() = default;
 
 void Report::fired(std::int64_t anchor, int shape, const BoxEngine::Value*) {
-    if (!plan_) return;
-    const rules::Model& model = *problem_->model;
-    const BoxEngine& engine = *problem_->engine;
-    nlohmann::json cells = nlohmann::json::array(), states = nlohmann::json::array();
-    for (std::int64_t s : engine.cellSteps(shape)) {
-        cells.push_back(rules::pointJson(model.lattice(), problem_->board->point(anchor + s)));
-        states.push_back(rules::stateFields(model, execution_->cells()[anchor + s]));
-    }
-    plan_->stream() << nlohmann::json{{"round", lastRound_ + 1}, {"rule", model.rules()[engine.ruleOf(shape)].name}, {"cells", cells}, {"after", states}}.dump() << '\n';
+    if (plan_) plan_->stream() << planLine(*problem_->engine, lastRound_ + 1, anchor, shape, execution_->cells().data()).dump() << '\n';
 }
 
 void Report::lost(std::int64_t cell) {
@@ -137,6 +129,16 @@ BoardConfiguration::BoardConfiguration(const Problem& problem, const std::vector
         const std::uint8_t combo = problem.engine->combo(i);
         if (combo != BoxEngine::kOutside) configuration_.inputs[at] = problem.tables->comboInputs(combo);
     });
+}
+
+nlohmann::json planLine(const BoxEngine& engine, std::int64_t round, std::int64_t anchor, int shape, const BoxEngine::Value* cells) {
+    const rules::Model& model = engine.tables().model();
+    nlohmann::json points = nlohmann::json::array(), after = nlohmann::json::array();
+    for (std::int64_t s : engine.cellSteps(shape)) {
+        points.push_back(rules::pointJson(engine.board().lattice(), engine.board().point(anchor + s)));
+        after.push_back(rules::stateFields(model, cells[anchor + s]));
+    }
+    return {{"round", round}, {"rule", model.rules()[engine.ruleOf(shape)].name}, {"cells", points}, {"after", after}};
 }
 
 nlohmann::json configurationJson(const Problem& problem, const std::vector<BoxEngine::Value>& cells) {

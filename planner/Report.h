@@ -81,6 +81,11 @@ private:
     rules::Configuration configuration_;
 };
 
+/// One step line of a plan (holon plan --plan-out; holon hex --steps-out adds the system):
+/// {"round", "rule", "cells": its pattern cells in order, "after": their states in `cells`, after
+/// the instance of `shape` at `anchor` fired ({} for an empty cell)}. rules/StepLines reads it.
+nlohmann::json planLine(const BoxEngine& engine, std::int64_t round, std::int64_t anchor, int shape, const BoxEngine::Value* cells);
+
 /// A configuration on the planner's board, with the target input, as holon's canonical JSON
 /// (rules::configToJson) on the box region square:WxH or cubic:WxHxD that holds the board, so
 /// `holon check --from` reads it. Boards reaching below 0 are shifted into the region and the

@@ -274,11 +274,41 @@ nlohmann::json itfPoint(const nlohmann::json& v) {
 
 bool isItfTrace(const nlohmann::json& j) { return j.is_object() && j.contains("states") && !j.contains("cells"); }
 
-Configuration configFromItf(const Interpreter& in, const nlohmann::json& itf, std::optional<int> index, std::uint32_t* inputsNamed) {
+const nlohmann::json& itfStates(const nlohmann::json& itf) {
     if (!isItfTrace(itf) || !itf["states"].is_array()) throw InputError("an ITF trace is a JSON object with a \"states\" array");
-    const auto& states = itf["states"];
+    if (itf["states"].empty()) throw InputError("the trace has no states");
+    return itf["states"];
+}
+
+nlohmann::json itfStateJson(const nlohmann::json& state) {
+    if (!state.is_object() || !state.contains("cells") || !state["cells"].is_object() || !state["cells"].contains("#map") || !state["cells"]["#map"].is_array())
+        throw InputError("a state's \"cells\" is {\"#map\": [[{\"#tup\": [x, y]}, {FIELD: VALUE, ...}], ...]}");
+    nlohmann::json config{{"cells", nlohmann::json::array()}};
+    for (const auto& entry : state["cells"]["#map"]) {
+        if (!entry.is_array() || entry.size() != 2 || !entry[1].is_object())
+            throw InputError("each entry of \"cells\" is a pair [{\"#tup\": [x, y]}, {FIELD: VALUE, ...}], found " + quote(entry));
+        nlohmann::json cell = nlohmann::json::object();
+        for (const auto& [field, value] : entry[1].items()) cell[field] = itfScalar(value);
+        cell["at"] = itfPoint(entry[0]);
+        config["cells"].push_back(cell);
+    }
+    if (state.contains("inputs")) {
+        if (!state["inputs"].is_object()) throw InputError("a state's \"inputs\" maps each input's name to {\"#set\": [{\"#tup\": [x, y]}, ...]}");
+        nlohmann::json inputs = nlohmann::json::object();
+        for (const auto& [name, set] : state["inputs"].items()) {
+            if (!set.is_object() || !set.contains("#set") || !set["#set"].is_array())
+                throw InputError("input '" + quote(name) + "' is {\"#set\": [{\"#tup\": [x, y]}, ...]}");
+            inputs[name] = nlohmann::json::array();
+            for (const auto& at : set["#set"]) inputs[name].push_back(itfPoint(at));
+        }
+        config["inputs"] = inputs;
+    }
+    return config;
+}
+
+Configuration configFromItf(const Interpreter& in, const nlohmann::json& itf, std::optional<int> index, std::uint32_t* inputsNamed) {
+    const auto& states = itfStates(itf);
     const int count = static_cast<int>(states.size());
-    if (count == 0) throw InputError("the trace has no states");
     const int k = index.value_or(count - 1);
     if (k < 0 || k >= count)
         throw InputError("the trace has " + std::to_string(count) + (count == 1 ? " state" : " states") + ", numbered 0 to " + std::to_string(count - 1) +
@@ -288,34 +318,10 @@ Configuration configFromItf(const Interpreter& in, const nlohmann::json& itf, st
         throw InputError("the trace is for region " + itf["#meta"]["region"].get<std::string>() + ", not " + in.region().spec() + "; run with --region " +
                          itf["#meta"]["region"].get<std::string>());
     // The state becomes a configuration's JSON, so one reader checks cells, fields and inputs.
-    const auto& state = states[k];
-    const std::string where = "state " + std::to_string(k) + ": ";
     try {
-        if (!state.is_object() || !state.contains("cells") || !state["cells"].is_object() || !state["cells"].contains("#map") || !state["cells"]["#map"].is_array())
-            throw InputError("a state's \"cells\" is {\"#map\": [[{\"#tup\": [x, y]}, {FIELD: VALUE, ...}], ...]}");
-        nlohmann::json config{{"cells", nlohmann::json::array()}};
-        for (const auto& entry : state["cells"]["#map"]) {
-            if (!entry.is_array() || entry.size() != 2 || !entry[1].is_object())
-                throw InputError("each entry of \"cells\" is a pair [{\"#tup\": [x, y]}, {FIELD: VALUE, ...}], found " + quote(entry));
-            nlohmann::json cell = nlohmann::json::object();
-            for (const auto& [field, value] : entry[1].items()) cell[field] = itfScalar(value);
-            cell["at"] = itfPoint(entry[0]);
-            config["cells"].push_back(cell);
-        }
-        if (state.contains("inputs")) {
-            if (!state["inputs"].is_object()) throw InputError("a state's \"inputs\" maps each input's name to {\"#set\": [{\"#tup\": [x, y]}, ...]}");
-            nlohmann::json inputs = nlohmann::json::object();
-            for (const auto& [name, set] : state["inputs"].items()) {
-                if (!set.is_object() || !set.contains("#set") || !set["#set"].is_array())
-                    throw InputError("input '" + quote(name) + "' is {\"#set\": [{\"#tup\": [x, y]}, ...]}");
-                inputs[name] = nlohmann::json::array();
-                for (const auto& at : set["#set"]) inputs[name].push_back(itfPoint(at));
-            }
-            config["inputs"] = inputs;
-        }
-        return configFromJson(in, config, inputsNamed);
+        return configFromJson(in, itfStateJson(states[k]), inputsNamed);
     } catch (const InputError& e) {
-        throw InputError(where + e.what());
+        throw InputError("state " + std::to_string(k) + ": " + e.what());
     }
 }
 

@@ -31,6 +31,12 @@ void checkJsonDepth(const std::string& text);
 
 /// True for an ITF trace (holon's --trace-out: an object with "states"), false for a configuration.
 bool isItfTrace(const nlohmann::json& j);
+/// The states of an ITF trace, a non-empty array (else InputError).
+const nlohmann::json& itfStates(const nlohmann::json& itf);
+/// One state of an ITF trace as a configuration's JSON, ITF's encodings (#map, #tup, #set,
+/// #bigint) decoded: {"cells": [{"at": [x, y], FIELD: VALUE, ...}, ...], "inputs": {NAME: [[x, y],
+/// ...]}}. The one walker of ITF states (configFromItf, holon view); InputError names the fix.
+nlohmann::json itfStateJson(const nlohmann::json& state);
 /// State `index` of an ITF trace (the last when none is given) with the inputs it carries: each
 /// state's "cells" is {"#map": [[{"#tup": [x, y]}, {FIELD: VALUE, ...}], ...]} and its "inputs"
 /// {NAME: {"#set": [{"#tup": [x, y]}, ...]}}. Throws InputError naming the state and the fix.

@@ -82,6 +82,44 @@ RuleTables::GuardNode RuleTables::compileCellGuard(const Expr& guard) const {
     return compileGuard(guard, one);
 }
 
+namespace {
+
+/// The pattern cells a guard quantifies around (its sites are their neighbours).
+void guardCentres(const RuleTables::GuardNode& g, std::vector<int>& out) {
+    if (g.around >= 0) out.push_back(g.around);
+    for (const auto& kid : g.kids) guardCentres(kid, out);
+}
+
+}  // namespace
+
+std::vector<RuleTables::Site> RuleTables::readSites(int s, GuardReads reads) const {
+    const Shape& t = shapes_[s];
+    std::vector<Site> sites;
+    for (int k = 0; k < static_cast<int>(t.lhs.size()); ++k) sites.push_back({k, -1});
+    if (!t.hasGuard) return sites;
+    std::vector<int> centres;
+    switch (reads) {
+    case GuardReads::Exact: guardCentres(t.guard, centres); break;
+    case GuardReads::Neighbourhood:
+        for (int k = 0; k < static_cast<int>(t.lhs.size()); ++k) centres.push_back(k);
+        break;
+    }
+    std::sort(centres.begin(), centres.end());
+    centres.erase(std::unique(centres.begin(), centres.end()), centres.end());
+    for (int k : centres)
+        for (int d = 0; d < model_->lattice().degree(); ++d) sites.push_back({k, d});
+    return sites;
+}
+
+bool RuleTables::mayWrite(int s, int k, int combo) const {
+    const Shape& t = shapes_[s];
+    if (t.copyFrom[k] >= 0) return t.copyFrom[k] != k;
+    for (int c = combo < 0 ? 0 : combo; c < (combo < 0 ? comboCount() : combo + 1); ++c)
+        for (int v = 0; v < alphabet_; ++v)
+            if (test(t.lhs[k], c, static_cast<CellValue>(v)) && t.rhs[k][v] != v) return true;
+    return false;
+}
+
 int RuleTables::comboIndex(std::uint32_t inputs) const {
     auto it = std::find(combos_.begin(), combos_.end(), inputs);
     return it == combos_.end() ? -1 : static_cast<int>(it - combos_.begin());

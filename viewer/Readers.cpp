@@ -1,10 +1,11 @@
-// The viewer's readers. An ITF trace is one JSON document whose states are whole configurations;
-// plans, hex runs and Roombots runs are JSON Lines in one format (holon plan --plan-out's): a first
-// line with the start configuration, then one line per rule instance fired, {"round", "rule",
-// "cells", "after"}, the cells' states after it ({} for an emptied cell). A step of the viewer is a
-// state of a trace and a round of the others (a hex timestep, a Roombots action). Cell states are
-// checked against the system the file names, so a state the rules cannot produce is an error with
-// its line, not a grey cell.
+// The viewer's readers. An ITF trace is one JSON document whose states are whole configurations
+// (each decoded by rules::itfStateJson, the library's ITF walker); plans, hex runs and Roombots
+// runs are JSON Lines in one format (holon plan --plan-out's, read by rules::PlanLineReader as
+// holon replay reads it): a first line with the start configuration, then one line per rule
+// instance fired, {"round", "rule", "cells", "after"}, the cells' states after it ({} for an
+// emptied cell). A step of the viewer is a state of a trace and a round of the others (a hex
+// timestep, a Roombots action). Cell states are checked against the system the file names, so a
+// state the rules cannot produce is an error with its line, not a grey cell.
 
 #include "viewer/Readers.h"
 
@@ -13,6 +14,7 @@
 #include "rules/Error.h"
 #include "rules/Library.h"
 #include "rules/Model.h"
+#include "rules/PlanLines.h"
 #include "rules/Region.h"
 
 #include <algorithm>
@@ -103,23 +105,18 @@ public:
     explicit Cells(const Run& run) {
         for (std::size_t i = 0; i < run.cells.size(); ++i) index_[key(run.cells[i])] = static_cast<int>(i);
     }
-    /// [x, y] or [x, y, z] plus `offset`: its cell, or an error naming `where`.
-    int of(const nlohmann::json& j, Vec offset, const std::string& where) const {
-        const Vec v = point(j, where) + offset;
+    /// [x, y] or [x, y, z]: its cell, or an error naming `where`.
+    int of(const nlohmann::json& j, const std::string& where) const { return at(point(j, where), j, where); }
+    /// The cell at lattice point v, written `j` in the file.
+    int at(Vec v, const nlohmann::json& j, const std::string& where) const {
         const auto it = index_.find(key(v));
         if (it == index_.end()) throw InputError(where + ": cell " + j.dump() + " lies outside the run's cells (its region or points); the file was edited by hand or mixes two runs: write it again with the holon command that made it");
         return it->second;
     }
     static Vec point(const nlohmann::json& j, const std::string& where) {
-        if (j.is_object() && j.contains("#tup")) return point(j["#tup"], where);
-        // Within ±2^30: beyond it a coordinate lies outside every region, and a sum of two would overflow.
-        const auto small = [](const nlohmann::json& c) {
-            return c.is_number_unsigned() ? c.get<std::uint64_t>() < (1u << 30) : c.is_number_integer() && std::abs(c.get<std::int64_t>()) < (1 << 30);
-        };
-        if (!j.is_array() || j.size() < 2 || j.size() > 3 || !std::all_of(j.begin(), j.end(), small))
-            throw InputError(where + ": a cell is [x, y] or [x, y, z] of integers, found " + j.dump());
-        return {j[0].get<int>(), j[1].get<int>(), j.size() == 3 ? j[2].get<int>() : 0};
+        return rules::pointFromJson(j.is_object() && j.contains("#tup") ? j["#tup"] : j, where);
     }
+    std::size_t size() const { return index_.size(); }
 
 private:
     static std::tuple<int, int, int> key(Vec v) { return {v.x, v.y, v.z}; }
@@ -153,17 +150,30 @@ void regionCells(Run& run, const std::string& spec, const std::string& where) {
     }
 }
 
-void addInputs(Run& run, const Cells& cells, const nlohmann::json& inputs, Vec offset, const std::string& where) {
+void addInputs(Run& run, const Cells& cells, const nlohmann::json& inputs, const std::string& where) {
     if (inputs.is_null()) return;
     if (!inputs.is_object()) throw InputError(where + ": \"inputs\" must be an object {NAME: [cell, ...]}");
     const auto colours = checker::traceColours().inputs;
     for (const auto& [name, list] : inputs.items()) {
-        const nlohmann::json& set = list.is_object() && list.contains("#set") ? list["#set"] : list;
-        if (!set.is_array()) throw InputError(where + ": input '" + name + "' must be a list of cells");
+        if (!list.is_array()) throw InputError(where + ": input '" + name + "' must be a list of cells");
         Run::Input input{name, colours[run.inputs.size() % colours.size()], {}};
-        for (const auto& c : set) input.cells.push_back(cells.of(c, offset, where + ": input '" + name + "'"));
+        for (const auto& c : list) input.cells.push_back(cells.of(c, where + ": input '" + name + "'"));
         run.inputs.push_back(std::move(input));
     }
+}
+
+/// A configuration's JSON ({"cells": [{"at": CELL, FIELD: VALUE, ...}, ...]}: a plan's start, an
+/// ITF state decoded by rules::itfStateJson) as the run's state of each cell.
+std::vector<int> configuration(const Cells& cells, States& states, const nlohmann::json& config, const std::string& where) {
+    if (!config.contains("cells") || !config["cells"].is_array()) throw InputError(where + ": the configuration has no \"cells\" list");
+    std::vector<int> c(cells.size(), 0);
+    for (const auto& cell : config["cells"]) {
+        if (!cell.is_object() || !cell.contains("at")) throw InputError(where + ": a cell is {\"at\": [x, y], FIELD: VALUE, ...}, found " + cell.dump());
+        nlohmann::json fields = cell;
+        fields.erase("at");
+        c[cells.of(cell["at"], where)] = states.of(fields, where);
+    }
+    return c;
 }
 
 /// Where a JSON syntax error lies, as line:column of `text`.
@@ -177,14 +187,15 @@ std::string lineColumn(const std::string& text, std::size_t byte) {
 // ---------------------------------------------------------------------------------------------
 // JSON Lines: plans, hex runs, Roombots runs
 
-Run readLines(const std::string& path, std::istream& in, const nlohmann::json& head, const std::string& rulesFile) {
+Run readLines(const std::string& path, std::istream& in, const std::string& rulesFile) {
     Run run;
     const std::string where1 = path + ":1";
-    const std::string kind = text(head, "plan") == "holon" ? "plan" : text(head, "run");
+    rules::PlanLineReader lines(in, path);
+    const nlohmann::json& head = lines.head();
+    const std::string kind = lines.kind();
     if (kind != "plan" && kind != "hex" && kind != "roombots") throw InputError(where1 + ": not a holon run: " + kFormats);
     run.kind = kind;
-    if (!head.contains("start") || !head["start"].is_object()) throw InputError(where1 + ": the first line has no \"start\" configuration; write the file again with the holon command that made it");
-    const nlohmann::json& start = head["start"];
+    const nlohmann::json& start = lines.start();
     // The cells: the start's region (plans, Roombots runs) or its list of points (hex runs).
     if (start.contains("region") && start["region"].is_string()) {
         regionCells(run, start["region"], where1);
@@ -198,7 +209,6 @@ Run readLines(const std::string& path, std::istream& in, const nlohmann::json& h
         throw InputError(where1 + ": the start configuration names no \"region\" (or \"points\" and \"lattice\"); write the file again with the holon command that made it");
     }
     limitCells(run, path);
-    const Vec offset = start.contains("offset") ? Cells::point(start["offset"], where1 + ": offset") : Vec{};
     const Cells cells(run);
     std::optional<rules::System> system;
     std::optional<States> states;
@@ -215,20 +225,13 @@ Run readLines(const std::string& path, std::istream& in, const nlohmann::json& h
                                                           : "Roombots run ") +
                 path + (system ? " (" + system->name + ")" : "");
     if (head.contains("title") && head["title"].is_string()) run.notes.push_back(head["title"].get<std::string>());
-    run.start.assign(run.cells.size(), 0);
-    if (!start.contains("cells") || !start["cells"].is_array()) throw InputError(where1 + ": the start configuration has no \"cells\" list");
-    for (const auto& c : start["cells"]) {
-        if (!c.is_object() || !c.contains("at")) throw InputError(where1 + ": a start cell is {\"at\": [x, y], FIELD: VALUE, ...}, found " + c.dump());
-        nlohmann::json fields = c;
-        fields.erase("at");
-        run.start[cells.of(c["at"], Vec{}, where1)] = states->of(fields, where1);
-    }
-    addInputs(run, cells, start.contains("inputs") ? start["inputs"] : nlohmann::json(), Vec{}, where1);
+    run.start = configuration(cells, *states, start, where1);
+    addInputs(run, cells, start.contains("inputs") ? start["inputs"] : nlohmann::json(), where1);
 
     // One step per round: every instance of the round, its cells changed or only looked at.
     run.steps.push_back({"start", {}, {}, {}});
     std::vector<int> now = run.start, seenAt(run.cells.size(), -1);
-    std::map<std::string, int> rules;
+    std::map<std::string, int> fired;
     std::vector<int> looked;
     std::optional<std::int64_t> round;
     std::int64_t instances = 0;
@@ -236,7 +239,7 @@ Run readLines(const std::string& path, std::istream& in, const nlohmann::json& h
         if (!round) return;
         Run::Step& step = run.steps.back();
         std::string counts;
-        for (const auto& [rule, n] : rules) counts += (counts.empty() ? "" : ", ") + rule + " " + std::to_string(n);
+        for (const auto& [rule, n] : fired) counts += (counts.empty() ? "" : ", ") + rule + " " + std::to_string(n);
         step.label = (kind == "roombots" ? "action " : kind == "hex" ? "timestep "
                                                                      : "round ") +
                      std::to_string(*round) + ": " + counts;
@@ -245,37 +248,22 @@ Run readLines(const std::string& path, std::istream& in, const nlohmann::json& h
             if (seenAt[c] != -2) step.context.push_back(c), seenAt[c] = -2;
         for (int c : looked) seenAt[c] = -1;
         for (const auto& change : step.changes) seenAt[change.first] = -1;
-        rules.clear(), looked.clear();
+        fired.clear(), looked.clear();
     };
-    std::string line;
-    for (int lineNo = 2; std::getline(in, line); ++lineNo) {
-        const std::string where = path + ":" + std::to_string(lineNo);
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        nlohmann::json j;
-        try {
-            rules::checkJsonDepth(line);
-            j = nlohmann::json::parse(line);
-        } catch (const nlohmann::json::exception& e) {
-            throw InputError(where + ": not a JSON line (" + e.what() + "); the file is cut short or was edited by hand: write it again");
-        } catch (const InputError& e) {
-            throw InputError(where + ": " + e.what());
-        }
-        const bool fault = j.is_object() && j.contains("fault");
-        if (!j.is_object() || !j.contains("round") || !j["round"].is_number_integer() || !j.contains("cells") || !j["cells"].is_array() ||
-            (!fault && (!j.contains("rule") || !j["rule"].is_string() || !j.contains("after") || !j["after"].is_array() || j["after"].size() != j["cells"].size())))
-            throw InputError(where + ": a step is {\"round\": R, \"rule\": NAME, \"cells\": [[x, y], ...], \"after\": [{...}, ...]}, one state after per cell");
-        const std::int64_t r = j["round"].get<std::int64_t>();
-        if (!round || r != *round) {
+    rules::PlanLine j;
+    while (lines.next(j)) {
+        const std::string where = lines.where();
+        if (!round || j.round != *round) {
             close();
             run.steps.push_back({});
-            round = r;
+            round = j.round;
         }
         Run::Step& step = run.steps.back();
-        ++rules[fault ? "lost" : j["rule"].get<std::string>()];
+        ++fired[j.fault ? "lost" : j.rule];
         ++instances;
-        for (std::size_t k = 0; k < j["cells"].size(); ++k) {
-            const int c = cells.of(j["cells"][k], offset, where);
-            const int s = fault ? 0 : states->of(j["after"][k], where);
+        for (std::size_t k = 0; k < j.cells.size(); ++k) {
+            const int c = cells.at(j.cells[k], j.json["cells"][k], where);
+            const int s = j.fault ? 0 : states->of(j.json["after"][k], where);
             if (s == now[c]) {
                 looked.push_back(c);
                 continue;
@@ -300,14 +288,21 @@ Run readItf(const nlohmann::json& itf, const std::string& path, const rules::Sys
     Run run;
     run.kind = "trace";
     const nlohmann::json meta = itf.contains("#meta") ? itf["#meta"] : nlohmann::json::object();
-    if (!itf.contains("states") || !itf["states"].is_array() || itf["states"].empty()) throw InputError(path + ": an ITF trace needs a non-empty \"states\" list (" + kFormats + ")");
-    const nlohmann::json& states = itf["states"];
     const auto stateWhere = [&](std::size_t k) { return path + ": state " + std::to_string(k); };
-    const auto mapOf = [&](std::size_t k) -> const nlohmann::json& {
-        const nlohmann::json& s = states[k];
-        if (!s.is_object() || !s.contains("cells") || !s["cells"].is_object() || !s["cells"].contains("#map") || !s["cells"]["#map"].is_array())
-            throw InputError(stateWhere(k) + ": a state's \"cells\" is {\"#map\": [[{\"#tup\": [x, y]}, {FIELD: VALUE}], ...]}");
-        return s["cells"]["#map"];
+    const nlohmann::json* statesOf = nullptr;
+    try {
+        statesOf = &rules::itfStates(itf);
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what() + " (" + kFormats + ")");
+    }
+    const nlohmann::json& states = *statesOf;
+    // Each state as a configuration's JSON, read by the library's ITF walker.
+    const auto decoded = [&](std::size_t k) {
+        try {
+            return rules::itfStateJson(states[k]);
+        } catch (const InputError& e) {
+            throw InputError(stateWhere(k) + ": " + e.what());
+        }
     };
     // The cells: the trace's region, or the box around every cell it names (a monitor's trace).
     if (const std::string region = text(meta, "region"); !region.empty()) {
@@ -315,12 +310,13 @@ Run readItf(const nlohmann::json& itf, const std::string& path, const rules::Sys
     } else {
         std::vector<Vec> points;
         bool three = false;
-        for (std::size_t k = 0; k < states.size(); ++k)
-            for (const auto& entry : mapOf(k)) {
-                if (!entry.is_array() || entry.size() != 2) throw InputError(stateWhere(k) + ": a map entry is [{\"#tup\": [x, y]}, {FIELD: VALUE}]");
-                points.push_back(Cells::point(entry[0], stateWhere(k)));
-                three = three || (entry[0].is_object() ? entry[0]["#tup"].size() == 3 : entry[0].size() == 3);
+        for (std::size_t k = 0; k < states.size(); ++k) {
+            const nlohmann::json config = decoded(k);
+            for (const auto& cell : config["cells"]) {
+                points.push_back(Cells::point(cell["at"], stateWhere(k)));
+                three = three || cell["at"].size() == 3;
             }
+        }
         run.lattice = system.lattice ? *system.lattice : three ? rules::LatticeKind::Cubic3D
                                                                : rules::LatticeKind::Square2D;
         boxAround(run, points);
@@ -328,31 +324,24 @@ Run readItf(const nlohmann::json& itf, const std::string& path, const rules::Sys
     limitCells(run, path);
     const Cells cells(run);
     States table(run, system, rules::Lattice::get(run.lattice));
-    const auto configuration = [&](std::size_t k) {
-        std::vector<int> c(run.cells.size(), 0);
-        for (const auto& entry : mapOf(k)) {
-            if (!entry.is_array() || entry.size() != 2) throw InputError(stateWhere(k) + ": a map entry is [{\"#tup\": [x, y]}, {FIELD: VALUE}]");
-            c[cells.of(entry[0], Vec{}, stateWhere(k))] = table.of(entry[1], stateWhere(k));
-        }
-        return c;
-    };
     const auto instanceCells = [&](const nlohmann::json& m, std::size_t k) {
         std::vector<int> out;
         const auto add = [&](const nlohmann::json& list) {
             if (list.is_array())
-                for (const auto& c : list) out.push_back(cells.of(c, Vec{}, stateWhere(k) + ": #meta"));
+                for (const auto& c : list) out.push_back(cells.of(c, stateWhere(k) + ": #meta"));
         };
         if (m.contains("cells")) add(m["cells"]);
         if (m.contains("fired") && m["fired"].is_array())
             for (const auto& f : m["fired"]) add(f.contains("cells") ? f["cells"] : nlohmann::json());
         return out;
     };
-    run.start = configuration(0);
-    if (states[0].contains("inputs")) addInputs(run, cells, states[0]["inputs"], Vec{}, stateWhere(0));
+    const nlohmann::json first = decoded(0);
+    run.start = configuration(cells, table, first, stateWhere(0));
+    if (first.contains("inputs")) addInputs(run, cells, first["inputs"], stateWhere(0));
     run.steps.push_back({"0: initial", {}, {}, {}});
     std::vector<int> before = run.start;
     for (std::size_t k = 1; k < states.size(); ++k) {
-        const std::vector<int> after = configuration(k);
+        const std::vector<int> after = configuration(cells, table, decoded(k), stateWhere(k));
         const nlohmann::json m = states[k].contains("#meta") && states[k]["#meta"].is_object() ? states[k]["#meta"] : nlohmann::json::object();
         Run::Step step;
         for (std::size_t i = 0; i < after.size(); ++i)
@@ -364,7 +353,7 @@ Run readItf(const nlohmann::json& itf, const std::string& path, const rules::Sys
         if (m.contains("fired") && m["fired"].is_array()) label = std::to_string(m["fired"].size()) + " instances fired";
         step.label = std::to_string(k) + ": " + (label.empty() ? "adjacent, not one rule step away" : label);
         if (m.contains("marked") && m["marked"].is_array())
-            for (const auto& c : m["marked"]) step.marked.push_back(cells.of(c, Vec{}, stateWhere(k) + ": #meta.marked"));
+            for (const auto& c : m["marked"]) step.marked.push_back(cells.of(c, stateWhere(k) + ": #meta.marked"));
         run.steps.push_back(std::move(step));
         before = after;
     }
@@ -400,7 +389,11 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
     } catch (const nlohmann::json::exception&) {
     } catch (const InputError&) {
     }
-    if (line) return readLines(path, in, head, rulesFile);
+    if (line) {
+        in.clear();
+        in.seekg(0);
+        return readLines(path, in, rulesFile);
+    }
     // One JSON document: an ITF trace (pretty-printed over many lines).
     std::stringstream rest;
     rest << first << '\n'

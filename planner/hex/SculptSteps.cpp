@@ -4,6 +4,7 @@
 
 #include "planner/hex/SculptSteps.h"
 
+#include "planner/Report.h"
 #include "rules/ConfigIo.h"
 
 #include <nlohmann/json.hpp>
@@ -42,13 +43,9 @@ void SculptSteps::timestepEnded() {
 void SculptSteps::flush() {
     if (!pending_) return;
     const BoxEngine& engine = *pending_->engine;
-    const rules::Model& model = engine.tables().model();
-    nlohmann::json cells = nlohmann::json::array(), after = nlohmann::json::array();
-    for (std::int64_t s : engine.cellSteps(pending_->shape)) {
-        cells.push_back(rules::pointJson(engine.board().lattice(), engine.board().point(pending_->anchor + s)));
-        after.push_back(rules::stateFields(model, pending_->cells[pending_->anchor + s]));
-    }
-    *out_ << nlohmann::json{{"round", timestep_}, {"system", model.system().name}, {"rule", model.rules()[engine.ruleOf(pending_->shape)].name}, {"cells", cells}, {"after", after}}.dump() << '\n';
+    nlohmann::json line = planLine(engine, timestep_, pending_->anchor, pending_->shape, pending_->cells);
+    line["system"] = engine.tables().model().system().name;
+    *out_ << line.dump() << '\n';
     pending_.reset();
 }
 

@@ -62,15 +62,26 @@ struct Design {
     }
 };
 
+/// planner_intermediate and a variant whose deletion ignores its guard, from one start on
+/// square:4x2, with their graphs computed by the reference interpreter.
+struct GuardedAndNot {
+    World a = World::library("planner_intermediate", "square:4x2");
+    World b{test::parse(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/checker/broken/planner_no_guard.holon")), "square:4x2"};
+    rules::Configuration startA = a.ascii("UFU.\nUUU.\n"), startB = b.ascii("UFU.\nUUU.\n");
+    ReferenceGraph ga, gb;
+    GuardedAndNot() {
+        a.mark(startA, "target", ".###\n.###\n"), b.mark(startB, "target", ".###\n.###\n");
+        ga = referenceGraph(a, startA), gb = referenceGraph(b, startB);
+    }
+};
+
 }  // namespace
 
 TEST_CASE("diff counts equal the set differences of independently computed transitions") {
-    const std::string art = "UFU.\nUUU.\n", target = ".###\n.###\n";
-    World a = World::library("planner_intermediate", "square:4x2");
-    World b(test::parse(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/checker/broken/planner_no_guard.holon")), "square:4x2");
-    auto startA = a.ascii(art), startB = b.ascii(art);
-    a.mark(startA, "target", target), b.mark(startB, "target", target);
-    const ReferenceGraph ga = referenceGraph(a, startA), gb = referenceGraph(b, startB);
+    const GuardedAndNot g;
+    const World &a = g.a, &b = g.b;
+    const rules::Configuration &startA = g.startA, &startB = g.startB;
+    const ReferenceGraph &ga = g.ga, &gb = g.gb;
     Design da(a.system, "square:4x2", startA), db(b.system, "square:4x2", startB);
     const auto d = checker::compareDesigns({da.engine.get(), da.explorer.get()}, {db.engine.get(), db.explorer.get()});
     CHECK(d.states[0] == ga.states.size());
@@ -102,4 +113,33 @@ TEST_CASE("a design compared with itself has no difference") {
     CHECK(d.transitions[0] == d.transitions[1]);
     CHECK(d.transitions[0] > 0);
     CHECK_FALSE(d.transitionWitness[0]);
+}
+
+TEST_CASE("a library caller diffs two designs without the CLI: checker::diff explores both and compares") {
+    const GuardedAndNot g;
+    const World &a = g.a, &b = g.b;
+    const rules::Configuration &startA = g.startA, &startB = g.startB;
+    const ReferenceGraph &ga = g.ga, &gb = g.gb;
+    checker::DiffOptions options;
+    options.initial[0] = {startA}, options.initial[1] = {startB};
+    const checker::DiffReport report = checker::diff(*a.model, *b.model, a.region, options);
+    CHECK(report.stopped() == -1);
+    REQUIRE(report.difference);
+    const checker::DesignDifference& d = *report.difference;
+    CHECK(d.states[0] == ga.states.size());
+    CHECK(d.states[1] == gb.states.size());
+    CHECK(d.onlyTransitions[0] == onlyIn(ga.transitions, gb.transitions));
+    CHECK(d.onlyTransitions[1] == onlyIn(gb.transitions, ga.transitions));
+    REQUIRE(d.transitionWitness[1]);
+    CHECK(report.witnessText(1).starts_with(b.system.name + " fires 'delete' after "));
+    const nlohmann::json j = report.toJson();
+    CHECK(j["in_b"]["only_transitions"] == d.onlyTransitions[1]);
+    CHECK(j["in_b"]["witness"]["trace"]["states"].size() == d.transitionWitness[1]->steps.size());
+
+    // A limit on either exploration leaves the comparison undecided, naming the design it stopped.
+    options.limits.maxStates = 2;
+    const checker::DiffReport stopped = checker::diff(*a.model, *b.model, a.region, options);
+    CHECK(stopped.stopped() == 0);
+    CHECK(stopped.explored[0].explorer->stats().stopped == StopReason::MaxStates);
+    CHECK_FALSE(stopped.difference);
 }
