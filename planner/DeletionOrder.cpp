@@ -1,0 +1,112 @@
+// The order in which the field allocators let P metamodules be deleted (see DeletionOrder.h).
+//
+// Why: the planner allows a deletion at every P leaf that has destroyers, and in general_1 every
+// metamodule starts as one, so right behind the relabelling wave all leaves went at once, nearest
+// the F region first (their creators drained there first). The region to delete eroded into a
+// dendrite, and late in the run a large subtree hung on a single-lane trunk through which its
+// whole mass had to leave, one unit per round: rounds grew with the area (box:100x100 ->
+// box:50x200, 5,205 rounds where the intermediate planner needs 225).
+//
+// The policy: each P metamodule knows its depth in the planner's forest (1 below an F, its
+// parent's plus one otherwise: a value passed down the tree one hop per round), and a deletion
+// that would start at it waits while a P neighbour is deeper. A metamodule is then taken only
+// when nothing behind it is left, so every metamodule keeps each neighbour that is nearer the F
+// region in its tree: the region shrinks from its far rim, and its mass leaves through its full
+// width. Each metamodule decides from its own state and its neighbours' (seed 000 §IV-B).
+//
+// Nothing is held for ever: the deepest P metamodule is a leaf (a child would be deeper) and has no
+// deeper neighbour, so it is never held once the depths have settled; the allocators also lift
+// every hold when their stall fallback (the paper's randomizer) has the turn. Holding an enabled
+// instance back is a choice among enabled instances, so Safety and the ranking of Termination
+// hold as proved for any scheduler.
+
+#include "planner/DeletionOrder.h"
+#include "planner/Execution.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace holon::planner {
+
+DeletionOrder::DeletionOrder(const Problem& problem) : problem_(&problem) {
+    const rules::Alphabet& alphabet = problem.model->alphabet();
+    const PlannerSchema& s = problem.schema;
+    const BoxEngine& engine = *problem.engine;
+    const Board& board = *problem.board;
+    const auto size = static_cast<std::size_t>(alphabet.size());
+    path_.assign(size, 0), full_.assign(size, 0), up_.assign(size, 0);
+    for (int v = 1; v < alphabet.size() && s.parent >= 0 && s.resource >= 0; ++v) {
+        const std::vector<int>& f = alphabet.fields(static_cast<rules::CellValue>(v));
+        path_[v] = f[s.label] == s.path, full_[v] = f[s.resource] == s.full;
+        if (f[s.parent] != rules::kAbsent) up_[v] = board.step(f[s.parent]);
+    }
+    const rules::RuleTables& tables = *problem.tables;
+    starts_.assign(static_cast<std::size_t>(engine.shapeCount()), 0);
+    for (int sh = 0; sh < engine.shapeCount(); ++sh) {
+        if (engine.kind(sh) != ShapeKind::Motion) continue;
+        const auto& t = tables.shape(sh);
+        for (std::size_t k = 0; k < t.lhs.size(); ++k)
+            for (std::size_t v = 1; v < size && !t.rhs[k].empty(); ++v)
+                for (int c = 0; c < tables.comboCount() && path_[v] && full_[v]; ++c)
+                    if (tables.test(t.lhs[k], c, static_cast<rules::CellValue>(v)) && tables.massUnitsOf(t.rhs[k][v]) < tables.massUnitsOf(static_cast<rules::CellValue>(v)))
+                        starts_[sh] = 1;
+    }
+    for (int d = 0; d < board.lattice().degree(); ++d) around_.push_back(board.step(d));
+    depth_.assign(problem.cells.size(), 0), seen_.assign(problem.cells.size(), 0), mark_.assign(problem.cells.size(), 0);
+}
+
+std::uint32_t DeletionOrder::derive(const std::vector<BoxEngine::Value>& cells, std::int64_t i) const {
+    const BoxEngine::Value v = cells[i];
+    if (!path_[v]) return 0;
+    const std::int64_t parent = i + up_[v];
+    // Safety keeps the forest acyclic; the cap only bounds a broken rule file's cycle.
+    return path_[cells[parent]] ? std::min<std::uint32_t>(depth_[parent], 1u << 30) + 1 : 1;
+}
+
+bool DeletionOrder::update(const Execution& ex) {
+    const auto& cells = ex.cells();
+    const BoxEngine& engine = *problem_->engine;
+    auto dirty = [&](std::int64_t i) {
+        if (engine.combo(i) == BoxEngine::kOutside || mark_[i]) return;
+        mark_[i] = 1, dirty_.push_back(i);
+    };
+    // Only a metamodule whose own cell or whose parent's depth changed derives its depth again.
+    const std::size_t n = cells.size();
+    const auto* now = reinterpret_cast<const unsigned char*>(cells.data());
+    for (std::size_t w = 0; w < n; w += 8) {
+        const std::size_t len = std::min<std::size_t>(8, n - w);
+        if (std::memcmp(now + w, seen_.data() + w, len) == 0) continue;
+        for (std::size_t x = w; x < w + len; ++x)
+            if (cells[x] != seen_[x]) seen_[x] = cells[x], dirty(static_cast<std::int64_t>(x));
+    }
+    updates_.clear();
+    for (std::int64_t i : dirty_) {
+        mark_[i] = 0;
+        const std::uint32_t d = derive(cells, i);
+        if (d != depth_[i]) updates_.push_back({i, d});
+    }
+    dirty_.clear();
+    for (const auto& [i, d] : updates_) {
+        depth_[i] = d;
+        for (std::int64_t s : around_) dirty(i + s);
+    }
+    return !updates_.empty();
+}
+
+bool DeletionOrder::releases(const Execution& ex, std::int64_t anchor, int shape) const {
+    if (!starts_[shape]) return true;
+    const BoxEngine& engine = ex.engine();
+    const auto& t = engine.tables().shape(shape);
+    const std::span<const std::int64_t> steps = engine.cellSteps(shape);
+    const auto& cells = ex.cells();
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+        const std::int64_t i = anchor + steps[k];
+        const BoxEngine::Value v = cells[i];
+        if (!path_[v] || !full_[v] || t.rhs[k].empty() || engine.tables().massUnitsOf(t.rhs[k][v]) >= engine.tables().massUnitsOf(v)) continue;
+        for (std::int64_t s : around_)
+            if (path_[cells[i + s]] && depth_[i + s] > depth_[i]) return false;
+    }
+    return true;
+}
+
+}  // namespace holon::planner
