@@ -52,15 +52,22 @@ DeletionOrder::DeletionOrder(const Problem& problem) : problem_(&problem) {
                         starts_[sh] = 1;
     }
     for (int d = 0; d < board.lattice().degree(); ++d) around_.push_back(board.step(d));
-    depth_.assign(problem.cells.size(), 0), seen_.assign(problem.cells.size(), 0), mark_.assign(problem.cells.size(), 0);
+    depth_.assign(problem.cells.size(), 0), behind_.assign(problem.cells.size(), 0), seen_.assign(problem.cells.size(), 0), mark_.assign(problem.cells.size(), 0);
 }
 
-std::uint32_t DeletionOrder::derive(const std::vector<BoxEngine::Value>& cells, std::int64_t i) const {
+DeletionOrder::Values DeletionOrder::derive(const std::vector<BoxEngine::Value>& cells, std::int64_t i) const {
     const BoxEngine::Value v = cells[i];
-    if (!path_[v]) return 0;
+    if (!path_[v]) return {0, 0};
     const std::int64_t parent = i + up_[v];
     // Safety keeps the forest acyclic; the cap only bounds a broken rule file's cycle.
-    return path_[cells[parent]] ? std::min<std::uint32_t>(depth_[parent], 1u << 30) + 1 : 1;
+    const std::uint32_t depth = path_[cells[parent]] ? std::min<std::uint32_t>(depth_[parent], 1u << 30) + 1 : 1;
+    // The deepest metamodule behind this one, through neighbours each deeper than the last: the
+    // steps go strictly deeper, so a value that falls (a far metamodule deleted) spreads without
+    // counting down.
+    std::uint32_t behind = depth;
+    for (std::int64_t s : around_)
+        if (path_[cells[i + s]] && depth_[i + s] > depth) behind = std::max(behind, behind_[i + s]);
+    return {depth, behind};
 }
 
 bool DeletionOrder::update(const Execution& ex) {
@@ -82,12 +89,12 @@ bool DeletionOrder::update(const Execution& ex) {
     updates_.clear();
     for (std::int64_t i : dirty_) {
         mark_[i] = 0;
-        const std::uint32_t d = derive(cells, i);
-        if (d != depth_[i]) updates_.push_back({i, d});
+        const Values now = derive(cells, i);
+        if (now.depth != depth_[i] || now.behind != behind_[i]) updates_.push_back({i, now});
     }
     dirty_.clear();
-    for (const auto& [i, d] : updates_) {
-        depth_[i] = d;
+    for (const auto& [i, now] : updates_) {
+        depth_[i] = now.depth, behind_[i] = now.behind;
         for (std::int64_t s : around_) dirty(i + s);
     }
     return !updates_.empty();
@@ -103,8 +110,7 @@ bool DeletionOrder::releases(const Execution& ex, std::int64_t anchor, int shape
         const std::int64_t i = anchor + steps[k];
         const BoxEngine::Value v = cells[i];
         if (!path_[v] || !full_[v] || t.rhs[k].empty() || engine.tables().massUnitsOf(t.rhs[k][v]) >= engine.tables().massUnitsOf(v)) continue;
-        for (std::int64_t s : around_)
-            if (path_[cells[i + s]] && depth_[i + s] > depth_[i]) return false;
+        if (behind_[i] > depth_[i]) return false;
     }
     return true;
 }
