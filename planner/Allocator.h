@@ -22,6 +22,10 @@ public:
     virtual bool update(const Execution&) { return false; }
     /// Whether this enabled transfer instance should fire now.
     virtual bool wants(const Execution&, std::int64_t anchor, int shape) const = 0;
+    /// Whether this enabled planner instance (not a transfer) may fire now. An allocator decides
+    /// where destroyers are spent, so it may hold back an instance that starts a deletion
+    /// (planner/DeletionOrder.h); it must not hold back every enabled instance for ever.
+    virtual bool releases(const Execution&, std::int64_t /*anchor*/, int /*shape*/) const { return true; }
     /// Told just before a transfer instance fires.
     virtual void firing(const Execution&, std::int64_t /*anchor*/, int /*shape*/) {}
 };

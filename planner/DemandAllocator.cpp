@@ -27,6 +27,7 @@
 // the next creation or deletion, as in the gradient allocator.
 
 #include "planner/Allocator.h"
+#include "planner/DeletionOrder.h"
 #include "planner/DemandProbe.h"
 #include "planner/Execution.h"
 #include "planner/StallFallback.h"
@@ -49,7 +50,7 @@ constexpr int kClaims = 16;
 
 class DemandAllocator final : public Allocator {
 public:
-    DemandAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), stall_(seed) {
+    DemandAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), order_(problem), stall_(seed) {
         const Board& board = *problem.board;
         inTarget_.assign(static_cast<std::size_t>(board.size()), 0);
         for (Vec v : problem.target.cells) inTarget_[board.index(v)] = 1;
@@ -71,8 +72,11 @@ public:
         bool moved = claim(cells, creations);
         moved = spread(cells, sinks, sink_) || moved;
         moved = route(cells, leaving) || moved;
-        return stall_.update(ex, moved);
+        const bool deeper = order_.update(ex);
+        return stall_.update(ex, moved || deeper);
     }
+
+    bool releases(const Execution& ex, std::int64_t anchor, int shape) const override { return stall_.active() || order_.releases(ex, anchor, shape); }
 
     bool wants(const Execution& ex, std::int64_t anchor, int shape) const override {
         if (stall_.active()) return stall_.wants(ex, anchor, shape);
@@ -160,6 +164,7 @@ private:
 
     const Problem* problem_;
     DemandProbe probe_;
+    DeletionOrder order_;
     std::vector<char> inTarget_, claimed_;
     std::vector<std::int32_t> owner_;
     std::vector<std::int64_t> route_;

@@ -168,7 +168,7 @@ bool Execution::asyncStep(const RunObserver& observer, std::vector<std::int64_t>
             list.pop_back();
             continue;
         }
-        if (!planner && !allocator_->wants(*this, anchorOf(key), shapeOf(key))) continue;
+        if (!(planner ? allocator_->releases(*this, anchorOf(key), shapeOf(key)) : allocator_->wants(*this, anchorOf(key), shapeOf(key)))) continue;
         if (!admitted(anchorOf(key), shapeOf(key))) continue;
         fire(anchorOf(key), shapeOf(key), observer, changed);
         return true;
@@ -177,7 +177,7 @@ bool Execution::asyncStep(const RunObserver& observer, std::vector<std::int64_t>
     compact(transferList_);
     std::vector<std::uint64_t> candidates;
     for (std::uint64_t key : plannerList_)
-        if (admitted(anchorOf(key), shapeOf(key))) candidates.push_back(key);
+        if (allocator_->releases(*this, anchorOf(key), shapeOf(key)) && admitted(anchorOf(key), shapeOf(key))) candidates.push_back(key);
     for (std::uint64_t key : transferList_)
         if (allocator_->wants(*this, anchorOf(key), shapeOf(key)) && admitted(anchorOf(key), shapeOf(key))) candidates.push_back(key);
     if (candidates.empty()) return false;
@@ -195,7 +195,7 @@ bool Execution::adversarialStep(const RunObserver& observer, std::vector<std::in
     auto rank = [&](std::uint64_t k) { return std::pair(engine().ruleOf(shapeOf(k)), k); };
     std::optional<std::uint64_t> worst;
     for (std::uint64_t key : plannerList_)
-        if ((!worst || rank(*worst) < rank(key)) && admitted(anchorOf(key), shapeOf(key))) worst = key;
+        if ((!worst || rank(*worst) < rank(key)) && allocator_->releases(*this, anchorOf(key), shapeOf(key)) && admitted(anchorOf(key), shapeOf(key))) worst = key;
     if (worst) {
         fire(anchorOf(*worst), shapeOf(*worst), observer, changed);
         return true;
@@ -209,8 +209,9 @@ bool Execution::syncRound(const RunObserver& observer, std::vector<std::int64_t>
     random_.shuffle(plannerList_);
     for (std::size_t k = 0; k < plannerList_.size(); ++k) {
         if (k + kAhead < plannerList_.size()) __builtin_prefetch(&marks_[anchorOf(plannerList_[k + kAhead])]);
-        if (admitted(anchorOf(plannerList_[k]), shapeOf(plannerList_[k])) && takeIfFree(anchorOf(plannerList_[k]), shapeOf(plannerList_[k])))
-            chosen.push_back(plannerList_[k]);
+        const std::uint64_t key = plannerList_[k];
+        if (allocator_->releases(*this, anchorOf(key), shapeOf(key)) && admitted(anchorOf(key), shapeOf(key)) && takeIfFree(anchorOf(key), shapeOf(key)))
+            chosen.push_back(key);
     }
     compact(transferList_);
     random_.shuffle(transferList_);

@@ -13,6 +13,7 @@
 // rule tables: nothing here names a rule of a particular system.
 
 #include "planner/Allocator.h"
+#include "planner/DeletionOrder.h"
 #include "planner/DemandProbe.h"
 #include "planner/Execution.h"
 #include "planner/StallFallback.h"
@@ -30,7 +31,7 @@ constexpr std::uint32_t kFar = 1u << 30;
 
 class GradientAllocator final : public Allocator {
 public:
-    GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), stall_(seed) {
+    GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), order_(problem), stall_(seed) {
         const BoxEngine& engine = *problem.engine;
         needC_.assign(problem.cells.size(), kFar), needD_.assign(problem.cells.size(), kFar);
         // What a change at a cell can affect at once: the demand of every cell in a motion
@@ -105,8 +106,11 @@ public:
             needC_[u.cell] = u.c, needD_[u.cell] = u.d;
             for (int d = 0; d < degree; ++d) dirty(u.cell + board.step(d), kValue);
         }
-        return stall_.update(ex, !updates_.empty());
+        const bool deeper = order_.update(ex);
+        return stall_.update(ex, !updates_.empty() || deeper);
     }
+
+    bool releases(const Execution& ex, std::int64_t anchor, int shape) const override { return stall_.active() || order_.releases(ex, anchor, shape); }
 
     bool wants(const Execution& ex, std::int64_t anchor, int shape) const override {
         if (stall_.active()) return stall_.wants(ex, anchor, shape);
@@ -125,6 +129,7 @@ public:
 private:
     const Problem* problem_;
     DemandProbe probe_;
+    DeletionOrder order_;
     // mark_ bits: the cell is in dirty_ (its value is recomputed), its demand is recomputed too.
     static constexpr char kValue = 1, kDemand = 3;
     // demand_ bits: a creation or deletion waits for this cell to be heavier / lighter.

@@ -60,6 +60,8 @@ PlannerSchema PlannerSchema::of(const rules::System& system) {
     s.unknown = valueIndex(label, "U"), s.path = valueIndex(label, "P"), s.final = valueIndex(label, "F");
     if (label.kind != rules::FieldKind::Enum || s.unknown < 0 || s.path < 0 || s.final < 0)
         throw InputError("system '" + system.name + "': field 'label' lacks U, P or F" + fix);
+    for (std::size_t i = 0; i < system.fields.size(); ++i)
+        if (system.fields[i].name == "parent" && system.fields[i].kind == rules::FieldKind::Dir) s.parent = static_cast<int>(i);
     for (std::size_t i = 0; i < system.inputs.size(); ++i)
         if (system.inputs[i] == "target") s.target = static_cast<int>(i);
     if (s.target < 0) throw InputError("system '" + system.name + "' has no input 'target'" + fix);

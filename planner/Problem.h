@@ -16,6 +16,7 @@ namespace holon::planner {
 struct PlannerSchema {
     int label = -1, unknown = -1, path = -1, final = -1;  // field index, and its values U, P, F
     int target = -1;                                      // input index
+    int parent = -1;                                      // the dir field 'parent' pointing a P up its tree, or -1
     int resource = -1;                                    // the field that carries mass, or -1
     int full = -1, creator = -1;                          // resource values of mass 1 (D) and the most mass (C)
     rules::Rational extra;                                // mass(C) - 1: what a creator carries beyond a metamodule
