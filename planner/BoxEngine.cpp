@@ -93,7 +93,7 @@ BoxEngine::BoxEngine(const rules::RuleTables& tables, const Board& board, std::v
         const rules::RuleTables::Shape& t = tables.shape(s);
         for (std::size_t k = 0; k < shape.offsets.size(); ++k)
             if (tables.mayWrite(s, static_cast<int>(k))) writes.push_back(cells[k]);
-        for (const rules::RuleTables::Site site : tables.readSites(s, rules::RuleTables::GuardReads::Neighbourhood))
+        for (const rules::RuleTables::Site site : tables.readSites(s))
             reads.push_back(board.offset(shape.offsets[site.cell] - origin + (site.direction < 0 ? Vec{} : lattice.direction(site.direction))));
         std::sort(reads.begin(), reads.end());
         reads.erase(std::unique(reads.begin(), reads.end()), reads.end());

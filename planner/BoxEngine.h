@@ -46,7 +46,7 @@ public:
     /// Index steps of the pattern cells an instance of the shape may change (RuleTables::mayWrite).
     std::span<const std::int64_t> writeSteps(int shape) const { return {writePool_.data() + programs_[shape].writeAt, programs_[shape].writes}; }
     /// Index steps of every cell a shape's instance reads (RuleTables::readSites: its pattern cells
-    /// and, for a guarded shape, their neighbours: GuardReads::Neighbourhood).
+    /// and the neighbours its guard reads).
     std::span<const std::int64_t> readSteps(int shape) const { return {readPool_.data() + programs_[shape].readAt, programs_[shape].reads}; }
     /// Union over shapes of readSteps: a change at cell c can only affect anchors c - r.
     const std::vector<std::int64_t>& influence() const { return influence_; }

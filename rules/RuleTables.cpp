@@ -92,18 +92,13 @@ void guardCentres(const RuleTables::GuardNode& g, std::vector<int>& out) {
 
 }  // namespace
 
-std::vector<RuleTables::Site> RuleTables::readSites(int s, GuardReads reads) const {
+std::vector<RuleTables::Site> RuleTables::readSites(int s) const {
     const Shape& t = shapes_[s];
     std::vector<Site> sites;
     for (int k = 0; k < static_cast<int>(t.lhs.size()); ++k) sites.push_back({k, -1});
     if (!t.hasGuard) return sites;
     std::vector<int> centres;
-    switch (reads) {
-    case GuardReads::Exact: guardCentres(t.guard, centres); break;
-    case GuardReads::Neighbourhood:
-        for (int k = 0; k < static_cast<int>(t.lhs.size()); ++k) centres.push_back(k);
-        break;
-    }
+    guardCentres(t.guard, centres);
     std::sort(centres.begin(), centres.end());
     centres.erase(std::unique(centres.begin(), centres.end()), centres.end());
     for (int k : centres)

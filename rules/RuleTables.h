@@ -80,15 +80,12 @@ public:
         int cell, direction;
         friend bool operator==(const Site&, const Site&) = default;
     };
-    /// Which neighbours of a guarded shape's pattern count as read. Exact: those of each pattern
-    /// cell a guard quantifier names (`nbr@k`), which is all a guard reads (the parser keeps guards
-    /// local; `pattern` quantifiers read the pattern cells). Neighbourhood: those of every pattern
-    /// cell, a superset the planner's sync rounds keep (its published plan figures were measured
-    /// with it; with Exact, general_n rounds come out maximal and shorter).
-    enum class GuardReads { Exact, Neighbourhood };
     /// The read side of every footprint (the path search's interference, the planner's conflict
-    /// test and influence): every pattern cell, and the guard's neighbours as `reads` says.
-    std::vector<Site> readSites(int shape, GuardReads reads = GuardReads::Exact) const;
+    /// test and influence): every pattern cell, and the neighbours of each pattern cell a guard
+    /// quantifier names (`nbr@k`), which is all a guard reads (the parser keeps guards local;
+    /// `pattern` quantifiers read the pattern cells). Nothing wider: a wider stencil would make the
+    /// planner's sync rounds smaller than maximal.
+    std::vector<Site> readSites(int shape) const;
     /// The write side: whether pattern cell k of a shape may change, i.e. is a copy of another cell
     /// or rewrites some state its left side accepts under input combination `combo` (under any
     /// combination, where `combo` is -1) to another.
