@@ -20,6 +20,7 @@
 
 #include "checker/Draw.h"
 #include "checker/EverySizeInvariant.h"
+#include "checker/EverySizeProgress.h"
 #include "checker/Property.h"
 #include "checker/SmtEncoding.h"
 #include "checker/SolverLimits.h"
@@ -83,7 +84,8 @@ public:
         SmtEncoding enc(ctx, w.engine(), SmtEncoding::Use::Queries, budget);
         const State c = enc.state("c"), d = enc.state("d");
         std::vector<smt::Term> act, body;
-        for (int q : w.focus()) {
+        for (std::size_t k = 0; k < (ob.atCell ? 1 : w.focus().size()); ++k) {
+            const int q = w.focus()[k];
             act.push_back(ctx.boolConst("instance_" + std::to_string(q)));
             body.push_back(ob.onWindow(enc, w, q, c, d));
         }
@@ -119,6 +121,15 @@ public:
                 break;
             }
             const smt::Model m = solver.model();
+            if (ob.atCell) {
+                // Drawn with the model's inputs, the cell the certificate is about marked.
+                const Trace window{{{enc.decode(m, c), -1}}, {}, ob.name, ob.broken, {w.region().indexOf({0, 0, 0})}};
+                drawing = drawTraceAscii(window, rules::Engine(model_, w.region(), inputsOf(m, enc)));
+                o.result.verdict = Verdict::Unknown;
+                o.result.summary = "not proved for every size: a window cell " + ob.broken + "; that is no counterexample on a region";
+                o.result.witness = {{"window_radius", ob.margin}, {"window_cells", w.region().size()}, {"certificate_fails", true}};
+                break;
+            }
             refuted(ob, w, w.focus()[k], enc.decode(m, c), inputsOf(m, enc), budget, o, drawing);
             break;
         }
@@ -281,8 +292,54 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
         }
         return std::make_pair(o, drawing);
     };
+    // Invariants conjunct by conjunct (checker/EverySizeInvariant.h); the first that fails decides. `local`:
+    // no conjunct was left undecided for want of a window argument.
+    struct Proved {
+        Obligation o;
+        std::string drawing;
+        bool local = true;
+    };
+    auto invariant = [&](const rules::Property& p) {
+        const InvariantPlan plan = planInvariant(model, p, prover.window(0).engine());
+        if (plan.steps.empty()) {
+            Proved u{{}, "", false};
+            u.o.result.name = p.name, u.o.result.kind = "invariant", u.o.scope = "every region";
+            u.o.result.summary = "not proved for every size: " + plan.undecided;
+            return u;
+        }
+        Obligation total;
+        total.result.name = p.name, total.result.kind = "invariant", total.scope = "every region";
+        total.result.verdict = Verdict::Holds;
+        std::string drawing;
+        for (const StepObligation& step : plan.steps) {
+            auto [part, d] = run(step);
+            total.result.seconds += part.result.seconds;
+            if (!part.smtFile.empty()) total.smtFile += (total.smtFile.empty() ? "" : " ") + part.smtFile;
+            total.result.summary = part.result.summary;
+            if (part.result.verdict == Verdict::Holds) continue;
+            part.result.name = p.name;
+            part.result.seconds = total.result.seconds;
+            part.smtFile = total.smtFile;
+            total = part, drawing = d;
+            break;
+        }
+        if (total.result.verdict == Verdict::Holds) {
+            if (!plan.undecided.empty()) {
+                total.result.verdict = Verdict::Unknown;
+                total.result.summary = "not proved for every size: " + plan.undecided;
+                return Proved{total, drawing, false};
+            } else if (!plan.trusted.empty()) {
+                total.result.summary += "; " + plan.trusted;
+            }
+        }
+        return Proved{total, drawing, true};
+    };
+    auto asked = [&](const rules::Property& p) {
+        return options.properties.empty() || std::find(options.properties.begin(), options.properties.end(), p.name) != options.properties.end();
+    };
+    std::vector<const rules::Property*> provedInvariants, progresses;
     for (const rules::Property& p : system.properties) {
-        if (!options.properties.empty() && std::find(options.properties.begin(), options.properties.end(), p.name) == options.properties.end()) continue;
+        if (!asked(p)) continue;
         switch (p.kind) {
         case rules::Property::Kind::Conserves: {
             auto [o, drawing] = run(conserves(model, p));
@@ -302,47 +359,32 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
             break;
         }
         case rules::Property::Kind::Invariant: {
-            // Conjunct by conjunct (checker/EverySizeInvariant.h); the first that fails decides.
-            const InvariantPlan plan = planInvariant(model, p, prover.window(0).engine());
-            if (plan.steps.empty()) {
-                undecided(p, plan.undecided);
-                break;
-            }
-            Obligation total;
-            total.result.name = p.name, total.result.kind = "invariant", total.scope = "every region";
-            total.result.verdict = Verdict::Holds;
-            std::string drawing;
-            for (const StepObligation& step : plan.steps) {
-                auto [part, d] = run(step);
-                total.result.seconds += part.result.seconds;
-                if (!part.smtFile.empty()) total.smtFile += (total.smtFile.empty() ? "" : " ") + part.smtFile;
-                total.result.summary = part.result.summary;
-                if (part.result.verdict == Verdict::Holds) continue;
-                part.result.name = p.name;
-                part.result.seconds = total.result.seconds;
-                part.smtFile = total.smtFile;
-                total = part, drawing = d;
-                break;
-            }
-            if (total.result.verdict == Verdict::Holds) {
-                if (!plan.undecided.empty()) {
-                    total.result.verdict = Verdict::Unknown;
-                    total.result.summary = "not proved for every size: " + plan.undecided;
-                    out.notLocal.push_back(p.name);
-                } else if (!plan.trusted.empty()) {
-                    total.result.summary += "; " + plan.trusted;
-                }
-            }
-            add(total, drawing);
+            Proved r = invariant(p);
+            if (r.o.result.verdict == Verdict::Holds) provedInvariants.push_back(&p);
+            if (!r.local) out.notLocal.push_back(p.name);
+            add(r.o, r.drawing);
             break;
         }
-        case rules::Property::Kind::Progress:
-            undecided(p, "progress is about a whole configuration (every stuck state, anywhere), not about one step on a window");
-            break;
+        case rules::Property::Kind::Progress: progresses.push_back(&p); break;
         case rules::Property::Kind::Holonomic:
             undecided(p, "holonomy relates two whole configurations, not one step on a window");
             break;
         }
+    }
+    // Progress assumes the invariants proved for every region, also those not asked for.
+    for (const rules::Property& p : system.properties)
+        if (!progresses.empty() && p.kind == rules::Property::Kind::Invariant && !asked(p) && invariant(p).o.result.verdict == Verdict::Holds)
+            provedInvariants.push_back(&p);
+    for (const rules::Property* p : progresses) {
+        const ProgressPlan plan = planProgress(model, *p, provedInvariants, prover.window(0).engine());
+        if (plan.steps.empty()) {
+            undecided(*p, plan.undecided);
+            continue;
+        }
+        auto [o, drawing] = run(plan.steps[0]);
+        if (o.result.verdict != Verdict::Holds && o.result.verdict != Verdict::Unknown) throw InternalError("a progress certificate refuted progress");
+        if (o.result.verdict == Verdict::Unknown) out.notLocal.push_back(p->name);
+        add(o, drawing);
     }
     return out;
 }

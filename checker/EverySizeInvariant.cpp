@@ -117,13 +117,6 @@ bool inside(const rules::Region& region, int cell) {
     return true;
 }
 
-/// Cell i steps along dir (its pointer field holds dir; every direction for `nbr`).
-smt::Term stepsAlong(SmtEncoding& enc, const State& s, int i, int field, int dir) {
-    if (field < 0) return s.is[0][0].context().boolVal(true);
-    const rules::Alphabet& alphabet = enc.engine().model().alphabet();
-    return enc.member(s, i, [&](int, CellValue v) { return v != 0 && alphabet.fields(v)[field] == dir; });
-}
-
 /// What the window may assume before the step: the per-cell conjuncts at every cell whose
 /// neighbourhood they read lies in the window, and, for each reaches(T, f, S), that a T cell
 /// steps to a T or S cell (a consequence of the conjunct at every cell of a region, and vacuous at
@@ -222,6 +215,12 @@ smt::Term frame(SmtEncoding& enc, const Window& w, int q, const State& c, const 
 }
 
 }  // namespace
+
+smt::Term stepsAlong(SmtEncoding& enc, const SmtEncoding::State& s, int i, int field, int dir) {
+    if (field < 0) return s.is[0][0].context().boolVal(true);
+    const rules::Alphabet& alphabet = enc.engine().model().alphabet();
+    return enc.member(s, i, [&](int, CellValue v) { return v != 0 && alphabet.fields(v)[field] == dir; });
+}
 
 InvariantPlan planInvariant(const rules::Model& model, const rules::Property& p, const rules::Engine& probe) {
     const std::vector<const Expr*> parts = rules::conjuncts(p.exprs[0]);

@@ -22,6 +22,10 @@ struct InvariantPlan {
     std::string trusted;
 };
 
+/// Cell i of s steps along direction dir: its pointer field holds dir; every direction when
+/// field < 0 (`nbr`).
+smt::Term stepsAlong(SmtEncoding& enc, const SmtEncoding::State& s, int i, int field, int dir);
+
 /// `probe` is any window's engine (it covers every input combination).
 InvariantPlan planInvariant(const rules::Model& model, const rules::Property& p, const rules::Engine& probe);
 

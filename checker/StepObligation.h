@@ -17,6 +17,10 @@ struct StepObligation {
     using State = SmtEncoding::State;
     std::string name, kind, proved, broken;  // verdict texts
     int margin = 0;
+    /// About one configuration, not a step (checker/EverySizeProgress.h): asked once, with the
+    /// window's origin as its cell; a model is a window where the certificate fails, which says
+    /// nothing about a region (no completion, no confirmation).
+    bool atCell = false;
     std::function<smt::Term(SmtEncoding&, const Window&, int q, const State& c, const State& d)> onWindow;
     std::function<smt::Term(SmtEncoding&, int q, const State& c, const State& d)> onRegion;
     const rules::Property* property = nullptr;  // whose type confirms a counterexample (checker/Property.h)

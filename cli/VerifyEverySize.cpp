@@ -132,7 +132,7 @@ int runEverySize(const EverySizeArgs& a) {
     if (!a.traceOut.empty()) traceOut.emplace("--trace-out", a.traceOut);
     if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
     const std::string ruleText = certificate ? rules::readTextFile(rulePath) : "";  // hashed as it was proved, not as it may be after
-    std::optional<TempDir> hashed;  // the obligations a certificate hashes, when --smt-out keeps none
+    std::optional<TempDir> hashed;                                                  // the obligations a certificate hashes, when --smt-out keeps none
     if (certificate && a.smtOut.empty()) hashed.emplace();
     checker::EverySizeOptions options;
     options.timeoutSeconds = a.obligationTimeout;
@@ -201,6 +201,11 @@ int runEverySize(const EverySizeArgs& a) {
     for (std::size_t k = 0; k < report.obligations.size(); ++k) {
         if (every.drawings[k].empty()) continue;
         const auto& r = report.obligations[k].result;
+        if (r.witness.value("certificate_fails", false)) {
+            std::cout << "\nwindow where the local progress certificate of '" << r.name << "' fails (not a counterexample; the cell marked)\n"
+                      << every.drawings[k];
+            continue;
+        }
         std::cout << "\ncounterexample for '" << r.name << "'"
                   << (r.confirmed() ? " (confirmed by the reference interpreter on region " + r.witness.value("confirmed_on", std::string(a.region)) + ")"
                                     : " (NOT confirmed)")
@@ -212,7 +217,8 @@ int runEverySize(const EverySizeArgs& a) {
         for (const std::string& w : written) std::cout << "\n  " << w;
         std::cout << '\n';
     }
-    std::cout << "\ncertificate: " << (certificate ? certificate->path() + " (holon plan reads it; docs/every-size.md, \"Certificates\")" : certificateNote.empty() ? "none written (--no-certificate)" : certificateNote)
+    std::cout << "\ncertificate: " << (certificate ? certificate->path() + " (holon plan reads it; docs/every-size.md, \"Certificates\")" : certificateNote.empty() ? "none written (--no-certificate)"
+                                                                                                                                                                    : certificateNote)
               << '\n';
     return code;
 }

@@ -73,17 +73,56 @@ TEST_CASE("every size: the planners' termination and mass conservation on square
             CHECK(termination.result.verdict == Verdict::Holds);
             CHECK(termination.scope == "every region");
             if (system.property("mass_conservation")) CHECK(obligation(r.report, "mass_conservation").result.verdict == Verdict::Holds);
-            // Safety through frame lemmas and Lemma C (saying so); Progress is not decided on a window.
+            // Safety through frame lemmas and Lemma C (saying so); Progress through the local
+            // progress certificate where the planner's trees carry it (intermediate), not where it
+            // waits for resources to arrive (general1).
             const checker::Obligation& safety = obligation(r.report, "safety");
             CHECK(safety.result.verdict == Verdict::Holds);
             CHECK(safety.scope == "every region");
             CHECK(safety.result.summary.find("conjuncts 1, 2, 4, 5 through frame lemmas") != std::string::npos);
             CHECK(safety.result.summary.find("conjunct 6 follows from conjuncts 2, 4, 5 (Lemma C): lemmas proved on paper") != std::string::npos);
-            CHECK(obligation(r.report, "progress").result.verdict == Verdict::Unknown);
-            CHECK(r.notLocal == std::vector<std::string>{"progress"});
+            const checker::Obligation& progress = obligation(r.report, "progress");
+            if (std::string(stem) == "planner_intermediate") {
+                CHECK(progress.result.verdict == Verdict::Holds);
+                CHECK(progress.scope == "every region");
+                CHECK(progress.result.summary.find("the local progress certificate holds") != std::string::npos);
+                CHECK(r.notLocal.empty());
+            } else {
+                CHECK(progress.result.verdict == Verdict::Unknown);
+                CHECK(progress.result.witness.value("certificate_fails", false));
+                CHECK(r.notLocal == std::vector<std::string>{"progress"});
+            }
             CHECK(r.report.toJson()["properties"][1]["scope"] == "every region");
         }
     }
+}
+
+TEST_CASE("every size: the progress certificate fails, and says so without calling it a counterexample, when a rule it needs is gone") {
+    // Each of these rules is what some non-final cell waits for: a P leaf (delete), a U next to a
+    // P (path_propagate), a U outside the target next to F (path_create), an empty target cell
+    // next to F (create).
+    const std::string source = rules::readTextFile(std::string(HOLON_TEST_DIR) + "/../rules/library/planner_intermediate.holon");
+    for (const char* rule : {"delete", "path_propagate", "path_create", "create"}) {
+        CAPTURE(rule);
+        const std::string line = std::string("rule ") + rule + ":";
+        const std::size_t at = source.find(line);
+        REQUIRE(at != std::string::npos);
+        const std::string without = source.substr(0, at) + source.substr(source.find('\n', at) + 1);
+        const rules::System system = test::parse(without);
+        const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
+        const checker::EverySizeReport r = everySize(model, {"progress"});
+        const checker::Obligation& progress = obligation(r.report, "progress");
+        CHECK(progress.result.verdict == Verdict::Unknown);
+        CHECK(progress.result.witness.value("certificate_fails", false));
+        CHECK(progress.result.summary.find("that is no counterexample on a region") != std::string::npos);
+        CHECK_FALSE(progress.result.trace);
+    }
+    // With every rule, asked alone, it assumes the invariants it proves on the way.
+    const rules::System intermediate = rules::librarySystem("planner_intermediate");
+    const rules::Model model(intermediate, rules::Lattice::get(rules::LatticeKind::Square2D));
+    const checker::EverySizeReport r = everySize(model, {"progress"});
+    REQUIRE(r.report.obligations.size() == 1);
+    CHECK(r.report.obligations[0].result.verdict == Verdict::Holds);
 }
 
 TEST_CASE("every size: a local invariant (every hole is whole) is proved for hex_migrate and hex_growth") {
@@ -158,7 +197,8 @@ TEST_CASE("every size agrees with the bounded proofs on small regions") {
         {"planner_general1", rules::LatticeKind::Square2D, {"square:2x2", "square:3x2", "square:3x3"}},
         {"planner_general1", rules::LatticeKind::Hex2D, {"hex:r1"}},
         {"planner_general1", rules::LatticeKind::Cubic3D, {"cubic:2x2x2"}},
-        {"planner_intermediate", rules::LatticeKind::Square2D, {"square:3x2"}},
+        {"planner_intermediate", rules::LatticeKind::Square2D, {"square:3x2", "square:3x3"}},
+        {"planner_intermediate", rules::LatticeKind::Hex2D, {"hex:r1"}},
         {"hex_migrate", rules::LatticeKind::Hex2D, {"hex:r1", "hex:r2"}},
     };
     for (const Case& c : cases) {
