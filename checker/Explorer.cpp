@@ -13,6 +13,7 @@
 #include "checker/ConnectedSets.h"
 #include "checker/WorkerPool.h"
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 #include <algorithm>
 #include <atomic>
@@ -69,9 +70,10 @@ void Explorer::addAllLegal() {
     const double candidates = std::pow(static_cast<double>(a), n);
     const double budget = std::min(4.0e9, static_cast<double>(options_.limits.maxStates) * 64.0);
     if (candidates > budget)
-        throw InputError("--all on region " + engine_->region().spec() + " means " + std::to_string(a) + "^" + std::to_string(n) +
-                         " candidate configurations, too many to enumerate; choose a smaller region, raise --max-states, "
-                         "or explore from a configuration with --from");
+        throw InputError(rules::parameterName(rules::Parameter::All) + " on region " + engine_->region().spec() + " means " + std::to_string(a) + "^" + std::to_string(n) +
+                             " candidate configurations, too many to enumerate; choose a smaller region, raise " + rules::parameterName(rules::Parameter::MaxStates) +
+                             ", or explore from a configuration with " + rules::parameterName(rules::Parameter::Initial),
+                         rules::Parameter::All);
     const std::uint64_t total = static_cast<std::uint64_t>(std::llround(candidates));
     // The ranking costs 12 bytes per 64 candidates; it replaces the hash table when that fits
     // comfortably in the memory bound.

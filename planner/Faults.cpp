@@ -11,6 +11,7 @@
 #include "planner/Report.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 #include "rules/Printer.h"
 
 #include <charconv>
@@ -58,9 +59,10 @@ Faults::Faults(const Problem& problem, FaultOptions options)
     const Board& board = *problem.board;
     for (const Loss& loss : options_.losses)
         if (loss.cell && !inside(board, *loss.cell))
-            throw InputError("--lose " + std::to_string(loss.round) + ":" + point(board, *loss.cell).substr(1, point(board, *loss.cell).size() - 2) + ": cell " +
-                             point(board, *loss.cell) + " lies outside start and target (the box from " + point(board, board.lower()) + " to " +
-                             point(board, board.lower() + board.extent() - Vec{1, 1, board.lattice().dimension() == 3 ? 1 : 0}) + "); name a metamodule of the start");
+            throw InputError(rules::parameterName(rules::Parameter::Lose) + " " + std::to_string(loss.round) + ":" + point(board, *loss.cell).substr(1, point(board, *loss.cell).size() - 2) + ": cell " +
+                                 point(board, *loss.cell) + " lies outside start and target (the box from " + point(board, board.lower()) + " to " +
+                                 point(board, board.lower() + board.extent() - Vec{1, 1, board.lattice().dimension() == 3 ? 1 : 0}) + "); name a metamodule of the start",
+                             rules::Parameter::Lose);
     if (options_.delay > 0) arrives_.assign(static_cast<std::size_t>(board.size()), 0);
 }
 

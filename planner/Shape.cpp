@@ -8,6 +8,7 @@
 #include "rules/Components.h"
 #include "rules/Error.h"
 #include "rules/Limits.h"
+#include "rules/Parameter.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
 #include "rules/VisibleSim.h"
@@ -19,14 +20,15 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <sstream>
 
 namespace holon::planner {
 
 namespace {
 
-[[noreturn]] void bad(std::string_view argument, const std::string& why) {
-    throw InputError("shape '" + std::string(argument) + "': " + why);
+[[noreturn]] void bad(std::string_view argument, const std::string& why, std::optional<rules::Parameter> about = std::nullopt) {
+    throw InputError("shape '" + std::string(argument) + "': " + why, about);
 }
 
 std::vector<int> numbers(std::string_view argument, std::string_view text, char separator, std::size_t minCount, std::size_t maxCount) {
@@ -55,7 +57,8 @@ constexpr std::uint64_t kBytesPerCell = 2 * sizeof(Vec);
 /// product past 2^64 fails too) against the planner's limit, their memory against --memory.
 void checkSize(std::string_view argument, std::uint64_t cells, std::size_t maxCells, std::uint64_t memoryBytes) {
     if (cells > maxCells)
-        bad(argument, rules::countText(cells) + " cells is more than the limit of " + std::to_string(maxCells) + "; choose a smaller shape or --scale");
+        bad(argument, rules::countText(cells) + " cells is more than the limit of " + std::to_string(maxCells) + "; choose a smaller shape or " + rules::parameterName(rules::Parameter::Scale),
+            rules::Parameter::Scale);
     rules::requireMemory(rules::checkedProduct({cells, kBytesPerCell}), memoryBytes, "shape '" + std::string(argument) + "' (" + std::to_string(cells) + " cells)");
 }
 
@@ -280,7 +283,8 @@ const std::vector<std::pair<std::string, std::string>>& shapeGenerators() {
 }
 
 Shape scaled(const Shape& shape, int k, std::size_t maxCells, std::uint64_t memoryBytes) {
-    if (k < 1) bad(shape.name, "--scale must be at least 1");
+    const std::string scale = rules::parameterName(rules::Parameter::Scale);
+    if (k < 1) bad(shape.name, scale + " must be at least 1", rules::Parameter::Scale);
     if (k == 1) return shape;
     const std::uint64_t block = rules::checkedProduct({std::uint64_t(k), std::uint64_t(k), shape.dimension == 3 ? std::uint64_t(k) : 1});
     checkSize(shape.name, rules::checkedProduct({shape.cells.size(), block}), maxCells, memoryBytes);
@@ -288,8 +292,8 @@ Shape scaled(const Shape& shape, int k, std::size_t maxCells, std::uint64_t memo
     for (Vec c : shape.cells)
         for (int v : {c.x, c.y, c.z})
             if (std::int64_t(std::abs(v) + 1) * k > kMaxCoordinate)
-                bad(shape.name, "--scale " + std::to_string(k) + " puts cell (" + std::to_string(c.x) + "," + std::to_string(c.y) + "," + std::to_string(c.z) +
-                                    ") beyond +-" + std::to_string(kMaxCoordinate) + "; choose a smaller --scale or move the shape nearer the origin");
+                bad(shape.name, scale + " " + std::to_string(k) + " puts cell (" + std::to_string(c.x) + "," + std::to_string(c.y) + "," + std::to_string(c.z) + ") beyond +-" + std::to_string(kMaxCoordinate) + "; choose a smaller " + scale + " or move the shape nearer the origin",
+                    rules::Parameter::Scale);
     Shape out;
     out.dimension = shape.dimension, out.name = shape.name;
     out.cells.reserve(shape.cells.size() * block);

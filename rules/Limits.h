@@ -11,6 +11,7 @@
 // the limit named), not found out by the kernel.
 
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -59,14 +60,15 @@ inline std::string countText(std::uint64_t n) {
     return n == std::numeric_limits<std::uint64_t>::max() ? std::string("more than 2^64") : std::to_string(n);
 }
 
-/// Refuses a job whose estimated memory `bytes` is over `budgetBytes` (--memory), before it
-/// allocates: LimitError (exit 3) saying what needs it, how much, and the option to raise.
+/// Refuses a job whose estimated memory `bytes` is over `budgetBytes` (the memory bound), before
+/// it allocates: LimitError (exit 3) saying what needs it, how much, and the parameter to raise.
 inline void requireMemory(std::uint64_t bytes, std::uint64_t budgetBytes, const std::string& what) {
     if (bytes <= budgetBytes) return;
     char need[32];
     std::snprintf(need, sizeof need, "%.1f", static_cast<double>(bytes) / double(1 << 30));
-    throw LimitError(what + " needs about " + need + " GiB, more than --memory " + std::to_string(budgetBytes >> 20) +
-                     " MiB; raise --memory or give a smaller job");
+    const std::string memory = parameterName(Parameter::Memory);
+    throw LimitError(what + " needs about " + need + " GiB, more than " + memory + " " + std::to_string(budgetBytes >> 20) + " MiB; raise " + memory + " or give a smaller job",
+                     Parameter::Memory);
 }
 
 }  // namespace holon::rules
