@@ -11,6 +11,7 @@
 #include "planner/Report.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
+#include "rules/Limits.h"
 #include "rules/Parameter.h"
 #include "rules/Printer.h"
 
@@ -49,7 +50,7 @@ Loss parseLoss(const std::string& option, const std::string& text, int dimension
     if (numbers[0] < 1) return fail("round " + std::to_string(numbers[0]));
     Loss loss{numbers[0], std::nullopt};
     for (std::size_t k = 1; k < numbers.size(); ++k)
-        if (numbers[k] < -kMaxCoordinate || numbers[k] > kMaxCoordinate) return fail("coordinate " + std::to_string(numbers[k]) + " is beyond +-" + std::to_string(kMaxCoordinate));
+        if (numbers[k] < -rules::kMaxCoordinate || numbers[k] > rules::kMaxCoordinate) return fail("coordinate " + std::to_string(numbers[k]) + " is beyond +-" + std::to_string(rules::kMaxCoordinate));
     if (cell) loss.cell = Vec{static_cast<int>(numbers[1]), static_cast<int>(numbers[2]), dimension == 3 ? static_cast<int>(numbers[3]) : 0};
     return loss;
 }

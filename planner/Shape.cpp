@@ -62,10 +62,10 @@ void checkSize(std::string_view argument, std::uint64_t cells, std::size_t maxCe
     rules::requireMemory(rules::checkedProduct({cells, kBytesPerCell}), memoryBytes, "shape '" + std::string(argument) + "' (" + std::to_string(cells) + " cells)");
 }
 
-/// A coordinate read from a file, refused beyond +-kMaxCoordinate (an int would wrap it silently).
+/// A coordinate read from a file, refused beyond +-rules::kMaxCoordinate (an int would wrap it silently).
 int coordinate(std::string_view argument, std::int64_t v, const std::string& where) {
-    if (v < -kMaxCoordinate || v > kMaxCoordinate)
-        bad(argument, where + ": coordinate " + std::to_string(v) + " is beyond +-" + std::to_string(kMaxCoordinate) + "; move the shape nearer the origin");
+    if (v < -rules::kMaxCoordinate || v > rules::kMaxCoordinate)
+        bad(argument, where + ": coordinate " + std::to_string(v) + " is beyond +-" + std::to_string(rules::kMaxCoordinate) + "; move the shape nearer the origin");
     return static_cast<int>(v);
 }
 
@@ -202,8 +202,8 @@ Shape fromAscii(std::string_view argument, const std::string& text) {
         bad(argument, e.what());
     }
     Shape s;
-    if (lines.size() > std::size_t(kMaxCoordinate) || (!lines.empty() && lines[0].size() > std::size_t(kMaxCoordinate)))
-        bad(argument, "the picture is larger than " + std::to_string(kMaxCoordinate) + " cells across");
+    if (lines.size() > std::size_t(rules::kMaxCoordinate) || (!lines.empty() && lines[0].size() > std::size_t(rules::kMaxCoordinate)))
+        bad(argument, "the picture is larger than " + std::to_string(rules::kMaxCoordinate) + " cells across");
     const int rows = static_cast<int>(lines.size());
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < static_cast<int>(lines[r].size()); ++c) {
@@ -288,11 +288,11 @@ Shape scaled(const Shape& shape, int k, std::size_t maxCells, std::uint64_t memo
     if (k == 1) return shape;
     const std::uint64_t block = rules::checkedProduct({std::uint64_t(k), std::uint64_t(k), shape.dimension == 3 ? std::uint64_t(k) : 1});
     checkSize(shape.name, rules::checkedProduct({shape.cells.size(), block}), maxCells, memoryBytes);
-    // Every scaled coordinate (c * k + k - 1) stays within kMaxCoordinate, so no int wraps.
+    // Every scaled coordinate (c * k + k - 1) stays within rules::kMaxCoordinate, so no int wraps.
     for (Vec c : shape.cells)
         for (int v : {c.x, c.y, c.z})
-            if (std::int64_t(std::abs(v) + 1) * k > kMaxCoordinate)
-                bad(shape.name, scale + " " + std::to_string(k) + " puts cell (" + std::to_string(c.x) + "," + std::to_string(c.y) + "," + std::to_string(c.z) + ") beyond +-" + std::to_string(kMaxCoordinate) + "; choose a smaller " + scale + " or move the shape nearer the origin",
+            if (std::int64_t(std::abs(v) + 1) * k > rules::kMaxCoordinate)
+                bad(shape.name, scale + " " + std::to_string(k) + " puts cell (" + std::to_string(c.x) + "," + std::to_string(c.y) + "," + std::to_string(c.z) + ") beyond +-" + std::to_string(rules::kMaxCoordinate) + "; choose a smaller " + scale + " or move the shape nearer the origin",
                     rules::Parameter::Scale);
     Shape out;
     out.dimension = shape.dimension, out.name = shape.name;

@@ -42,6 +42,11 @@ constexpr int kMaxIdentifier = 256;
 constexpr int kMaxRuleCells = 20;
 /// Fields of a system and inputs of a system (an input is one bit of a cell's input mask).
 constexpr int kMaxFields = 64;
+/// The largest coordinate, in absolute value, of a cell that a shape, a configuration or model
+/// file (VisibleSim, binvox) may give and a scaled shape may reach: far beyond any shape that fits
+/// in memory, and small enough that a board's extents, a difference of two coordinates and that
+/// plus one never overflow an int.
+constexpr int kMaxCoordinate = 1 << 29;
 /// Values of one enum or integer field.
 constexpr int kMaxFieldValues = 256;
 constexpr int kMaxInputs = 32;

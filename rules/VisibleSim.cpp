@@ -103,7 +103,7 @@ std::string visibleSimWorld(const Lattice& lattice, VisibleSimRobot robot, const
                                                                                                            : "(x, y)")
         << " is at position " << axes
         << " - (" << lo.x << ", " << lo.y << ", " << lo.z << ") -->\n";
-    // Extents in 64 bits: coordinates reach +-2^29, so a difference fits, a difference plus one too.
+    // Extents in 64 bits: coordinates reach +-kMaxCoordinate (rules/Limits.h), so a difference fits, a difference plus one too.
     out << "<world gridSize=\"" << std::int64_t(hi.x) - lo.x + 1 << "," << std::int64_t(hi.y) - lo.y + 1 << "," << std::int64_t(hi.z) - lo.z + 1 << "\">\n";
     out << "  <blockList blockSize=\"" << blockSize(robot) << "\">\n";
     for (const VisibleSimCell& b : blocks)
