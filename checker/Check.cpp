@@ -10,6 +10,7 @@
 #include "checker/Property.h"
 #include "rules/Budget.h"
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 #include <algorithm>
 #include <chrono>
@@ -60,12 +61,13 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 /// Why a phase cannot start within the limits (empty: it can): the deadline has passed, or what it
 /// needs beside the explored graph exceeds --memory.
 std::string beyondLimits(const ExploreStats& stats, const Limits& limits, const Budget& budget, PhaseCost cost) {
-    if (budget.expired()) return "not checked: the timeout expired before this phase; raise --timeout";
+    if (budget.expired()) return "not checked: the timeout expired before this phase; raise " + rules::parameterName(rules::Parameter::Timeout);
     const double need = static_cast<double>(stats.bytes) + cost.perState * static_cast<double>(stats.states) + cost.perEdge * static_cast<double>(stats.edges);
     if (need <= static_cast<double>(limits.memoryBytes)) return "";
     const auto mib = [](double bytes) { return std::to_string(static_cast<std::uint64_t>(bytes / (1 << 20)) + 1); };
-    return "not checked: with the explored graph it needs about " + mib(need) + " MiB, more than --memory " + mib(static_cast<double>(limits.memoryBytes) - 1) +
-           "; raise --memory";
+    const std::string memory = rules::parameterName(rules::Parameter::Memory);
+    return "not checked: with the explored graph it needs about " + mib(need) + " MiB, more than " + memory + " " + mib(static_cast<double>(limits.memoryBytes) - 1) +
+           "; raise " + memory;
 }
 
 }  // namespace
@@ -80,7 +82,10 @@ std::unique_ptr<Explorer> startExplorer(const rules::Engine& engine, const Check
         ex->addAllLegal();
         return ex;
     }
-    if (options.initial.empty()) throw InputError("give initial configurations with --from, or explore every legal configuration with --all");
+    if (options.initial.empty())
+        throw InputError("give initial configurations with " + rules::parameterName(rules::Parameter::Initial) + ", or explore every legal configuration with " +
+                             rules::parameterName(rules::Parameter::All),
+                         rules::Parameter::Initial);
     for (const rules::Configuration& c : options.initial) {
         if (!engine.legal(c.cells.data())) throw InputError("the initial configuration violates a constraint of '" + engine.model().system().name + "'");
         ex->addInitial(c.cells.data());

@@ -74,7 +74,7 @@ public:
 
     Obligation prove(const StepObligation& ob, std::string& drawing) {
         const auto start = std::chrono::steady_clock::now();
-        const Budget budget = Budget(options_.timeoutSeconds) || options_.budget;
+        const Budget budget = options_.obligationBudget();
         const Window& w = window(ob.margin);
         Obligation o;
         o.result.name = ob.name;
@@ -94,7 +94,7 @@ public:
         for (std::size_t k = 0; k < act.size(); ++k) solver.add(smt::implies(act[k], body[k]));
         if (!options_.smtOut.empty()) {
             budget.check("writing the SMT-LIB2 file");
-            const rules::OutputFile file(options_.smtOutOption.empty() ? "the SMT-LIB2 folder" : options_.smtOutOption,
+            const rules::OutputFile file(options_.smtOutName(),
                                          (std::filesystem::path(options_.smtOut) /
                                           (fileSafe(model_.system().name) + ".every-size." + model_.lattice().name() + "." + fileSafe(ob.name) + ".smt2"))
                                              .string());
@@ -255,7 +255,7 @@ StepObligation ranking(const rules::Model& model, const rules::Property& p) {
 
 EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOptions& options, const std::function<void(const std::string&)>& onObligation) {
     const rules::System& system = model.system();
-    if (!options.smtOut.empty()) rules::prepareOutputDir(options.smtOutOption.empty() ? "the SMT-LIB2 folder" : options.smtOutOption, options.smtOut);
+    if (!options.smtOut.empty()) rules::prepareOutputDir(options.smtOutName(), options.smtOut);
     for (const std::string& name : options.properties)
         if (!system.property(name)) throw InputError("system '" + system.name + "' has no property '" + name + "'");
     limitSolverMemory(options.memoryMiB);

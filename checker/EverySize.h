@@ -12,13 +12,8 @@
 
 namespace holon::checker {
 
-struct EverySizeOptions {
-    double timeoutSeconds = 120;  // per property: building, writing and solving it
-    Budget budget;                // the whole job's: no property runs past it
-    std::uint64_t memoryMiB = 0;
-    std::vector<std::string> properties;  // empty: all
-    std::string smtOut, smtOutOption;     // as VerifyOptions
-};
+/// Every size takes what every proof run takes, and nothing of a bounded region's.
+using EverySizeOptions = ProofOptions;
 
 struct EverySizeReport {
     VerifyReport report;  // each obligation's scope says what its verdict covers

@@ -13,10 +13,12 @@
 #include "checker/ConnectedSets.h"
 #include "checker/WorkerPool.h"
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <thread>
 
 namespace holon::checker {
@@ -69,9 +71,10 @@ void Explorer::addAllLegal() {
     const double candidates = std::pow(static_cast<double>(a), n);
     const double budget = std::min(4.0e9, static_cast<double>(options_.limits.maxStates) * 64.0);
     if (candidates > budget)
-        throw InputError("--all on region " + engine_->region().spec() + " means " + std::to_string(a) + "^" + std::to_string(n) +
-                         " candidate configurations, too many to enumerate; choose a smaller region, raise --max-states, "
-                         "or explore from a configuration with --from");
+        throw InputError(rules::parameterName(rules::Parameter::All) + " on region " + engine_->region().spec() + " means " + std::to_string(a) + "^" + std::to_string(n) +
+                             " candidate configurations, too many to enumerate; choose a smaller region, raise " + rules::parameterName(rules::Parameter::MaxStates) +
+                             ", or explore from a configuration with " + rules::parameterName(rules::Parameter::Initial),
+                         rules::Parameter::All);
     const std::uint64_t total = static_cast<std::uint64_t>(std::llround(candidates));
     // The ranking costs 12 bytes per 64 candidates; it replaces the hash table when that fits
     // comfortably in the memory bound.
@@ -105,7 +108,7 @@ void Explorer::addAllLegal() {
         std::uint64_t n = 0;
         for (const Count& c : listed) n += c.n.load(std::memory_order_relaxed);
         if (const auto why = budget_.reached()) halt(*why);
-        else if (n > options_.limits.maxStates) halt(StopReason::MaxStates);
+        else if (!options_.limits.storable(n)) halt(StopReason::MaxStates);
         else if (fixedBytes + 16 * n >= options_.limits.memoryBytes) halt(StopReason::Memory);
         return halted() != StopReason::Finished;
     };
@@ -142,7 +145,7 @@ void Explorer::addAllLegal() {
     std::size_t count = 0;
     for (const auto& list : lists) count += list.size();
     for (const std::uint64_t w : legalBits_) count += std::popcount(w);
-    if (count > options_.limits.maxStates) halt(StopReason::MaxStates);
+    if (!options_.limits.storable(count)) halt(StopReason::MaxStates);
     else if (rankingBytes() + count * bytesPerNewState() >= options_.limits.memoryBytes) halt(StopReason::Memory);
     if (halted() != StopReason::Finished) return giveUp(count);
     if (!rank) store_.reserve(count);
@@ -555,6 +558,8 @@ const ExploreStats& Explorer::explore() {
     frontier_.clear();
     const std::uint64_t blockRoom = static_cast<std::uint64_t>(threads) * StateStore::IdBlock::kSize;
     const std::uint64_t perState = bytesPerNewState();
+    // The store's size when a round last ran with a state put back over the state cap.
+    std::uint64_t overCapAt = std::numeric_limits<std::uint64_t>::max();
     auto sizeOf = [](const std::vector<std::vector<StateId>>& lists) {
         std::size_t n = 0;
         for (const auto& l : lists) n += l.size();
@@ -576,22 +581,25 @@ const ExploreStats& Explorer::explore() {
             }
             for (pending = size; pending > 0;) {
                 // The room for this round's new states: what the states put back asked for at
-                // least, within --max-states and --memory.
+                // least, within the state cap (Limits::stateRoom) and the memory bound. A state
+                // put back asking for more than the cap leaves is retried once with what is left
+                // (other threads may have stored its successors meanwhile); asking again at the
+                // same size, it needs a state beyond the cap.
                 const std::uint64_t refused = refusedClaim_.exchange(0);
+                const std::uint64_t capRoom = options_.limits.stateRoom(store_.size());
+                const bool overCap = refused > capRoom;
                 std::uint64_t want = 0;
-                if (!complete_) {
-                    want = std::min<std::uint64_t>(pending * branching, std::max<std::uint64_t>(1, kRoundBytes / perState));
-                    if (store_.size() < options_.limits.maxStates) want = std::min<std::uint64_t>(want, options_.limits.maxStates - store_.size());
-                    want = std::max(want, refused);
-                }
-                // As many states as --memory has left room for, and at least the largest state
-                // put back.
+                if (!complete_) want = std::min(std::max(std::min<std::uint64_t>(pending * branching, std::max<std::uint64_t>(1, kRoundBytes / perState)), refused), capRoom);
+                // As many states as the memory bound has left room for, and at least the largest
+                // state put back (within the cap).
                 const std::size_t held = bytesHeld(workers, sizeOf(level) + sizeOf(next) + sizeOf(retry));
                 want = std::min<std::uint64_t>(want, held < options_.limits.memoryBytes ? (options_.limits.memoryBytes - held) / perState : 0);
+                const std::uint64_t need = complete_ ? 0 : std::min(std::max<std::uint64_t>(refused, 1), capRoom);
                 StopReason limit = StopReason::Finished;
-                if (store_.size() >= options_.limits.maxStates) limit = StopReason::MaxStates;
+                if (overCap && store_.size() == overCapAt) limit = StopReason::MaxStates;
                 else if (const auto why = budget_.reached()) limit = *why;
-                else if (held >= options_.limits.memoryBytes || want < std::max<std::uint64_t>(refused, complete_ ? 0 : 1)) limit = StopReason::Memory;
+                else if (held >= options_.limits.memoryBytes || want < need) limit = StopReason::Memory;
+                if (overCap) overCapAt = store_.size();
                 room_ = static_cast<std::int64_t>(want);
                 for (Worker& w : workers) w.room = 0;
                 abandon_ = false;

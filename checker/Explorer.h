@@ -27,6 +27,8 @@ namespace holon::checker {
 /// (the store, the BFS links, the frontier, the edges and the rows built from them, the workers'
 /// buffers, --all's lists and bitmaps), counted before each allocation.
 struct Limits {
+    /// At most this many states are stored: a search that needs no more completes, one that needs
+    /// one more stops (StopReason::MaxStates). storable and stateRoom are that rule, for every search.
     std::uint64_t maxStates = 50'000'000;
     double timeoutSeconds = 0;  // 0: none
     std::uint64_t memoryBytes = rules::kDefaultMemoryBytes;
@@ -35,6 +37,10 @@ struct Limits {
     const volatile std::sig_atomic_t* stopFlag = nullptr;
     /// The deadline (from now) and the stop flag as one budget.
     Budget budget() const { return Budget(timeoutSeconds) || Budget::stopFlag(stopFlag); }
+    /// Whether `states` states may be stored.
+    bool storable(std::uint64_t states) const { return states <= maxStates; }
+    /// How many more states may be stored beside `stored` ones.
+    std::uint64_t stateRoom(std::uint64_t stored) const { return storable(stored) ? maxStates - stored : 0; }
 };
 
 struct ExploreStats {

@@ -6,6 +6,7 @@
 // the same component realises must be one occupancy-changing edge away from that class.
 
 #include "checker/Holonomy.h"
+#include "rules/Parameter.h"
 
 #include <algorithm>
 #include <bit>
@@ -76,7 +77,7 @@ void markPartial(PropertyResult& r) {
 
 PropertyResult stoppedByTimeout(PropertyResult r, double seconds) {
     r.verdict = Verdict::Unknown;
-    r.summary = "stopped by the timeout during the holonomy check, no violation found yet; raise --timeout";
+    r.summary = "stopped by the timeout during the holonomy check, no violation found yet; raise " + rules::parameterName(rules::Parameter::Timeout);
     r.seconds = seconds;
     return r;
 }

@@ -50,7 +50,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                     const std::function<void(const std::string&)>& onObligation) {
     const rules::System& system = model.system();
     // The folder first: a proof that takes minutes is not thrown away for a path.
-    if (!options.smtOut.empty()) rules::prepareOutputDir(smtOutOption(options), options.smtOut);
+    if (!options.smtOut.empty()) rules::prepareOutputDir(options.smtOutName(), options.smtOut);
     limitSolverMemory(options.memoryMiB);
     VerifyReport report;
     report.system = system.name;
@@ -84,7 +84,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
     for (const auto& type : types) {
         if (!selected(type->name())) continue;
         announce(type->name());
-        const Budget budget = Budget(options.timeoutSeconds) || options.budget;
+        const Budget budget = options.obligationBudget();
         add(withinLimits(type->name(), type->kind(), [&] { return type->prove({run, budget, invariants}); }), *type, Evidence::Obligation);
     }
 
@@ -104,7 +104,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
     // (and the timeout): a bad state within k steps, for k = 0, 1, ..., so the first one found
     // is at the end of a shortest path. The last query asked is the whole obligation.
     auto bmc = [&](const Target& target, int depth, const std::string& name) {
-        const Budget budget = Budget(options.timeoutSeconds) || options.budget;
+        const Budget budget = options.obligationBudget();
         smt::Context ctx(budget);
         SmtEncoding enc(ctx, e, SmtEncoding::Use::Queries, budget);
         std::vector<SmtEncoding::State> path{enc.state("s0")};
@@ -170,7 +170,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             });
             if (!initially) continue;
             auto asked = std::find_if(report.obligations.begin(), report.obligations.end(), [&](const Obligation& o) { return o.result.name == p->name; });
-            const Budget budget = Budget(options.timeoutSeconds) || options.budget;
+            const Budget budget = options.obligationBudget();
             const auto proved = [&] { return withinLimits(p->name, "invariant", [&] { return propertyType(*p)->prove({quietRun, budget, invariants}); }).result.verdict; };
             if ((asked != report.obligations.end() ? asked->result.verdict : proved()) == Verdict::Holds) known.push_back(p);
         }
@@ -186,7 +186,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             announce(name);
             const std::optional<rules::OutputFile> file = options.smtOut.empty() ? std::nullopt : std::optional(run.smtPath(name));
             const bool isKnown = std::find(known.begin(), known.end(), t.property) != known.end();
-            const ReachProof proof = isKnown ? ReachProof{} : proveUnreachable(e, t.bad, options.initial, Budget(options.timeoutSeconds) || options.budget, file ? &*file : nullptr, known.empty() ? BadStates() : BadStates(knownAt));
+            const ReachProof proof = isKnown ? ReachProof{} : proveUnreachable(e, t.bad, options.initial, options.obligationBudget(), file ? &*file : nullptr, known.empty() ? BadStates() : BadStates(knownAt));
             Obligation o = ProofRunner::named(name, "reach");
             for (const std::string& f : proof.certificateFiles) o.smtFile += (o.smtFile.empty() ? "" : " ") + f;
             o.result.verdict = proof.verdict;

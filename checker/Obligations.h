@@ -14,16 +14,26 @@
 
 namespace holon::checker {
 
-struct VerifyOptions {
-    double timeoutSeconds = 120;  // per obligation: building, writing and solving it
-    Budget budget;                // the whole job's: no obligation runs past it
-    std::uint64_t memoryMiB = 0;  // Z3's memory limit for this process; 0: none
-    int depth = 0;                // > 0: bounded model checking from `initial`
-    bool reach = false;           // every state reachable from `initial` (Spacer)
-    std::vector<rules::Configuration> initial;
+/// What every proof run takes, on a bounded region (VerifyOptions) or for every size
+/// (EverySize.h): the limits of one obligation and of the job, the properties asked, and where
+/// the SMT-LIB2 files go.
+struct ProofOptions {
+    double timeoutSeconds = 120;          // per obligation: building, writing and solving it
+    Budget budget;                        // the whole job's: no obligation runs past it
+    std::uint64_t memoryMiB = 0;          // Z3's memory limit for this process; 0: none
     std::vector<std::string> properties;  // empty: all
     std::string smtOut;                   // directory for SMT-LIB2 files, or empty
     std::string smtOutOption;             // how the caller names smtOut in messages (its option); empty: "the SMT-LIB2 folder"
+    /// One obligation's budget, from now: its own timeout within the job's.
+    Budget obligationBudget() const { return Budget(timeoutSeconds) || budget; }
+    /// The name of smtOut in messages: smtOutOption, or "the SMT-LIB2 folder".
+    std::string smtOutName() const { return smtOutOption.empty() ? "the SMT-LIB2 folder" : smtOutOption; }
+};
+
+struct VerifyOptions : ProofOptions {
+    int depth = 0;       // > 0: bounded model checking from `initial`
+    bool reach = false;  // every state reachable from `initial` (Spacer)
+    std::vector<rules::Configuration> initial;
 };
 
 struct Obligation {

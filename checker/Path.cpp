@@ -9,6 +9,7 @@
 #include "checker/PathSearch.h"
 
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 #include <algorithm>
 #include <mutex>
@@ -83,11 +84,16 @@ PathResult forwardPath(const rules::Engine& engine, const PathQuery& query) {
 }  // namespace
 
 PathResult shortestPath(const rules::Engine& engine, const PathQuery& query) {
+    using rules::Parameter, rules::parameterName;
+    const std::string to = parameterName(Parameter::To), search = parameterName(Parameter::Search);
     if (!query.to && !engine.model().system().goal)
-        throw InputError("system '" + engine.model().system().name + "' declares no goal; give --to CONFIG, or declare one with 'goal EXPR'");
-    if (query.to && query.to->cells.size() != query.from.cells.size()) throw InputError("--to: the configuration does not fit the region of --from");
+        throw InputError("system '" + engine.model().system().name + "' declares no goal; give " + to + " CONFIG, or declare one with 'goal EXPR'", Parameter::To);
+    if (query.to && query.to->cells.size() != query.from.cells.size())
+        throw InputError(to + ": the configuration does not fit the region of " + parameterName(Parameter::From), Parameter::To);
     if (!query.to && (query.search == PathSearch::Bidirectional || query.search == PathSearch::AStar))
-        throw InputError("--search " + pathSearchName(query.search) + " needs a target configuration: give --to CONFIG instead of --goal, or --search forward");
+        throw InputError(search + " " + pathSearchName(query.search) + " needs a target configuration: give " + to + " CONFIG instead of " + parameterName(Parameter::Goal) +
+                             ", or " + search + " forward",
+                         Parameter::Search);
     switch (query.search) {
     case PathSearch::Forward: return forwardPath(engine, query);
     case PathSearch::AStar: return aStarPath(engine, Footprints(engine), query);

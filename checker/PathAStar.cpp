@@ -73,8 +73,9 @@ PathResult aStarPath(const rules::Engine& engine, const Footprints& footprints, 
                 if (stop == StopReason::Finished) {
                     const rules::Engine::Placed& instance = engine.instances()[placed];
                     StateId next = tree.findNear(id, instance, after.data());
-                    const bool added = next == kNoState && legalNear(evaluator, instance, cells.data(), after.data());
-                    if (added) {
+                    const bool fresh = next == kNoState && legalNear(evaluator, instance, cells.data(), after.data());
+                    if (fresh) stop = meter.admit(tree.size());
+                    if (fresh && stop == StopReason::Finished) {
                         next = tree.addMissing(id, placed);
                         g.push_back(g[id] + 1), h.push_back(bound(after.data())), closed.push_back(0);
                         push(next);

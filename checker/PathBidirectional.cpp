@@ -59,6 +59,7 @@ PathResult bidirectionalPath(const rules::Engine& engine, const Predecessors& pr
             const auto visit = [&](int placed, const CellValue* next) {
                 const rules::Engine::Placed& instance = engine.instances()[placed];
                 if (meet[0] != kNoState || stop != StopReason::Finished || tree.findNear(id, instance, next) != kNoState || !legalNear(evaluator, instance, cells.data(), next)) return;
+                if ((stop = meter.admit(states())) != StopReason::Finished) return;
                 const StateId found = tree.addMissing(id, placed);
                 if (const StateId other = trees[1 - side].findAsIn(tree); other != kNoState) meet[side] = found, meet[1 - side] = other;
                 stop = meter.check(states(), bytes(), depth[0] + depth[1]);

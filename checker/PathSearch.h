@@ -107,7 +107,10 @@ private:
 class SearchMeter {
 public:
     explicit SearchMeter(const PathQuery& query);
-    /// StopReason::Finished while within the limits.
+    /// Asked before a state is stored beside `stored` ones: StopReason::MaxStates when it would be
+    /// one more than the cap allows (Limits::storable), else StopReason::Finished.
+    StopReason admit(std::uint64_t stored) const;
+    /// Asked after: StopReason::Finished while within the memory bound and the budget.
     StopReason check(std::uint64_t states, std::size_t bytes, int depth);
     ExploreStats finish(std::uint64_t states, std::size_t bytes, int depth, StopReason why) const;
 

@@ -67,8 +67,9 @@ bool legalNear(Evaluator& evaluator, const rules::Engine::Placed& instance, cons
 
 SearchMeter::SearchMeter(const PathQuery& query) : query_(&query), budget_(query.limits.budget()) {}
 
+StopReason SearchMeter::admit(std::uint64_t stored) const { return query_->limits.storable(stored + 1) ? StopReason::Finished : StopReason::MaxStates; }
+
 StopReason SearchMeter::check(std::uint64_t states, std::size_t bytes, int depth) {
-    if (states >= query_->limits.maxStates) return StopReason::MaxStates;
     if (bytes >= query_->limits.memoryBytes) return StopReason::Memory;
     if (++ticks_ < 1024) return StopReason::Finished;
     ticks_ = 0;

@@ -48,8 +48,6 @@ std::vector<std::uint32_t> inputsOf(const smt::Model& m, smt::Context& ctx, cons
     return in;
 }
 
-std::string smtOutOption(const VerifyOptions& o) { return o.smtOutOption.empty() ? "the SMT-LIB2 folder" : o.smtOutOption; }
-
 ProofRunner::ProofRunner(const rules::Model& model, const rules::Region& region, const VerifyOptions& options)
     : model_(model), region_(region), options_(options), engine_(model, region, {}, true) {}
 
@@ -199,7 +197,7 @@ Obligation ProofRunner::stepwise(const std::string& name, const std::string& kin
 
 rules::OutputFile ProofRunner::smtPath(const std::string& name) const {
     const std::filesystem::path dir(options_.smtOut);
-    return rules::OutputFile(smtOutOption(options_), (dir / (fileSafe(model_.system().name) + "." + fileSafe(region_.spec()) + "." + fileSafe(name) + ".smt2")).string());
+    return rules::OutputFile(options_.smtOutName(), (dir / (fileSafe(model_.system().name) + "." + fileSafe(region_.spec()) + "." + fileSafe(name) + ".smt2")).string());
 }
 
 void ProofRunner::write(const std::string& name, const smt::Solver& solver, Obligation& o, const Budget& budget) {

@@ -17,9 +17,6 @@
 
 namespace holon::checker {
 
-/// How --smt-out is named in messages: the caller's option, or a description without one.
-std::string smtOutOption(const VerifyOptions& o);
-
 /// Per cell, the input bits a model chose.
 std::vector<std::uint32_t> inputsOf(const smt::Model& m, smt::Context& ctx, const rules::Engine& e);
 

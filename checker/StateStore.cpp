@@ -7,6 +7,7 @@
 #include "checker/StateStore.h"
 
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 #include <bit>
 #include <cstring>
@@ -58,7 +59,7 @@ StateStore::StateStore(const StateLayout& layout) : layout_(layout) { reserve(10
 
 void StateStore::reserve(std::uint64_t more) {
     const std::uint64_t need = static_cast<std::uint64_t>(capacityUsed()) + more;
-    if (need >= 0xFFFFFFF0ull) throw InputError("more than 4 billion states; lower --max-states");
+    if (need >= 0xFFFFFFF0ull) throw InputError("more than 4 billion states; lower " + rules::parameterName(rules::Parameter::MaxStates), rules::Parameter::MaxStates);
     growArena(need);
     // The table stays at most 7/8 full even if all the room asked for is used, which it almost
     // never is (most successors are already known), so it is rebuilt rarely. Ids stay below the
@@ -77,7 +78,7 @@ void StateStore::growArena(std::size_t need) {
 
 StateId StateStore::append(const std::uint64_t* packed) {
     const StateId id = next_.load(std::memory_order_relaxed);
-    if (id >= 0xFFFFFFF0u) throw InputError("more than 4 billion states; lower --max-states");
+    if (id >= 0xFFFFFFF0u) throw InputError("more than 4 billion states; lower " + rules::parameterName(rules::Parameter::MaxStates), rules::Parameter::MaxStates);
     growArena(static_cast<std::size_t>(id) + 1);
     std::memcpy(&arena_[static_cast<std::size_t>(id) * layout_.words()], packed, sizeof(std::uint64_t) * layout_.words());
     next_.store(id + 1, std::memory_order_relaxed);

@@ -3,6 +3,7 @@
 // apart from main() so the argument fuzzer (fuzz/CliFuzz.cpp) runs exactly what the binary runs.
 
 #include "cli/Commands.h"
+#include "cli/ParameterNames.h"
 #include "rules/Error.h"
 #include "rules/Escape.h"
 
@@ -32,6 +33,7 @@ std::string memoryAdvice(const std::string& command) {
 }  // namespace
 
 int runHolon(int argc, char** argv) {
+    installOptionNames();
     CLI::App app{"holon: check, verify and run rule systems for lattice modular robots"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "holon " HOLON_VERSION);

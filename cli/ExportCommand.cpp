@@ -12,6 +12,7 @@
 #include "rules/Binvox.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
+#include "rules/Limits.h"
 #include "rules/OutputFile.h"
 #include "rules/Region.h"
 #include "rules/VisibleSim.h"
@@ -151,7 +152,7 @@ Run addExportCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("export", "write a shape or a configuration for other tools: a VisibleSim world (XML), a .binvox voxel file");
     sub->add_option("--shape", a->shape, "a planning shape, as holon plan --from takes (generator or file, .binvox included)");
     sub->add_option("--target", a->target, "with --shape: the target shape, as holon plan --to takes, written as the VisibleSim world's target (targetList)");
-    sub->add_option("--scale", a->scale, "with --shape: every cell becomes a KxK (3D: KxKxK) block, as in holon plan")->check(CLI::Range(1, planner::kMaxCoordinate));
+    sub->add_option("--scale", a->scale, "with --shape: every cell becomes a KxK (3D: KxKxK) block, as in holon plan")->check(CLI::Range(1, rules::kMaxCoordinate));
     sub->add_option("--config", a->config, "a configuration, as holon check --from takes: JSON, ASCII art, an ITF trace (FILE#N: state N), plan's end.json");
     sub->add_option("--rules", a->rules, "with --config: the rule file or bundled system it is a configuration of (default: the one a JSON file or trace names)");
     sub->add_option("--region", a->region, "with --config: the region it lies on, square:WxH, cubic:WxHxD or hex:rR (default: the one a JSON file or trace names)");

@@ -4,6 +4,7 @@
 #include "planner/Execution.h"
 
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 namespace holon::planner {
 
@@ -33,7 +34,7 @@ std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem&
     if (name == "gradient") return gradientAllocator(problem, seed);
     if (name == "optimal") return optimalAllocator(problem, seed);
     if (name == "demand") return demandAllocator(problem, seed);
-    throw InputError("--allocator '" + name + "': choose random, gradient, demand or optimal");
+    throw InputError(rules::parameterName(rules::Parameter::Allocator) + " '" + name + "': choose random, gradient, demand or optimal", rules::Parameter::Allocator);
 }
 
 }  // namespace holon::planner

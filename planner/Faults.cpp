@@ -11,6 +11,8 @@
 #include "planner/Report.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
+#include "rules/Limits.h"
+#include "rules/Parameter.h"
 #include "rules/Printer.h"
 
 #include <charconv>
@@ -48,7 +50,7 @@ Loss parseLoss(const std::string& option, const std::string& text, int dimension
     if (numbers[0] < 1) return fail("round " + std::to_string(numbers[0]));
     Loss loss{numbers[0], std::nullopt};
     for (std::size_t k = 1; k < numbers.size(); ++k)
-        if (numbers[k] < -kMaxCoordinate || numbers[k] > kMaxCoordinate) return fail("coordinate " + std::to_string(numbers[k]) + " is beyond +-" + std::to_string(kMaxCoordinate));
+        if (numbers[k] < -rules::kMaxCoordinate || numbers[k] > rules::kMaxCoordinate) return fail("coordinate " + std::to_string(numbers[k]) + " is beyond +-" + std::to_string(rules::kMaxCoordinate));
     if (cell) loss.cell = Vec{static_cast<int>(numbers[1]), static_cast<int>(numbers[2]), dimension == 3 ? static_cast<int>(numbers[3]) : 0};
     return loss;
 }
@@ -58,9 +60,10 @@ Faults::Faults(const Problem& problem, FaultOptions options)
     const Board& board = *problem.board;
     for (const Loss& loss : options_.losses)
         if (loss.cell && !inside(board, *loss.cell))
-            throw InputError("--lose " + std::to_string(loss.round) + ":" + point(board, *loss.cell).substr(1, point(board, *loss.cell).size() - 2) + ": cell " +
-                             point(board, *loss.cell) + " lies outside start and target (the box from " + point(board, board.lower()) + " to " +
-                             point(board, board.lower() + board.extent() - Vec{1, 1, board.lattice().dimension() == 3 ? 1 : 0}) + "); name a metamodule of the start");
+            throw InputError(rules::parameterName(rules::Parameter::Lose) + " " + std::to_string(loss.round) + ":" + point(board, *loss.cell).substr(1, point(board, *loss.cell).size() - 2) + ": cell " +
+                                 point(board, *loss.cell) + " lies outside start and target (the box from " + point(board, board.lower()) + " to " +
+                                 point(board, board.lower() + board.extent() - Vec{1, 1, board.lattice().dimension() == 3 ? 1 : 0}) + "); name a metamodule of the start",
+                             rules::Parameter::Lose);
     if (options_.delay > 0) arrives_.assign(static_cast<std::size_t>(board.size()), 0);
 }
 

@@ -8,6 +8,7 @@
 #include "rules/Components.h"
 #include "rules/Error.h"
 #include "rules/Limits.h"
+#include "rules/Parameter.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
 #include "rules/VisibleSim.h"
@@ -19,14 +20,15 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <sstream>
 
 namespace holon::planner {
 
 namespace {
 
-[[noreturn]] void bad(std::string_view argument, const std::string& why) {
-    throw InputError("shape '" + std::string(argument) + "': " + why);
+[[noreturn]] void bad(std::string_view argument, const std::string& why, std::optional<rules::Parameter> about = std::nullopt) {
+    throw InputError("shape '" + std::string(argument) + "': " + why, about);
 }
 
 std::vector<int> numbers(std::string_view argument, std::string_view text, char separator, std::size_t minCount, std::size_t maxCount) {
@@ -55,14 +57,15 @@ constexpr std::uint64_t kBytesPerCell = 2 * sizeof(Vec);
 /// product past 2^64 fails too) against the planner's limit, their memory against --memory.
 void checkSize(std::string_view argument, std::uint64_t cells, std::size_t maxCells, std::uint64_t memoryBytes) {
     if (cells > maxCells)
-        bad(argument, rules::countText(cells) + " cells is more than the limit of " + std::to_string(maxCells) + "; choose a smaller shape or --scale");
+        bad(argument, rules::countText(cells) + " cells is more than the limit of " + std::to_string(maxCells) + "; choose a smaller shape or " + rules::parameterName(rules::Parameter::Scale),
+            rules::Parameter::Scale);
     rules::requireMemory(rules::checkedProduct({cells, kBytesPerCell}), memoryBytes, "shape '" + std::string(argument) + "' (" + std::to_string(cells) + " cells)");
 }
 
-/// A coordinate read from a file, refused beyond +-kMaxCoordinate (an int would wrap it silently).
+/// A coordinate read from a file, refused beyond +-rules::kMaxCoordinate (an int would wrap it silently).
 int coordinate(std::string_view argument, std::int64_t v, const std::string& where) {
-    if (v < -kMaxCoordinate || v > kMaxCoordinate)
-        bad(argument, where + ": coordinate " + std::to_string(v) + " is beyond +-" + std::to_string(kMaxCoordinate) + "; move the shape nearer the origin");
+    if (v < -rules::kMaxCoordinate || v > rules::kMaxCoordinate)
+        bad(argument, where + ": coordinate " + std::to_string(v) + " is beyond +-" + std::to_string(rules::kMaxCoordinate) + "; move the shape nearer the origin");
     return static_cast<int>(v);
 }
 
@@ -199,8 +202,8 @@ Shape fromAscii(std::string_view argument, const std::string& text) {
         bad(argument, e.what());
     }
     Shape s;
-    if (lines.size() > std::size_t(kMaxCoordinate) || (!lines.empty() && lines[0].size() > std::size_t(kMaxCoordinate)))
-        bad(argument, "the picture is larger than " + std::to_string(kMaxCoordinate) + " cells across");
+    if (lines.size() > std::size_t(rules::kMaxCoordinate) || (!lines.empty() && lines[0].size() > std::size_t(rules::kMaxCoordinate)))
+        bad(argument, "the picture is larger than " + std::to_string(rules::kMaxCoordinate) + " cells across");
     const int rows = static_cast<int>(lines.size());
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < static_cast<int>(lines[r].size()); ++c) {
@@ -280,16 +283,17 @@ const std::vector<std::pair<std::string, std::string>>& shapeGenerators() {
 }
 
 Shape scaled(const Shape& shape, int k, std::size_t maxCells, std::uint64_t memoryBytes) {
-    if (k < 1) bad(shape.name, "--scale must be at least 1");
+    const std::string scale = rules::parameterName(rules::Parameter::Scale);
+    if (k < 1) bad(shape.name, scale + " must be at least 1", rules::Parameter::Scale);
     if (k == 1) return shape;
     const std::uint64_t block = rules::checkedProduct({std::uint64_t(k), std::uint64_t(k), shape.dimension == 3 ? std::uint64_t(k) : 1});
     checkSize(shape.name, rules::checkedProduct({shape.cells.size(), block}), maxCells, memoryBytes);
-    // Every scaled coordinate (c * k + k - 1) stays within kMaxCoordinate, so no int wraps.
+    // Every scaled coordinate (c * k + k - 1) stays within rules::kMaxCoordinate, so no int wraps.
     for (Vec c : shape.cells)
         for (int v : {c.x, c.y, c.z})
-            if (std::int64_t(std::abs(v) + 1) * k > kMaxCoordinate)
-                bad(shape.name, "--scale " + std::to_string(k) + " puts cell (" + std::to_string(c.x) + "," + std::to_string(c.y) + "," + std::to_string(c.z) +
-                                    ") beyond +-" + std::to_string(kMaxCoordinate) + "; choose a smaller --scale or move the shape nearer the origin");
+            if (std::int64_t(std::abs(v) + 1) * k > rules::kMaxCoordinate)
+                bad(shape.name, scale + " " + std::to_string(k) + " puts cell (" + std::to_string(c.x) + "," + std::to_string(c.y) + "," + std::to_string(c.z) + ") beyond +-" + std::to_string(rules::kMaxCoordinate) + "; choose a smaller " + scale + " or move the shape nearer the origin",
+                    rules::Parameter::Scale);
     Shape out;
     out.dimension = shape.dimension, out.name = shape.name;
     out.cells.reserve(shape.cells.size() * block);

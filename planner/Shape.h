@@ -22,7 +22,7 @@ struct Shape {
 
 /// Parses a shape argument: a procedural string or, when it names no known generator, a file.
 /// Throws InputError naming the argument and the fix: for a malformed file, a cell listed twice, a
-/// coordinate beyond +-kMaxCoordinate. `maxCells` bounds the scaled size (InputError);
+/// coordinate beyond +-rules::kMaxCoordinate. `maxCells` bounds the scaled size (InputError);
 /// `memoryBytes` (--memory) bounds the memory the cells take (LimitError), both checked before
 /// the cells are made.
 /// A cell as people read it in messages: (x,y) for 2D shapes, (x,y,z) for 3D.
@@ -32,10 +32,6 @@ Shape parseShape(std::string_view argument, int scale = 1, std::uint64_t memoryB
 
 /// Every cell becomes a KxK (2D) or KxKxK (3D) block.
 Shape scaled(const Shape& shape, int k, std::size_t maxCells, std::uint64_t memoryBytes = UINT64_MAX);
-
-/// The largest coordinate a shape file may give, and a scaled shape may reach: far beyond any
-/// shape that fits in memory, and small enough that a board's extents never overflow an int.
-constexpr int kMaxCoordinate = 1 << 29;
 
 /// Face-connected components of a cell set (6- or 4-neighbourhood), each sorted.
 std::vector<std::vector<Vec>> components(const std::vector<Vec>& cells, int dimension);

@@ -16,6 +16,7 @@
 #include "rules/Binvox.h"
 
 #include "rules/Error.h"
+#include "rules/Limits.h"
 
 #include <algorithm>
 #include <climits>
@@ -118,7 +119,7 @@ Vec originOf(const Header& h) {
     int v[3];
     for (int k = 0; k < 3; ++k) {
         const double t = h.translate[k];
-        if (t != std::floor(t) || std::fabs(t) + h.dim > (1 << 29)) return {};
+        if (t != std::floor(t) || std::fabs(t) + h.dim > kMaxCoordinate) return {};
         v[k] = static_cast<int>(t);
     }
     return {v[0], v[1], v[2]};

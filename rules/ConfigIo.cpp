@@ -11,6 +11,7 @@
 
 #include "rules/Error.h"
 #include "rules/Escape.h"
+#include "rules/Parameter.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
 
@@ -315,8 +316,9 @@ Configuration configFromItf(const Interpreter& in, const nlohmann::json& itf, st
                          "; pick one as FILE#N, or give FILE alone for the last");
     if (itf.contains("#meta") && itf["#meta"].is_object() && itf["#meta"].contains("region") && itf["#meta"]["region"].is_string() &&
         itf["#meta"]["region"].get<std::string>() != in.region().spec())
-        throw InputError("the trace is for region " + itf["#meta"]["region"].get<std::string>() + ", not " + in.region().spec() + "; run with --region " +
-                         itf["#meta"]["region"].get<std::string>());
+        throw InputError("the trace is for region " + itf["#meta"]["region"].get<std::string>() + ", not " + in.region().spec() + "; run with " +
+                             parameterName(Parameter::Region) + " " + itf["#meta"]["region"].get<std::string>(),
+                         Parameter::Region);
     // The state becomes a configuration's JSON, so one reader checks cells, fields and inputs.
     try {
         return configFromJson(in, itfStateJson(states[k]), inputsNamed);

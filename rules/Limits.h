@@ -11,6 +11,7 @@
 // the limit named), not found out by the kernel.
 
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -41,6 +42,11 @@ constexpr int kMaxIdentifier = 256;
 constexpr int kMaxRuleCells = 20;
 /// Fields of a system and inputs of a system (an input is one bit of a cell's input mask).
 constexpr int kMaxFields = 64;
+/// The largest coordinate, in absolute value, of a cell that a shape, a configuration or model
+/// file (VisibleSim, binvox) may give and a scaled shape may reach: far beyond any shape that fits
+/// in memory, and small enough that a board's extents, a difference of two coordinates and that
+/// plus one never overflow an int.
+constexpr int kMaxCoordinate = 1 << 29;
 /// Values of one enum or integer field.
 constexpr int kMaxFieldValues = 256;
 constexpr int kMaxInputs = 32;
@@ -59,14 +65,15 @@ inline std::string countText(std::uint64_t n) {
     return n == std::numeric_limits<std::uint64_t>::max() ? std::string("more than 2^64") : std::to_string(n);
 }
 
-/// Refuses a job whose estimated memory `bytes` is over `budgetBytes` (--memory), before it
-/// allocates: LimitError (exit 3) saying what needs it, how much, and the option to raise.
+/// Refuses a job whose estimated memory `bytes` is over `budgetBytes` (the memory bound), before
+/// it allocates: LimitError (exit 3) saying what needs it, how much, and the parameter to raise.
 inline void requireMemory(std::uint64_t bytes, std::uint64_t budgetBytes, const std::string& what) {
     if (bytes <= budgetBytes) return;
     char need[32];
     std::snprintf(need, sizeof need, "%.1f", static_cast<double>(bytes) / double(1 << 30));
-    throw LimitError(what + " needs about " + need + " GiB, more than --memory " + std::to_string(budgetBytes >> 20) +
-                     " MiB; raise --memory or give a smaller job");
+    const std::string memory = parameterName(Parameter::Memory);
+    throw LimitError(what + " needs about " + need + " GiB, more than " + memory + " " + std::to_string(budgetBytes >> 20) + " MiB; raise " + memory + " or give a smaller job",
+                     Parameter::Memory);
 }
 
 }  // namespace holon::rules

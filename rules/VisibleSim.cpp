@@ -11,6 +11,7 @@
 #include "rules/VisibleSim.h"
 
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 #include <algorithm>
 #include <climits>
@@ -75,8 +76,10 @@ std::string visibleSimWorld(const Lattice& lattice, VisibleSimRobot robot, const
                             const std::vector<VisibleSimCell>& targets, const std::vector<std::string>& comments, int margin) {
     const bool hex = lattice.kind() == LatticeKind::Hex2D;
     if (hex != (robot == VisibleSimRobot::Hexanodes))
-        throw InputError(std::string("--robot ") + visibleSimRobotName(robot) + ": VisibleSim's " + visibleSimRobotName(robot) + " live on " +
-                         (hex ? "a cube lattice, not on hex2d; give --robot hexanodes" : "the hexagonal lattice, not on " + lattice.name() + "; give --robot slidingCubes or blinkyBlocks"));
+        throw InputError(parameterName(Parameter::Robot) + " " + visibleSimRobotName(robot) + ": VisibleSim's " + visibleSimRobotName(robot) + " live on " +
+                             (hex ? "a cube lattice, not on hex2d; give " + parameterName(Parameter::Robot) + " hexanodes"
+                                  : "the hexagonal lattice, not on " + lattice.name() + "; give " + parameterName(Parameter::Robot) + " slidingCubes or blinkyBlocks"),
+                         Parameter::Robot);
     if (blocks.empty()) throw InputError("a VisibleSim world needs at least one block; the configuration is empty");
     Vec lo{INT_MAX, INT_MAX, INT_MAX}, hi{INT_MIN, INT_MIN, INT_MIN};
     for (const auto* list : {&blocks, &targets})
@@ -100,7 +103,7 @@ std::string visibleSimWorld(const Lattice& lattice, VisibleSimRobot robot, const
                                                                                                            : "(x, y)")
         << " is at position " << axes
         << " - (" << lo.x << ", " << lo.y << ", " << lo.z << ") -->\n";
-    // Extents in 64 bits: coordinates reach +-2^29, so a difference fits, a difference plus one too.
+    // Extents in 64 bits: coordinates reach +-kMaxCoordinate (rules/Limits.h), so a difference fits, a difference plus one too.
     out << "<world gridSize=\"" << std::int64_t(hi.x) - lo.x + 1 << "," << std::int64_t(hi.y) - lo.y + 1 << "," << std::int64_t(hi.z) - lo.z + 1 << "\">\n";
     out << "  <blockList blockSize=\"" << blockSize(robot) << "\">\n";
     for (const VisibleSimCell& b : blocks)

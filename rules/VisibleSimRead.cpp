@@ -7,6 +7,7 @@
 // in world units, which depend on the robot, and are refused by name.
 
 #include "rules/Error.h"
+#include "rules/Limits.h"
 #include "rules/VisibleSim.h"
 
 #include <algorithm>
@@ -20,9 +21,6 @@
 namespace holon::rules {
 
 namespace {
-
-/// The coordinate range of every holon shape (planner/Shape.h, kMaxCoordinate).
-constexpr std::int64_t kMaxReadCoordinate = 1 << 29;
 
 /// Line and column of byte offsets, counted forward from the last one asked (the reader asks in
 /// increasing order, errors aside).
@@ -225,11 +223,11 @@ VisibleSimCells readVisibleSimWorld(std::string_view text, std::size_t maxCells)
                                                                                    places.at(std::min((*list)[k].second, (*list)[k - 1].second)) + ")");
         for (const auto& [p, offset] : *list) {
             // In 64 bits first: a comment's offset and a large grid could take a coordinate past an
-            // int, or past the +-2^29 every holon shape keeps to.
+            // int, or past the +-kMaxCoordinate every holon shape keeps to.
             const std::int64_t q[3] = {std::int64_t(p.x) + holonMap->second.x, std::int64_t(p.y) + holonMap->second.y, std::int64_t(p.z) + holonMap->second.z};
             const bool hex = out.lattice->kind() == LatticeKind::Hex2D;
-            if (std::max({std::llabs(q[0]), std::llabs(q[1]), std::llabs(q[2]), hex ? std::llabs(q[0] + q[1]) : 0}) > kMaxReadCoordinate)
-                places.bad(offset, "this position is beyond +-" + std::to_string(kMaxReadCoordinate) + " in holon's coordinates; give a smaller grid or offset");
+            if (std::max({std::llabs(q[0]), std::llabs(q[1]), std::llabs(q[2]), hex ? std::llabs(q[0] + q[1]) : 0}) > kMaxCoordinate)
+                places.bad(offset, "this position is beyond +-" + std::to_string(kMaxCoordinate) + " in holon's coordinates; give a smaller grid or offset");
             cells->push_back(toVisibleSimAxes(*out.lattice, Vec{int(q[0]), int(q[1]), int(q[2])}));
         }
         std::sort(cells->begin(), cells->end());

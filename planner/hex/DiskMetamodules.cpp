@@ -13,6 +13,7 @@
 
 #include "rules/Components.h"
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 #include "rules/Svg.h"
 
 #include <algorithm>
@@ -26,15 +27,17 @@ namespace {
 /// The levels of mass the problem's system uses (C = the heaviest), after checking that disks can
 /// realise it: a plane, and templates that conserve mass.
 int levelsOf(const Problem& problem) {
-    if (problem.model->lattice().dimension() != 2) throw InputError("--hex-disks: disks lie in the plane; give a 2D start and target");
+    const std::string hexDisks = rules::parameterName(rules::Parameter::HexDisks);
+    if (problem.model->lattice().dimension() != 2) throw InputError(hexDisks + ": disks lie in the plane; give a 2D start and target", rules::Parameter::HexDisks);
     bool conserves = false;
     for (const rules::Property& p : problem.model->system().properties)
         conserves |= p.kind == rules::Property::Kind::Conserves && p.quantity == rules::Property::Quantity::Mass;
     std::int64_t heaviest = 0;
     for (int v = 0; v < problem.tables->alphabet(); ++v) heaviest = std::max(heaviest, problem.tables->massUnitsOf(static_cast<rules::CellValue>(v)));
     if (!conserves || heaviest <= 1)
-        throw InputError("--hex-disks: " + problem.model->system().name +
-                         " does not conserve mass; disks are neither made nor destroyed, use a general_n planner (e.g. --rules planner_general2)");
+        throw InputError(hexDisks + ": " + problem.model->system().name + " does not conserve mass; disks are neither made nor destroyed, use a general_n planner (e.g. " +
+                             rules::parameterName(rules::Parameter::Rules) + " planner_general2)",
+                         rules::Parameter::HexDisks);
     return static_cast<int>(heaviest);
 }
 

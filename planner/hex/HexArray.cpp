@@ -5,14 +5,16 @@
 #include "planner/hex/HexArray.h"
 
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 namespace holon::planner::hex {
 
 namespace {
 
 Board makeBoard(int n) {
-    if (n < 12) throw InputError("--size " + std::to_string(n) + ": the array needs at least 12 lattice points per side");
-    if (n > 4000) throw InputError("--size " + std::to_string(n) + ": at most 4000 lattice points per side");
+    const std::string size = rules::parameterName(rules::Parameter::Size) + " " + std::to_string(n);
+    if (n < 12) throw InputError(size + ": the array needs at least 12 lattice points per side", rules::Parameter::Size);
+    if (n > 4000) throw InputError(size + ": at most 4000 lattice points per side", rules::Parameter::Size);
     const int shift = (n - 1) / 2;  // the last row starts this far left in q
     return Board(rules::Lattice::get(rules::LatticeKind::Hex2D), Vec{-shift, 0, 0}, Vec{n + shift, n, 1}, HexArray::kPad);
 }

@@ -8,6 +8,7 @@
 
 #include "rules/Components.h"
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
 
@@ -49,7 +50,7 @@ std::vector<std::uint8_t> readPicture(const HexArray& array, const std::string& 
     const int n = array.n();
     if (static_cast<int>(lines.size()) != n || static_cast<int>(lines[0].size()) != n)
         throw InputError(role + " '" + path + "': " + std::to_string(lines.size()) + " rows of " + std::to_string(lines.empty() ? 0 : lines[0].size()) +
-                         " characters, but --size is " + std::to_string(n) + "; draw N rows of N characters");
+                         " characters, but " + rules::parameterName(rules::Parameter::Size) + " is " + std::to_string(n) + "; draw N rows of N characters");
     std::vector<std::uint8_t> shape(array.size(), 0);
     for (int r = 0; r < n; ++r)
         for (int i = 0; i < n; ++i) shape[array.pictureIndex(r, i)] = lines[r][i] == '#';
@@ -80,7 +81,7 @@ std::vector<std::uint8_t> sculptShape(const HexArray& array, const std::string& 
     } else {
         shape = readPicture(array, spec, role);
     }
-    if (filledCount(array, shape) == 0) throw InputError(role + " '" + spec + "' is empty at --size " + std::to_string(array.n()));
+    if (filledCount(array, shape) == 0) throw InputError(role + " '" + spec + "' is empty at " + rules::parameterName(rules::Parameter::Size) + " " + std::to_string(array.n()));
     if (!connected(array, shape)) throw InputError(role + " '" + spec + "' is not connected; holes sculpt one connected mass");
     return shape;
 }

@@ -5,6 +5,7 @@
 #include "planner/hex/SculptRun.h"
 
 #include "planner/hex/HexShapes.h"
+#include "rules/Parameter.h"
 #include "rules/Svg.h"
 
 #include <algorithm>
@@ -21,7 +22,8 @@ SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const 
                        const std::function<void(const HoleSculptor&)>& started) {
     const auto begin = std::chrono::steady_clock::now();
     const HexArray array(setup.size);
-    const auto source = sculptShape(array, setup.from, "--from"), target = sculptShape(array, setup.to, "--to");
+    const auto source = sculptShape(array, setup.from, rules::parameterName(rules::Parameter::SculptFrom));
+    const auto target = sculptShape(array, setup.to, rules::parameterName(rules::Parameter::SculptTo));
     const TriPlan plan = planTriRegions(array, source, target, std::max(2.0, setup.triFraction * setup.size));
     HoleSculptor sculptor(array, source, target, plan, setup.options);
     SculptResult result;

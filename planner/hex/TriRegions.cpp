@@ -11,6 +11,7 @@
 #include "planner/hex/TriRegions.h"
 
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 #include <array>
 #include <cmath>
@@ -38,7 +39,8 @@ int nearestDirection(double dx, double dy) {
 }  // namespace
 
 TriPlan planTriRegions(const HexArray& array, const std::vector<std::uint8_t>& source, const std::vector<std::uint8_t>& target, double side) {
-    if (!(side >= 2.0)) throw InputError("--tri: tri-regions must be at least 2 module diameters wide");
+    if (!(side >= 2.0))
+        throw InputError(rules::parameterName(rules::Parameter::Tri) + ": tri-regions must be at least 2 module diameters wide", rules::Parameter::Tri);
     TriPlan plan;
     plan.side = side;
     plan.regionOf.assign(array.size(), -1);

@@ -6,6 +6,7 @@
 
 #include "planner/roombots/World.h"
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 namespace holon::planner::roombots {
 
@@ -17,7 +18,7 @@ const char* strategyName(Strategy s) {
 Strategy parseStrategy(const std::string& name) {
     for (Strategy s : {Strategy::Greedy, Strategy::Slope, Strategy::Step, Strategy::Reserve})
         if (name == strategyName(s)) return s;
-    throw InputError("--strategy: unknown strategy '" + name + "'; use greedy, slope, step or reserve");
+    throw InputError(rules::parameterName(rules::Parameter::Strategy) + ": unknown strategy '" + name + "'; use greedy, slope, step or reserve", rules::Parameter::Strategy);
 }
 
 AssemblyResult assemble(const CloudTable& table, Coupling coupling, Strategy strategy, const Setting& setting, const AssemblyOptions& options) {

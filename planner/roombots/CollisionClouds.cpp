@@ -12,6 +12,7 @@
 #include "planner/roombots/CollisionClouds.h"
 
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 #include <nlohmann/json.hpp>
 
@@ -148,7 +149,9 @@ std::string CloudTable::json() const {
 
 CloudTable CloudTable::load(const std::string& path) {
     std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot read the collision-cloud table; regenerate it with `holon roombots --make-clouds " + path + "`");
+    if (!in)
+        throw InputError(path + ": cannot read the collision-cloud table; regenerate it with `" + rules::parameterName(rules::Parameter::MakeClouds) + " " + path + "`",
+                         rules::Parameter::MakeClouds);
     CloudTable table;
     try {
         const nlohmann::json j = nlohmann::json::parse(in);
@@ -164,7 +167,8 @@ CloudTable CloudTable::load(const std::string& path) {
                     Transition{e.at(2) == "step" ? Transition::Kind::Step : Transition::Kind::Seat, Joints::fromIndex(to), e.at(3), decode(hex)});
             }
     } catch (const nlohmann::json::exception& e) {
-        throw InputError(path + ": malformed collision-cloud table (" + e.what() + "); regenerate it with `holon roombots --make-clouds`");
+        throw InputError(path + ": malformed collision-cloud table (" + e.what() + "); regenerate it with `" + rules::parameterName(rules::Parameter::MakeClouds) + "`",
+                         rules::Parameter::MakeClouds);
     }
     return table;
 }

@@ -11,6 +11,7 @@
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
+#include "rules/Parameter.h"
 
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -35,8 +36,9 @@ CoordinationRule::CoordinationRule(const Floor& floor, int reach, const std::vec
     while (system_->system.inputIndex("walk" + std::to_string(walks + 1)) >= 0) ++walks;
     if (static_cast<int>(feet_.size()) > walks)
         throw InputError("the reservation strategy coordinates at most " + std::to_string(walks) + " metamodules (roombots_reserve.holon has walk1..walk" +
-                         std::to_string(walks) + "); this recipe has " + std::to_string(feet_.size()) +
-                         " seeds: use a smaller structure or a --strategy of the paper");
+                             std::to_string(walks) + "); this recipe has " + std::to_string(feet_.size()) +
+                             " seeds: use a smaller structure or a " + rules::parameterName(rules::Parameter::Strategy) + " of the paper",
+                         rules::Parameter::Strategy);
     nlohmann::json cells = nlohmann::json::array();
     for (std::size_t k = 0; k < feet_.size(); ++k) {
         const rules::Vec at = system_->region.cell(indexOf(feet_[k]));

@@ -17,6 +17,7 @@
 #include "planner/roombots/Kinematics.h"
 
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -91,7 +92,8 @@ const char* couplingName(Coupling c) {
 Coupling parseCoupling(const std::string& name) {
     for (Coupling c : kCouplings)
         if (name == couplingName(c)) return c;
-    throw InputError("--metamodule: unknown metamodule configuration '" + name + "'; use PAR, PER, SRS or SRZ");
+    throw InputError(rules::parameterName(rules::Parameter::Metamodule) + ": unknown metamodule configuration '" + name + "'; use PAR, PER, SRS or SRZ",
+                     rules::Parameter::Metamodule);
 }
 
 const char* shapeName(Shape s) {

@@ -79,7 +79,7 @@ TEST_CASE("limits stop the search cleanly with a partial report") {
     auto c = test::checkFrom(rules::librarySystem("planner_intermediate"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###", limits);
     CHECK(c.report.stats.stopped == StopReason::MaxStates);
     CHECK(c.report.stats.frontier > 0);
-    CHECK(c.report.stats.states >= 1000);
+    CHECK(c.report.stats.states <= 1000);  // at most the cap is stored
     CHECK(c.report.components == -1);
     for (const auto& p : c.report.properties) CHECK(p.verdict == checker::Verdict::Unknown);
     limits = {};

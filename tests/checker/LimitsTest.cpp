@@ -66,7 +66,7 @@ TEST_CASE("any other failure in a worker is rethrown once every worker is back")
     CHECK_THROWS_WITH_AS(ex.explore(), "a bug in a worker", std::logic_error);
 }
 
-TEST_CASE("--max-states stops within one state's successors of the limit") {
+TEST_CASE("--max-states stores at most the limit and stops within one state's successors of it") {
     Block b;
     checker::Explorer::Options options;
     options.limits.maxStates = 1000;
@@ -74,9 +74,34 @@ TEST_CASE("--max-states stops within one state's successors of the limit") {
     ex.addInitial(b.start.cells.data());
     const checker::ExploreStats& stats = ex.explore();
     CHECK(stats.stopped == StopReason::MaxStates);
-    CHECK(stats.states >= 1000);
-    CHECK(stats.states <= 1000 + b.engine.instances().size());
+    CHECK(stats.states <= 1000);
+    CHECK(stats.states + b.engine.instances().size() >= 1000);
     checkConsistent(ex);
+}
+
+TEST_CASE("--max-states N: an exploration of exactly N states completes, one of N + 1 stops, on any number of threads") {
+    test::World world{rules::librarySystem("general1"), "square:4x4"};
+    const rules::Engine engine{*world.model, world.region, {}};
+    const rules::Configuration start = world.ascii("DDDD\nDDDD\n....\n....");
+    const auto explore = [&](std::uint64_t maxStates, int threads) -> checker::ExploreStats {
+        checker::Explorer::Options options;
+        options.limits.maxStates = maxStates, options.limits.threads = threads;
+        checker::Explorer ex(engine, options);
+        ex.addInitial(start.cells.data());
+        return ex.explore();
+    };
+    const checker::ExploreStats all = explore(std::uint64_t{1} << 40, 1);
+    REQUIRE(all.stopped == StopReason::Finished);
+    REQUIRE(all.states > 100);
+    for (int threads : {1, 2, 4}) {
+        CAPTURE(threads);
+        const checker::ExploreStats exact = explore(all.states, threads);
+        CHECK(exact.stopped == StopReason::Finished);
+        CHECK(exact.states == all.states);
+        const checker::ExploreStats over = explore(all.states - 1, threads);
+        CHECK(over.stopped == StopReason::MaxStates);
+        CHECK(over.states <= all.states - 1);
+    }
 }
 
 TEST_CASE("--memory bounds what the explorer holds, on a region much larger than the states") {

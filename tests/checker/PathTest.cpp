@@ -227,6 +227,32 @@ TEST_CASE("a path search stopped by a limit is undecided, not unreachable") {
     }
 }
 
+TEST_CASE("a path search that stores exactly Limits::maxStates states decides, one that needs one more is undecided") {
+    World w = World::library("pixel", "square:4x4");
+    checker::PathQuery query;
+    query.from = w.ascii("M...\n....\n....\n....\n");
+    const rules::Engine engine(*w.model, w.region, query.from.inputs);
+    query.to = w.ascii("....\n....\n....\n...M\n");
+    // The searches of SearchMeter; the forward search runs on the explorer, whose boundary
+    // LimitsTest holds (and may find the target before the level that stored it ends).
+    for (const auto search : {checker::PathSearch::Bidirectional, checker::PathSearch::AStar}) {
+        INFO(checker::pathSearchName(search));
+        query.search = search;
+        query.limits.maxStates = 1'000'000;
+        const auto free = checker::shortestPath(engine, query);
+        REQUIRE(free.outcome == checker::PathOutcome::Found);
+        query.limits.maxStates = free.stats.states;
+        const auto exact = checker::shortestPath(engine, query);
+        CHECK(exact.outcome == checker::PathOutcome::Found);
+        CHECK(exact.stats.states == free.stats.states);
+        query.limits.maxStates = free.stats.states - 1;
+        const auto over = checker::shortestPath(engine, query);
+        CHECK(over.outcome == checker::PathOutcome::Undecided);
+        CHECK(over.stats.stopped == StopReason::MaxStates);
+        CHECK(over.stats.states <= free.stats.states - 1);
+    }
+}
+
 TEST_CASE("rule steps run backwards are exactly the forward steps into a configuration, on every library system") {
     std::mt19937 rng(2929);
     int systems = 0;

@@ -130,7 +130,7 @@ TEST_CASE("a malformed ITF trace or a bad index is refused with the place and th
     CHECK(named == 1u);
     bad(good, 2, "the trace has 2 states, numbered 0 to 1");
     bad(R"({"#meta":{"region":"square:3x3"},"states":[{"cells":{"#map":[]}}]})", 0,
-        "run with --region square:3x3");
+        "run with rules::Region square:3x3");
     bad(R"({"states":[]})", std::nullopt, "the trace has no states");
     bad(R"({"states":[{"cells":{"#map":[[[0,0],{"label":"F"}]]}}]})", 0,
         "state 0: a cell position in a trace is {\"#tup\"");

@@ -155,7 +155,7 @@ TEST_CASE("bad Roombots input is refused with the place and the fix") {
     CHECK_THROWS_WITH_AS(parseCoupling("XYZ"), doctest::Contains("use PAR, PER, SRS or SRZ"), holon::InputError);
     CHECK_THROWS_WITH_AS(parseStrategy("fast"), doctest::Contains("greedy, slope, step or reserve"), holon::InputError);
     CHECK_THROWS_AS(loadScenario("/nonexistent/recipe.txt", 1), holon::InputError);
-    CHECK_THROWS_WITH_AS(CloudTable::load("/nonexistent/clouds.json"), doctest::Contains("--make-clouds"), holon::InputError);
+    CHECK_THROWS_WITH_AS(CloudTable::load("/nonexistent/clouds.json"), doctest::Contains("regenerate it with `CloudTable::compute /nonexistent/clouds.json`"), holon::InputError);
 }
 
 TEST_CASE("the automatic seeding order is a permutation of the seeds in which each can be filled in turn") {
