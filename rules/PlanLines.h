@@ -24,10 +24,10 @@ Vec pointFromJson(const nlohmann::json& j, const std::string& where);
 
 struct PlanLine {
     std::int64_t round = 0;
-    bool fault = false;           // a metamodule lost: its one cell empties
-    std::string rule;             // the rule fired ("" for a fault)
-    std::vector<Vec> cells;       // the cells, the start's offset added
-    nlohmann::json json;          // the line as written ("cells", "after": one state per cell)
+    bool fault = false;      // a metamodule lost: its one cell empties
+    std::string rule;        // the rule fired ("" for a fault)
+    std::vector<Vec> cells;  // the cells, the start's offset added
+    nlohmann::json json;     // the line as written ("cells", "after": one state per cell)
 };
 
 class PlanLineReader {
