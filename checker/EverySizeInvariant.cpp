@@ -110,13 +110,6 @@ std::vector<int> impliedBy(const std::vector<const Expr*>& parts, std::size_t k,
     return {};
 }
 
-/// The window cells every neighbour of which is in the window.
-bool inside(const rules::Region& region, int cell) {
-    for (int dir = 0; dir < region.lattice().degree(); ++dir)
-        if (region.neighbour(cell, dir) < 0) return false;
-    return true;
-}
-
 /// What the window may assume before the step: the per-cell conjuncts at every cell whose
 /// neighbourhood they read lies in the window, and, for each reaches(T, f, S), that a T cell
 /// steps to a T or S cell (a consequence of the conjunct at every cell of a region, and vacuous at
@@ -126,7 +119,7 @@ smt::Term before(SmtEncoding& enc, const Window& w, int q, const State& c, const
                  smt::Term f) {
     const rules::Region& region = w.region();
     for (int i : w.around(q, w.margin())) {
-        const bool whole = inside(region, i);
+        const bool whole = w.interior(i);
         if (g == 0 || whole)
             for (const Expr* x : local) f = f && enc.cellCondition(*x, c, i);
         if (!whole) continue;

@@ -61,12 +61,6 @@ std::vector<int> distances(const rules::Region& region, int from) {
     return dist;
 }
 
-bool wholeNeighbourhood(const rules::Region& region, int cell) {
-    for (int dir = 0; dir < region.lattice().degree(); ++dir)
-        if (region.neighbour(cell, dir) < 0) return false;
-    return true;
-}
-
 /// The certificate fails at the window's origin: see the file comment.
 smt::Term certificateFails(SmtEncoding& enc, const Window& w, const State& c, const Expr& goal, const std::vector<const Expr*>& local,
                            const std::vector<Measure>& measures, int reach) {
@@ -88,7 +82,7 @@ smt::Term certificateFails(SmtEncoding& enc, const Window& w, const State& c, co
     }
     known = known && inRegion[o];
     for (int i = 0; i < n; ++i) {
-        if (!wholeNeighbourhood(region, i)) continue;
+        if (!w.interior(i)) continue;
         for (const Expr* x : local) known = known && enc.cellCondition(*x, c, i);
     }
 
@@ -101,7 +95,7 @@ smt::Term certificateFails(SmtEncoding& enc, const Window& w, const State& c, co
         if (mu.field < 0)
             for (int i = 0; i < n; ++i) ghost[m].push_back(ctx.intConst("ghost_" + std::to_string(m) + "_" + std::to_string(i)));
         for (int i = 0; i < n; ++i) {
-            if (!wholeNeighbourhood(region, i)) continue;
+            if (!w.interior(i)) continue;
             smt::Term next = ctx.boolVal(false);
             for (int dir = 0; dir < degree; ++dir) {
                 const int j = region.neighbour(i, dir);
@@ -133,16 +127,16 @@ smt::Term certificateFails(SmtEncoding& enc, const Window& w, const State& c, co
             if (region.neighbour(d, dir) == o) return stepsAlong(enc, c, d, mu.field, dir);
         return ctx.boolVal(false);
     };
+    smt::Term unmeasured = ctx.boolVal(true);  // the origin belongs to no measure
+    for (const Measure& mu : measures) unmeasured = unmeasured && !pred(o, *mu.along);
     smt::Term onward = ctx.boolVal(false);
     for (int dir = 0; dir < degree; ++dir) {
         const int d = region.neighbour(o, dir);
         const smt::Term next = inRegion[d] && !enc.cellCondition(goal, c, d);
         smt::Term earlier = ctx.boolVal(false);  // d belongs to a measure before the current one
-        smt::Term unmeasured = ctx.boolVal(true);
         for (std::size_t m = 0; m < measures.size(); ++m) {
             onward = onward || (next && belongs(o, m) && (earlier || (belongs(d, m) && further(m, d))));
             earlier = earlier || belongs(d, m);
-            unmeasured = unmeasured && !pred(o, *measures[m].along);
         }
         onward = onward || (next && unmeasured && earlier);
     }

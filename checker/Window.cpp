@@ -107,4 +107,10 @@ std::vector<int> Window::around(int placed, int radius) const {
     return out;
 }
 
+bool Window::interior(int cell) const {
+    for (int dir = 0; dir < region_.lattice().degree(); ++dir)
+        if (region_.neighbour(cell, dir) < 0) return false;
+    return true;
+}
+
 }  // namespace holon::checker

@@ -42,6 +42,8 @@ public:
     const std::vector<int>& focus() const { return focus_; }
     /// The window cells within `radius` steps of instance `placed`'s pattern cells.
     std::vector<int> around(int placed, int radius) const;
+    /// Every neighbour of the cell is in the window: a condition reading them can be stated there.
+    bool interior(int cell) const;
 
 private:
     rules::Region region_;
