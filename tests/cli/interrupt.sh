@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Usage: interrupt.sh SIGNAL CODE PATTERN COMMAND... : starts COMMAND, sends SIGNAL (INT or TERM)
-# after a second, and requires exit CODE (130 or 143: the run stopped where its outputs are whole,
-# not killed) and, unless PATTERN is empty, a line of its output matching the extended regex.
+# after INTERRUPT_DELAY seconds (default 1: the run has begun by then), and requires exit CODE (130
+# or 143: the run stopped where its outputs are whole, not killed) and, unless PATTERN is empty, a
+# line of its output matching the extended regex.
 set -u
 signal=$1 want=$2 pattern=$3
 shift 3
@@ -10,7 +11,7 @@ out=$(mktemp) && trap 'rm -f "$out"' EXIT
 set -m
 "$@" >"$out" 2>&1 &
 pid=$!
-sleep 1
+sleep "${INTERRUPT_DELAY:-1}"
 kill -"$signal" "$pid" || { echo "the command ended before the signal: $*"; cat "$out"; exit 1; }
 wait "$pid"
 got=$?
