@@ -253,7 +253,7 @@ nlohmann::json toJson(const ReachProof& p) {
     return {{"verdict", static_cast<int>(p.verdict)}, {"invariant", p.invariant}, {"reason", p.reason}, {"seconds", p.seconds}, {"files", p.certificateFiles}, {"used_known", p.usedKnown}};
 }
 
-ReachProof fromJson(const nlohmann::json& answer) {
+ReachProof reachProofFromJson(const nlohmann::json& answer) {
     ReachProof proof;
     if (answer.contains("error")) {
         proof.reason = answer["error"].get<std::string>();
@@ -304,7 +304,7 @@ ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, c
         });
     const ForkedAnswer answer = firstDecisive(
         jobs, [](const nlohmann::json& a) { return a.contains("verdict") && static_cast<Verdict>(a["verdict"].get<int>()) != Verdict::Unknown; }, budget);
-    ReachProof best = answer.job >= 0 ? fromJson(answer.answer) : ReachProof{};
+    ReachProof best = answer.job >= 0 ? reachProofFromJson(answer.answer) : ReachProof{};
     const int winner = best.verdict != Verdict::Unknown ? answer.job : -1;
     // The winner's files take the plain names; the others' are removed, with the temporaries of a
     // loser stopped in the middle of a write (OutputFile writes beside the file, then renames).

@@ -13,6 +13,9 @@ namespace holon::planner {
 
 class Execution;
 
+/// The distance the gradient and demand allocators give a cell no demand reaches.
+inline constexpr std::uint32_t kUnreached = 1u << 30;
+
 class Allocator {
 public:
     virtual ~Allocator() = default;

@@ -40,7 +40,6 @@ std::unique_ptr<Allocator> demandAllocator(const Problem& problem, std::uint64_t
 
 namespace {
 
-constexpr std::uint32_t kFar = 1u << 30;
 // How many C's a creation claims: fewer make fewer transfers and more rounds (shape bench,
 // general1, 2D median/p90/worst transfers over the bound and rounds over the intermediate
 // planner's: 4 claims 1.40/4.30/7.77 and 12.5/28.5/60.0; 8: 1.43/4.61/8.67 and 8.1/21.5/54.3; 16:
@@ -54,7 +53,7 @@ public:
         const Board& board = *problem.board;
         inTarget_.assign(static_cast<std::size_t>(board.size()), 0);
         for (Vec v : problem.target.cells) inTarget_[board.index(v)] = 1;
-        needC_.assign(problem.cells.size(), kFar), sink_.assign(problem.cells.size(), kFar), claimed_.assign(problem.cells.size(), 0), route_.assign(problem.cells.size(), -1);
+        needC_.assign(problem.cells.size(), kUnreached), sink_.assign(problem.cells.size(), kUnreached), claimed_.assign(problem.cells.size(), 0), route_.assign(problem.cells.size(), -1);
     }
     std::string name() const override { return "demand"; }
 
@@ -92,11 +91,11 @@ public:
 private:
     /// Hop counts through occupied cells from `sources` into `field`; whether any changed.
     bool spread(const std::vector<BoxEngine::Value>& cells, const std::vector<std::int64_t>& sources, std::vector<std::uint32_t>& field) {
-        next_.assign(cells.size(), kFar);
+        next_.assign(cells.size(), kUnreached);
         queue_.clear();
         for (std::int64_t i : sources) next_[i] = 0, queue_.push_back(i);
         forEachReached(cells, [&](std::int64_t i, std::int64_t j) {
-            if (next_[j] != kFar) return false;
+            if (next_[j] != kUnreached) return false;
             next_[j] = next_[i] + 1;
             return true;
         });
@@ -108,7 +107,7 @@ private:
     /// Hop counts from the creations into needC_, each creation claiming the kClaims C's nearest
     /// to it that no nearer creation claimed; a creation that has its C's stops the search.
     bool claim(const std::vector<BoxEngine::Value>& cells, const std::vector<std::int64_t>& creations) {
-        next_.assign(cells.size(), kFar);
+        next_.assign(cells.size(), kUnreached);
         std::vector<char> claimed(cells.size(), 0);
         owner_.assign(cells.size(), -1);
         std::vector<int> budget(creations.size(), kClaims);
@@ -116,7 +115,7 @@ private:
         for (std::size_t s = 0; s < creations.size(); ++s) next_[creations[s]] = 0, owner_[creations[s]] = static_cast<std::int32_t>(s), queue_.push_back(creations[s]);
         forEachReached(cells, [&](std::int64_t i, std::int64_t j) {
             const std::int32_t s = owner_[i];
-            if (next_[j] != kFar || budget[s] == 0) return false;
+            if (next_[j] != kUnreached || budget[s] == 0) return false;
             next_[j] = next_[i] + 1, owner_[j] = s;
             if (probe_.heavy(cells[j])) claimed[j] = 1, --budget[s];
             return true;

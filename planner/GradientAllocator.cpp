@@ -27,13 +27,11 @@ std::unique_ptr<Allocator> gradientAllocator(const Problem& problem, std::uint64
 
 namespace {
 
-constexpr std::uint32_t kFar = 1u << 30;
-
 class GradientAllocator final : public Allocator {
 public:
     GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), order_(problem), stall_(seed) {
         const BoxEngine& engine = *problem.engine;
-        needC_.assign(problem.cells.size(), kFar), needD_.assign(problem.cells.size(), kFar);
+        needC_.assign(problem.cells.size(), kUnreached), needD_.assign(problem.cells.size(), kUnreached);
         // What a change at a cell can affect at once: the demand of every cell in a motion
         // instance that reads it, and the field values of its neighbours.
         const Board& board = *problem.board;
@@ -72,15 +70,15 @@ public:
             }
         }
         // No path is longer than the ensemble: capping there stops a field cut off from every
-        // demand from counting up to kFar one round at a time (distance-vector count-to-infinity).
-        const std::uint32_t far = static_cast<std::uint32_t>(std::min<std::int64_t>(kFar, 2 * occupied_ + 2));
+        // demand from counting up to kUnreached one round at a time (distance-vector count-to-infinity).
+        const std::uint32_t far = static_cast<std::uint32_t>(std::min<std::int64_t>(kUnreached, 2 * occupied_ + 2));
         updates_.clear();
         for (std::int64_t i : dirty_) {
             const BoxEngine::Value v = cells[i];
             if (mark_[i] & kDemand)
                 demand_[i] = static_cast<char>((v && probe_.needsHeavier(ex, i) ? kNeedsC : 0) | (v && probe_.needsLighter(ex, i) ? kNeedsD : 0));
             mark_[i] = 0;
-            std::uint32_t c = kFar, dd = kFar;
+            std::uint32_t c = kUnreached, dd = kUnreached;
             // A field passes only through cells that can hand a resource on: a partial metamodule
             // (B1, B2) takes part in no transfer, so a C beside it is no nearer a creator on its
             // far side than the way around. Counted through the partial, that C sat in a false
@@ -88,14 +86,14 @@ public:
             // when the C was the last one the run waited for the randomizer to walk it there
             // (general-lock3, 2,304 metamodules: 26,000 of 30,410 rounds).
             if (v && probe_.carrier(ex, i)) {
-                std::uint32_t bestC = kFar, bestD = kFar;
+                std::uint32_t bestC = kUnreached, bestD = kUnreached;
                 for (int d = 0; d < degree; ++d) {
                     const std::int64_t j = i + board.step(d);
                     if (!cells[j]) continue;
                     bestC = std::min(bestC, needC_[j]), bestD = std::min(bestD, needD_[j]);
                 }
-                c = bestC + 1 >= far ? kFar : bestC + 1;
-                dd = bestD + 1 >= far ? kFar : bestD + 1;
+                c = bestC + 1 >= far ? kUnreached : bestC + 1;
+                dd = bestD + 1 >= far ? kUnreached : bestD + 1;
             }
             if (demand_[i] & kNeedsC) c = 0;
             if (demand_[i] & kNeedsD) dd = 0;
@@ -122,7 +120,7 @@ public:
         // takes a C away, and sending C's off from where creations wait cost a quarter more
         // transfers on the block experiments (1.62x against 1.32x of the bound at 2304).
         if (needC_[to] != needC_[from]) return needC_[to] < needC_[from];
-        if (needC_[to] != kFar) return false;
+        if (needC_[to] != kUnreached) return false;
         return needD_[from] < needD_[to];
     }
 

@@ -37,7 +37,7 @@ Mat3 mul(const Mat3& a, const Mat3& b) {
             for (int k = 0; k < 3; ++k) c[3 * i + j] += a[3 * i + k] * b[3 * k + j];
     return c;
 }
-Vec3 apply(const Mat3& a, const Vec3& v) {
+Vec3 times(const Mat3& a, const Vec3& v) {
     return {a[0] * v[0] + a[1] * v[1] + a[2] * v[2], a[3] * v[0] + a[4] * v[1] + a[5] * v[2],
             a[6] * v[0] + a[7] * v[1] + a[8] * v[2]};
 }
@@ -125,7 +125,7 @@ Metamodule::Metamodule(Coupling coupling) : coupling_(coupling), lock_(-1) {
     for (int lock = 0; lock < 4; ++lock) {
         lock_ = lock;
         const Chain c = chain({}, 0);
-        const Vec3 a = apply(c.frames[3], kDiagonal), b = apply(c.frames[4], kDiagonal), n = apply(c.frames[3], kMinusX);
+        const Vec3 a = times(c.frames[3], kDiagonal), b = times(c.frames[4], kDiagonal), n = times(c.frames[3], kMinusX);
         const double d = dot(a, b);
         const Vec3 axb{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
         const Coupling found = d < -2.5 ? Coupling::PAR : d > 0         ? Coupling::PER
@@ -149,9 +149,9 @@ Metamodule::Chain Metamodule::chain(const std::array<double, 6>& q, int yaw) con
     o[6] = mul(mul(o[5], kFace), turn(kX, q[4]));
     o[7] = mul(o[6], turn(diagonal, q[5]));
     c.centres[0] = {0, 0, 0};
-    c.centres[1] = add(c.centres[0], apply(o[1], kX));
-    c.centres[2] = add(c.centres[1], apply(o[3], kMinusX));
-    c.centres[3] = add(c.centres[2], apply(o[5], kX));
+    c.centres[1] = add(c.centres[0], times(o[1], kX));
+    c.centres[2] = add(c.centres[1], times(o[3], kMinusX));
+    c.centres[3] = add(c.centres[2], times(o[5], kX));
     return c;
 }
 
@@ -159,7 +159,7 @@ Posture Metamodule::posture(const Joints& j, int yaw) const {
     const Chain c = chain(angles(j), yaw);
     Posture p;
     for (int i = 0; i < 4; ++i) p.cells[i] = roundCell(c.centres[i]);
-    p.headFace = roundCell(apply(c.frames[7], kMinusX));
+    p.headFace = roundCell(times(c.frames[7], kMinusX));
     for (int y = 0; y < 4; ++y) {
         const Mat3 f = foot(y);
         double error = 0;

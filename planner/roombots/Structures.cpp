@@ -71,8 +71,8 @@ Cell parseCell(const std::string& text, const std::string& where) {
     throw InputError(where + ": '" + text + "' is not a cell; write x,y,z (or x,y for a start)");
 }
 
-constexpr int kReach = 500;  // the floor holon simulates is the box around seeds and starts
-bool far(const Cell& c) { return std::abs(c.x) > kReach || std::abs(c.y) > kReach; }
+constexpr int kFloorReach = 500;  // the floor holon simulates is the box around seeds and starts
+bool far(const Cell& c) { return std::abs(c.x) > kFloorReach || std::abs(c.y) > kFloorReach; }
 
 /// Checks the seeds alone and returns the cells they fill.
 std::set<Cell> validateSeeds(const Recipe& recipe, const std::string& where) {

@@ -8,6 +8,11 @@
 
 namespace holon::test {
 
+/// A deliberately broken variant of a library system, from tests/checker/broken/STEM.holon.
+inline rules::System brokenSystem(const std::string& stem) {
+    return parse(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/checker/broken/" + stem + ".holon"));
+}
+
 struct Checked {
     World world;
     checker::CheckReport report;

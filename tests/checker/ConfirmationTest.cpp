@@ -11,10 +11,6 @@ namespace holon {
 
 namespace {
 
-rules::System broken(const std::string& stem) {
-    return test::parse(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/checker/broken/" + stem + ".holon"));
-}
-
 const rules::Property& conserved(const rules::System& s) {
     for (const rules::Property& p : s.properties)
         if (p.kind == rules::Property::Kind::Conserves) return p;
@@ -25,7 +21,7 @@ const rules::Property& conserved(const rules::System& s) {
 }  // namespace
 
 TEST_CASE("check() on a broken system returns its counterexample replayed, without the CLI") {
-    const test::Checked c = test::checkAll(broken("general1_leaky"), "square:3x2");
+    const test::Checked c = test::checkAll(test::brokenSystem("general1_leaky"), "square:3x2");
     const checker::PropertyResult& mass = c.property(conserved(c.world.system).name);
     REQUIRE(mass.verdict == checker::Verdict::Violated);
     REQUIRE(mass.trace);
@@ -45,7 +41,7 @@ TEST_CASE("check() on a broken system returns its counterexample replayed, witho
 }
 
 TEST_CASE("verify() on a broken system returns its counterexample confirmed, without the CLI") {
-    test::World w(broken("general1_leaky"), "square:3x2");
+    test::World w(test::brokenSystem("general1_leaky"), "square:3x2");
     checker::VerifyOptions o;
     o.timeoutSeconds = 60;
     const auto report = checker::verify(*w.model, w.region, o);
@@ -61,7 +57,7 @@ TEST_CASE("verify() on a broken system returns its counterexample confirmed, wit
 TEST_CASE("an obligation's counterexample is confirmed only when its step breaks the property") {
     // A transfer (C D -> D C) replays but keeps the mass: as evidence that mass is not conserved
     // it is refused, with the interpreter's reason; the creation that conjures a D is accepted.
-    test::World w(broken("general1_leaky"), "square:3x2");
+    test::World w(test::brokenSystem("general1_leaky"), "square:3x2");
     const rules::Configuration start = w.ascii("CD.\n...");
     const rules::Engine engine(*w.model, w.region, start.inputs);
     const auto type = checker::propertyType(conserved(w.system));

@@ -13,10 +13,6 @@ using checker::Verdict;
 
 namespace {
 
-rules::System broken(const std::string& stem) {
-    return test::parse(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/checker/broken/" + stem + ".holon"));
-}
-
 checker::EverySizeReport everySize(const rules::Model& model, std::vector<std::string> properties = {}) {
     checker::EverySizeOptions o;
     o.properties = std::move(properties);
@@ -139,14 +135,14 @@ TEST_CASE("every size: a local invariant (every hole is whole) is proved for hex
 
 TEST_CASE("every size: broken variants are refuted by window counterexamples the interpreter confirms on a concrete region") {
     SUBCASE("general1_leaky creates mass") {
-        const rules::System system = broken("general1_leaky");
+        const rules::System system = test::brokenSystem("general1_leaky");
         const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
         checkRefuted(model, obligation(everySize(model).report, "mass_conservation"), [](const rules::Engine& e, const checker::Trace& t) {
             return e.massUnits(t.steps[0].cells.data()) != e.massUnits(t.steps[1].cells.data());
         });
     }
     SUBCASE("transfer_livelock's ranking does not decrease") {
-        const rules::System system = broken("transfer_livelock");
+        const rules::System system = test::brokenSystem("transfer_livelock");
         const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
         const rules::Property& p = *system.property("creators");
         checkRefuted(model, obligation(everySize(model).report, "creators"), [&](const rules::Engine& e, const checker::Trace& t) {
@@ -154,7 +150,7 @@ TEST_CASE("every size: broken variants are refuted by window counterexamples the
         });
     }
     SUBCASE("general_lock2_ranked's ranking does not decrease") {
-        const rules::System system = broken("general_lock2_ranked");
+        const rules::System system = test::brokenSystem("general_lock2_ranked");
         const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
         const rules::Property& p = *system.property("partial");
         checkRefuted(model, obligation(everySize(model, {"partial"}).report, "partial"), [&](const rules::Engine& e, const checker::Trace& t) {
@@ -167,7 +163,7 @@ TEST_CASE("every size: broken variants are refuted by window counterexamples the
     for (auto [stem, lattice] : {std::pair{"planner_no_guard", rules::LatticeKind::Hex2D}, std::pair{"planner_general1_no_guard", rules::LatticeKind::Square2D}}) {
         CAPTURE(std::string(stem));
         CAPTURE(rules::Lattice::get(lattice).name());
-        const rules::System system = broken(stem);
+        const rules::System system = test::brokenSystem(stem);
         const rules::Model model(system, rules::Lattice::get(lattice));
         const rules::Property& p = *system.property("safety");
         const checker::EverySizeReport r = everySize(model, {"safety"});
@@ -178,7 +174,7 @@ TEST_CASE("every size: broken variants are refuted by window counterexamples the
         });
     }
     SUBCASE("hex_growth_overlap breaks a hole") {
-        const rules::System system = broken("hex_growth_overlap");
+        const rules::System system = test::brokenSystem("hex_growth_overlap");
         const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Hex2D));
         const rules::Property& p = *system.property("holes");
         checkRefuted(model, obligation(everySize(model, {"holes"}).report, "holes"), [&](const rules::Engine& e, const checker::Trace& t) {
@@ -219,7 +215,7 @@ TEST_CASE("every size agrees with the bounded proofs on small regions") {
         CHECK(proved >= 1);
     }
     // And a refutation for every size shows on the bounded region it was confirmed on.
-    const rules::System leaky = broken("general1_leaky");
+    const rules::System leaky = test::brokenSystem("general1_leaky");
     const rules::Model model(leaky, rules::Lattice::get(rules::LatticeKind::Square2D));
     CHECK(bounded(model, "square:3x2", "mass_conservation") == Verdict::Violated);
 }

@@ -12,12 +12,6 @@
 using namespace holon;
 using checker::Verdict;
 
-namespace {
-rules::System broken(const std::string& stem) {
-    return test::parse(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/checker/broken/" + stem + ".holon"));
-}
-}  // namespace
-
 TEST_CASE("pixel and intermediate are holonomic, the hex pivot is not (seed 000 Fig. 2)") {
     for (const char* spec : {"square:3x3", "hex:r1", "cubic:2x2x2"}) {
         CAPTURE(spec);
@@ -60,7 +54,7 @@ TEST_CASE("the U/P/F planner keeps its spanning tree, terminates and progresses 
 }
 
 TEST_CASE("deletion without its guard breaks the tree: a shortest counterexample") {
-    auto c = test::checkFrom(broken("planner_no_guard"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###");
+    auto c = test::checkFrom(test::brokenSystem("planner_no_guard"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###");
     const auto& safety = c.property("safety");
     REQUIRE(safety.verdict == Verdict::Violated);
     CHECK(safety.trace->steps.size() == 4);  // path_create, path_propagate, delete
@@ -69,7 +63,7 @@ TEST_CASE("deletion without its guard breaks the tree: a shortest counterexample
 }
 
 TEST_CASE("a create that does not conserve mass is caught on its first use") {
-    auto c = test::checkAll(broken("general1_leaky"), "square:3x1");
+    auto c = test::checkAll(test::brokenSystem("general1_leaky"), "square:3x1");
     const auto& m = c.property("mass_conservation");
     REQUIRE(m.verdict == Verdict::Violated);
     CHECK(m.witness["rule"] == "create");
@@ -78,7 +72,7 @@ TEST_CASE("a create that does not conserve mass is caught on its first use") {
 }
 
 TEST_CASE("livelock: transfers cycle without decreasing the ranking") {
-    auto c = test::checkAll(broken("transfer_livelock"), "square:3x1");
+    auto c = test::checkAll(test::brokenSystem("transfer_livelock"), "square:3x1");
     const auto& r = c.property("creators");
     REQUIRE(r.verdict == Verdict::Violated);
     CHECK(r.witness["livelock"] == true);
@@ -197,7 +191,7 @@ TEST_CASE("an unknown property is bad input") {
 }
 
 TEST_CASE("general-lock_2: transfers can cycle with a creation half done, and a fair scheduler escapes") {
-    const test::Checked c = test::checkLockedTransfers(broken("general_lock2_ranked"));
+    const test::Checked c = test::checkLockedTransfers(test::brokenSystem("general_lock2_ranked"));
     const auto& r = c.property("partial");
     REQUIRE(r.verdict == Verdict::Violated);
     CHECK(r.witness["livelock"] == true);
@@ -237,7 +231,7 @@ TEST_CASE("hex holes: moves and deletions keep every hole whole and the module c
 }
 
 TEST_CASE("hex holes: deletion as the paper words it breaks a neighbouring hole, and pinches off modules (Fig. 6)") {
-    auto shared = test::checkFrom(broken("hex_delete_shared"), "hex:r5", kTwoHoles, "");
+    auto shared = test::checkFrom(test::brokenSystem("hex_delete_shared"), "hex:r5", kTwoHoles, "");
     const auto& holes = shared.property("holes");
     REQUIRE(holes.verdict == Verdict::Violated);
     CHECK(holes.trace->steps.size() == 4);   // two moves toward the surface, one deletion

@@ -12,11 +12,6 @@ using checker::Verdict;
 
 namespace {
 
-rules::System broken(const std::string& stem) {
-    return test::parse(
-        rules::readTextFile(std::string(HOLON_TEST_DIR) + "/checker/broken/" + stem + ".holon"));
-}
-
 test::Checked checkFromJson(rules::System system, const std::string& spec, const std::string& path) {
     test::Checked c{test::World(std::move(system), spec), {}, {}};
     checker::CheckOptions o;
@@ -59,7 +54,7 @@ const char* kTwoHoles =
 TEST_CASE("ITF round trip: a system with several fields and a pointer, state by state") {
     // planner_general1 without the deletion guard: res and label on every cell, parent on P cells,
     // and the target input; the counterexample deletes a P whose child points at it.
-    auto c = checkFromJson(broken("planner_general1_no_guard"), "square:4x1",
+    auto c = checkFromJson(test::brokenSystem("planner_general1_no_guard"), "square:4x1",
                            std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json");
     const auto& safety = c.property("safety");
     REQUIRE(safety.verdict == Verdict::Violated);
@@ -82,7 +77,7 @@ TEST_CASE("ITF round trip: a system with several fields and a pointer, state by 
 }
 
 TEST_CASE("ITF round trip: an unconditional pointer that points nowhere is written as none") {
-    const test::Checked c = test::checkLockedTransfers(broken("general_lock2_ranked"));
+    const test::Checked c = test::checkLockedTransfers(test::brokenSystem("general_lock2_ranked"));
     const auto& r = c.property("partial");
     REQUIRE(r.trace);
     const auto itf = checker::toItf(*r.trace, *c.kept.engine, "test");
@@ -94,18 +89,18 @@ TEST_CASE("ITF round trip: an unconditional pointer that points nowhere is writt
 TEST_CASE("ITF round trip: every broken system's counterexample reads back, cells and inputs") {
     int traces = 0;
     traces += roundTrip(
-        test::checkFrom(broken("planner_no_guard"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###"));
-    traces += roundTrip(checkFromJson(broken("planner_general1_no_guard"), "square:4x1",
+        test::checkFrom(test::brokenSystem("planner_no_guard"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###"));
+    traces += roundTrip(checkFromJson(test::brokenSystem("planner_general1_no_guard"), "square:4x1",
                                       std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json"));
-    traces += roundTrip(test::checkAll(broken("general1_leaky"), "square:3x1"));
-    traces += roundTrip(test::checkAll(broken("transfer_livelock"), "square:3x1"));
-    traces += roundTrip(test::checkFrom(broken("hex_delete_shared"), "hex:r5", kTwoHoles, ""));
-    traces += roundTrip(checkFromJson(broken("roombots_no_exclusion"), "square:4x4",
+    traces += roundTrip(test::checkAll(test::brokenSystem("general1_leaky"), "square:3x1"));
+    traces += roundTrip(test::checkAll(test::brokenSystem("transfer_livelock"), "square:3x1"));
+    traces += roundTrip(test::checkFrom(test::brokenSystem("hex_delete_shared"), "hex:r5", kTwoHoles, ""));
+    traces += roundTrip(checkFromJson(test::brokenSystem("roombots_no_exclusion"), "square:4x4",
                                       std::string(HOLON_TEST_DIR) + "/cli/reserve_crossing_3walks.json"));
-    traces += roundTrip(checkFromJson(broken("roombots_blocking_wait"), "square:4x4",
+    traces += roundTrip(checkFromJson(test::brokenSystem("roombots_blocking_wait"), "square:4x4",
                                       std::string(HOLON_TEST_DIR) + "/cli/reserve_crossing_3walks.json"));
     // The lock system on a cubic region: 3D positions and pointers along z.
-    test::Checked lock{test::World(broken("general_lock2_ranked"), "cubic:2x1x2"), {}, {}};
+    test::Checked lock{test::World(test::brokenSystem("general_lock2_ranked"), "cubic:2x1x2"), {}, {}};
     checker::CheckOptions o;
     o.all = true;
     lock.report = checker::check(*lock.world.model, lock.world.region, o, &lock.kept);
@@ -141,7 +136,7 @@ TEST_CASE("a malformed ITF trace or a bad index is refused with the place and th
 }
 
 TEST_CASE("ASCII: a state without a one-character name gets a character the legend explains") {
-    auto c = checkFromJson(broken("planner_general1_no_guard"), "square:4x1",
+    auto c = checkFromJson(test::brokenSystem("planner_general1_no_guard"), "square:4x1",
                            std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json");
     const auto& safety = c.property("safety");
     REQUIRE(safety.trace);
@@ -158,7 +153,7 @@ TEST_CASE("ASCII: a state without a one-character name gets a character the lege
     CHECK(key.chars.size() >= 3);  // D&F, D&U and a D&P with its pointer at least
     CHECK(text.find("-- input target:") != std::string::npos);
     // States that have one-character names need no legend, and keep their names.
-    auto g = test::checkAll(broken("general1_leaky"), "square:3x1");
+    auto g = test::checkAll(test::brokenSystem("general1_leaky"), "square:3x1");
     const auto& m = g.property("mass_conservation");
     REQUIRE(m.trace);
     const std::string plain = checker::drawTraceAscii(*m.trace, *g.kept.engine);
@@ -167,7 +162,7 @@ TEST_CASE("ASCII: a state without a one-character name gets a character the lege
 }
 
 TEST_CASE("SVG: every field, every input, arrows with heads, one colour per value, titles that fit") {
-    auto c = checkFromJson(broken("planner_general1_no_guard"), "square:4x1",
+    auto c = checkFromJson(test::brokenSystem("planner_general1_no_guard"), "square:4x1",
                            std::string(HOLON_TEST_DIR) + "/cli/general1_no_guard_start.json");
     const auto& safety = c.property("safety");
     REQUIRE(safety.trace);
@@ -211,14 +206,14 @@ TEST_CASE("SVG: every field, every input, arrows with heads, one colour per valu
 }
 
 TEST_CASE("SVG and ASCII on hex and cubic regions: every cell drawn, pointers along z as symbols") {
-    auto hex = test::checkFrom(broken("hex_delete_shared"), "hex:r5", kTwoHoles, "");
+    auto hex = test::checkFrom(test::brokenSystem("hex_delete_shared"), "hex:r5", kTwoHoles, "");
     const auto& holes = hex.property("holes");
     REQUIRE(holes.trace);
     const std::string svg = checker::drawTraceSvg(*holes.trace, *hex.kept.engine, "holes");
     CHECK(svg.find("<polygon") != std::string::npos);
     CHECK(svg.find(">M</text>") != std::string::npos);
     // A lock pointing along z in a cubic region: a circle with a dot (+z) or a cross (-z).
-    test::World w(broken("general_lock2_ranked"), "cubic:1x1x2");
+    test::World w(test::brokenSystem("general_lock2_ranked"), "cubic:1x1x2");
     checker::Trace t;
     auto cfg = w.in->empty();
     cfg.cells[w.region.indexOf({0, 0, 0})] = static_cast<rules::CellValue>(w.value("D&lock=+z"));

@@ -17,10 +17,6 @@ using checker::Verdict;
 
 namespace {
 
-rules::System broken(const std::string& stem) {
-    return test::parse(rules::readTextFile(std::string(HOLON_TEST_DIR) + "/checker/broken/" + stem + ".holon"));
-}
-
 checker::VerifyReport prove(const test::World& w, std::vector<std::string> properties = {}) {
     checker::VerifyOptions o;
     o.properties = std::move(properties);
@@ -212,7 +208,7 @@ TEST_CASE("Safety's `connected` follows from the tree conjuncts before it, the o
 }
 
 TEST_CASE("deletion without its guard: Safety is refuted, confirmed, and the explorer agrees") {
-    test::World w(broken("planner_no_guard"), "square:3x2");
+    test::World w(test::brokenSystem("planner_no_guard"), "square:3x2");
     auto r = prove(w, {"safety"});
     const auto& s = result(r, "safety");
     REQUIRE(s.verdict == Verdict::Violated);
@@ -233,14 +229,14 @@ TEST_CASE("mass conservation: proved for general_n, refuted for the leaky create
         test::World w = test::World::library(stem, "square:3x2");
         CHECK(result(prove(w, {"mass_conservation"}), "mass_conservation").verdict == Verdict::Holds);
     }
-    test::World leaky(broken("general1_leaky"), "square:3x2");
+    test::World leaky(test::brokenSystem("general1_leaky"), "square:3x2");
     const auto r = prove(leaky);
     const auto& m = result(r, "mass_conservation");
     REQUIRE(m.verdict == Verdict::Violated);
     const std::string rule = m.witness["rule"].get<std::string>();
     CHECK((rule == "create" || rule == "destroy"));  // both directions of the leaky rule change the mass
     CHECK(m.confirmed());
-    CHECK(test::checkAll(broken("general1_leaky"), "square:3x2").property("mass_conservation").verdict == Verdict::Violated);
+    CHECK(test::checkAll(test::brokenSystem("general1_leaky"), "square:3x2").property("mass_conservation").verdict == Verdict::Violated);
 }
 
 TEST_CASE("progress under non-local constraints: a rule enables only into a legal configuration") {
@@ -249,7 +245,7 @@ TEST_CASE("progress under non-local constraints: a rule enables only into a lega
     // counterexample is a legal stuck configuration the reference interpreter confirms.
     test::World good = test::World::library("roombots_reserve", "square:2x2");
     CHECK(result(prove(good, {"progress"}), "progress").verdict == Verdict::Holds);
-    test::World blocking(broken("roombots_blocking_wait"), "square:2x2");
+    test::World blocking(test::brokenSystem("roombots_blocking_wait"), "square:2x2");
     const auto r = prove(blocking, {"progress"});
     const auto& stuck = result(r, "progress");
     REQUIRE(stuck.verdict == Verdict::Violated);
@@ -288,7 +284,7 @@ TEST_CASE("holonomy means one thing: verify and check give the same verdict, and
 }
 
 TEST_CASE("bounded model checking finds the same shortest violation as the explorer") {
-    test::World w(broken("planner_no_guard"), "square:4x3");
+    test::World w(test::brokenSystem("planner_no_guard"), "square:4x3");
     auto start = w.ascii("UFU.\nUUU.\nUUU.");
     w.mark(start, "target", ".###\n.###\n.###");
     checker::VerifyOptions o;
@@ -305,7 +301,7 @@ TEST_CASE("bounded model checking finds the same shortest violation as the explo
 TEST_CASE("a path that needs an input: --depth and --reach traces carry the solver's inputs and are confirmed") {
     // F U U U with the target under the first two: the only way to a P is to finalize the target
     // cell first (path_create needs !target), then the unguarded deletion strands the last P.
-    test::World w(broken("planner_no_guard"), "square:4x1");
+    test::World w(test::brokenSystem("planner_no_guard"), "square:4x1");
     auto start = w.ascii("FUUU");
     w.mark(start, "target", "##..");
     for (const bool reach : {false, true}) {
@@ -412,7 +408,7 @@ TEST_CASE("Spacer proves general2's Progress for every reachable state, which no
 }
 
 TEST_CASE("a reachable violation: Spacer refutes, deepening BMC gives a trace as short as the explorer's") {
-    test::World w(broken("planner_no_guard"), "square:4x3");
+    test::World w(test::brokenSystem("planner_no_guard"), "square:4x3");
     checker::VerifyOptions o;
     auto start = w.ascii("UFU.\nUUU.\nUUU.");
     w.mark(start, "target", ".###\n.###\n.###");
@@ -423,7 +419,7 @@ TEST_CASE("a reachable violation: Spacer refutes, deepening BMC gives a trace as
     const auto& s = result(r, "safety@reach");
     REQUIRE(s.verdict == Verdict::Violated);
     CHECK(s.confirmed());
-    auto c = test::checkFrom(broken("planner_no_guard"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###", {}, {"safety"});
+    auto c = test::checkFrom(test::brokenSystem("planner_no_guard"), "square:4x3", "UFU.\nUUU.\nUUU.", ".###\n.###\n.###", {}, {"safety"});
     REQUIRE(c.property("safety").verdict == Verdict::Violated);
     CHECK(s.trace->steps.size() == c.property("safety").trace->steps.size());
 }

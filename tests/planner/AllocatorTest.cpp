@@ -17,14 +17,14 @@ namespace holon::test {
 
 namespace {
 
-struct Outcome {
+struct BenchOutcome {
     bool complete = false;
     double transfers = 0, rounds = 0;  // over the transport bound, over the intermediate planner's rounds
 };
 
 /// Problem `index` of the shape bench with seed 1 and about 60 metamodules, redrawn as the bench
 /// does when the mass check refuses it.
-Outcome run(int dimension, int index, const std::string& allocator) {
+BenchOutcome run(int dimension, int index, const std::string& allocator) {
     PlannerSystem general("planner_general1", dimension), intermediate("planner_intermediate", dimension);
     for (int attempt = 0;; ++attempt) {
         const bench::ShapePair pair = bench::shapePair(dimension, 1, index, attempt, 60, 1.9);
@@ -60,7 +60,7 @@ TEST_CASE("demand allocator: within 3x the transport bound and 8x the intermedia
     for (auto [dimension, index] : kProblems) {
         CAPTURE(dimension);
         CAPTURE(index);
-        const Outcome o = run(dimension, index, "demand");
+        const BenchOutcome o = run(dimension, index, "demand");
         CHECK(o.complete);
         CHECK(o.transfers <= kTransfers);
         CHECK(o.rounds <= kRounds);

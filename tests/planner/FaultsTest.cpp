@@ -12,14 +12,14 @@ namespace holon::test {
 
 namespace {
 
-struct Outcome {
+struct FaultRun {
     planner::RunStats stats;
     std::string broken;
     bool monitorViolated = false;
     std::int64_t lost = 0;
 };
 
-Outcome runWithFaults(const planner::Problem& problem, planner::Scheduler scheduler, std::uint64_t seed, const planner::FaultOptions& faultOptions) {
+FaultRun runWithFaults(const planner::Problem& problem, planner::Scheduler scheduler, std::uint64_t seed, const planner::FaultOptions& faultOptions) {
     auto allocator = planner::makeAllocator("random", problem, seed);
     planner::Faults faults(problem, faultOptions);
     planner::RunOptions options;
@@ -29,7 +29,7 @@ Outcome runWithFaults(const planner::Problem& problem, planner::Scheduler schedu
     planner::Execution ex(problem, *allocator, options);
     running = &ex;
     planner::Monitor monitor(problem, ex);
-    Outcome o;
+    FaultRun o;
     planner::RunObserver observer;
     observer.fired = [&](std::int64_t a, int s, const planner::BoxEngine::Value* old) {
         monitor.fired(a, s, old);
@@ -69,7 +69,7 @@ TEST_CASE("after a loss a run goes on only where the planner cannot disconnect, 
                     CAPTURE(rules);
                     CAPTURE(dimension);
                     CAPTURE(seed);
-                    const Outcome o = runWithFaults(problem, scheduler, seed, faults);
+                    const FaultRun o = runWithFaults(problem, scheduler, seed, faults);
                     CAPTURE(stopReasonName(o.stats.stopped));
                     CAPTURE(o.broken);
                     CHECK_FALSE(o.monitorViolated);
@@ -101,7 +101,7 @@ TEST_CASE("late and dropped messages hold instances back but every plan complete
             for (planner::Scheduler scheduler : {planner::Scheduler::Sync, planner::Scheduler::Async, planner::Scheduler::Adversarial}) {
                 CAPTURE(rules);
                 CAPTURE(seed);
-                const Outcome o = runWithFaults(problem, scheduler, seed, faults);
+                const FaultRun o = runWithFaults(problem, scheduler, seed, faults);
                 CHECK(o.stats.complete);
                 CHECK_FALSE(o.monitorViolated);
             }

@@ -41,17 +41,17 @@ bool isPowerOfFour(std::int64_t n) {
     return n == 1;
 }
 
-struct Outcome {
+struct Watched {
     std::int64_t monitorStop = -1, firstDisconnected = -1;  // the check (round or step) of each, counted from 1; -1: never
 };
 
-Outcome watch(const planner::Problem& problem, planner::Scheduler scheduler, std::uint64_t seed) {
+Watched watch(const planner::Problem& problem, planner::Scheduler scheduler, std::uint64_t seed) {
     auto allocator = planner::makeAllocator("random", problem, seed);
     planner::RunOptions options;
     options.scheduler = scheduler, options.seed = seed, options.budget = Budget::maxRounds(20000);
     planner::Execution ex(problem, *allocator, options);
     planner::Monitor monitor(problem, ex);
-    Outcome o;
+    Watched o;
     std::int64_t checks = 0;
     planner::RunObserver observer;
     observer.fired = [&](std::int64_t a, int s, const planner::BoxEngine::Value* old) { monitor.fired(a, s, old); };
@@ -87,7 +87,7 @@ TEST_CASE("the monitor stops at the first disconnected round, as a check from sc
                     CAPTURE(rules);
                     CAPTURE(dimension);
                     CAPTURE(seed);
-                    const Outcome o = watch(problem, scheduler, seed);
+                    const Watched o = watch(problem, scheduler, seed);
                     CHECK(o.monitorStop == o.firstDisconnected);
                     disconnected += o.firstDisconnected >= 0;
                     // a check the monitor makes only from the changes: not a power of four

@@ -30,15 +30,15 @@ std::string refusal(const std::string& bytes) {
     return "accepted";
 }
 
-const std::string kHeader = "#binvox 1\ndim 2 2 2\ntranslate 0 0 0\nscale 2\ndata\n";  // 49 bytes
+const std::string kCubeHeader = "#binvox 1\ndim 2 2 2\ntranslate 0 0 0\nscale 2\ndata\n";  // 49 bytes
 
 }  // namespace
 
 TEST_CASE("a 2x2x2 binvox file, worked by hand") {
     // index = x*4 + z*2 + y: (0,0,0) -> 0, (1,1,0) -> 5, (1,0,1) -> 6; voxels 1 0 0 0 0 1 1 0.
     const std::vector<Vec> cells = {{0, 0, 0}, {1, 0, 1}, {1, 1, 0}};
-    const std::string expected = kHeader + std::string("\x01\x01\x00\x04\x01\x02\x00\x01", 8);
-    CHECK(kHeader.size() == 49);
+    const std::string expected = kCubeHeader + std::string("\x01\x01\x00\x04\x01\x02\x00\x01", 8);
+    CHECK(kCubeHeader.size() == 49);
     CHECK(r::writeBinvox(cells) == expected);
     CHECK(read(expected) == cells);
     const r::BinvoxInfo info = r::scanBinvox(expected);
@@ -76,7 +76,7 @@ TEST_CASE("a file from elsewhere is read in voxel indices") {
 }
 
 TEST_CASE("malformed files are refused at the byte that is wrong") {
-    const std::string good = kHeader + std::string("\x01\x01\x00\x04\x01\x02\x00\x01", 8);
+    const std::string good = kCubeHeader + std::string("\x01\x01\x00\x04\x01\x02\x00\x01", 8);
     // Truncated: the last pair lost, the file ends at byte 55 after 7 of 8 voxels.
     CHECK(refusal(good.substr(0, 55)) == "byte 55: the file ends after 7 of the 8 voxels of a 2^3 grid (truncated?)");
     CHECK(refusal(good.substr(0, 56)) == "byte 55: the file ends after 7 of the 8 voxels of a 2^3 grid (truncated?)");
@@ -87,9 +87,9 @@ TEST_CASE("malformed files are refused at the byte that is wrong") {
     CHECK(refusal("#binvox 1\ndata\n") == "byte 10: 'data' before 'dim D D D'; the header must give the grid's size");
     CHECK(refusal("#binvox 1\ndim 2 2 2\ncolour red\ndata\n").find("byte 20: unknown header line 'colour red'") == 0);
     // A run past the 8 voxels: the count byte of the second pair (offset 52).
-    CHECK(refusal(kHeader + std::string("\x01\x01\x00\x09", 4)) == "byte 52: a run of 9 voxels from voxel 1 overruns the 8 voxels of a 2^3 grid");
-    CHECK(refusal(kHeader + std::string("\x01\x00", 2)) == "byte 50: a run of 0 voxels; counts are 1 to 255");
-    CHECK(refusal(kHeader + std::string("\x02\x08", 2)) == "byte 49: voxel value 2; a version 1 file has only 0 and 1");
+    CHECK(refusal(kCubeHeader + std::string("\x01\x01\x00\x09", 4)) == "byte 52: a run of 9 voxels from voxel 1 overruns the 8 voxels of a 2^3 grid");
+    CHECK(refusal(kCubeHeader + std::string("\x01\x00", 2)) == "byte 50: a run of 0 voxels; counts are 1 to 255");
+    CHECK(refusal(kCubeHeader + std::string("\x02\x08", 2)) == "byte 49: voxel value 2; a version 1 file has only 0 and 1");
     CHECK(refusal(good + "\n") == "byte 57: 1 byte after the last of the 8 voxels");
 }
 

@@ -17,7 +17,7 @@ using namespace std::string_literals;
 
 namespace {
 
-const std::string kHeader = "system s\nfield label: A | B\nrule r: A => B\n";
+const std::string kSystemHeader = "system s\nfield label: A | B\nrule r: A => B\n";
 
 /// Parses `text`; returns the rendered diagnostics, and whether it was accepted.
 std::pair<bool, std::string> parse(const std::string& text, rules::Diagnostics* out = nullptr) {
@@ -54,7 +54,7 @@ TEST_CASE("deep nesting is refused with a located error, not a stack overflow") 
     for (const std::string& line : cases) {
         CAPTURE(line.substr(0, 40));
         rules::Diagnostics d("x", "");
-        const auto [ok, text] = parse(kHeader + line + "\n", &d);
+        const auto [ok, text] = parse(kSystemHeader + line + "\n", &d);
         CHECK_FALSE(ok);
         REQUIRE(d.errorCount() == 1);
         CHECK(d.all()[0].line == 4);
@@ -67,7 +67,7 @@ TEST_CASE("a 20,000-term sum or conjunction is refused at once with its place") 
                                     "constraint " + chain("count(A) >= 0", " and ", 20000)}) {
         const auto start = std::chrono::steady_clock::now();
         rules::Diagnostics d("x", "");
-        const auto [ok, text] = parse(kHeader + line + "\n", &d);
+        const auto [ok, text] = parse(kSystemHeader + line + "\n", &d);
         // Chains were built by copying the tree once per operator: 20,000 terms took over a minute.
         CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
         CHECK_FALSE(ok);
@@ -134,14 +134,14 @@ TEST_CASE("raw control bytes and broken UTF-8 are escaped in messages and echoed
 
 TEST_CASE("long names and long lines stay short in messages") {
     const std::string name(100000, 'q');
-    const std::string rendered = parse(kHeader + "constraint count(" + name + ") >= 0\n").second;
+    const std::string rendered = parse(kSystemHeader + "constraint count(" + name + ") >= 0\n").second;
     CHECK(rendered.find("a name of 100000 characters; names have at most 256") != std::string::npos);
     CHECK(rendered.size() < 5000);
 }
 
 TEST_CASE("front-end messages: multiplication, rule size, end of file, declared twice") {
     rules::Diagnostics d("x", "");
-    parse(kHeader + "constraint 2 * count(A) >= 0\n", &d);
+    parse(kSystemHeader + "constraint 2 * count(A) >= 0\n", &d);
     REQUIRE(d.errorCount() == 1);
     CHECK(d.all()[0].col == 14);  // at the '*', not at the start of the expression
     CHECK(d.all()[0].message.find("do not multiply") != std::string::npos);
@@ -154,7 +154,7 @@ TEST_CASE("front-end messages: multiplication, rule size, end of file, declared 
     CHECK(parse("system s\nfield label: A | B\nrule big: " + repeat("A ", 20) + "=> " + repeat("B ", 20) + "\n").first);
 
     // An error at the end of the file points at the last line, which the message then shows.
-    const auto [ok, eof] = parse(kHeader + "constraint (count(A) >= 0\n\n", &d);
+    const auto [ok, eof] = parse(kSystemHeader + "constraint (count(A) >= 0\n\n", &d);
     REQUIRE(d.errorCount() == 1);
     CHECK(d.all()[0].line == 4);
     CHECK(d.all()[0].col == 26);

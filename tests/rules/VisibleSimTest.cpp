@@ -27,7 +27,7 @@ namespace {
 
 /// What a VisibleSim world says, read with regular expressions: gridSize, and each block's and
 /// target cell's position and colour.
-struct World {
+struct ParsedWorld {
     Vec grid;
     std::map<Vec, std::string> blocks, targets;  // position -> "r,g,b"
     std::string blockSize;
@@ -39,8 +39,8 @@ Vec triple(const std::string& text) {
     return v;
 }
 
-World parse(const std::string& xml) {
-    World w;
+ParsedWorld parseWorld(const std::string& xml) {
+    ParsedWorld w;
     std::smatch m;
     REQUIRE(std::regex_search(xml, m, std::regex("<world gridSize=\"([-0-9,]+)\">")));
     w.grid = triple(m[1]);
@@ -69,17 +69,17 @@ TEST_CASE("square2d: y flipped, shifted into the grid, slidingCubes' block size"
     // Holon's picture (y down):  ##   VisibleSim's (y up) keeps it: row y=0 on top.
     //                            #.
     const std::string xml = xmlOf(LatticeKind::Square2D, VisibleSimRobot::SlidingCubes, {{{0, 0, 0}, "#4e79a7"}, {{1, 0, 0}, "#4e79a7"}, {{0, 1, 0}, "#ff0000"}});
-    const World w = parse(xml);
+    const ParsedWorld w = parseWorld(xml);
     CHECK(w.grid == Vec{2, 2, 1});
     CHECK(w.blockSize == "10,10,10");
     CHECK(w.blocks == std::map<Vec, std::string>{{{0, 1, 0}, "78,121,167"}, {{1, 1, 0}, "78,121,167"}, {{0, 0, 0}, "255,0,0"}});
     CHECK(xml.find("a test - - with dashes") != std::string::npos);  // no "--" inside a comment
     CHECK(xml.find("<targetList>") == std::string::npos);
     // A margin of 2: the grid grows by 2 on each side in the plane, the layer stays one cell thick.
-    const World wide = parse(r::visibleSimWorld(Lattice::get(LatticeKind::Square2D), VisibleSimRobot::SlidingCubes, {{{0, 0, 0}, "#000000"}}, {}, {}, 2));
+    const ParsedWorld wide = parseWorld(r::visibleSimWorld(Lattice::get(LatticeKind::Square2D), VisibleSimRobot::SlidingCubes, {{{0, 0, 0}, "#000000"}}, {}, {}, 2));
     CHECK(wide.grid == Vec{5, 5, 1});
     CHECK(wide.blocks.count(Vec{2, 2, 0}) == 1);
-    const World deep = parse(r::visibleSimWorld(Lattice::get(LatticeKind::Cubic3D), VisibleSimRobot::SlidingCubes, {{{0, 0, 0}, "#000000"}}, {}, {}, 1));
+    const ParsedWorld deep = parseWorld(r::visibleSimWorld(Lattice::get(LatticeKind::Cubic3D), VisibleSimRobot::SlidingCubes, {{{0, 0, 0}, "#000000"}}, {}, {}, 1));
     CHECK(deep.grid == Vec{3, 3, 3});
     CHECK(deep.blocks.count(Vec{1, 1, 1}) == 1);
 }
@@ -98,7 +98,7 @@ TEST_CASE("hex2d: every direction lands on VisibleSim's direction of the same na
         CHECK(p.y == -v.y);
         CHECK(r::toVisibleSimAxes(hex, p) == v);  // its own inverse
     }
-    const World w = parse(xmlOf(LatticeKind::Hex2D, VisibleSimRobot::Hexanodes, {{{0, 0, 0}, "#000000"}, {{0, -1, 0}, "#000000"}, {{-1, 1, 0}, "#000000"}}));
+    const ParsedWorld w = parseWorld(xmlOf(LatticeKind::Hex2D, VisibleSimRobot::Hexanodes, {{{0, 0, 0}, "#000000"}, {{0, -1, 0}, "#000000"}, {{-1, 1, 0}, "#000000"}}));
     CHECK(w.blockSize == "50,50,12.5");
     // (0,0) -> (0,0), NW (0,-1) -> (-1,1), SW (-1,1) -> (0,-1); shifted by (-1,-1).
     CHECK(w.blocks == std::map<Vec, std::string>{{{1, 1, 0}, "0,0,0"}, {{0, 2, 0}, "0,0,0"}, {{1, 0, 0}, "0,0,0"}});
@@ -120,7 +120,7 @@ TEST_CASE("round trip: positions and colours come back, every one inside gridSiz
             std::vector<VisibleSimCell> b, t;
             for (const auto& [v, c] : blocks) b.push_back({v, c});
             for (const auto& [v, c] : targets) t.push_back({v, c});
-            const World w = parse(r::visibleSimWorld(lattice, robot, b, t, {}));
+            const ParsedWorld w = parseWorld(r::visibleSimWorld(lattice, robot, b, t, {}));
             REQUIRE(w.blocks.size() == blocks.size());
             REQUIRE(w.targets.size() == targets.size());
             // Back to holon's cells: undo the shift (the smallest coordinate of all is 0) and the axes.
