@@ -69,6 +69,21 @@ std::optional<Child> spawn(const ForkedJob& job) {
     return Child{pid, fds[0], {}};
 }
 
+/// Reads what the child wrote so far into `text`: false once the child closed the pipe.
+bool readMore(int fd, std::string& text) {
+    char buffer[65536];
+    const ssize_t n = read(fd, buffer, sizeof buffer);
+    if (n < 0) return errno == EINTR || errno == EAGAIN;
+    text.append(buffer, static_cast<std::size_t>(n));
+    return n > 0;
+}
+
+int reap(pid_t pid) {
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+    return status;
+}
+
 nlohmann::json received(const Child& c, int status) {
     nlohmann::json answer = nlohmann::json::parse(c.text, nullptr, false);
     if (answer.is_discarded() || !answer.is_object())
@@ -123,16 +138,9 @@ ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::functi
             if (c.fd < 0) continue;
             auto it = std::find_if(polled.begin(), polled.end(), [&](const pollfd& p) { return p.fd == c.fd; });
             if (it == polled.end() || !it->revents) continue;
-            char buffer[65536];
-            const ssize_t n = read(c.fd, buffer, sizeof buffer);
-            if (n < 0 && errno == EINTR) continue;
-            if (n > 0) {
-                c.text.append(buffer, static_cast<std::size_t>(n));
-                continue;
-            }
+            if (readMore(c.fd, c.text)) continue;
             close(c.fd), c.fd = -1, --open;
-            int status = 0;
-            while (waitpid(c.pid, &status, 0) < 0 && errno == EINTR) {}
+            const int status = reap(c.pid);
             c.pid = -1;
             nlohmann::json answer = received(c, status);
             decided = answer.contains("input_error") || decisive(answer);
@@ -143,6 +151,36 @@ ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::functi
     if (stopSignal) throw Interrupted(stopSignal);  // also one that came while job 0 ran here
     if (result.answer.is_object() && result.answer.contains("input_error")) throw InputError(result.answer["input_error"].get<std::string>());
     return result;
+}
+
+ForkedTask::ForkedTask(ForkedJob job) : job_(std::move(job)) {
+    if (auto child = spawn(job_)) pid_ = child->pid, fd_ = child->fd;
+}
+
+ForkedTask::~ForkedTask() { stop(); }
+
+void ForkedTask::stop() {
+    if (fd_ >= 0) close(fd_), fd_ = -1;
+    if (pid_ > 0) kill(pid_, SIGKILL), reap(pid_), pid_ = -1;
+}
+
+std::optional<nlohmann::json> ForkedTask::answer(const Budget& budget) {
+    if (pid_ < 0) return answerOf(job_, false);
+    Child child{pid_, fd_, {}};
+    for (;;) {
+        if (budget.expired() || budget.interrupted()) {
+            stop();
+            return std::nullopt;
+        }
+        pollfd polled{fd_, POLLIN, 0};
+        // Short waits, so that a signal or the deadline is seen at once.
+        if (poll(&polled, 1, 100) < 0 && errno != EINTR) break;
+        if (polled.revents && !readMore(fd_, child.text)) break;
+    }
+    close(fd_), fd_ = -1;
+    const int status = reap(pid_);
+    pid_ = -1;
+    return received(child, status);
 }
 
 }  // namespace holon::checker

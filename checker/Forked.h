@@ -1,12 +1,13 @@
 #pragma once
-// Running solver jobs in forked children: a job's answer comes back as JSON through a pipe, and the
-// child ends with _exit, skipping destructors (Z3 4.8.12 takes longer to free a context after
-// Spacer than to solve).
+// Running jobs in forked children: a job's answer comes back as JSON through a pipe, and the child
+// ends with _exit, skipping destructors (Z3 4.8.12 takes longer to free a context after Spacer
+// than to solve). A race of solver jobs (firstDecisive), or one job beside other work (ForkedTask).
 
 #include "rules/Budget.h"
 
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
 namespace holon::checker {
@@ -28,5 +29,25 @@ struct ForkedAnswer {
 /// them and throws Interrupted; a child whose parent dies is killed by the kernel.
 ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::function<bool(const nlohmann::json&)>& decisive,
                            const Budget& budget = Budget());
+
+/// One job in a forked child while this process goes on: a yardstick computed on the other core
+/// beside the work it measures. A child still running when the task is destroyed is killed.
+class ForkedTask {
+public:
+    explicit ForkedTask(ForkedJob job);
+    ~ForkedTask();
+    ForkedTask(const ForkedTask&) = delete;
+    ForkedTask& operator=(const ForkedTask&) = delete;
+
+    /// The job's answer. It waits while `budget` lasts (deadline and stop signals): once it is
+    /// spent the child is killed and the answer is nullopt. When no child could be started, the
+    /// job runs here, now.
+    std::optional<nlohmann::json> answer(const Budget& budget);
+
+private:
+    void stop();
+    ForkedJob job_;
+    int pid_ = -1, fd_ = -1;
+};
 
 }  // namespace holon::checker

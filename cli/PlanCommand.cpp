@@ -3,6 +3,7 @@
 // Every output path is checked before the run; SIGINT or SIGTERM stops the run at the next round,
 // writes what it has as complete files (the summary marked interrupted) and exits 128 + signal.
 
+#include "checker/Forked.h"
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
 #include "cli/Limits.h"
@@ -50,6 +51,14 @@ void printShortOfGoal(const planner::Problem& problem, const planner::Execution&
     for (std::int64_t i : cells)
         std::cout << "    " << planner::showCell(problem.board->point(i), problem.board->lattice().dimension()) << ' '
                   << rules::stateFields(*problem.model, execution.cells()[i]).dump() << ' ' << planner::waitingOn(problem, board, i) << '\n';
+}
+
+/// The transfer bound the child computed; -1 when the run was stopped short and it did not wait.
+std::int64_t lowerBoundOf(checker::ForkedTask& task, const Budget& budget) {
+    const std::optional<nlohmann::json> answer = task.answer(budget);
+    if (!answer) return -1;
+    if (!answer->contains("bound")) throw InternalError("the transfer lower bound: " + answer->value("error", answer->dump()));
+    return answer->at("bound").get<std::int64_t>();
 }
 
 struct PlanArgs {
@@ -241,13 +250,17 @@ int run(const PlanArgs& a) {
             });
         return true;
     };
+    // The transfer bound, a min-cost flow over the board, took about a third of a large general
+    // plan's time after the run: a child process solves it on the other core while the plan runs.
+    std::optional<checker::ForkedTask> bound;
+    if (planner::movesResources(problem)) bound.emplace([&](bool) { return nlohmann::json{{"bound", planner::transferLowerBound(problem)}}; });
     const planner::RunStats stats = execution.run(observer);
     // After a loss that broke the lemmas' hypotheses the end is the fault's configuration, not the
     // planner's: the monitor's last word is the round before it.
     if (monitor && !(faults && !faults->broken().empty())) monitor->finish(stats);
     const bool interrupted = stats.stopped == StopReason::Interrupted;
-    // The transfer bound is a min-cost flow over the board: skipped once --timeout has passed.
-    const std::int64_t lowerBound = budget.expired() ? -1 : planner::transferLowerBound(problem);
+    // A plan stopped by --timeout or a signal does not wait for the bound (the child is killed).
+    const std::int64_t lowerBound = bound ? lowerBoundOf(*bound, budget) : -1;
     if (faults) report.addSummary("faults", faults->json());
     report.finish(stats, lowerBound);
     WriteErrors errors;

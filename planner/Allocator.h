@@ -42,6 +42,9 @@ struct Problem;
 /// allocator's own coin flips (the run's --seed).
 std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem& problem, std::uint64_t seed);
 
+/// Whether the system moves a resource by transfers: the plans the transport bound is about.
+bool movesResources(const Problem& problem);
+
 /// The least number of transfers any plan for the problem needs (a transport bound, see
 /// Transport.cpp), or -1 when the system has no transfers.
 std::int64_t transferLowerBound(const Problem& problem);

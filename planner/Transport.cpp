@@ -24,6 +24,7 @@ namespace holon::planner {
 
 namespace {
 constexpr std::int64_t kUnlimited = std::int64_t{1} << 40;
+}  // namespace
 
 bool movesResources(const Problem& problem) {
     const BoxEngine& engine = *problem.engine;
@@ -31,7 +32,6 @@ bool movesResources(const Problem& problem) {
     for (int s = 0; s < engine.shapeCount(); ++s) transfers = transfers || engine.kind(s) == ShapeKind::Transfer;
     return problem.schema.resource >= 0 && transfers;
 }
-}  // namespace
 
 std::optional<TransportPlan> planTransport(const Problem& problem, const std::vector<BoxEngine::Value>& cells) {
     if (!movesResources(problem)) return std::nullopt;
