@@ -75,4 +75,16 @@ bool DemandProbe::wouldEnable(const Execution& ex, std::int64_t i, BoxEngine::Va
     return false;
 }
 
+std::vector<std::int64_t> demandStencil(const Problem& problem) {
+    const BoxEngine& engine = *problem.engine;
+    std::vector<std::int64_t> steps{0};
+    for (int sh = 0; sh < engine.shapeCount(); ++sh)
+        if (engine.kind(sh) == ShapeKind::Motion)
+            for (std::int64_t step : engine.cellSteps(sh))
+                for (std::int64_t r : engine.readSteps(sh)) steps.push_back(step - r);
+    std::sort(steps.begin(), steps.end());
+    steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
+    return steps;
+}
+
 }  // namespace holon::planner

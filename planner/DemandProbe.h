@@ -7,6 +7,8 @@
 
 #include "planner/Problem.h"
 
+#include <algorithm>
+#include <cstring>
 #include <vector>
 
 namespace holon::planner {
@@ -41,5 +43,27 @@ private:
     std::vector<char> carrier_;  // per input combination and state: a transfer's pattern cell accepts it
     std::size_t alphabet_ = 0;
 };
+
+/// Calls visit(x) for every cell x whose value differs from seen[x] and updates seen[x]; eight
+/// cells that did not change cost one comparison. How the allocators find what changed in a round
+/// without a pass over every cell's neighbourhood.
+template <class Visit>
+void forEachChangedCell(const std::vector<BoxEngine::Value>& cells, std::vector<BoxEngine::Value>& seen, Visit&& visit) {
+    static_assert(sizeof(BoxEngine::Value) == 1);
+    const std::size_t n = cells.size();
+    for (std::size_t w = 0; w < n; w += 8) {
+        const std::size_t len = std::min<std::size_t>(8, n - w);
+        if (std::memcmp(cells.data() + w, seen.data() + w, len) == 0) continue;
+        for (std::size_t x = w; x < w + len; ++x)
+            if (cells[x] != seen[x]) {
+                visit(static_cast<std::int64_t>(x), seen[x]);
+                seen[x] = cells[x];
+            }
+    }
+}
+
+/// The steps from a cell to the cells whose demand (needsHeavier, needsLighter) reads it: the
+/// cells of every motion instance whose guard reads it. Sorted, without repeats; 0 among them.
+std::vector<std::int64_t> demandStencil(const Problem& problem);
 
 }  // namespace holon::planner

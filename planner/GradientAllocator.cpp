@@ -19,7 +19,6 @@
 #include "planner/StallFallback.h"
 
 #include <algorithm>
-#include <cstring>
 
 namespace holon::planner {
 
@@ -30,17 +29,12 @@ namespace {
 class GradientAllocator final : public Allocator {
 public:
     GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), order_(problem), stall_(seed) {
-        const BoxEngine& engine = *problem.engine;
         needC_.assign(problem.cells.size(), kUnreached), needD_.assign(problem.cells.size(), kUnreached);
         // What a change at a cell can affect at once: the demand of every cell in a motion
         // instance that reads it, and the field values of its neighbours.
         const Board& board = *problem.board;
-        for (int sh = 0; sh < engine.shapeCount(); ++sh)
-            if (engine.kind(sh) == ShapeKind::Motion)
-                for (std::int64_t step : engine.cellSteps(sh))
-                    for (std::int64_t r : engine.readSteps(sh)) around_.push_back(step - r);
+        around_ = demandStencil(problem);
         for (int d = 0; d < board.lattice().degree(); ++d) around_.push_back(board.step(d));
-        around_.push_back(0);
         std::sort(around_.begin(), around_.end());
         around_.erase(std::unique(around_.begin(), around_.end()), around_.end());
         // The first round sees every cell change from empty.
@@ -57,18 +51,10 @@ public:
         // costs what changed in it, not the board (a full pass per round made 10^6 metamodules
         // take hours), and the fields evolve as if every metamodule recomputed (up to the cap
         // below, which a cell sees anew only when it recomputes).
-        const std::size_t n = cells.size();
-        const auto* now = reinterpret_cast<const unsigned char*>(cells.data());
-        for (std::size_t w = 0; w < n; w += 8) {
-            const std::size_t len = std::min<std::size_t>(8, n - w);
-            if (std::memcmp(now + w, seen_.data() + w, len) == 0) continue;
-            for (std::size_t x = w; x < w + len; ++x) {
-                if (cells[x] == seen_[x]) continue;
-                occupied_ += (cells[x] != 0) - (seen_[x] != 0);
-                seen_[x] = cells[x];
-                for (std::int64_t d : around_) dirty(static_cast<std::int64_t>(x) + d, kDemand);
-            }
-        }
+        forEachChangedCell(cells, seen_, [&](std::int64_t x, BoxEngine::Value was) {
+            occupied_ += (cells[x] != 0) - (was != 0);
+            for (std::int64_t d : around_) dirty(x + d, kDemand);
+        });
         // No path is longer than the ensemble: capping there stops a field cut off from every
         // demand from counting up to kUnreached one round at a time (distance-vector count-to-infinity).
         const std::uint32_t far = static_cast<std::uint32_t>(std::min<std::int64_t>(kUnreached, 2 * occupied_ + 2));
@@ -133,7 +119,8 @@ private:
     // demand_ bits: a creation or deletion waits for this cell to be heavier / lighter.
     static constexpr char kNeedsC = 1, kNeedsD = 2;
     void dirty(std::int64_t i, char how) {
-        if (problem_->engine->combo(i) == BoxEngine::kOutside) return;
+        // The stencil reaches up to twice the board's padding from a cell at its edge.
+        if (i < 0 || i >= static_cast<std::int64_t>(mark_.size()) || problem_->engine->combo(i) == BoxEngine::kOutside) return;
         if (!mark_[i]) dirty_.push_back(i);
         mark_[i] |= how;
     }
