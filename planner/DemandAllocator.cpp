@@ -69,7 +69,8 @@ public:
         });
         for (std::int64_t i : staleList_) role_[i] = roleOf(ex, i), stale_[i] = 0;
         staleList_.clear();
-        std::vector<std::int64_t> creations, sinks, leaving;
+        std::vector<std::int64_t>&creations = creations_, &sinks = sinks_, &leaving = leaving_;
+        creations.clear(), sinks.clear(), leaving.clear();
         for (std::size_t x = 0; x < cells.size(); ++x) {
             const char role = role_[x];
             if (!role) continue;
@@ -131,9 +132,11 @@ private:
     /// to it that no nearer creation claimed; a creation that has its C's stops the search.
     bool claim(const std::vector<BoxEngine::Value>& cells, const std::vector<std::int64_t>& creations) {
         next_.assign(cells.size(), kUnreached);
-        std::vector<char> claimed(cells.size(), 0);
+        std::vector<char>& claimed = nextClaimed_;
+        claimed.assign(cells.size(), 0);
         owner_.assign(cells.size(), -1);
-        std::vector<int> budget(creations.size(), kClaims);
+        std::vector<int>& budget = budget_;
+        budget.assign(creations.size(), kClaims);
         queue_.clear();
         for (std::size_t s = 0; s < creations.size(); ++s) next_[creations[s]] = 0, owner_[creations[s]] = static_cast<std::int32_t>(s), queue_.push_back(creations[s]);
         forEachReached(cells, [&](std::int64_t i, std::int64_t j) {
@@ -151,8 +154,10 @@ private:
     /// Matches each C that must leave to the nearest final D no nearer one took and marks, on
     /// every cell of the path between them, the next cell towards the D (route_).
     bool route(const std::vector<BoxEngine::Value>& cells, const std::vector<std::int64_t>& leaving) {
-        std::vector<std::int64_t> parent(cells.size(), -2), next(cells.size(), -1);
-        std::vector<char> done(leaving.size(), 0);
+        std::vector<std::int64_t>&parent = parent_, &next = nextRoute_;
+        parent.assign(cells.size(), -2), next.assign(cells.size(), -1);
+        std::vector<char>& done = done_;
+        done.assign(leaving.size(), 0);
         owner_.assign(cells.size(), -1);
         queue_.clear();
         for (std::size_t s = 0; s < leaving.size(); ++s)
@@ -192,6 +197,11 @@ private:
     std::vector<char> inTarget_, claimed_, role_, stale_;
     std::vector<std::int32_t> owner_;
     std::vector<std::int64_t> route_;
+    // Buffers each round refills: allocated once, since a board-sized vector freed every round
+    // comes back as fresh pages the kernel must fault in and zero.
+    std::vector<std::int64_t> creations_, sinks_, leaving_, parent_, nextRoute_;
+    std::vector<char> nextClaimed_, done_;
+    std::vector<int> budget_;
     std::vector<std::uint32_t> needC_, sink_, next_;
     std::vector<std::int64_t> queue_;
     StallFallback stall_;
