@@ -34,7 +34,7 @@ nlohmann::json answerOf(const ForkedJob& job, bool forked) {
     } catch (const InputError& e) {
         return {{"input_error", e.what()}};
     } catch (const std::bad_alloc&) {  // what() is "std::bad_alloc": say it
-        return {{"error", "the solver job ran out of memory; choose a smaller region"}};
+        return {{"error", "the solver job ran out of memory; choose a smaller region"}, {"resources", true}};
     } catch (const std::exception& e) {
         return {{"error", e.what()}};
     }
@@ -86,9 +86,10 @@ int reap(pid_t pid) {
 
 nlohmann::json received(const Child& c, int status) {
     nlohmann::json answer = nlohmann::json::parse(c.text, nullptr, false);
-    if (answer.is_discarded() || !answer.is_object())
-        return {{"error", WIFSIGNALED(status) ? "the solver process died (signal " + std::to_string(WTERMSIG(status)) + ")"
-                                              : std::string("the solver process gave no answer")}};
+    if (answer.is_discarded() || !answer.is_object()) {
+        if (WIFSIGNALED(status)) return {{"error", "the solver process died (signal " + std::to_string(WTERMSIG(status)) + ")"}, {"resources", true}};
+        return {{"error", "the solver process gave no answer"}};
+    }
     return answer;
 }
 

@@ -18,7 +18,7 @@ using ForkedJob = std::function<nlohmann::json(bool forked)>;
 
 struct ForkedAnswer {
     int job = -1;           // the job that gave `answer`; -1: none answered
-    nlohmann::json answer;  // on failure: {"error": why}
+    nlohmann::json answer;  // on failure: {"error": why}, with "resources": true when memory ran out or the process was killed
 };
 
 /// Runs the jobs at once, one child each, and returns the first answer `decisive` accepts (the

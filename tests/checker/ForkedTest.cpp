@@ -7,6 +7,8 @@
 
 #include <cerrno>
 #include <chrono>
+#include <csignal>
+#include <new>
 #include <stdexcept>
 #include <sys/wait.h>
 #include <thread>
@@ -58,6 +60,23 @@ TEST_CASE("a forked job's exception comes back as an error answer") {
     const std::optional<nlohmann::json> answer = task.answer(Budget());
     REQUIRE(answer);
     CHECK(answer->value("error", "") == "no flow");
+}
+
+TEST_CASE("a forked job that runs out of memory or is killed says so: the caller may go on without it") {
+    ForkedTask starved([](bool) -> nlohmann::json { throw std::bad_alloc(); });
+    const std::optional<nlohmann::json> oom = starved.answer(Budget());
+    REQUIRE(oom);
+    CHECK(oom->value("resources", false));
+    ForkedTask killed([](bool) -> nlohmann::json {
+        raise(SIGKILL);
+        return nlohmann::json::object();
+    });
+    const std::optional<nlohmann::json> died = killed.answer(Budget());
+    REQUIRE(died);
+    CHECK(died->value("error", "") == "the solver process died (signal 9)");
+    CHECK(died->value("resources", false));
+    ForkedTask failed([](bool) -> nlohmann::json { throw std::logic_error("a bug"); });
+    CHECK_FALSE(failed.answer(Budget())->value("resources", false));
 }
 
 TEST_CASE("a race returns the first decisive answer and kills the other job") {
