@@ -84,8 +84,9 @@ int reap(pid_t pid) {
     return status;
 }
 
-nlohmann::json received(const Child& c, int status) {
-    nlohmann::json answer = nlohmann::json::parse(c.text, nullptr, false);
+/// The answer a child wrote, or why there is none.
+nlohmann::json received(const std::string& text, int status) {
+    nlohmann::json answer = nlohmann::json::parse(text, nullptr, false);
     if (answer.is_discarded() || !answer.is_object()) {
         if (WIFSIGNALED(status)) return {{"error", "the solver process died (signal " + std::to_string(WTERMSIG(status)) + ")"}, {"resources", true}};
         return {{"error", "the solver process gave no answer"}};
@@ -143,7 +144,7 @@ ForkedAnswer firstDecisive(const std::vector<ForkedJob>& jobs, const std::functi
             close(c.fd), c.fd = -1, --open;
             const int status = reap(c.pid);
             c.pid = -1;
-            nlohmann::json answer = received(c, status);
+            nlohmann::json answer = received(c.text, status);
             decided = answer.contains("input_error") || decisive(answer);
             if (decided || result.job < 0) result = {static_cast<int>(k), std::move(answer)};
         }
@@ -166,22 +167,23 @@ void ForkedTask::stop() {
 }
 
 std::optional<nlohmann::json> ForkedTask::answer(const Budget& budget) {
-    if (pid_ < 0) return answerOf(job_, false);
-    Child child{pid_, fd_, {}};
+    std::string text;
     for (;;) {
+        // A spent budget ends the wait, and also stops the job from starting here without a child.
         if (budget.expired() || budget.interrupted()) {
             stop();
             return std::nullopt;
         }
+        if (pid_ < 0) return answerOf(job_, false);
         pollfd polled{fd_, POLLIN, 0};
         // Short waits, so that a signal or the deadline is seen at once.
         if (poll(&polled, 1, 100) < 0 && errno != EINTR) break;
-        if (polled.revents && !readMore(fd_, child.text)) break;
+        if (polled.revents && !readMore(fd_, text)) break;
     }
     close(fd_), fd_ = -1;
     const int status = reap(pid_);
     pid_ = -1;
-    return received(child, status);
+    return received(text, status);
 }
 
 }  // namespace holon::checker

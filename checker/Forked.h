@@ -41,7 +41,7 @@ public:
 
     /// The job's answer. It waits while `budget` lasts (deadline and stop signals): once it is
     /// spent the child is killed and the answer is nullopt. When no child could be started, the
-    /// job runs here, now.
+    /// job runs here, now, unless the budget is already spent.
     std::optional<nlohmann::json> answer(const Budget& budget);
 
 private:
