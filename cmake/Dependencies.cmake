@@ -5,6 +5,7 @@ find_package(CLI11 REQUIRED)
 find_package(doctest REQUIRED)
 find_package(Threads REQUIRED)
 pkg_check_modules(Z3 REQUIRED IMPORTED_TARGET z3)
-# LEMON's network simplex solves the planner's transport bound (min-cost flow).
+# LEMON's network simplex: the independent solver the transport bound's min-cost flow
+# (planner/MinCostFlow.cpp) is tested against.
 pkg_check_modules(LEMON REQUIRED IMPORTED_TARGET lemon)
 find_package(Boost 1.74 REQUIRED)

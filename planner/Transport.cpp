@@ -8,7 +8,7 @@
 // a creator's extra token must be transferred away first; tokens left over rest in target cells,
 // at most one per cell. Tokens never leave the occupied cells and the target. So every plan's
 // transfers pay at least the minimum cost of a flow from the supplies to the demands on that
-// lattice graph — a min-cost flow solved exactly with LEMON's network simplex. The bound ignores
+// lattice graph — a min-cost flow, solved exactly (MinCostFlow.cpp). The bound ignores
 // timing (a token may pass a cell before it exists), so it can be lower than what any real plan
 // achieves, never higher.
 
@@ -17,14 +17,9 @@
 #include "planner/Allocator.h"
 #include "rules/Error.h"
 
-#include <lemon/network_simplex.h>
-#include <lemon/smart_graph.h>
+#include "planner/MinCostFlow.h"
 
 namespace holon::planner {
-
-namespace {
-constexpr std::int64_t kUnlimited = std::int64_t{1} << 40;
-}  // namespace
 
 bool movesResources(const Problem& problem) {
     const BoxEngine& engine = *problem.engine;
@@ -44,55 +39,46 @@ std::optional<TransportPlan> planTransport(const Problem& problem, const std::ve
     for (Vec v : problem.target.cells) inTarget[board.index(v)] = 1;
     auto used = [&](std::int64_t i) { return cells[i] != 0 || inTarget[i]; };
 
-    lemon::SmartDigraph g;
-    using Node = lemon::SmartDigraph::Node;
-    using Arc = lemon::SmartDigraph::Arc;
-    std::unordered_map<std::int64_t, Node> node;
+    MinCostFlow g;
+    std::vector<int> node(static_cast<std::size_t>(board.size()), -1);
     std::vector<std::int64_t> cellOf;
     board.forEachInside([&](std::int64_t i, Vec) {
         if (!used(i)) return;
-        node.emplace(i, g.addNode());
+        node[static_cast<std::size_t>(i)] = g.addNode();
         cellOf.push_back(i);
     });
-    lemon::SmartDigraph::ArcMap<std::int64_t> cost(g), capacity(g);
-    lemon::SmartDigraph::NodeMap<std::int64_t> supply(g, 0);
-    std::vector<std::pair<Arc, std::int64_t>> lattice;  // transfer arcs and their key i * degree + d
-    auto arc = [&](Node from, Node to, std::int64_t c, std::int64_t cap = kUnlimited) {
-        const Arc a = g.addArc(from, to);
-        cost[a] = c, capacity[a] = cap;
-        return a;
-    };
-    const Node sink = g.addNode();
+    auto nodeAt = [&](std::int64_t i) { return node[static_cast<std::size_t>(i)]; };
+    std::vector<std::pair<int, std::int64_t>> lattice;  // transfer arcs and their key i * degree + d
+    const int sink = g.addNode();
     std::int64_t leftover = 0;
     // A node for tokens that neighbours hand over for free, or take for free.
     auto freeNode = [&](std::int64_t i, std::int64_t tokens) {
-        const Node x = g.addNode();
-        supply[x] = tokens, leftover += tokens;
+        const int x = g.addNode();
+        g.addSupply(x, tokens), leftover += tokens;
         for (int d = 0; d < degree; ++d)
-            if (const std::int64_t j = i + board.step(d); used(j)) tokens > 0 ? arc(x, node.at(j), 0) : arc(node.at(j), x, 0);
+            if (const std::int64_t j = i + board.step(d); used(j)) tokens > 0 ? g.addArc(x, nodeAt(j), MinCostFlow::kUnlimited, 0) : g.addArc(nodeAt(j), x, MinCostFlow::kUnlimited, 0);
     };
     for (std::int64_t i : cellOf) {
-        const Node x = node.at(i);
+        const int x = nodeAt(i);
         for (int d = 0; d < degree; ++d)
-            if (const std::int64_t j = i + board.step(d); used(j)) lattice.push_back({arc(x, node.at(j), 1), i * degree + d});
+            if (const std::int64_t j = i + board.step(d); used(j)) lattice.push_back({g.addArc(x, nodeAt(j), MinCostFlow::kUnlimited, 1), i * degree + d});
         const std::int64_t m = cells[i] ? tables.massUnitsOf(cells[i]) : 0;
         const std::int64_t extra = std::max<std::int64_t>(0, m - n);
-        supply[x] += extra, leftover += extra;
+        g.addSupply(x, extra), leftover += extra;
         if (inTarget[i]) {
             if (m < n) freeNode(i, -(n - m));
-            arc(x, sink, 0, 1);
+            g.addArc(x, sink, 1, 0);
         } else if (m > 0) {
             freeNode(i, std::min(m, n));
         }
     }
-    supply[sink] = -leftover;
-    lemon::NetworkSimplex<lemon::SmartDigraph, std::int64_t, std::int64_t> simplex(g);
-    simplex.costMap(cost).upperMap(capacity).supplyMap(supply);
-    if (simplex.run() != decltype(simplex)::OPTIMAL) return std::nullopt;
+    g.addSupply(sink, -leftover);
+    const std::optional<std::int64_t> cost = g.solve();
+    if (!cost) return std::nullopt;
     TransportPlan plan;
-    plan.cost = simplex.totalCost();
+    plan.cost = *cost;
     for (const auto& [a, key] : lattice)
-        if (const std::int64_t f = simplex.flow(a); f > 0) plan.flow[key] = static_cast<std::int32_t>(f);
+        if (const std::int64_t f = g.flow(a); f > 0) plan.flow[key] = static_cast<std::int32_t>(f);
     return plan;
 }
 
