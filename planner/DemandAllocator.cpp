@@ -63,8 +63,8 @@ public:
         // A cell's role reads only the cells of the motion instances around it: only those near a
         // change are asked again (asking every cell every round was a fifth of the run).
         const auto size = static_cast<std::int64_t>(cells.size());
-        forEachChangedCell(cells, seen_, [&](std::int64_t x, BoxEngine::Value) {
-            for (std::int64_t d : stencil_)
+        forEachChangedCell(cells, seen_, [&](std::int64_t x, BoxEngine::Value was) {
+            for (std::int64_t d : stencil_.steps(was, cells[x]))
                 if (const std::int64_t i = x + d; i >= 0 && i < size && !stale_[i]) stale_[i] = 1, staleList_.push_back(i);
         });
         for (std::int64_t i : staleList_) role_[i] = roleOf(ex, i), stale_[i] = 0;
@@ -192,7 +192,8 @@ private:
     const Problem* problem_;
     DemandProbe probe_;
     DeletionOrder order_;
-    std::vector<std::int64_t> stencil_ = demandStencil(*problem_), staleList_;
+    DemandStencil stencil_{*problem_};
+    std::vector<std::int64_t> staleList_;
     std::vector<BoxEngine::Value> seen_;  // the cells as of the previous update
     std::vector<char> inTarget_, claimed_, role_, stale_;
     std::vector<std::int32_t> owner_;

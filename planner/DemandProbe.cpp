@@ -75,16 +75,28 @@ bool DemandProbe::wouldEnable(const Execution& ex, std::int64_t i, BoxEngine::Va
     return false;
 }
 
-std::vector<std::int64_t> demandStencil(const Problem& problem) {
-    const BoxEngine& engine = *problem.engine;
+DemandStencil::DemandStencil(const Problem& problem)
+    : problem_(&problem), alphabet_(static_cast<std::size_t>(problem.tables->alphabet())), index_(alphabet_ * alphabet_, -1) {}
+
+std::int32_t DemandStencil::build(BoxEngine::Value was, BoxEngine::Value now) const {
+    // A cell's demand reads the motion instances it is a pattern cell of: from the changed cell at
+    // read site r of such an instance, the cell at its pattern step is step - r away.
+    const BoxEngine& engine = *problem_->engine;
+    const Board& board = *problem_->board;
     std::vector<std::int64_t> steps{0};
-    for (int sh = 0; sh < engine.shapeCount(); ++sh)
-        if (engine.kind(sh) == ShapeKind::Motion)
-            for (std::int64_t step : engine.cellSteps(sh))
-                for (std::int64_t r : engine.readSteps(sh)) steps.push_back(step - r);
+    for (int sh = 0; sh < engine.shapeCount(); ++sh) {
+        if (engine.kind(sh) != ShapeKind::Motion) continue;
+        const auto cells = engine.cellSteps(sh);
+        for (const rules::RuleTables::Site site : problem_->tables->readSites(sh)) {
+            if (!problem_->tables->distinguishes(sh, site, was, now)) continue;
+            const std::int64_t r = cells[static_cast<std::size_t>(site.cell)] + (site.direction < 0 ? 0 : board.step(site.direction));
+            for (std::int64_t step : cells) steps.push_back(step - r);
+        }
+    }
     std::sort(steps.begin(), steps.end());
     steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
-    return steps;
+    lists_.push_back(std::move(steps));
+    return static_cast<std::int32_t>(lists_.size() - 1);
 }
 
 }  // namespace holon::planner

@@ -62,8 +62,28 @@ void forEachChangedCell(const std::vector<BoxEngine::Value>& cells, std::vector<
     }
 }
 
-/// The steps from a cell to the cells whose demand (needsHeavier, needsLighter) reads it: the
-/// cells of every motion instance whose guard reads it. Sorted, without repeats; 0 among them.
-std::vector<std::int64_t> demandStencil(const Problem& problem);
+/// The cells whose demand (needsHeavier, needsLighter) a change of one cell can alter: the cells of
+/// every motion instance that reads it and can tell its old state from its new one. A transfer
+/// changes only which resource a cell holds, and most motions read resources at a few of their
+/// sites (general1's deletion guard reads only labels): on the block at K = 31 the full stencil
+/// made the demand allocator re-ask most cells of the board every round.
+class DemandStencil {
+public:
+    explicit DemandStencil(const Problem& problem);
+    /// Steps from a cell that changed from `was` to `now`; sorted, without repeats, 0 among them.
+    const std::vector<std::int64_t>& steps(BoxEngine::Value was, BoxEngine::Value now) const {
+        std::int32_t& at = index_[static_cast<std::size_t>(was) * alphabet_ + now];
+        if (at < 0) at = build(was, now);
+        return lists_[static_cast<std::size_t>(at)];
+    }
+
+private:
+    std::int32_t build(BoxEngine::Value was, BoxEngine::Value now) const;
+    const Problem* problem_;
+    std::size_t alphabet_;
+    // Built on first use per pair of states: most pairs never occur.
+    mutable std::vector<std::int32_t> index_;
+    mutable std::vector<std::vector<std::int64_t>> lists_;
+};
 
 }  // namespace holon::planner

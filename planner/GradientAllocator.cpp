@@ -28,15 +28,8 @@ namespace {
 
 class GradientAllocator final : public Allocator {
 public:
-    GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), order_(problem), stall_(seed) {
+    GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), order_(problem), stencil_(problem), stall_(seed) {
         needC_.assign(problem.cells.size(), kUnreached), needD_.assign(problem.cells.size(), kUnreached);
-        // What a change at a cell can affect at once: the demand of every cell in a motion
-        // instance that reads it, and the field values of its neighbours.
-        const Board& board = *problem.board;
-        around_ = demandStencil(problem);
-        for (int d = 0; d < board.lattice().degree(); ++d) around_.push_back(board.step(d));
-        std::sort(around_.begin(), around_.end());
-        around_.erase(std::unique(around_.begin(), around_.end()), around_.end());
         // The first round sees every cell change from empty.
         seen_.assign(problem.cells.size(), 0), mark_.assign(problem.cells.size(), 0), demand_.assign(problem.cells.size(), 0);
     }
@@ -52,8 +45,11 @@ public:
         // take hours), and the fields evolve as if every metamodule recomputed (up to the cap
         // below, which a cell sees anew only when it recomputes).
         forEachChangedCell(cells, seen_, [&](std::int64_t x, BoxEngine::Value was) {
+            // What a change at a cell can affect at once: the demand of every cell in a motion
+            // instance that reads it, and the field values of its neighbours.
             occupied_ += (cells[x] != 0) - (was != 0);
-            for (std::int64_t d : around_) dirty(x + d, kDemand);
+            for (std::int64_t d : stencil_.steps(was, cells[x])) dirty(x + d, kDemand);
+            for (int d = 0; d < degree; ++d) dirty(x + board.step(d), kValue);
         });
         // No path is longer than the ensemble: capping there stops a field cut off from every
         // demand from counting up to kUnreached one round at a time (distance-vector count-to-infinity).
@@ -131,7 +127,8 @@ private:
     std::vector<std::uint32_t> needC_, needD_;
     std::vector<BoxEngine::Value> seen_;  // the cells as of the previous update
     std::vector<char> mark_, demand_;
-    std::vector<std::int64_t> dirty_, around_;
+    DemandStencil stencil_;
+    std::vector<std::int64_t> dirty_;
     std::vector<Update> updates_;
     std::int64_t occupied_ = 0;
     StallFallback stall_;

@@ -106,6 +106,25 @@ std::vector<RuleTables::Site> RuleTables::readSites(int s) const {
     return sites;
 }
 
+bool RuleTables::distinguishes(int s, Site site, CellValue v, CellValue w) const {
+    auto differ = [&](const std::vector<std::uint64_t>& bits) {
+        for (int c = 0; c < comboCount(); ++c)
+            if (bit(bits, c, v) != bit(bits, c, w)) return true;
+        return false;
+    };
+    // A quantifier tests its sites: the neighbours of pattern cell `around`, or the pattern cells.
+    auto guardDiffers = [&](const auto& self, const GuardNode& g) -> bool {
+        if (site.direction >= 0 && g.around == site.cell && differ(g.perSite[static_cast<std::size_t>(site.direction)])) return true;
+        if (site.direction < 0 && g.around == Expr::kOwnCells && differ(g.perSite[static_cast<std::size_t>(site.cell)])) return true;
+        for (const GuardNode& kid : g.kids)
+            if (self(self, kid)) return true;
+        return false;
+    };
+    const Shape& t = shapes_[s];
+    if (site.direction < 0 && differ(t.lhs[static_cast<std::size_t>(site.cell)].bits)) return true;
+    return t.hasGuard && guardDiffers(guardDiffers, t.guard);
+}
+
 bool RuleTables::mayWrite(int s, int k, int combo) const {
     const Shape& t = shapes_[s];
     if (t.copyFrom[k] >= 0) return t.copyFrom[k] != k;

@@ -86,6 +86,11 @@ public:
     /// `pattern` quantifiers read the pattern cells). Nothing wider: a wider stencil would make the
     /// planner's sync rounds smaller than maximal.
     std::vector<Site> readSites(int shape) const;
+    /// Whether an instance of a shape can tell state v from state w at one of its read sites, under
+    /// some input combination: the site's left-side test, or a guard quantifier's test of it, accepts
+    /// one and not the other. Where none can, a cell changing from v to w there enables or disables
+    /// no instance of the shape (the planner's demand stencils skip it).
+    bool distinguishes(int shape, Site site, CellValue v, CellValue w) const;
     /// The write side: whether pattern cell k of a shape may change, i.e. is a copy of another cell
     /// or rewrites some state its left side accepts under input combination `combo` (under any
     /// combination, where `combo` is -1) to another.
