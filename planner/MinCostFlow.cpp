@@ -10,8 +10,11 @@
 
 #include "planner/MinCostFlow.h"
 
+#include "rules/Error.h"
+
 #include <algorithm>
 #include <limits>
+#include <string>
 
 namespace holon::planner {
 
@@ -25,7 +28,8 @@ int MinCostFlow::addNode() {
 }
 
 int MinCostFlow::addArc(int from, int to, std::int64_t capacity, std::int64_t cost) {
-    tail_.push_back(from), head_.push_back(to), capacity_.push_back(capacity), cost_.push_back(cost);
+    if (cost < 0 || cost > std::numeric_limits<int>::max()) throw InternalError("min-cost flow: arc cost " + std::to_string(cost) + " outside 0 .. 2^31 - 1");
+    tail_.push_back(from), head_.push_back(to), capacity_.push_back(capacity), cost_.push_back(static_cast<int>(cost));
     return static_cast<int>(tail_.size()) - 1;
 }
 
@@ -33,27 +37,31 @@ void MinCostFlow::addSupply(int node, std::int64_t amount) { supply_[static_cast
 
 void MinCostFlow::buildResidual() {
     const std::size_t nodes = supply_.size(), arcs = tail_.size();
+    if (2 * arcs >= std::numeric_limits<std::uint32_t>::max()) throw InternalError("min-cost flow: " + std::to_string(arcs) + " arcs; at most 2^31 fit");
     first_.assign(nodes + 1, 0);
     for (std::size_t k = 0; k < arcs; ++k) ++first_[static_cast<std::size_t>(tail_[k]) + 1], ++first_[static_cast<std::size_t>(head_[k]) + 1];
     for (std::size_t v = 0; v < nodes; ++v) first_[v + 1] += first_[v];
-    std::vector<std::size_t> fill(first_.begin(), first_.end() - 1);
+    std::vector<std::uint32_t> fill(first_.begin(), first_.end() - 1);
     to_.assign(2 * arcs, 0), partner_.assign(2 * arcs, 0), residual_.assign(2 * arcs, 0), placeCost_.assign(2 * arcs, 0), slot_.assign(arcs, 0);
     for (std::size_t k = 0; k < arcs; ++k) {
-        const std::size_t f = fill[static_cast<std::size_t>(tail_[k])]++, r = fill[static_cast<std::size_t>(head_[k])]++;
+        const std::uint32_t f = fill[static_cast<std::size_t>(tail_[k])]++, r = fill[static_cast<std::size_t>(head_[k])]++;
         to_[f] = head_[k], to_[r] = tail_[k];
         partner_[f] = r, partner_[r] = f;
         residual_[f] = capacity_[k];
         placeCost_[f] = cost_[k], placeCost_[r] = -cost_[k];
         slot_[k] = f;
     }
+    // The arcs as given are in the residual graph now.
+    for (auto* v : {&tail_, &head_, &cost_}) std::vector<int>().swap(*v);
+    std::vector<std::int64_t>().swap(capacity_);
 }
 
 std::optional<std::int64_t> MinCostFlow::solve() {
     // A source before every supply and a sink after every demand.
     std::int64_t total = 0, balance = 0;
+    const std::size_t nodes = supply_.size(), given = tail_.size();
     const int s = addNode(), t = addNode();
-    const std::size_t given = tail_.size();
-    for (std::size_t v = 0; v + 2 < supply_.size(); ++v) {
+    for (std::size_t v = 0; v < nodes; ++v) {
         const std::int64_t amount = supply_[v];
         balance += amount;
         if (amount > 0) addArc(s, static_cast<int>(v), amount, 0), total += amount;
@@ -65,12 +73,9 @@ std::optional<std::int64_t> MinCostFlow::solve() {
     if (balance == 0)
         while (sent < total && shortestPaths(s, t))
             while (levels(s, t)) sent += augment(s, t);
-    // The helper nodes and arcs go again, so that the graph is as the caller built it.
-    tail_.resize(given), head_.resize(given), capacity_.resize(given), cost_.resize(given), slot_.resize(given);
-    supply_.resize(supply_.size() - 2);
     if (balance != 0 || sent < total) return std::nullopt;
     std::int64_t cost = 0;
-    for (std::size_t k = 0; k < given; ++k) cost += flow(static_cast<int>(k)) * cost_[k];
+    for (std::size_t k = 0; k < given; ++k) cost += flow(static_cast<int>(k)) * placeCost_[slot_[k]];
     return cost;
 }
 
@@ -93,7 +98,7 @@ bool MinCostFlow::shortestPaths(int s, int t) {
                 reach = d;
                 break;
             }
-            for (std::size_t p = first_[static_cast<std::size_t>(v)]; p < first_[static_cast<std::size_t>(v) + 1]; ++p) {
+            for (std::uint32_t p = first_[static_cast<std::size_t>(v)]; p < first_[static_cast<std::size_t>(v) + 1]; ++p) {
                 if (residual_[p] == 0) continue;
                 const std::int64_t nd = d + reduced(p, v);
                 auto& best = distance_[static_cast<std::size_t>(to_[p])];
@@ -123,7 +128,7 @@ bool MinCostFlow::levels(int s, int t) {
         const int v = queue[k];
         // Past t's layer no node lies on a shortest layered path to it.
         if (level_[target] >= 0 && level_[static_cast<std::size_t>(v)] >= level_[target]) break;
-        for (std::size_t p = first_[static_cast<std::size_t>(v)]; p < first_[static_cast<std::size_t>(v) + 1]; ++p) {
+        for (std::uint32_t p = first_[static_cast<std::size_t>(v)]; p < first_[static_cast<std::size_t>(v) + 1]; ++p) {
             auto& l = level_[static_cast<std::size_t>(to_[p])];
             if (residual_[p] == 0 || l >= 0 || reduced(p, v) != 0) continue;
             l = level_[static_cast<std::size_t>(v)] + 1;
@@ -145,7 +150,7 @@ std::int64_t MinCostFlow::augment(int s, int t) {
     for (;;) {
         if (v == t) {
             std::int64_t f = kFar;
-            for (std::size_t p : path_) f = std::min(f, residual_[p]);
+            for (std::uint32_t p : path_) f = std::min(f, residual_[p]);
             std::size_t cut = path_.size();
             for (std::size_t k = 0; k < path_.size(); ++k) {
                 residual_[path_[k]] -= f, residual_[partner_[path_[k]]] += f;
@@ -157,7 +162,7 @@ std::int64_t MinCostFlow::augment(int s, int t) {
             continue;
         }
         const auto u = static_cast<std::size_t>(v);
-        std::size_t& p = current_[u];
+        std::uint32_t& p = current_[u];
         for (; p < first_[u + 1]; ++p) {
             const auto w = static_cast<std::size_t>(to_[p]);
             if (residual_[p] > 0 && level_[w] == level_[u] + 1 && reduced(p, v) == 0) break;
