@@ -28,7 +28,7 @@ int MinCostFlow::addNode() {
 }
 
 int MinCostFlow::addArc(int from, int to, std::int64_t capacity, std::int64_t cost) {
-    if (cost < 0 || cost > std::numeric_limits<int>::max()) throw InternalError("min-cost flow: arc cost " + std::to_string(cost) + " outside 0 .. 2^31 - 1");
+    if (cost < 0 || cost > kMaxCost) throw InternalError("min-cost flow: arc cost " + std::to_string(cost) + " outside 0 .. " + std::to_string(kMaxCost));
     tail_.push_back(from), head_.push_back(to), capacity_.push_back(capacity), cost_.push_back(static_cast<int>(cost));
     return static_cast<int>(tail_.size()) - 1;
 }

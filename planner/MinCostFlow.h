@@ -13,9 +13,11 @@ class MinCostFlow {
 public:
     /// An arc's capacity when it has none worth stating.
     static constexpr std::int64_t kUnlimited = std::int64_t{1} << 40;
+    /// The largest arc cost: distances index Dial's buckets, one per possible distance.
+    static constexpr std::int64_t kMaxCost = std::int64_t{1} << 16;
 
     int addNode();
-    /// Returns the arc's index, for flow(); 0 <= `cost` < 2^31.
+    /// Returns the arc's index, for flow(); 0 <= `cost` <= kMaxCost.
     int addArc(int from, int to, std::int64_t capacity, std::int64_t cost);
     /// Positive: the node sends this much; negative: it takes this much. Supplies must sum to zero.
     void addSupply(int node, std::int64_t amount);

@@ -28,7 +28,7 @@ bool movesResources(const Problem& problem) {
     return problem.schema.resource >= 0 && transfers;
 }
 
-std::optional<TransportPlan> planTransport(const Problem& problem, const std::vector<BoxEngine::Value>& cells) {
+std::optional<TransportPlan> planTransport(const Problem& problem, const std::vector<BoxEngine::Value>& cells, bool withFlow) {
     if (!movesResources(problem)) return std::nullopt;
     const rules::RuleTables& tables = *problem.tables;
     const std::int64_t n = tables.massDenominator();  // tokens in a full metamodule
@@ -61,7 +61,10 @@ std::optional<TransportPlan> planTransport(const Problem& problem, const std::ve
     for (std::int64_t i : cellOf) {
         const int x = nodeAt(i);
         for (int d = 0; d < degree; ++d)
-            if (const std::int64_t j = i + board.step(d); used(j)) lattice.push_back({g.addArc(x, nodeAt(j), MinCostFlow::kUnlimited, 1), i * degree + d});
+            if (const std::int64_t j = i + board.step(d); used(j)) {
+                const int a = g.addArc(x, nodeAt(j), MinCostFlow::kUnlimited, 1);
+                if (withFlow) lattice.push_back({a, i * degree + d});
+            }
         const std::int64_t m = cells[i] ? tables.massUnitsOf(cells[i]) : 0;
         const std::int64_t extra = std::max<std::int64_t>(0, m - n);
         g.addSupply(x, extra), leftover += extra;
@@ -84,7 +87,7 @@ std::optional<TransportPlan> planTransport(const Problem& problem, const std::ve
 
 std::int64_t transferLowerBound(const Problem& problem) {
     if (!movesResources(problem)) return -1;
-    const std::optional<TransportPlan> plan = planTransport(problem, problem.cells);
+    const std::optional<TransportPlan> plan = planTransport(problem, problem.cells, false);
     if (!plan) throw InternalError("the transport problem has no solution; the mass check should have refused this problem");
     return plan->cost;
 }

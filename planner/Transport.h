@@ -16,7 +16,8 @@ struct TransportPlan {
 };
 
 /// Solves the transport from `cells` (a configuration on the problem's board) to the target;
-/// nullopt when the system has no transfers or the instance has no solution.
-std::optional<TransportPlan> planTransport(const Problem& problem, const std::vector<BoxEngine::Value>& cells);
+/// nullopt when the system has no transfers or the instance has no solution. Without `withFlow`
+/// only the cost (at 10^6 metamodules the flow has millions of arcs).
+std::optional<TransportPlan> planTransport(const Problem& problem, const std::vector<BoxEngine::Value>& cells, bool withFlow = true);
 
 }  // namespace holon::planner
