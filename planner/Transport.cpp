@@ -15,9 +15,8 @@
 #include "planner/Transport.h"
 
 #include "planner/Allocator.h"
-#include "rules/Error.h"
-
 #include "planner/MinCostFlow.h"
+#include "rules/Error.h"
 
 namespace holon::planner {
 
