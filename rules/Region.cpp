@@ -60,9 +60,12 @@ Region::Region(const Lattice& lattice, std::string spec, std::vector<Vec> cells)
 }
 
 int Region::indexOf(Vec v) const {
-    Vec r = v - lower_;
-    if (r.x < 0 || r.y < 0 || r.z < 0 || r.x >= extent_.x || r.y >= extent_.y || r.z >= extent_.z) return -1;
-    return boxIndex_[(static_cast<std::size_t>(r.z) * extent_.y + r.y) * extent_.x + r.x];
+    // In 64 bits: a position near the edge of the int range minus a negative lower corner (hex
+    // regions are centred on the origin) overflows an int (a configuration at x = 2^31 - 1, found by
+    // fuzzing).
+    const std::int64_t x = std::int64_t{v.x} - lower_.x, y = std::int64_t{v.y} - lower_.y, z = std::int64_t{v.z} - lower_.z;
+    if (x < 0 || y < 0 || z < 0 || x >= extent_.x || y >= extent_.y || z >= extent_.z) return -1;
+    return boxIndex_[static_cast<std::size_t>((z * extent_.y + y) * extent_.x + x)];
 }
 
 Region Region::box(const Lattice& lattice, Vec size) {
