@@ -192,7 +192,7 @@ private:
     const Problem* problem_;
     DemandProbe probe_;
     DeletionOrder order_;
-    DemandStencil stencil_{*problem_};
+    DemandStencil stencil_{*problem_, probe_};
     std::vector<std::int64_t> staleList_;
     std::vector<BoxEngine::Value> seen_;  // the cells as of the previous update
     std::vector<char> inTarget_, claimed_, role_, stale_;

@@ -75,8 +75,8 @@ bool DemandProbe::wouldEnable(const Execution& ex, std::int64_t i, BoxEngine::Va
     return false;
 }
 
-DemandStencil::DemandStencil(const Problem& problem)
-    : problem_(&problem), alphabet_(static_cast<std::size_t>(problem.tables->alphabet())), index_(alphabet_ * alphabet_, -1) {}
+DemandStencil::DemandStencil(const Problem& problem, const DemandProbe& probe)
+    : problem_(&problem), probe_(&probe), alphabet_(static_cast<std::size_t>(problem.tables->alphabet())), index_(alphabet_ * alphabet_, -1) {}
 
 std::int32_t DemandStencil::build(BoxEngine::Value was, BoxEngine::Value now) const {
     // A cell's demand reads the motion instances it is a pattern cell of: from the changed cell at
@@ -88,7 +88,11 @@ std::int32_t DemandStencil::build(BoxEngine::Value was, BoxEngine::Value now) co
         if (engine.kind(sh) != ShapeKind::Motion) continue;
         const auto cells = engine.cellSteps(sh);
         for (const rules::RuleTables::Site site : problem_->tables->readSites(sh)) {
-            if (!problem_->tables->distinguishes(sh, site, was, now)) continue;
+            // Asked of a partner, the demand questions also try it one resource heavier or lighter.
+            const rules::RuleTables& tables = *problem_->tables;
+            if (!tables.distinguishes(sh, site, was, now) && !tables.distinguishes(sh, site, probe_->heavierOf(was), probe_->heavierOf(now)) &&
+                !tables.distinguishes(sh, site, probe_->lighterOf(was), probe_->lighterOf(now)))
+                continue;
             const std::int64_t r = cells[static_cast<std::size_t>(site.cell)] + (site.direction < 0 ? 0 : board.step(site.direction));
             for (std::int64_t step : cells) steps.push_back(step - r);
         }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <deque>
 #include <vector>
 
 namespace holon::planner {
@@ -28,6 +29,10 @@ public:
     bool heavy(BoxEngine::Value v) const { return heavy_[v] != 0; }
     bool light(BoxEngine::Value v) const { return light_[v] != 0; }
     bool final(BoxEngine::Value v) const { return final_[v] != 0; }
+    /// The state one creator heavier / one destroyer lighter than v (v when there is none): the
+    /// states the demand questions put in a cell's place.
+    BoxEngine::Value heavierOf(BoxEngine::Value v) const { return heavier_[v] ? heavier_[v] : v; }
+    BoxEngine::Value lighterOf(BoxEngine::Value v) const { return lighter_[v] ? lighter_[v] : v; }
     /// Whether cell i, as it is, can take part in a transfer: only such a cell can pass a
     /// resource on, so only through it is a demand any nearer.
     bool carrier(const Execution& ex, std::int64_t i) const;
@@ -63,13 +68,15 @@ void forEachChangedCell(const std::vector<BoxEngine::Value>& cells, std::vector<
 }
 
 /// The cells whose demand (needsHeavier, needsLighter) a change of one cell can alter: the cells of
-/// every motion instance that reads it and can tell its old state from its new one. A transfer
+/// every motion instance that reads it and can tell its old state from its new one, or the states
+/// one resource heavier or lighter than those (the demand questions put those in a partner's
+/// place: DemandProbe::wouldEnable). A transfer
 /// changes only which resource a cell holds, and most motions read resources at a few of their
 /// sites (general1's deletion guard reads only labels): on the block at K = 31 the full stencil
 /// made the demand allocator re-ask most cells of the board every round.
 class DemandStencil {
 public:
-    explicit DemandStencil(const Problem& problem);
+    DemandStencil(const Problem& problem, const DemandProbe& probe);
     /// Steps from a cell that changed from `was` to `now`; sorted, without repeats, 0 among them.
     const std::vector<std::int64_t>& steps(BoxEngine::Value was, BoxEngine::Value now) const {
         std::int32_t& at = index_[static_cast<std::size_t>(was) * alphabet_ + now];
@@ -80,10 +87,11 @@ public:
 private:
     std::int32_t build(BoxEngine::Value was, BoxEngine::Value now) const;
     const Problem* problem_;
+    const DemandProbe* probe_;
     std::size_t alphabet_;
-    // Built on first use per pair of states: most pairs never occur.
+    // Built on first use per pair of states: most pairs never occur. A deque: references stay valid.
     mutable std::vector<std::int32_t> index_;
-    mutable std::vector<std::vector<std::int64_t>> lists_;
+    mutable std::deque<std::vector<std::int64_t>> lists_;
 };
 
 }  // namespace holon::planner

@@ -28,7 +28,7 @@ namespace {
 
 class GradientAllocator final : public Allocator {
 public:
-    GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), order_(problem), stencil_(problem), stall_(seed) {
+    GradientAllocator(const Problem& problem, std::uint64_t seed) : problem_(&problem), probe_(problem), order_(problem), stencil_(problem, probe_), stall_(seed) {
         needC_.assign(problem.cells.size(), kUnreached), needD_.assign(problem.cells.size(), kUnreached);
         // The first round sees every cell change from empty.
         seen_.assign(problem.cells.size(), 0), mark_.assign(problem.cells.size(), 0), demand_.assign(problem.cells.size(), 0);

@@ -29,6 +29,7 @@ int MinCostFlow::addNode() {
 }
 
 int MinCostFlow::addArc(int from, int to, std::int64_t capacity, std::int64_t cost) {
+    if (solved_) throw InternalError("min-cost flow: an arc added after the solve");
     if (cost < 0 || cost > kMaxCost) throw InternalError("min-cost flow: arc cost " + std::to_string(cost) + " outside 0 .. " + std::to_string(kMaxCost));
     tail_.push_back(from), head_.push_back(to), capacity_.push_back(capacity), cost_.push_back(static_cast<int>(cost));
     return static_cast<int>(tail_.size()) - 1;
@@ -58,6 +59,7 @@ void MinCostFlow::buildResidual() {
 }
 
 std::optional<std::int64_t> MinCostFlow::solve() {
+    if (solved_) throw InternalError("min-cost flow: solved twice (its arcs are gone after the first solve)");
     // A source before every supply and a sink after every demand.
     std::int64_t total = 0, balance = 0;
     const std::size_t nodes = supply_.size(), given = tail_.size();
@@ -68,6 +70,7 @@ std::optional<std::int64_t> MinCostFlow::solve() {
         if (amount > 0) addArc(s, static_cast<int>(v), amount, 0), total += amount;
         if (amount < 0) addArc(static_cast<int>(v), t, -amount, 0);
     }
+    solved_ = true;
     buildResidual();
     potential_.assign(supply_.size(), 0);
     std::int64_t sent = 0;

@@ -13,7 +13,8 @@ class MinCostFlow {
 public:
     /// An arc's capacity when it has none worth stating.
     static constexpr std::int64_t kUnlimited = std::int64_t{1} << 40;
-    /// The largest arc cost: distances index Dial's buckets, one per possible distance.
+    /// The largest arc cost. Dial's buckets hold one list per distance under reduced costs, and
+    /// those grow with the costs: the solver is for small ones (the transport bound's are 0 and 1).
     static constexpr std::int64_t kMaxCost = std::int64_t{1} << 16;
 
     int addNode();
@@ -26,7 +27,7 @@ public:
     /// only: the arcs as given are released (the transport bound at 10^6 metamodules has tens of
     /// millions), and flow() reads the solution.
     std::optional<std::int64_t> solve();
-    /// The flow on an arc in the solution: what its reverse half may carry back.
+    /// The flow on an arc in the solution (after solve() only): what its reverse half may carry back.
     std::int64_t flow(int arc) const { return residual_[partner_[slot_[static_cast<std::size_t>(arc)]]]; }
 
 private:
@@ -36,6 +37,7 @@ private:
     bool levels(int s, int t);
     std::int64_t augment(int s, int t);
 
+    bool solved_ = false;
     std::vector<std::int64_t> supply_;
     // The arcs as given, until solve() builds the residual graph from them.
     std::vector<int> tail_, head_, cost_;

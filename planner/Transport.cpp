@@ -46,7 +46,11 @@ std::optional<TransportPlan> planTransport(const Problem& problem, const std::ve
         node[static_cast<std::size_t>(i)] = g.addNode();
         cellOf.push_back(i);
     });
-    auto nodeAt = [&](std::int64_t i) { return node[static_cast<std::size_t>(i)]; };
+    auto nodeAt = [&](std::int64_t i) {
+        const int x = node[static_cast<std::size_t>(i)];
+        if (x < 0) throw InternalError("the transport graph: a used cell outside the board's interior");
+        return x;
+    };
     std::vector<std::pair<int, std::int64_t>> lattice;  // transfer arcs and their key i * degree + d
     const int sink = g.addNode();
     std::int64_t leftover = 0;

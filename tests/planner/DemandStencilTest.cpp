@@ -9,7 +9,7 @@
 namespace holon::test {
 
 TEST_CASE("demand stencil: every cell whose demand changes in a step lies in the stencil of a change in that step") {
-    for (const char* stem : {"planner_general1", "planner_general3", "planner_general_lock2"})
+    for (const char* stem : {"planner_general1", "planner_general2", "planner_general3", "planner_general_lock2"})
         for (int dimension : {2, 3}) {
             const std::string system = stem;
             CAPTURE(system);
@@ -18,7 +18,7 @@ TEST_CASE("demand stencil: every cell whose demand changes in a step lies in the
             const std::string from = dimension == 3 ? "box:6x3x2" : "box:10x5", to = dimension == 3 ? "box:3x3x4" : "box:5x10";
             const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape(from), planner::parseShape(to), std::nullopt, 1);
             const planner::DemandProbe probe(p);
-            const planner::DemandStencil stencil(p);
+            const planner::DemandStencil stencil(p, probe);
             auto allocator = planner::makeAllocator("demand", p, 1);
             // One instance at a time: in a sync round other changes would cover a missed cell.
             planner::RunOptions options;
