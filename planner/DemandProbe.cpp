@@ -82,14 +82,14 @@ std::int32_t DemandStencil::build(BoxEngine::Value was, BoxEngine::Value now) co
     // A cell's demand reads the motion instances it is a pattern cell of: from the changed cell at
     // read site r of such an instance, the cell at its pattern step is step - r away.
     const BoxEngine& engine = *problem_->engine;
+    const rules::RuleTables& tables = *problem_->tables;
     const Board& board = *problem_->board;
     std::vector<std::int64_t> steps{0};
     for (int sh = 0; sh < engine.shapeCount(); ++sh) {
         if (engine.kind(sh) != ShapeKind::Motion) continue;
         const auto cells = engine.cellSteps(sh);
-        for (const rules::RuleTables::Site site : problem_->tables->readSites(sh)) {
+        for (const rules::RuleTables::Site site : tables.readSites(sh)) {
             // Asked of a partner, the demand questions also try it one resource heavier or lighter.
-            const rules::RuleTables& tables = *problem_->tables;
             if (!tables.distinguishes(sh, site, was, now) && !tables.distinguishes(sh, site, probe_->heavierOf(was), probe_->heavierOf(now)) &&
                 !tables.distinguishes(sh, site, probe_->lighterOf(was), probe_->lighterOf(now)))
                 continue;
