@@ -36,7 +36,7 @@ struct Options {
     int pairs2d = 50, pairs3d = 30, cells = 300;
     std::uint64_t seed = 1;
     std::string system = "planner_general1";
-    std::vector<std::string> allocators = {"random", "gradient", "demand", "optimal"};
+    std::vector<std::string> allocators = {"random", "gradient", "demand", "eager", "optimal"};
     double timeout = 120;
     std::string csv, shapesOut;
     int only = -1;

@@ -322,7 +322,7 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--from", a->from, "start shape")->required();
     sub->add_option("--to", a->to, "target shape")->required();
     sub->add_option("--scale", a->scale, "every cell becomes a KxK (3D: KxKxK) block (1 to 2^29: beyond it no cell fits the coordinate range)")->check(CLI::Range(1, rules::kMaxCoordinate));
-    sub->add_option("--allocator", a->allocator, "resource allocator for general_n: random, gradient, demand or optimal (default " + a->allocator + ")");
+    sub->add_option("--allocator", a->allocator, "resource allocator for general_n: random, gradient, demand, eager or optimal (default " + a->allocator + ")");
     sub->add_option("--scheduler", a->scheduler, "sync (rounds, default), async (one instance at a time) or adversarial");
     sub->add_option("--seed", a->seed, "random seed (default " + std::to_string(a->seed) + ")");
     sub->add_option("--seed-cell", a->seedCell, "the seed metamodule x,y[,z] (default: the overlap cell nearest its centre)");

@@ -11,7 +11,7 @@ namespace holon::planner {
 std::unique_ptr<Allocator> randomAllocator(std::uint64_t seed);
 std::unique_ptr<Allocator> gradientAllocator(const Problem& problem, std::uint64_t seed);
 std::unique_ptr<Allocator> optimalAllocator(const Problem& problem, std::uint64_t seed);
-std::unique_ptr<Allocator> demandAllocator(const Problem& problem, std::uint64_t seed);
+std::unique_ptr<Allocator> demandAllocator(const Problem& problem, std::uint64_t seed, bool eager);
 
 std::pair<std::int64_t, std::int64_t> transferEnds(const Execution& ex, std::int64_t anchor, int shape) {
     const BoxEngine& engine = ex.engine();
@@ -33,8 +33,9 @@ std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem&
     if (name == "random") return randomAllocator(seed);
     if (name == "gradient") return gradientAllocator(problem, seed);
     if (name == "optimal") return optimalAllocator(problem, seed);
-    if (name == "demand") return demandAllocator(problem, seed);
-    throw InputError(rules::parameterName(rules::Parameter::Allocator) + " '" + name + "': choose random, gradient, demand or optimal", rules::Parameter::Allocator);
+    if (name == "demand") return demandAllocator(problem, seed, false);
+    if (name == "eager") return demandAllocator(problem, seed, true);
+    throw InputError(rules::parameterName(rules::Parameter::Allocator) + " '" + name + "': choose random, gradient, demand, eager or optimal", rules::Parameter::Allocator);
 }
 
 }  // namespace holon::planner

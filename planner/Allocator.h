@@ -38,7 +38,7 @@ std::pair<std::int64_t, std::int64_t> transferEnds(const Execution& ex, std::int
 
 struct Problem;
 
-/// "random", "gradient", "demand" or "optimal"; throws InputError for any other name. `seed` drives the
+/// "random", "gradient", "demand", "eager" or "optimal"; throws InputError for any other name. `seed` drives the
 /// allocator's own coin flips (the run's --seed).
 std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem& problem, std::uint64_t seed);
 

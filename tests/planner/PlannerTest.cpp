@@ -96,7 +96,7 @@ TEST_CASE("every allocator completes every general system, never below the trans
             const std::int64_t bound = planner::transferLowerBound(p);
             CHECK(bound > 0);
             std::map<std::string, std::int64_t> transfers;
-            for (const char* allocator : {"random", "gradient", "demand", "optimal"}) {
+            for (const char* allocator : {"random", "gradient", "demand", "eager", "optimal"}) {
                 const planner::RunStats stats = plan(p, planner::Scheduler::Sync, 3, true, allocator);
                 INFO(stem << " " << dimension << "D " << allocator);
                 CHECK(stats.complete);
@@ -112,7 +112,7 @@ TEST_CASE("tight mass: every allocator completes where every target cell must en
     // round (random), and the gradient fields saw no way forward and counted to infinity.
     PlannerSystem sys("planner_general1", 2);
     for (auto [from, to] : {std::pair{"box:8x1", "box:4x1"}, std::pair{"box:6x2", "box:3x2"}, std::pair{"box:4x4", "box:4x2"}})
-        for (const char* allocator : {"random", "gradient", "demand", "optimal"})
+        for (const char* allocator : {"random", "gradient", "demand", "eager", "optimal"})
             for (std::uint64_t seed : {1, 2, 3}) {
                 const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape(from), planner::parseShape(to), std::nullopt, seed);
                 INFO(from << " -> " << to << " " << allocator << " seed " << seed);
