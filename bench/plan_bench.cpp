@@ -2,8 +2,9 @@
 // case runs in its own process, under `ulimit -v` (--cap-gib), so peak memory is per case; medians
 // of several runs are printed. Rows:
 //   fig7 K      seed 000's block experiment 6x3x2 -> 3x3x4 scaled by K (36 K^3 metamodules: 36 ..
-//               2304 in the paper, K = 31 past 10^6), intermediate, and general1 with the gradient
-//               and the demand allocators (the shape bench's best, docs/allocators.md)
+//               2304 in the paper, K = 31 past 10^6), intermediate, and general1 with the gradient,
+//               demand (the shape bench's best, docs/allocators.md) and eager (fewer rounds at scale)
+//               allocators
 //   2d          box:1000x1000 -> box:2000x500 (10^6), intermediate; 2d-g1 the same with general1
 //   3d          box:100x100x100 -> box:200x100x50 (10^6), intermediate
 //   2d-1e7      box:3163x3163 -> box:6326x1582 (10^7), intermediate
@@ -88,11 +89,11 @@ int main(int argc, char** argv) {
     for (int k : {1, 2, 3, 4, 8, 16, 22, 31}) {
         if (k > maxK) continue;
         cases.push_back({"fig7 K=" + std::to_string(k), "planner_intermediate", "box:6x3x2", "box:3x3x4", "random", k});
-        for (const char* allocator : {"gradient", "demand"}) cases.push_back({"fig7 K=" + std::to_string(k), "planner_general1", "box:6x3x2", "box:3x3x4", allocator, k});
+        for (const char* allocator : {"gradient", "demand", "eager"}) cases.push_back({"fig7 K=" + std::to_string(k), "planner_general1", "box:6x3x2", "box:3x3x4", allocator, k});
     }
     cases.push_back({"2d", "planner_intermediate", "box:1000x1000", "box:2000x500", "random"});
     cases.push_back({"3d", "planner_intermediate", "box:100x100x100", "box:200x100x50", "random"});
-    for (const char* allocator : {"gradient", "demand"}) cases.push_back({"2d-g1", "planner_general1", "box:1000x1000", "box:500x2000", allocator});
+    for (const char* allocator : {"gradient", "demand", "eager"}) cases.push_back({"2d-g1", "planner_general1", "box:1000x1000", "box:500x2000", allocator});
     if (with1e7) cases.push_back({"2d-1e7", "planner_intermediate", "box:3163x3163", "box:6326x1582", "random"});
     std::printf("planner benchmark: sync rounds, medians of %d runs (one process each, ulimit -v %.0f GiB)\n", runs, capGiB);
     std::printf("%-10s %-22s %10s %8s %8s %11s %9s %9s %10s %8s\n", "case", "system / allocator", "metamod.", "rounds", "rounds/D", "transfers", "wall s", "cpu s", "peak MiB",

@@ -1,5 +1,5 @@
 #pragma once
-// The randomizer's turn for the field allocators (gradient, demand): after a round in which
+// The randomizer's turn for the field allocators (gradient, demand, eager): after a round in which
 // nothing fired although the allocator's fields had settled, the fields see no way forward (a
 // destroyer may need a D that only a detour brings), so seed 000 §IV-B's randomizer moves
 // resources until the next creation or deletion.
