@@ -93,9 +93,12 @@ public:
             if (role & kLeaving) leaving.push_back(i);
         }
         bool moved = claim(cells, creations);
-        if (eager_) moved = draw(cells, creations) || moved;
-        moved = nextClaimed_ != claimed_ || moved;
-        claimed_.swap(nextClaimed_);
+        if (eager_) {
+            hungry_.clear();
+            for (std::size_t s = 0; s < creations.size(); ++s)
+                if (budget_[s] > 0) hungry_.push_back(creations[s]);
+            moved = spread(cells, hungry_, draw_) || moved;
+        }
         moved = spread(cells, sinks, sink_) || moved;
         moved = route(cells, leaving) || moved;
         const bool deeper = order_.update(ex);
@@ -108,7 +111,9 @@ public:
         if (stall_.active()) return stall_.wants(ex, anchor, shape);
         const auto [from, to] = transferEnds(ex, anchor, shape);  // `from` holds the C
         if (from < 0) return false;
-        const bool drawn = (claimed_[from] == kClaimed && needC_[to] < needC_[from]) || (claimed_[from] == kDrawn && draw_[to] < draw_[from]);
+        // An unclaimed C that draw_ reaches is drawn: from and to are neighbours through which the
+        // search passes, so draw_[from] is unreached only when draw_[to] is.
+        const bool drawn = claimed_[from] ? needC_[to] < needC_[from] : eager_ && draw_[to] < draw_[from];
         if (!inTarget_[from]) return drawn || sink_[to] < sink_[from];
         if (drawn) return true;
         // A C on a route makes room in the target; back in the region to delete it would only have
@@ -120,9 +125,6 @@ private:
     // role_ bits: a creation waits for this cell to be heavier; a C may come to rest here; the C
     // here must leave (it lies outside the target, or a deletion waits for it to be a D).
     static constexpr char kCreation = 1, kSink = 2, kLeaving = 4;
-    // claimed_ values: a creation claimed the C here (it moves down needC_), or (eager) it is
-    // drawn to the nearest creation whose claims are not met (it moves down draw_).
-    static constexpr char kClaimed = 1, kDrawn = 2;
     char roleOf(const Execution& ex, std::int64_t i) const {
         const BoxEngine::Value v = ex.cells()[i];
         if (!v) return 0;
@@ -149,8 +151,7 @@ private:
     }
 
     /// Hop counts from the creations into needC_, each creation claiming the kClaims C's nearest
-    /// to it that no nearer creation claimed (into nextClaimed_); a creation that has its C's
-    /// stops the search. Whether the field changed.
+    /// to it that no nearer creation claimed; a creation that has its C's stops the search.
     bool claim(const std::vector<BoxEngine::Value>& cells, const std::vector<std::int64_t>& creations) {
         next_.assign(cells.size(), kUnreached);
         std::vector<char>& claimed = nextClaimed_;
@@ -164,30 +165,11 @@ private:
             const std::int32_t s = owner_[i];
             if (next_[j] != kUnreached || budget[s] == 0) return false;
             next_[j] = next_[i] + 1, owner_[j] = s;
-            if (probe_.heavy(cells[j])) claimed[j] = kClaimed, --budget[s];
+            if (probe_.heavy(cells[j])) claimed[j] = 1, --budget[s];
             return true;
         });
-        const bool changed = next_ != needC_;
-        needC_.swap(next_);
-        return changed;
-    }
-
-    /// Hop counts from the creations whose claims are not met into draw_, through every
-    /// metamodule; every C no creation claimed is drawn down it. Whether the field changed.
-    bool draw(const std::vector<BoxEngine::Value>& cells, const std::vector<std::int64_t>& creations) {
-        next_.assign(cells.size(), kUnreached);
-        queue_.clear();
-        for (std::size_t s = 0; s < creations.size(); ++s)
-            if (budget_[s] > 0) next_[creations[s]] = 0, queue_.push_back(creations[s]);
-        std::vector<char>& claimed = nextClaimed_;
-        forEachReached(cells, [&](std::int64_t i, std::int64_t j) {
-            if (next_[j] != kUnreached) return false;
-            next_[j] = next_[i] + 1;
-            if (probe_.heavy(cells[j]) && !claimed[j]) claimed[j] = kDrawn;
-            return true;
-        });
-        const bool changed = next_ != draw_;
-        draw_.swap(next_);
+        bool changed = next_ != needC_ || claimed != claimed_;
+        needC_.swap(next_), claimed_.swap(claimed);
         return changed;
     }
 
@@ -201,7 +183,7 @@ private:
         owner_.assign(cells.size(), -1);
         queue_.clear();
         for (std::size_t s = 0; s < leaving.size(); ++s)
-            if (!claimed_[leaving[s]]) parent[leaving[s]] = -1, owner_[leaving[s]] = static_cast<std::int32_t>(s), queue_.push_back(leaving[s]);
+            if (!claimed_[leaving[s]] && !(eager_ && draw_[leaving[s]] != kUnreached)) parent[leaving[s]] = -1, owner_[leaving[s]] = static_cast<std::int32_t>(s), queue_.push_back(leaving[s]);
         forEachReached(cells, [&](std::int64_t i, std::int64_t j) {
             const std::int32_t s = owner_[i];
             if (parent[j] != -2 || done[s]) return false;
@@ -241,7 +223,7 @@ private:
     std::vector<std::int64_t> route_;
     // Buffers each round refills: allocated once, since a board-sized vector freed every round
     // comes back as fresh pages the kernel must fault in and zero.
-    std::vector<std::int64_t> creations_, sinks_, leaving_, parent_, nextRoute_;
+    std::vector<std::int64_t> creations_, sinks_, leaving_, hungry_, parent_, nextRoute_;
     std::vector<char> nextClaimed_, done_;
     std::vector<int> budget_;
     std::vector<std::uint32_t> needC_, draw_, sink_, next_;
