@@ -26,10 +26,10 @@
 // hold as proved for any scheduler.
 
 #include "planner/DeletionOrder.h"
+#include "planner/ChangedCells.h"
 #include "planner/Execution.h"
 
 #include <algorithm>
-#include <cstring>
 
 namespace holon::planner {
 
@@ -83,14 +83,7 @@ bool DeletionOrder::update(const Execution& ex) {
         mark_[i] = 1, dirty_.push_back(i);
     };
     // Only a metamodule whose own cell or a neighbour's values changed derives its values again.
-    const std::size_t n = cells.size();
-    const auto* now = reinterpret_cast<const unsigned char*>(cells.data());
-    for (std::size_t w = 0; w < n; w += 8) {
-        const std::size_t len = std::min<std::size_t>(8, n - w);
-        if (std::memcmp(now + w, seen_.data() + w, len) == 0) continue;
-        for (std::size_t x = w; x < w + len; ++x)
-            if (cells[x] != seen_[x]) seen_[x] = cells[x], dirty(static_cast<std::int64_t>(x));
-    }
+    forEachChangedCell(cells, seen_, [&](std::int64_t x, BoxEngine::Value) { dirty(x); });
     updates_.clear();
     for (std::int64_t i : dirty_) {
         mark_[i] = 0;

@@ -5,10 +5,9 @@
 // Which resource is heavy or light, and which rules create or delete, is read off the compiled
 // rule tables: nothing here names a rule of a particular system.
 
+#include "planner/ChangedCells.h"
 #include "planner/Problem.h"
 
-#include <algorithm>
-#include <cstring>
 #include <deque>
 #include <vector>
 
@@ -48,24 +47,6 @@ private:
     std::vector<char> carrier_;  // per input combination and state: a transfer's pattern cell accepts it
     std::size_t alphabet_ = 0;
 };
-
-/// Calls visit(x) for every cell x whose value differs from seen[x] and updates seen[x]; eight
-/// cells that did not change cost one comparison. How the allocators find what changed in a round
-/// without a pass over every cell's neighbourhood.
-template <class Visit>
-void forEachChangedCell(const std::vector<BoxEngine::Value>& cells, std::vector<BoxEngine::Value>& seen, Visit&& visit) {
-    static_assert(sizeof(BoxEngine::Value) == 1);
-    const std::size_t n = cells.size();
-    for (std::size_t w = 0; w < n; w += 8) {
-        const std::size_t len = std::min<std::size_t>(8, n - w);
-        if (std::memcmp(cells.data() + w, seen.data() + w, len) == 0) continue;
-        for (std::size_t x = w; x < w + len; ++x)
-            if (cells[x] != seen[x]) {
-                visit(static_cast<std::int64_t>(x), seen[x]);
-                seen[x] = cells[x];
-            }
-    }
-}
 
 /// The cells whose demand (needsHeavier, needsLighter) a change of one cell can alter: the cells of
 /// every motion instance that reads it and can tell its old state from its new one, or the states
