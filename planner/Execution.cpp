@@ -258,6 +258,13 @@ void Execution::pipeline(const RunObserver& observer, std::vector<std::int64_t>&
     }
 }
 
+Execution::Waiting Execution::waiting() const {
+    Waiting w;
+    for (std::uint64_t key : plannerList_)  // may hold stale keys; an enabled instance is listed once
+        if (enabled(anchorOf(key), shapeOf(key))) ++w.enabled, w.held += !allocator_->releases(*this, anchorOf(key), shapeOf(key));
+    return w;
+}
+
 bool Execution::atGoal(std::int64_t cell, BoxEngine::Value v) const {
     const std::uint8_t combo = engine().combo(cell);
     return combo == BoxEngine::kOutside || problem_->tables->test(problem_->goal, combo, v);

@@ -70,6 +70,13 @@ public:
     const BoxEngine& engine() const { return *problem_->engine; }
     const std::vector<BoxEngine::Value>& cells() const { return cells_; }
     const RunStats& stats() const { return stats_; }
+    /// The planner instances (not transfers) enabled now, and how many of them the allocator holds
+    /// back (Allocator::releases): where a slow plan waits (completion.csv). A pass over the
+    /// enabled instances; nothing changes.
+    struct Waiting {
+        std::int64_t enabled = 0, held = 0;
+    };
+    Waiting waiting() const;
     bool enabled(std::int64_t anchor, int shape) const {
         const auto [word, bit] = bitOf(anchor, shape);
         return (bits_[word] & bit) != 0;

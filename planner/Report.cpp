@@ -38,7 +38,7 @@ Report::Report(const Problem& problem, const Execution& execution, ReportOptions
     if (!options_.outDir.empty()) {
         rules::prepareOutputDir(options_.outOption, options_.outDir);
         csv_.emplace(rules::OutputFile(options_.outOption, options_.outDir + "/completion.csv").open());
-        csv_->stream() << "round,steps,creations,deletions,transfers,creation_completion,deletion_completion\n";
+        csv_->stream() << "round,steps,creations,deletions,transfers,creation_completion,deletion_completion,planner_enabled,planner_held\n";
         rules::OutputFile(options_.outOption, options_.outDir + "/snapshot-start.svg").write(drawBoard(*problem_, execution_->cells(), "start"));
     }
 }
@@ -59,8 +59,9 @@ void Report::roundEnd(const RunStats& stats) {
     lastRound_ = stats.rounds;
     const double created = fraction(stats.creations, problem_->toCreate), deleted = fraction(stats.deletions, problem_->toDelete);
     if (csv_ && (stats.steps != lastStep_)) {
+        const Execution::Waiting waiting = execution_->waiting();
         csv_->stream() << stats.rounds << ',' << stats.steps << ',' << stats.creations << ',' << stats.deletions << ',' << stats.transfers << ',' << created << ','
-                       << deleted << '\n';
+                       << deleted << ',' << waiting.enabled << ',' << waiting.held << '\n';
         lastStep_ = stats.steps;
     }
     const double done = fraction(stats.creations + stats.deletions, problem_->toCreate + problem_->toDelete);

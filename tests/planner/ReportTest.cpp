@@ -106,6 +106,55 @@ TEST_CASE("an interrupted plan's files are whole and the summary says so, an aba
     fs::remove_all(dir);
 }
 
+TEST_CASE("completion.csv says where the plan waits: the planner instances enabled and those the allocator holds back") {
+    const fs::path dir = fs::temp_directory_path() / "holon_report_waiting_test";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    // general1 under eager, whose deletion order holds deletions back, and the intermediate
+    // planner under the random allocator, which holds nothing back.
+    for (const auto& [system, allocatorName] : {std::pair<std::string, std::string>{"planner_general1", "eager"}, {"planner_intermediate", "random"}}) {
+        CAPTURE(system);
+        PlannerSystem sys(system, 3);
+        const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape("box:6x3x2", 2), planner::parseShape("box:3x3x4", 2), std::nullopt, 1);
+        auto allocator = planner::makeAllocator(allocatorName, p, 1);
+        planner::Execution ex(p, *allocator, {});
+        planner::Report report(p, ex, {(dir / system).string(), "", "--out", "--plan-out", false});
+        const planner::BoxEngine& engine = *p.engine;
+        std::int64_t mismatches = 0;
+        planner::RunObserver observer;
+        observer.roundEnd = [&](const planner::RunStats& stats) {
+            report.roundEnd(stats);
+            // The same count, instance by instance over the whole board.
+            planner::Execution::Waiting all;
+            for (std::int64_t a = 0; a < static_cast<std::int64_t>(p.cells.size()); ++a)
+                for (int s = 0; s < engine.shapeCount(); ++s)
+                    if (engine.kind(s) != planner::ShapeKind::Transfer && ex.enabled(a, s)) ++all.enabled, all.held += !allocator->releases(ex, a, s);
+            const planner::Execution::Waiting listed = ex.waiting();
+            mismatches += listed.enabled != all.enabled || listed.held != all.held;
+            return true;
+        };
+        const planner::RunStats stats = ex.run(observer);
+        report.finish(stats, -1);
+        REQUIRE(stats.complete);
+        CHECK(mismatches == 0);
+        std::istringstream csv(rules::readTextFile((dir / system / "completion.csv").string()));
+        std::string line;
+        std::getline(csv, line);
+        CHECK(line.ends_with(",planner_enabled,planner_held"));
+        std::int64_t rows = 0, heldRows = 0;
+        while (std::getline(csv, line)) {
+            const auto comma = line.rfind(',');
+            const std::int64_t held = std::stoll(line.substr(comma + 1)), enabled = std::stoll(line.substr(line.rfind(',', comma - 1) + 1));
+            CHECK(held <= enabled);
+            ++rows, heldRows += held > 0;
+        }
+        CHECK(rows > 10);
+        if (allocatorName == "random") CHECK(heldRows == 0);
+        else CHECK(heldRows > rows / 4);
+    }
+    fs::remove_all(dir);
+}
+
 TEST_CASE("plan outputs that cannot be written: refused before the run, or reported after it") {
     PlannerSystem sys("planner_intermediate", 2);
     const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape("box:4x2"), planner::parseShape("box:2x4"), std::nullopt, 1);
