@@ -5,7 +5,6 @@
 // Which resource is heavy or light, and which rules create or delete, is read off the compiled
 // rule tables: nothing here names a rule of a particular system.
 
-#include "planner/ChangedCells.h"
 #include "planner/Problem.h"
 
 #include <deque>

@@ -13,6 +13,7 @@
 // rule tables: nothing here names a rule of a particular system.
 
 #include "planner/Allocator.h"
+#include "planner/ChangedCells.h"
 #include "planner/DeletionOrder.h"
 #include "planner/DemandProbe.h"
 #include "planner/Execution.h"
