@@ -178,7 +178,14 @@ int run(const PlanArgs& a) {
     const auto during = [&](const std::string& phase) {
         if (budget.expired()) throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached while " + phase + ", before the plan ran; nothing was written; raise --timeout");
     };
-    // Every output path is checked before any work: a finished plan is never lost to a typo.
+    // Names and output paths are checked before any work: a finished plan is never lost to a
+    // typo, and a misspelt name does not wait for a large board to be laid out.
+    const planner::AllocatorKind allocatorKind = planner::allocatorKind(a.allocator);
+    planner::RunOptions options;
+    if (a.scheduler == "sync") options.scheduler = planner::Scheduler::Sync;
+    else if (a.scheduler == "async") options.scheduler = planner::Scheduler::Async;
+    else if (a.scheduler == "adversarial") options.scheduler = planner::Scheduler::Adversarial;
+    else throw InputError("--scheduler '" + a.scheduler + "': choose sync, async or adversarial");
     if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
     if (!a.planOut.empty()) rules::OutputFile("--plan-out", a.planOut);
     // The viewer reads the plan back from its file once it is complete.
@@ -203,14 +210,9 @@ int run(const PlanArgs& a) {
     rules::Model model(*system, lattice);
     const std::optional<planner::Vec> seedCell = parseCell(a.seedCell, from.dimension);
     planner::Problem problem = planner::makeProblem(model, std::move(from), std::move(to), seedCell, a.seed, memory);
-    std::unique_ptr<planner::Allocator> allocator = planner::makeAllocator(a.allocator, problem, a.seed);
+    std::unique_ptr<planner::Allocator> allocator = planner::makeAllocator(allocatorKind, problem, a.seed);
     during("laying out the board");
 
-    planner::RunOptions options;
-    if (a.scheduler == "sync") options.scheduler = planner::Scheduler::Sync;
-    else if (a.scheduler == "async") options.scheduler = planner::Scheduler::Async;
-    else if (a.scheduler == "adversarial") options.scheduler = planner::Scheduler::Adversarial;
-    else throw InputError("--scheduler '" + a.scheduler + "': choose sync, async or adversarial");
     options.seed = a.seed;
     options.budget = budget || Budget::maxSteps(a.maxSteps) || Budget::maxRounds(a.maxRounds);
 
@@ -322,7 +324,7 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--from", a->from, "start shape")->required();
     sub->add_option("--to", a->to, "target shape")->required();
     sub->add_option("--scale", a->scale, "every cell becomes a KxK (3D: KxKxK) block (1 to 2^29: beyond it no cell fits the coordinate range)")->check(CLI::Range(1, rules::kMaxCoordinate));
-    sub->add_option("--allocator", a->allocator, "resource allocator for general_n: random, gradient, demand, eager or optimal (default " + a->allocator + ")");
+    sub->add_option("--allocator", a->allocator, "resource allocator for general_n: " + planner::allocatorChoices() + " (default " + a->allocator + ")");
     sub->add_option("--scheduler", a->scheduler, "sync (rounds, default), async (one instance at a time) or adversarial");
     sub->add_option("--seed", a->seed, "random seed (default " + std::to_string(a->seed) + ")");
     sub->add_option("--seed-cell", a->seedCell, "the seed metamodule x,y[,z] (default: the overlap cell nearest its centre)");

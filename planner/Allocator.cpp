@@ -6,6 +6,8 @@
 #include "rules/Error.h"
 #include "rules/Parameter.h"
 
+#include <iterator>
+
 namespace holon::planner {
 
 std::unique_ptr<Allocator> randomAllocator(std::uint64_t seed);
@@ -29,13 +31,41 @@ std::pair<std::int64_t, std::int64_t> transferEnds(const Execution& ex, std::int
     return {from, to};
 }
 
-std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem& problem, std::uint64_t seed) {
-    if (name == "random") return randomAllocator(seed);
-    if (name == "gradient") return gradientAllocator(problem, seed);
-    if (name == "optimal") return optimalAllocator(problem, seed);
-    if (name == "demand") return demandAllocator(problem, seed, false);
-    if (name == "eager") return demandAllocator(problem, seed, true);
-    throw InputError(rules::parameterName(rules::Parameter::Allocator) + " '" + name + "': choose random, gradient, demand, eager or optimal", rules::Parameter::Allocator);
+namespace {
+constexpr std::pair<AllocatorKind, const char*> kNames[] = {{AllocatorKind::Random, "random"},
+                                                            {AllocatorKind::Gradient, "gradient"},
+                                                            {AllocatorKind::Demand, "demand"},
+                                                            {AllocatorKind::Eager, "eager"},
+                                                            {AllocatorKind::Optimal, "optimal"}};
+}  // namespace
+
+std::string allocatorChoices() {
+    std::string choices;
+    const std::size_t n = std::size(kNames);
+    for (std::size_t k = 0; k < n; ++k) {
+        if (k > 0) choices += k + 1 == n ? " or " : ", ";
+        choices += kNames[k].second;
+    }
+    return choices;
 }
+
+AllocatorKind allocatorKind(const std::string& name) {
+    for (const auto& [kind, known] : kNames)
+        if (name == known) return kind;
+    throw InputError(rules::parameterName(rules::Parameter::Allocator) + " '" + name + "': choose " + allocatorChoices(), rules::Parameter::Allocator);
+}
+
+std::unique_ptr<Allocator> makeAllocator(AllocatorKind kind, const Problem& problem, std::uint64_t seed) {
+    switch (kind) {
+    case AllocatorKind::Random: return randomAllocator(seed);
+    case AllocatorKind::Gradient: return gradientAllocator(problem, seed);
+    case AllocatorKind::Demand: return demandAllocator(problem, seed, false);
+    case AllocatorKind::Eager: return demandAllocator(problem, seed, true);
+    case AllocatorKind::Optimal: return optimalAllocator(problem, seed);
+    }
+    throw InternalError("makeAllocator: an AllocatorKind out of range");
+}
+
+std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem& problem, std::uint64_t seed) { return makeAllocator(allocatorKind(name), problem, seed); }
 
 }  // namespace holon::planner

@@ -38,8 +38,23 @@ std::pair<std::int64_t, std::int64_t> transferEnds(const Execution& ex, std::int
 
 struct Problem;
 
-/// "random", "gradient", "demand", "eager" or "optimal"; throws InputError for any other name. `seed` drives the
-/// allocator's own coin flips (the run's --seed).
+/// The allocators `holon plan --allocator` offers.
+enum class AllocatorKind { Random,
+                           Gradient,
+                           Demand,
+                           Eager,
+                           Optimal };
+
+/// The allocator a name denotes ("random", "gradient", "demand", "eager" or "optimal"); throws
+/// InputError, naming --allocator and the choices, for any other name. Callers parse the name
+/// before any work, so a typo costs nothing.
+AllocatorKind allocatorKind(const std::string& name);
+
+/// The names allocatorKind accepts, for help texts: "random, gradient, demand, eager or optimal".
+std::string allocatorChoices();
+
+/// `seed` drives the allocator's own coin flips (the run's --seed).
+std::unique_ptr<Allocator> makeAllocator(AllocatorKind kind, const Problem& problem, std::uint64_t seed);
 std::unique_ptr<Allocator> makeAllocator(const std::string& name, const Problem& problem, std::uint64_t seed);
 
 /// Whether the system moves a resource by transfers: the plans the transport bound is about.

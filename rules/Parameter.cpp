@@ -31,7 +31,7 @@ std::string apiParameterName(Parameter p) {
     case Parameter::Region: return "rules::Region";
     case Parameter::Rules: return "rules::Model";
     case Parameter::Scale: return "scale (parseShape)";
-    case Parameter::Allocator: return "makeAllocator's name";
+    case Parameter::Allocator: return "allocatorKind's name";
     case Parameter::Lose: return "FaultOptions::losses";
     case Parameter::HexDisks: return "hex::DiskMetamodules";
     case Parameter::SculptFrom: return "SculptSetup::from";
