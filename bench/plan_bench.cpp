@@ -14,8 +14,10 @@
 // B/mm is the peak resident memory per metamodule of the start.
 // A run stops at --timeout seconds of wall time (default 60, the target) and is then printed
 // NOT COMPLETE with the rounds it made.
-// Usage: plan_bench [--runs N] [--max-k K] [--cap-gib G] [--timeout S] [--with-1e7] [--only PREFIX]
-//        plan_bench --case RULES FROM TO SCALE ALLOCATOR TIMEOUT
+// --threads N sets planner::RunOptions::threads (default 2: a round's independent work on two
+// threads on large boards; 1 runs on one, with the same plans).
+// Usage: plan_bench [--runs N] [--max-k K] [--cap-gib G] [--timeout S] [--threads N] [--with-1e7] [--only PREFIX]
+//        plan_bench [--threads N] --case RULES FROM TO SCALE ALLOCATOR TIMEOUT
 
 #include "PlanSupport.h"
 
@@ -36,12 +38,13 @@ struct Case {
     int scale = 1;
 };
 
-void runCase(const Case& c, double timeout) {
+void runCase(const Case& c, double timeout, int threads) {
     const auto start = std::chrono::steady_clock::now();
     auto r = bench::layoutPlan(c.rules, c.from, c.to, c.scale, 1);
     auto allocator = planner::makeAllocator(c.allocator, r->problem, 1);
     planner::RunOptions options;
     options.budget = Budget(timeout);
+    options.threads = threads;
     r->stats = planner::Execution(r->problem, *allocator, options).run();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     rusage usage{};
@@ -62,14 +65,14 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    int runs = 3, maxK = 31;
+    int runs = 3, maxK = 31, threads = planner::RunOptions{}.threads;
     double capGiB = 12, timeout = 60;
     bool with1e7 = false;
     std::string only;
     for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
         if (flag == "--case" && i + 6 < argc) {
-            runCase({"", argv[i + 1], argv[i + 2], argv[i + 3], argv[i + 5], std::atoi(argv[i + 4])}, std::atof(argv[i + 6]));
+            runCase({"", argv[i + 1], argv[i + 2], argv[i + 3], argv[i + 5], std::atoi(argv[i + 4])}, std::atof(argv[i + 6]), threads);
             return 0;
         }
         if (flag == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
@@ -77,11 +80,12 @@ int main(int argc, char** argv) {
         else if (flag == "--cap-gib" && i + 1 < argc) capGiB = std::atof(argv[++i]);
         else if (flag == "--timeout" && i + 1 < argc) timeout = std::atof(argv[++i]);
         else if (flag == "--only" && i + 1 < argc) only = argv[++i];
+        else if (flag == "--threads" && i + 1 < argc) threads = std::max(1, std::atoi(argv[++i]));
         else if (flag == "--with-1e7") with1e7 = true;
         else {
             std::fprintf(stderr,
-                         "usage: plan_bench [--runs N] [--max-k K] [--cap-gib G] [--timeout S] [--with-1e7] [--only PREFIX]\n"
-                         "       plan_bench --case RULES FROM TO SCALE ALLOCATOR TIMEOUT\n");
+                         "usage: plan_bench [--runs N] [--max-k K] [--cap-gib G] [--timeout S] [--threads N] [--with-1e7] [--only PREFIX]\n"
+                         "       plan_bench [--threads N] --case RULES FROM TO SCALE ALLOCATOR TIMEOUT\n");
             return 2;
         }
     }

@@ -11,7 +11,7 @@
 #include "checker/Explorer.h"
 
 #include "checker/ConnectedSets.h"
-#include "checker/WorkerPool.h"
+#include "rules/WorkerPool.h"
 #include "rules/Error.h"
 #include "rules/Parameter.h"
 
@@ -218,7 +218,7 @@ void Explorer::legalByIndex(std::uint64_t total, std::uint64_t batch, Sink& foun
                 if (ev.legal()) found(thread, job, index);
         }
     };
-    WorkerPool(std::max(1, options_.limits.threads)).run(work);
+    rules::WorkerPool(std::max(1, options_.limits.threads)).run(work);
 }
 
 template <class Sink, class Stop>
@@ -291,7 +291,7 @@ void Explorer::legalByConnectedSets(const rules::CellPredicate& connected, Sink&
             });
         }
     };
-    WorkerPool(std::max(1, options_.limits.threads)).run(work);
+    rules::WorkerPool(std::max(1, options_.limits.threads)).run(work);
 }
 
 bool Explorer::legalCells(const CellValue* cells, std::uint64_t* occupied) const {
@@ -541,7 +541,7 @@ const ExploreStats& Explorer::explore() {
     constexpr std::uint64_t kRoundBytes = 32ull << 20;
     std::vector<Worker> workers;
     for (int t = 0; t < threads; ++t) workers.emplace_back(constraints_, store_.layout().words(), words_ != nullptr);
-    WorkerPool pool(threads);
+    rules::WorkerPool pool(threads);
     // A level's states are kept by the worker that found them, and each worker expands a slice of
     // its own list first (their words were written from its core, so they are in its cache),
     // then helps with the others'. Threads take slices a piece at a time: the cores of a shared

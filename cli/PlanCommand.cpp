@@ -75,6 +75,7 @@ struct PlanArgs {
     std::optional<std::uint64_t> faultSeed;
     int scale = 1;
     std::uint64_t seed = planner::RunOptions{}.seed;
+    int threads = planner::RunOptions{}.threads;
     std::uint64_t maxSteps = 0, maxRounds = 0;
     double timeout = 0;  // 0: the option left out, no limit
     std::uint64_t memoryMiB = kDefaultMemoryMiB;
@@ -214,6 +215,7 @@ int run(const PlanArgs& a) {
     during("laying out the board");
 
     options.seed = a.seed;
+    options.threads = a.threads;
     options.budget = budget || Budget::maxSteps(a.maxSteps) || Budget::maxRounds(a.maxRounds);
 
     planner::FaultOptions faultOptions;
@@ -338,6 +340,7 @@ Run addPlanCommand(CLI::App& app) {
     addCap(sub, "--max-rounds", a->maxRounds, "rounds");
     addTimeout(sub, a->timeout, "the plan so far is written");
     addMemory(sub, a->memoryMiB, "checked before the shapes and the board are made");
+    addThreads(sub, a->threads, "for a round's independent work on boards of 2^17 cells or more (at most 2 are used; the plan is the same for any number)");
     sub->add_option("--trace-out", a->traceOut, "with --check: write the violating round as an ITF JSON trace (default DIR/violation.itf.json with --out)");
     sub->add_option("--lose", a->lose, "fault: lose the metamodule at x,y[,z] after round ROUND (ROUND:x,y[,z]; repeatable); the run goes on when seed 000's lemmas still cover it, else stops and names what the loss broke (exit 1)");
     sub->add_option("--lose-random", a->loseRandom, "fault: lose a metamodule drawn at random (--fault-seed) after round ROUND (repeatable)");

@@ -82,7 +82,11 @@ public:
             for (std::int64_t d : stencil_.steps(was, cells[x]))
                 if (const std::int64_t i = x + d; i >= 0 && i < size && !stale_[i]) stale_[i] = 1, staleList_.push_back(i);
         });
-        for (std::int64_t i : staleList_) role_[i] = roleOf(ex, i), stale_[i] = 0;
+        // Each half of the list writes only its own cells' roles.
+        const std::size_t stale = staleList_.size();
+        ex.together([&](int t) {
+            for (std::size_t k = t == 0 ? 0 : stale / 2, end = t == 0 ? stale / 2 : stale; k < end; ++k) role_[staleList_[k]] = roleOf(ex, staleList_[k]), stale_[staleList_[k]] = 0;
+        });
         staleList_.clear();
         std::vector<std::int64_t>&creations = creations_, &sinks = sinks_, &leaving = leaving_;
         creations.clear(), sinks.clear(), leaving.clear();
@@ -94,17 +98,25 @@ public:
             if (role & kSink) sinks.push_back(i);
             if (role & kLeaving) leaving.push_back(i);
         }
-        bool moved = claim(cells, creations);
-        if (eager_) {
-            hungry_.clear();
-            for (std::size_t s = 0; s < creations.size(); ++s)
-                if (budget_[s] > 0) hungry_.push_back(creations[s]);
-            moved = spread(cells, hungry_, draw_) || moved;
-        }
-        moved = spread(cells, sinks, sink_) || moved;
-        moved = route(cells, leaving) || moved;
-        const bool deeper = order_.update(ex);
-        return stall_.update(ex, moved || deeper);
+        // The sink field and the deletion order read nothing the other searches write: on a large
+        // board they run on a second thread (Execution::together).
+        bool moved[2] = {false, false};
+        ex.together([&](int t) {
+            if (t == 1) {
+                moved[1] = spread(cells, sinks, sink_, search_[1]);
+                moved[1] = order_.update(ex) || moved[1];
+                return;
+            }
+            moved[0] = claim(cells, creations);
+            if (eager_) {
+                hungry_.clear();
+                for (std::size_t s = 0; s < creations.size(); ++s)
+                    if (budget_[s] > 0) hungry_.push_back(creations[s]);
+                moved[0] = spread(cells, hungry_, draw_, search_[0]) || moved[0];
+            }
+            moved[0] = route(cells, leaving) || moved[0];
+        });
+        return stall_.update(ex, moved[0] || moved[1]);
     }
 
     bool releases(const Execution& ex, std::int64_t anchor, int shape) const override { return stall_.active() || order_.releases(ex, anchor, shape); }
@@ -137,40 +149,49 @@ private:
         return role;
     }
 
+    /// A breadth-first search's own buffers: the field being computed and the queue.
+    struct Search {
+        std::vector<std::uint32_t> next;
+        std::vector<std::int64_t> queue;
+    };
+
     /// Hop counts through occupied cells from `sources` into `field`; whether any changed.
-    bool spread(const std::vector<BoxEngine::Value>& cells, const std::vector<std::int64_t>& sources, std::vector<std::uint32_t>& field) {
-        next_.assign(cells.size(), kUnreached);
-        queue_.clear();
-        for (std::int64_t i : sources) next_[i] = 0, queue_.push_back(i);
-        forEachReached(cells, [&](std::int64_t i, std::int64_t j) {
-            if (next_[j] != kUnreached) return false;
-            next_[j] = next_[i] + 1;
+    bool spread(const std::vector<BoxEngine::Value>& cells, const std::vector<std::int64_t>& sources, std::vector<std::uint32_t>& field, Search& search) {
+        std::vector<std::uint32_t>& next = search.next;
+        next.assign(cells.size(), kUnreached);
+        search.queue.clear();
+        for (std::int64_t i : sources) next[i] = 0, search.queue.push_back(i);
+        forEachReached(cells, search.queue, [&](std::int64_t i, std::int64_t j) {
+            if (next[j] != kUnreached) return false;
+            next[j] = next[i] + 1;
             return true;
         });
-        const bool changed = next_ != field;
-        field.swap(next_);
+        const bool changed = next != field;
+        field.swap(next);
         return changed;
     }
 
     /// Hop counts from the creations into needC_, each creation claiming the kClaims C's nearest
     /// to it that no nearer creation claimed; a creation that has its C's stops the search.
     bool claim(const std::vector<BoxEngine::Value>& cells, const std::vector<std::int64_t>& creations) {
-        next_.assign(cells.size(), kUnreached);
+        std::vector<std::uint32_t>& next = search_[0].next;
+        std::vector<std::int64_t>& queue = search_[0].queue;
+        next.assign(cells.size(), kUnreached);
         std::vector<char>& claimed = nextClaimed_;
         claimed.assign(cells.size(), 0);
         std::vector<int>& budget = budget_;
         budget.assign(creations.size(), kClaims);
-        queue_.clear();
-        for (std::size_t s = 0; s < creations.size(); ++s) next_[creations[s]] = 0, owner_[creations[s]] = static_cast<std::int32_t>(s), queue_.push_back(creations[s]);
-        forEachReached(cells, [&](std::int64_t i, std::int64_t j) {
+        queue.clear();
+        for (std::size_t s = 0; s < creations.size(); ++s) next[creations[s]] = 0, owner_[creations[s]] = static_cast<std::int32_t>(s), queue.push_back(creations[s]);
+        forEachReached(cells, queue, [&](std::int64_t i, std::int64_t j) {
             const std::int32_t s = owner_[i];
-            if (next_[j] != kUnreached || budget[s] == 0) return false;
-            next_[j] = next_[i] + 1, owner_[j] = s;
+            if (next[j] != kUnreached || budget[s] == 0) return false;
+            next[j] = next[i] + 1, owner_[j] = s;
             if (probe_.heavy(cells[j])) claimed[j] = 1, --budget[s];
             return true;
         });
-        bool changed = next_ != needC_ || claimed != claimed_;
-        needC_.swap(next_), claimed_.swap(claimed);
+        bool changed = next != needC_ || claimed != claimed_;
+        needC_.swap(next), claimed_.swap(claimed);
         return changed;
     }
 
@@ -182,11 +203,12 @@ private:
         // comparing board-sized arrays was most of its time (block at K = 16: 0.51 -> 0.014 s).
         if (++epoch_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), epoch_ = 1;
         done_.assign(leaving.size(), 0);
-        paths_.clear(), queue_.clear();
+        std::vector<std::int64_t>& queue = search_[0].queue;
+        paths_.clear(), queue.clear();
         for (std::size_t s = 0; s < leaving.size(); ++s)
             if (!claimed_[leaving[s]] && !(eager_ && draw_[leaving[s]] != kUnreached))
-                parent_[leaving[s]] = -1, owner_[leaving[s]] = static_cast<std::int32_t>(s), stamp_[leaving[s]] = epoch_, queue_.push_back(leaving[s]);
-        forEachReached(cells, [&](std::int64_t i, std::int64_t j) {
+                parent_[leaving[s]] = -1, owner_[leaving[s]] = static_cast<std::int32_t>(s), stamp_[leaving[s]] = epoch_, queue.push_back(leaving[s]);
+        forEachReached(cells, queue, [&](std::int64_t i, std::int64_t j) {
             const std::int32_t s = owner_[i];
             if (stamp_[j] == epoch_ || done_[s]) return false;
             parent_[j] = i, owner_[j] = s, stamp_[j] = epoch_;
@@ -206,16 +228,16 @@ private:
         return changed;
     }
 
-    /// Breadth-first from queue_: offers every occupied neighbour j of a queued cell i to
+    /// Breadth-first from `queue`: offers every occupied neighbour j of a queued cell i to
     /// `enter(i, j)`, which queues j by returning true.
     template <class F>
-    void forEachReached(const std::vector<BoxEngine::Value>& cells, F&& enter) {
+    void forEachReached(const std::vector<BoxEngine::Value>& cells, std::vector<std::int64_t>& queue, F&& enter) const {
         const Board& board = *problem_->board;
         const int degree = board.lattice().degree();
-        for (std::size_t k = 0; k < queue_.size(); ++k) {
-            const std::int64_t i = queue_[k];
+        for (std::size_t k = 0; k < queue.size(); ++k) {
+            const std::int64_t i = queue[k];
             for (int d = 0; d < degree; ++d)
-                if (const std::int64_t j = i + board.step(d); cells[j] && enter(i, j)) queue_.push_back(j);
+                if (const std::int64_t j = i + board.step(d); cells[j] && enter(i, j)) queue.push_back(j);
         }
     }
 
@@ -241,8 +263,8 @@ private:
     std::vector<char> onPath_;
     std::vector<std::pair<std::int64_t, std::int64_t>> paths_;
     std::vector<int> budget_;
-    std::vector<std::uint32_t> needC_, draw_, sink_, next_;
-    std::vector<std::int64_t> queue_;
+    std::vector<std::uint32_t> needC_, draw_, sink_;
+    Search search_[2];  // [0]: the claim, draw and route searches; [1]: the sink field's, beside them
     StallFallback stall_;
 };
 

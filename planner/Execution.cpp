@@ -32,6 +32,10 @@ std::uint64_t keyOf(std::int64_t anchor, int shape) { return (static_cast<std::u
 // The scheduler visits cells in random order, so nearly every visit misses the cache; loops over
 // such visits ask for the memory of the visit kAhead places later first.
 constexpr std::size_t kAhead = 8;
+// Boards from which a round's work is shared between two threads, and the least number of anchors
+// to re-evaluate that is split between them (measured: bench/plan_bench, block at K = 8 to 24).
+constexpr std::int64_t kParallelCells = std::int64_t{1} << 17;
+constexpr std::size_t kParallelAnchors = 4096;
 }  // namespace
 
 void Execution::prefetchAnchor(std::int64_t anchor) const {
@@ -56,13 +60,18 @@ Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions op
             for (std::int64_t step : engine.cellSteps(sh)) pipelined_.push_back({sh, step});
     for (std::int64_t a = 0; a < static_cast<std::int64_t>(n); ++a) {
         offGoal_ += !atGoal(a, cells_[a]);
-        if (engine.combo(a) != BoxEngine::kOutside && cells_[a] != 0) recheck(a);
+        if (engine.combo(a) != BoxEngine::kOutside && cells_[a] != 0) stats_.evaluations += recheck(a, plannerList_, transferList_);
+    }
+    // A thread's wake-up costs some microseconds: only boards whose rounds take milliseconds get one.
+    if (options_.threads > 1 && static_cast<std::int64_t>(n) >= kParallelCells) {
+        workers_ = std::make_unique<rules::WorkerPool>(2);
+        if (workers_->threads() < 2) workers_.reset();  // the system would not start one
     }
 }
 
-void Execution::recheck(std::int64_t anchor) {
+std::int64_t Execution::recheck(std::int64_t anchor, std::vector<std::uint64_t>& planners, std::vector<std::uint64_t>& transfers) {
     std::uint64_t now[kMaxShapes / 64] = {};
-    stats_.evaluations += engine().forEachMatchAt(cells_.data(), anchor, [&](int s) { now[s >> 6] |= std::uint64_t{1} << (s & 63); });
+    const std::int64_t evaluations = engine().forEachMatchAt(cells_.data(), anchor, [&](int s) { now[s >> 6] |= std::uint64_t{1} << (s & 63); });
     std::uint64_t* bits = bits_.data() + 2 * static_cast<std::size_t>(anchor) * static_cast<std::size_t>(words_);
     for (int w = 0; w < words_; ++w) {
         bits[2 * w] = now[w];
@@ -71,9 +80,16 @@ void Execution::recheck(std::int64_t anchor) {
         while (fresh) {
             const int s = w * 64 + std::countr_zero(fresh);
             fresh &= fresh - 1;
-            (engine().kind(s) == ShapeKind::Transfer ? transferList_ : plannerList_).push_back(keyOf(anchor, s));
+            (engine().kind(s) == ShapeKind::Transfer ? transfers : planners).push_back(keyOf(anchor, s));
         }
     }
+    return evaluations;
+}
+
+void Execution::together(const std::function<void(int)>& job) const {
+    if (workers_) return workers_->run(job);
+    job(0);
+    job(1);
 }
 
 void Execution::recheckAround(const std::vector<std::int64_t>& changed) {
@@ -85,10 +101,29 @@ void Execution::recheckAround(const std::vector<std::int64_t>& changed) {
             const std::int64_t a = c - r;
             if (stamp_[a] != clock_) stamp_[a] = clock_, anchors_.push_back(a);  // recheck skips padding
         }
-    for (std::size_t k = 0; k < anchors_.size(); ++k) {
-        if (k + kAhead < anchors_.size()) prefetchAnchor(anchors_[k + kAhead]);
-        recheck(anchors_[k]);
+    // Anchors are distinct, so the halves write disjoint bits; the second half lists its newly
+    // enabled instances apart and they are appended after the first half's, in anchor order.
+    const std::size_t n = anchors_.size(), half = workers_ && n >= kParallelAnchors ? n / 2 : n;
+    std::int64_t evaluations[2] = {0, 0};
+    auto recheckRange = [&](std::size_t from, std::size_t to, std::vector<std::uint64_t>& planners, std::vector<std::uint64_t>& transfers) -> std::int64_t {
+        std::int64_t e = 0;
+        for (std::size_t k = from; k < to; ++k) {
+            if (k + kAhead < to) prefetchAnchor(anchors_[k + kAhead]);
+            e += recheck(anchors_[k], planners, transfers);
+        }
+        return e;
+    };
+    if (half == n) {
+        evaluations[0] = recheckRange(0, n, plannerList_, transferList_);
+    } else {
+        laterPlanners_.clear(), laterTransfers_.clear();
+        together([&](int t) {
+            evaluations[t] = t == 0 ? recheckRange(0, half, plannerList_, transferList_) : recheckRange(half, n, laterPlanners_, laterTransfers_);
+        });
+        plannerList_.insert(plannerList_.end(), laterPlanners_.begin(), laterPlanners_.end());
+        transferList_.insert(transferList_.end(), laterTransfers_.begin(), laterTransfers_.end());
     }
+    stats_.evaluations += evaluations[0] + evaluations[1];
 }
 
 void Execution::compact(std::vector<std::uint64_t>& list) {

@@ -9,9 +9,11 @@
 #include "planner/Problem.h"
 #include "planner/Random.h"
 #include "rules/Budget.h"
+#include "rules/WorkerPool.h"
 
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -42,6 +44,10 @@ struct RunOptions {
     /// round. A step or round in which refusals alone kept everything from firing is not stuck:
     /// time passes. Empty: every instance is admitted.
     std::function<bool(std::int64_t anchor, int shape)> admit;
+    /// Threads for the independent work of a round on a large board (re-evaluating the instances
+    /// around the changed cells, the allocator's searches): at most 2 are used. The plan is the
+    /// same for any value; 1: no thread is started.
+    int threads = 2;
 };
 
 struct RunStats {
@@ -88,6 +94,13 @@ public:
     BoxEngine::Value lose(std::int64_t cell);
     /// Ends the run before the next step or round, with `why` as RunStats::stopped.
     void halt(StopReason why) { halt_ = why; }
+    /// Runs job(0) and job(1), on two threads when the board is large enough for a round's work
+    /// to outweigh a thread's wake-up (RunOptions::threads), else one after the other on this
+    /// one. The jobs must not write the same memory; the first exception one throws is rethrown
+    /// once both have finished.
+    void together(const std::function<void(int)>& job) const;
+    /// Threads a round's work runs on: 2 on a large board with RunOptions::threads > 1, else 1.
+    int threads() const { return workers_ ? 2 : 1; }
 
 private:
     /// Where the enabled bit of an instance lives in bits_ (its listed bit is in the next word):
@@ -95,7 +108,9 @@ private:
     std::pair<std::size_t, std::uint64_t> bitOf(std::int64_t anchor, int shape) const {
         return {2 * (static_cast<std::size_t>(anchor) * static_cast<std::size_t>(words_) + static_cast<std::size_t>(shape >> 6)), std::uint64_t{1} << (shape & 63)};
     }
-    void recheck(std::int64_t anchor);
+    /// Re-evaluates the instances anchored at `anchor`; lists the ones newly enabled in `planners`
+    /// and `transfers`. Returns the number of evaluations. Writes only the anchor's bits.
+    std::int64_t recheck(std::int64_t anchor, std::vector<std::uint64_t>& planners, std::vector<std::uint64_t>& transfers);
     void prefetchAnchor(std::int64_t anchor) const;
     void recheckAround(const std::vector<std::int64_t>& changed);
     bool takeIfFree(std::int64_t anchor, int shape);
@@ -125,6 +140,10 @@ private:
     std::vector<std::uint32_t> stamp_;
     std::uint32_t clock_ = 0;
     std::vector<std::int64_t> anchors_;
+    // The second half's newly enabled instances while the two halves of recheckAround run on two
+    // threads; appended after the first half's, so the lists are as one thread would leave them.
+    std::vector<std::uint64_t> laterPlanners_, laterTransfers_;
+    mutable std::unique_ptr<rules::WorkerPool> workers_;  // two threads on a large board, else none
     std::vector<std::pair<int, std::int64_t>> pipelined_;  // transfer shapes that may chain, and the step of each of their cells
     std::int64_t offGoal_ = 0;                             // cells not as the goal wants them
     bool deferred_ = false;                                // options_.admit refused an instance in the current step or round

@@ -1,8 +1,9 @@
 #pragma once
 // Threads that live for the whole of a search and run one job per round: run(job) calls job(t)
 // on every thread t (t = 0 on the caller) and returns when all have finished. The explorer runs
-// a round per chunk of a breadth-first level; starting threads for each chunk cost a clone and
-// a wake-up per thread, which on this paravirtualised host was 5% of a two-thread search.
+// a round per chunk of a breadth-first level, the planner a job per phase of a synchronous round;
+// starting threads for each chunk cost a clone and a wake-up per thread, which on this
+// paravirtualised host was 5% of a two-thread search.
 //
 // A job that throws (std::bad_alloc when a worker's buffer cannot grow) must neither abort the
 // process (an exception leaving a thread's function calls std::terminate) nor let the caller
@@ -18,7 +19,7 @@
 #include <thread>
 #include <vector>
 
-namespace holon::checker {
+namespace holon::rules {
 
 class WorkerPool {
 public:
@@ -77,4 +78,4 @@ private:
     std::vector<std::thread> helpers_;
 };
 
-}  // namespace holon::checker
+}  // namespace holon::rules
