@@ -11,9 +11,9 @@
 #include "checker/Explorer.h"
 
 #include "checker/ConnectedSets.h"
-#include "rules/WorkerPool.h"
 #include "rules/Error.h"
 #include "rules/Parameter.h"
+#include "rules/WorkerPool.h"
 
 #include <algorithm>
 #include <atomic>

@@ -143,7 +143,7 @@ private:
     // The second half's newly enabled instances while the two halves of recheckAround run on two
     // threads; appended after the first half's, so the lists are as one thread would leave them.
     std::vector<std::uint64_t> laterPlanners_, laterTransfers_;
-    mutable std::unique_ptr<rules::WorkerPool> workers_;  // two threads on a large board, else none
+    mutable std::unique_ptr<rules::WorkerPool> workers_;   // two threads on a large board, else none
     std::vector<std::pair<int, std::int64_t>> pipelined_;  // transfer shapes that may chain, and the step of each of their cells
     std::int64_t offGoal_ = 0;                             // cells not as the goal wants them
     bool deferred_ = false;                                // options_.admit refused an instance in the current step or round
