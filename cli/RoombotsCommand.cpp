@@ -161,14 +161,14 @@ int run(const RoombotsArgs& a) {
     for (const std::string& m : a.metamodules) couplings.push_back(rb::parseCoupling(m));
     std::vector<rb::Strategy> strategies;
     for (const std::string& s : a.strategies) strategies.push_back(rb::parseStrategy(s));
-    const std::vector<rb::Setting> settings = rb::loadScenario(a.structure, a.seed, a.runs);
+    const std::vector<rb::Setting> settings = rb::loadScenario(a.structure, a.seed, a.runs, budget);
     const rb::CloudTable table = rb::CloudTable::load(a.clouds.empty() ? rb::CloudTable::defaultPath() : a.clouds);
     // The seeding order per metamodule configuration and run: the structure's, or derived (--recipe auto).
     std::map<std::pair<rb::Coupling, int>, rb::Setting> runSettings;
     for (rb::Coupling c : couplings)
         for (int r = 0; r < static_cast<int>(settings.size()); ++r) runSettings[{c, r}] = settings[r];
     if (a.recipe != "given" && a.recipe != "auto") {
-        const rb::Recipe recipe = rb::loadRecipe(a.recipe, settings.front().recipe);
+        const rb::Recipe recipe = rb::loadRecipe(a.recipe, settings.front().recipe, budget);
         for (auto& [key, setting] : runSettings) setting.recipe = recipe;
     }
     if (a.recipe == "auto") {

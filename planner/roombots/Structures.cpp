@@ -60,19 +60,22 @@ std::vector<Cell> shifted(std::vector<Cell> starts, int min, int max, Random& ra
     return starts;
 }
 
+constexpr int kFloorReach = 500;  // the floor holon simulates is the box around seeds and starts
+bool far(const Cell& c) { return std::abs(c.x) > kFloorReach || std::abs(c.y) > kFloorReach; }
+
 Cell parseCell(const std::string& text, const std::string& where) {
     Cell c;
     char comma1 = 0, comma2 = 0;
     std::istringstream in(text);
-    if (std::count(text.begin(), text.end(), ',') == 1) {
-        if (in >> c.x >> comma1 >> c.y && comma1 == ',' && in.peek() == EOF) return c;
-    } else if (in >> c.x >> comma1 >> c.y >> comma2 >> c.z && comma1 == ',' && comma2 == ',' && in.peek() == EOF)
-        return c;
-    throw InputError(where + ": '" + text + "' is not a cell; write x,y,z (or x,y for a start)");
+    bool read = false;
+    if (std::count(text.begin(), text.end(), ',') == 1) read = in >> c.x >> comma1 >> c.y && comma1 == ',' && in.peek() == EOF;
+    else read = in >> c.x >> comma1 >> c.y >> comma2 >> c.z && comma1 == ',' && comma2 == ',' && in.peek() == EOF;
+    if (!read) throw InputError(where + ": '" + text + "' is not a cell; write x,y,z (or x,y for a start)");
+    // Bounded here, so that no later difference or absolute value of coordinates can overflow.
+    for (int v : {c.x, c.y, c.z})
+        if (v < -kFloorReach || v > kFloorReach) throw InputError(where + ": '" + text + "' lies more than " + std::to_string(kFloorReach) + " fields from the origin; move it closer");
+    return c;
 }
-
-constexpr int kFloorReach = 500;  // the floor holon simulates is the box around seeds and starts
-bool far(const Cell& c) { return std::abs(c.x) > kFloorReach || std::abs(c.y) > kFloorReach; }
 
 /// Checks the seeds alone and returns the cells they fill.
 std::set<Cell> validateSeeds(const Recipe& recipe, const std::string& where) {
@@ -109,7 +112,7 @@ void validate(const Setting& s, const std::string& where) {
     }
 }
 
-Setting parseFile(const std::string& path) {
+Setting parseFile(const std::string& path, const Budget& budget) {
     const std::string text = rules::readTextFile(path);
     std::istringstream lines(text);
     std::string line;
@@ -145,20 +148,20 @@ Setting parseFile(const std::string& path) {
     }
     if (!voxels.empty()) {
         if (!s.recipe.seeds.empty()) throw InputError(path + ": give either `seed` lines or `voxel` lines, not both");
-        s.recipe.seeds = seedsFromVoxels(voxels, path);
+        s.recipe.seeds = seedsFromVoxels(voxels, path, budget);
     }
     return s;
 }
 
-Setting loadFile(const std::string& path) {
-    Setting s = parseFile(path);
+Setting loadFile(const std::string& path, const Budget& budget) {
+    Setting s = parseFile(path, budget);
     validate(s, path);
     return s;
 }
 
 }  // namespace
 
-std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, int runs) {
+std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, int runs, const Budget& budget) {
     Random random(seed);
     const auto l = legs();
     std::vector<Setting> settings;
@@ -187,14 +190,14 @@ std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, i
             settings.push_back({recipes[run % 4], run % 4 == 3 ? shifted(starts, 0, 2, random) : starts});
         return settings;
     }
-    const Setting file = loadFile(name);
+    const Setting file = loadFile(name, budget);
     for (int run = 0; run < (runs > 0 ? runs : 1); ++run)  // later runs from starts shifted by up to two fields
         settings.push_back({file.recipe, run == 0 ? file.starts : shifted(file.starts, 0, 2, random)});
     return settings;
 }
 
-Recipe loadRecipe(const std::string& path, const Recipe& structure) {
-    const Setting s = parseFile(path);  // its starts, if any, are not used
+Recipe loadRecipe(const std::string& path, const Recipe& structure, const Budget& budget) {
+    const Setting s = parseFile(path, budget);  // its starts, if any, are not used
     validateSeeds(s.recipe, path);
     std::set<std::array<Cell, 4>> mine, theirs;
     for (const Seed& seed : s.recipe.seeds) mine.insert(seed.cells);

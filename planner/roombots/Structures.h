@@ -4,6 +4,7 @@
 // the metamodules start.
 
 #include "planner/roombots/Kinematics.h"
+#include "rules/Budget.h"
 
 #include <string>
 #include <vector>
@@ -32,14 +33,16 @@ struct Setting {
 /// circular, cross-wise, equal priority and cross-wise with starts shifted by up to two fields; or a
 /// recipe file. `runs` > 0 asks for that many runs instead (cube: more shifted starts; chair: the
 /// recipes in turn; a file: its starts, then starts shifted by up to two fields).
-std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, int runs = 0);
+/// A recipe file's voxel model is split under `budget` (seedsFromVoxels).
+std::vector<Setting> loadScenario(const std::string& name, std::uint64_t seed, int runs = 0, const Budget& budget = Budget());
 
 /// A bare voxel model split into seeds: chains of four face-adjacent voxels, each standing on the
-/// floor by one end, in a canonical order (throws InputError naming `where` when none exists).
-std::vector<Seed> seedsFromVoxels(const std::vector<Cell>& voxels, const std::string& where);
+/// floor by one end, in a canonical order. Throws InputError naming `where` when none exists,
+/// LimitError when the search gives up or `budget`'s deadline passes, Interrupted on its signal.
+std::vector<Seed> seedsFromVoxels(const std::vector<Cell>& voxels, const std::string& where, const Budget& budget = Budget());
 
 /// A seeding order from a recipe file (its `start` lines are ignored) for a structure with the same
 /// seeds.
-Recipe loadRecipe(const std::string& path, const Recipe& structure);
+Recipe loadRecipe(const std::string& path, const Recipe& structure, const Budget& budget = Budget());
 
 }  // namespace holon::planner::roombots

@@ -9,6 +9,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <csignal>
 #include <map>
 #include <set>
 
@@ -197,4 +198,27 @@ TEST_CASE("a bare voxel model is split into metamodules standing on the floor, o
     // A floating slab has no chain standing on the floor; five voxels cannot be metamodules.
     CHECK_THROWS_WITH_AS(seedsFromVoxels({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}}, "slab"), doctest::Contains("cannot split the 4 voxels"), holon::InputError);
     CHECK_THROWS_WITH_AS(seedsFromVoxels({{0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, 3}, {1, 0, 0}}, "five"), doctest::Contains("multiple of 4"), holon::InputError);
+}
+
+TEST_CASE("a voxel model no split can cover is refused at once, and the search stops at the job's deadline or signal") {
+    // An 8 x 8 slab without four cells of one colour: the search ran for minutes and ignored both
+    // --timeout and SIGTERM. A chain covers two cells of each colour, so this is refused at once.
+    std::vector<Cell> holes;
+    for (int x = 0; x < 8; ++x)
+        for (int y = 0; y < 8; ++y)
+            if (!(x == y && (x == 1 || x == 3 || x == 4 || x == 6))) holes.push_back({x, y, 0});
+    REQUIRE(holes.size() == 60);
+    CHECK_THROWS_WITH_AS(seedsFromVoxels(holes, "holes"), doctest::Contains("28 of one colour and 32 of the other"), holon::InputError);
+    // A 20 x 20 slab takes a hundred search steps: a deadline already past stops the first one, and
+    // a caught signal too.
+    std::vector<Cell> slab;
+    for (int x = 0; x < 20; ++x)
+        for (int y = 0; y < 20; ++y) slab.push_back({x, y, 0});
+    CHECK(seedsFromVoxels(slab, "slab").size() == 100);
+    const holon::Budget past(1e-9);
+    while (!past.expired()) {
+    }
+    CHECK_THROWS_WITH_AS(seedsFromVoxels(slab, "slab", past), doctest::Contains("reached while splitting the voxels"), holon::LimitError);
+    volatile std::sig_atomic_t caught = SIGTERM;
+    CHECK_THROWS_AS(seedsFromVoxels(slab, "slab", holon::Budget::stopFlag(&caught)), holon::Interrupted);
 }
