@@ -241,7 +241,7 @@ std::optional<smt::Term> SmtEncoding::cellwise(const Expr& e, const State& s) {
     auto d = difference(perCell(e.kids[0]), perCell(e.kids[1]), -1);
     if (!d) return std::nullopt;
     std::int64_t scale = d->constant.den();
-    for (const rules::Rational& t : d->term) scale = std::lcm(scale, t.den());
+    for (const rules::Rational& t : d->term) scale = rules::checkedLcm(scale, t.den());
     auto integer = [&](rules::Rational r) { return (r * rules::Rational(scale)).num(); };
     std::vector<std::int64_t> term;
     for (const rules::Rational& t : d->term) term.push_back(integer(t));

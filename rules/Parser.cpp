@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numeric>
 #include <set>
 
 namespace holon::rules {
@@ -332,7 +333,31 @@ private:
             for (const MassEntry& e : s_.masses)
                 if (e.field == r.field && e.value == r.value) fail(v.loc, "mass of '" + v.text + "' is declared twice");
             s_.masses.push_back({r.field, r.value, m, v.loc});
+            checkMassUnits(v.loc);
         } while (accept(","));
+    }
+
+    /// Mass is counted exactly, as integers over the least common denominator of the masses, in
+    /// 64 bits over boards of up to 2^30 cells: a cell may hold at most 2^32 such units (summed
+    /// over its fields). Beyond, the sums wrapped and a rule that conserves mass was reported as
+    /// changing it.
+    void checkMassUnits(SourceLoc at) {
+        using Wide = unsigned __int128;
+        constexpr Wide kMaxUnits = Wide{1} << 32;
+        Wide lcm = 1;
+        for (const MassEntry& e : s_.masses) {
+            const auto den = static_cast<std::uint64_t>(e.mass.den());
+            lcm = lcm / std::gcd(static_cast<std::uint64_t>(lcm % den), den) * den;
+            if (lcm > kMaxUnits) fail(at, "the masses' denominators have a least common multiple above 2^32; holon counts mass exactly as integers over it: use denominators with a smaller common multiple");
+        }
+        std::map<int, Wide> heaviest;  // per field, the most units one of its values holds
+        for (const MassEntry& e : s_.masses) {
+            const Wide units = static_cast<Wide>(e.mass.num() < 0 ? -e.mass.num() : e.mass.num()) * (lcm / static_cast<std::uint64_t>(e.mass.den()));
+            heaviest[e.field] = std::max(heaviest[e.field], units);
+        }
+        Wide cell = 0;
+        for (const auto& [field, units] : heaviest) cell += units;
+        if (cell > kMaxUnits) fail(at, "a cell can hold more than 2^32 units of mass over the masses' least common denominator; holon counts mass exactly in 64 bits: use smaller masses or denominators with a smaller common multiple");
     }
 
     // ---- rules ---------------------------------------------------------------------------------

@@ -181,7 +181,7 @@ RuleTables::RuleTables(const Model& model, std::vector<std::uint32_t> combos)
             for (int sh = 0; sh < static_cast<int>(shapes_.size()); ++sh)
                 if (test(shapes_[sh].lhs[0], static_cast<int>(c), static_cast<CellValue>(v))) shapesByFirst_[c * alphabet_ + v].push_back(sh);
     // Masses as integers over the least common denominator.
-    for (int v = 0; v < alphabet_; ++v) massDen_ = std::lcm(massDen_, model.alphabet().mass(static_cast<CellValue>(v)).den());
+    for (int v = 0; v < alphabet_; ++v) massDen_ = checkedLcm(massDen_, model.alphabet().mass(static_cast<CellValue>(v)).den());
     for (int v = 0; v < alphabet_; ++v) {
         Rational m = model.alphabet().mass(static_cast<CellValue>(v));
         mass_.push_back(m.num() * (massDen_ / m.den()));

@@ -9,6 +9,7 @@
 #include "rules/Error.h"
 #include "rules/Model.h"
 
+#include <numeric>
 #include <set>
 
 namespace holon::rules {
@@ -57,6 +58,27 @@ void checkRightSides(const System& system, const Model& model, Diagnostics& d, s
 
 }  // namespace
 
+/// Arithmetic is exact in 64-bit fractions (Rational): the constants of one expression whose
+/// denominators have a common multiple above 2^32 could not all be summed. Reported at the constant
+/// that takes it past; Rational still refuses, without a place, any sum of counts too large.
+void checkDenominators(const Expr& e, unsigned __int128& lcm, bool& reported, Diagnostics& d) {
+    if (e.kind == Expr::Kind::Number && !reported) {
+        const auto den = static_cast<std::uint64_t>(e.value.den());
+        lcm = lcm / std::gcd(static_cast<std::uint64_t>(lcm % den), den) * den;
+        if (lcm > (static_cast<unsigned __int128>(1) << 32)) {
+            d.error(e.loc, "the denominators of this expression's numbers have a least common multiple above 2^32; holon computes with exact 64-bit fractions: use denominators with a smaller common multiple");
+            reported = true;
+        }
+    }
+    for (const Expr& k : e.kids) checkDenominators(k, lcm, reported, d);
+}
+
+void checkDenominators(const Expr& e, Diagnostics& d) {
+    unsigned __int128 lcm = 1;
+    bool reported = false;
+    checkDenominators(e, lcm, reported, d);
+}
+
 void validate(const System& system, Diagnostics& d) {
     std::vector<const Lattice*> lattices;
     if (system.lattice) lattices.push_back(&Lattice::get(*system.lattice));
@@ -88,6 +110,12 @@ void validate(const System& system, Diagnostics& d) {
         for (const CellTerm& t : r.rhs) collectAtoms(t, usedValues, usedInputs);
         if (r.guard) collectExpr(*r.guard, usedValues, usedInputs);
     }
+    for (const Rule& r : system.rules)
+        if (r.guard) checkDenominators(*r.guard, d);
+    for (const Constraint& c : system.constraints) checkDenominators(c.expr, d);
+    if (system.goal) checkDenominators(*system.goal, d);
+    for (const Property& p : system.properties)
+        for (const Expr& e : p.exprs) checkDenominators(e, d);
     std::set<std::pair<int, int>> anywhere = usedValues;
     for (const Constraint& c : system.constraints) collectExpr(c.expr, anywhere, usedInputs);
     if (system.goal) collectExpr(*system.goal, anywhere, usedInputs);

@@ -240,3 +240,24 @@ TEST_CASE("deeply nested or huge JSON values give short messages, not a crash") 
         CHECK(message.size() < 200);
     }
 }
+
+TEST_CASE("numbers exact fractions cannot hold are refused at their place, never wrapped into a verdict") {
+    // Three denominators near 10^9 summed to a wrapped, negative value: `check` reported this true
+    // invariant violated while `verify` proved it. The masses' common denominator wrapped too, and a
+    // rule that conserves mass was reported as changing it.
+    const auto [sumOk, sum] = parse("system s\nstates M\nrule grow: M _ => M M\ninvariant positive: 1/999999937 + 1/999999929 + 1/999999893 > 0\n");
+    CHECK_FALSE(sumOk);
+    CHECK(sum.find("hostile.holon:4:35: error: the denominators of this expression's numbers have a least common multiple above 2^32") != std::string::npos);
+    const auto [massOk, mass] = parse("system s\nstates X | Y | Q | R\nmass X = 1/999999986, Y = 1/499999993, Q = 1/499999931, R = 1/499999903\nrule merge: X X => Y _\n");
+    CHECK_FALSE(massOk);
+    CHECK(mass.find("hostile.holon:3:40: error: the masses' denominators have a least common multiple above 2^32") != std::string::npos);
+    CHECK(parse("system s\nstates X | Y\nmass X = 1/65536, Y = 1/65535\nrule r: X => Y\ninvariant i: 1/3 + 1/7 > 0\n").first);
+    // What the static checks let through is still exact, or refused: never a wrapped value.
+    const rules::Rational big(1, 999999937), other(1, 999999929);
+    CHECK(big + other > rules::Rational(0));
+    CHECK((big + other).den() == 999999937LL * 999999929LL);
+    CHECK_THROWS_AS(big + other + rules::Rational(1, 999999893), rules::ArithmeticOverflow);
+    CHECK_THROWS_AS(rules::Rational(INT64_MAX) + rules::Rational(1), rules::ArithmeticOverflow);
+    CHECK(rules::Rational(INT64_MAX, 3) > rules::Rational(INT64_MAX - 1, 3));
+    CHECK_THROWS_AS(rules::checkedLcm(999999937LL * 999999929LL, 999999893), rules::ArithmeticOverflow);
+}
