@@ -61,6 +61,7 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 /// Why a phase cannot start within the limits (empty: it can): the deadline has passed, or what it
 /// needs beside the explored graph exceeds --memory.
 std::string beyondLimits(const ExploreStats& stats, const Limits& limits, const Budget& budget, PhaseCost cost) {
+    if (budget.interrupted()) return "not checked: a signal stopped the check before this phase";
     if (budget.expired()) return "not checked: the timeout expired before this phase; raise " + rules::parameterName(rules::Parameter::Timeout);
     const double need = static_cast<double>(stats.bytes) + cost.perState * static_cast<double>(stats.states) + cost.perEdge * static_cast<double>(stats.edges);
     if (need <= static_cast<double>(limits.memoryBytes)) return "";

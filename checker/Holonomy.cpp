@@ -69,15 +69,16 @@ PropertyResult finish(const Explorer& ex, const GraphView& graph, PropertyResult
     return r;
 }
 
-/// A violation found before the timeout stands, but its count covers only the states checked.
-void markPartial(PropertyResult& r) {
-    r.summary = "at least " + r.summary + " (the timeout stopped the count)";
+/// A violation found before the timeout or a signal stands, but its count covers only the states checked.
+void markPartial(PropertyResult& r, const Budget& budget) {
+    r.summary = "at least " + r.summary + (budget.interrupted() ? " (a signal stopped the count)" : " (the timeout stopped the count)");
     r.witness["partial"] = true;
 }
 
-PropertyResult stoppedByTimeout(PropertyResult r, double seconds) {
+PropertyResult stoppedByTimeout(PropertyResult r, double seconds, const Budget& budget) {
     r.verdict = Verdict::Unknown;
-    r.summary = "stopped by the timeout during the holonomy check, no violation found yet; raise " + rules::parameterName(rules::Parameter::Timeout);
+    r.summary = budget.interrupted() ? "stopped by a signal during the holonomy check, no violation found yet"
+                                     : "stopped by the timeout during the holonomy check, no violation found yet; raise " + rules::parameterName(rules::Parameter::Timeout);
     r.seconds = seconds;
     return r;
 }
@@ -102,7 +103,7 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
     auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
 
     bool timedOut = false;
-    auto outOfTime = [&] { return timedOut || (timedOut = budget.expired()); };
+    auto outOfTime = [&] { return timedOut || (timedOut = budget.expired() || budget.interrupted()); };
     auto consider = [&](StateId c, StateId other, int modules) {
         if (other == kNoState || other == c || isSuccessor(ex, c, other)) return;
         if (comps.of[c] != comps.of[other]) return;  // unreachable both ways
@@ -138,11 +139,11 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
             }
         }
         const std::string adjacency = byMove ? "module move" : "occupancy toggle";
-        if (timedOut && violations == 0) return stoppedByTimeout(r, seconds());
+        if (timedOut && violations == 0) return stoppedByTimeout(r, seconds(), budget);
         PropertyResult out = finish(ex, graph, r, violations, best, adjacency,
                                     "configurations one " + adjacency + " apart are one rule step apart, or unreachable");
         out.seconds = seconds();
-        if (timedOut) markPartial(out);
+        if (timedOut) markPartial(out, budget);
         return out;
     }
 
@@ -214,11 +215,11 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
             best.add(c, same->second, std::popcount(occupancy[c]));
         }
     }
-    if (timedOut && violations == 0) return stoppedByTimeout(r, seconds());
+    if (timedOut && violations == 0) return stoppedByTimeout(r, seconds(), budget);
     PropertyResult out = finish(ex, graph, r, violations, best, "occupancy toggle (modulo transfers)",
                                 "every pixel step is one occupancy change plus transfers, or unreachable");
     out.seconds = seconds();
-    if (timedOut) markPartial(out);
+    if (timedOut) markPartial(out, budget);
     return out;
 }
 

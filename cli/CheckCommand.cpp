@@ -139,8 +139,9 @@ int run(const CheckArgs& a) {
         if (p.verdict == checker::Verdict::Violated) violated.push_back(&p);
     }
     const auto exitCode = [&] {
-        return unreplayed ? kExitInternal : report.stats.stopped == StopReason::Interrupted ? exitCodeFor(StopReason::Interrupted, caughtSignal())
-                                                                                            : exitCodeFor(report.overall());
+        // A signal during any phase (the exploration, or a property's pass over it) is 128 + it.
+        return unreplayed ? kExitInternal : caughtSignal() != 0 ? exitCodeFor(StopReason::Interrupted, caughtSignal())
+                                                                : exitCodeFor(report.overall());
     };
     // Every violated property gets its own trace file (named after it when there are several).
     std::vector<std::string> written;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
+#include <limits>
 #include <set>
 #include <tuple>
 
@@ -94,7 +95,13 @@ Region Region::hexagon(int radius) {
     return Region(Lattice::get(LatticeKind::Hex2D), "hex:r" + std::to_string(radius), std::move(cells));
 }
 
-Region Region::grown(int margin) const {
+Region Region::grown(int margin) const { return *grown(margin, std::numeric_limits<std::size_t>::max()); }
+
+std::optional<Region> Region::grown(int margin, std::size_t maxCells) const {
+    // The grown region holds the ball of radius `margin` around any cell: at least 2 m^2 cells on
+    // the planar lattices, 4/3 m^3 on the cubic one. Beyond the limit, known without growing.
+    const double m = margin, ball = lattice_->dimension() == 3 ? 4.0 / 3.0 * m * m * m : 2.0 * m * m;
+    if (ball > static_cast<double>(maxCells)) return std::nullopt;
     std::vector<Vec> cells = cells_;
     std::set<std::tuple<int, int, int>> seen;
     for (Vec c : cells_) seen.insert({c.x, c.y, c.z});
@@ -105,6 +112,7 @@ Region Region::grown(int margin) const {
             for (Vec d : lattice_->directions()) {
                 const Vec n = cells[k] + d;
                 if (seen.insert({n.x, n.y, n.z}).second) cells.push_back(n);
+                if (cells.size() > maxCells) return std::nullopt;
             }
         layerStart = layerEnd;
     }

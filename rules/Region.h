@@ -4,6 +4,7 @@
 #include "rules/Lattice.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +22,9 @@ public:
     static Region of(const Lattice& lattice, std::string spec, std::vector<Vec> cells);
     /// The region and every lattice point within `margin` neighbour steps of it; the region's cells
     /// keep their indices (0..size()-1), the added ones follow.
+    /// The region with every cell within `margin` lattice steps of it added; nothing (and no more
+    /// work than that) once it would exceed `maxCells` cells.
+    std::optional<Region> grown(int margin, std::size_t maxCells) const;
     Region grown(int margin) const;
 
     const Lattice& lattice() const { return *lattice_; }

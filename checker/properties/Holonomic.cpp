@@ -125,10 +125,10 @@ public:
                                    std::to_string(static_cast<long long>(configurations)) + " configurations)";
                 break;
             }
-            if (budget.expired()) {
+            if (budget.expired() || budget.interrupted()) {
                 o = ProofRunner::named(p.name, "holonomic");
                 o.result.summary = "undecided: legal configurations one " + adjacency + " apart with no rule step between them exist, and no path of up to " +
-                                   stepCount(k - 1) + " joins such a pair (timeout)";
+                                   stepCount(k - 1) + " joins such a pair (" + (budget.interrupted() ? "a signal" : "timeout") + ")";
                 break;
             }
             lemmas = lemmas && enc.instantiate().all;

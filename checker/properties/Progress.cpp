@@ -32,24 +32,32 @@ int ruleReach(const rules::Model& model) {
 /// stay unclassified (never called deadlocks: an edge effect reported as a flaw is a wrong answer).
 Stuck stuckStates(const Explorer& ex, const rules::Engine& e, const rules::Expr* assume, const Budget& budget) {
     constexpr std::size_t kClassified = 10'000;
+    // A rule with a far position (`_@(1000,1000)`) grows a 3-cell region to tens of millions of
+    // cells: growing it ran for minutes, past the deadline, the memory bound and signals.
+    constexpr std::size_t kMaxGrownCells = std::size_t{1} << 20;
     const rules::Model& model = e.model();
     const rules::Region& region = e.region();
-    const rules::Region grown = region.grown(ruleReach(model));
-    const rules::Interpreter wide(model, grown);
+    const int reach = ruleReach(model);
+    const std::optional<rules::Region> grown = region.grown(reach, kMaxGrownCells);
+    std::optional<rules::Interpreter> wide;
+    if (grown) wide.emplace(model, *grown);
     Stuck out;
+    out.unclassifiedWhy = grown ? "within the limits"
+                                : "the rules reach " + std::to_string(reach) + " lattice steps, and the region grown by that has more than " + std::to_string(kMaxGrownCells) +
+                                      " cells to tell a deadlock from an edge effect on";
     std::size_t tried = 0;
     for (StateId s : ex.terminal()) {
         const auto cells = ex.cells(s);
         if (model.system().goal && e.holds(*model.system().goal, cells.data())) continue;
         if (assume && !e.holds(*assume, cells.data())) continue;
-        if (tried++ >= kClassified || budget.expired()) {
+        if (!wide || tried++ >= kClassified || budget.expired() || budget.interrupted()) {
             ++out.unclassified;
             continue;
         }
-        rules::Configuration c = wide.empty();
+        rules::Configuration c = wide->empty();
         std::copy(cells.begin(), cells.end(), c.cells.begin());
         std::copy(e.inputs().begin(), e.inputs().end(), c.inputs.begin());
-        (wide.enabled(c).empty() ? out.deadlocks : out.edgeEffects).push_back(s);
+        (wide->enabled(c).empty() ? out.deadlocks : out.edgeEffects).push_back(s);
     }
     return out;
 }
@@ -69,7 +77,7 @@ void judgeStuck(PropertyResult& r, const Explorer& ex, const Stuck& stuck, bool 
             r, ex, stuck.deadlocks, [](StateId) { return true; }, which, description, countKey)) {
         r.verdict = complete && stuck.unclassified == 0 ? Verdict::Holds : Verdict::Unknown;
         r.summary = !complete            ? "no violation among the " + std::to_string(ex.stats().states) + " states explored before the limit"
-                    : stuck.unclassified ? std::to_string(stuck.unclassified) + " stuck states not classified (deadlock or edge effect) within the limits"
+                    : stuck.unclassified ? std::to_string(stuck.unclassified) + " stuck states not classified (deadlock or edge effect): " + stuck.unclassifiedWhy
                                          : holdsText;
         r.summary += edgeText(stuck);
     }

@@ -7,6 +7,7 @@
 #include "checker/Draw.h"
 #include "checker/Holonomy.h"
 
+#include <chrono>
 #include <regex>
 
 using namespace holon;
@@ -114,6 +115,23 @@ TEST_CASE("deadlock is relative to a goal, and a state stuck at the region's edg
     auto s = test::checkFrom(stuck, "square:2x1", "A.", "");
     CHECK(s.property("deadlock").verdict == Verdict::Holds);
     CHECK(s.property("deadlock").witness["edge_effects"] == 1);
+}
+
+TEST_CASE("a rule with a far position leaves stuck states unclassified at once, instead of growing the region for minutes") {
+    // Reach 2 * 1000: the grown region would hold millions of cells, and growing it outlasted
+    // --timeout, --memory and SIGTERM.
+    auto far = test::parse("system far\nlattice square2d\nstates M\nrule a: M@(0,0) _@(1000,1000) => _ @0\ngoal no(M)\nprogress\n");
+    const auto start = std::chrono::steady_clock::now();
+    auto c = test::checkFrom(far, "square:3x1", "M..", "");
+    CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
+    const auto& d = c.property("deadlock");
+    CHECK(d.verdict == Verdict::Unknown);
+    CHECK(d.summary.find("the rules reach 4000 lattice steps") != std::string::npos);
+    // A near position is still classified: the lone M is stuck only at the region's edge.
+    auto near = test::parse("system near\nlattice square2d\nstates M\nrule a: M@(0,0) _@(3,3) => _ @0\ngoal no(M)\nprogress\n");
+    auto n = test::checkFrom(near, "square:3x1", "M..", "");
+    CHECK(n.property("deadlock").verdict == Verdict::Holds);
+    CHECK(n.property("deadlock").witness["edge_effects"] == 1);
 }
 
 TEST_CASE("the budget bounds the holonomy check too, not only the exploration") {
