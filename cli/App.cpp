@@ -6,6 +6,7 @@
 #include "cli/ParameterNames.h"
 #include "rules/Error.h"
 #include "rules/Escape.h"
+#include "rules/OutputFile.h"
 
 #include <csignal>
 #include <iostream>
@@ -71,6 +72,13 @@ int runHolon(int argc, char** argv) {
         for (auto& [sub, run] : runs)
             if (sub->parsed()) {
                 command = sub->get_name();
+                // An option that takes a value given an empty one ('--plan-out ""') was read as left
+                // out: nothing written, nothing said.
+                for (const CLI::Option* option : sub->get_options())
+                    if (option->count() > 0 && option->get_expected_min() > 0)
+                        for (const std::string& value : option->results())
+                            if (value.empty()) throw InputError(option->get_name() + ": the value is empty; give one, or leave the option out");
+                const rules::OutputClaims outputs;  // no two options write the same file
                 return run();
             }
     } catch (const holon::InputError& e) {

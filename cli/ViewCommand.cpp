@@ -20,7 +20,8 @@ struct ViewArgs {
 };
 
 int run(const ViewArgs& a) {
-    const rules::OutputFile file("-o", a.out);  // checked before the input is read
+    rules::OutputClaims::reading("the input", a.input);  // -o must not replace it
+    const rules::OutputFile file("-o", a.out);           // checked before the input is read
     viewer::Run r = viewer::readRun(a.input, a.rules);
     viewer::sample(r);  // to say so below; page() would
     file.write(viewer::page(r));

@@ -49,8 +49,63 @@ bool writeAll(int fd, const std::string& text) {
 
 }  // namespace
 
+namespace {
+
+/// The paths claimed while an OutputClaims lives: a file or folder, the option that names it, and
+/// whether it is a folder (whose files belong to that option) or an input (nothing may replace it).
+struct Claim {
+    fs::path path;
+    std::string option;
+    enum class Kind { File,
+                      Folder,
+                      Input } kind;
+};
+std::vector<Claim>* claims = nullptr;
+
+fs::path canonicalOf(const std::string& path) {
+    std::error_code ec;
+    const fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+    return ec ? fs::path(path).lexically_normal() : p;
+}
+
+bool inside(const fs::path& file, const fs::path& folder) {
+    const auto [f, d] = std::mismatch(file.begin(), file.end(), folder.begin(), folder.end());
+    return d == folder.end() && f != file.end();
+}
+
+void claim(const std::string& option, const std::string& path, Claim::Kind kind) {
+    if (!claims) return;
+    const fs::path p = canonicalOf(path);
+    for (const Claim& c : *claims) {
+        const bool same = c.path == p, within = c.kind == Claim::Kind::Folder && kind != Claim::Kind::Folder && inside(p, c.path);
+        if ((same && c.kind == Claim::Kind::Input) || (same && kind == Claim::Kind::Input && c.kind != Claim::Kind::Folder))
+            throw InputError(option + " " + path + ": is also " + (c.kind == Claim::Kind::Input ? "read as " : "written as ") + c.option + "; name another file");
+        if (c.option == option) continue;  // one option writing a file twice, or its own folder's files
+        if (same) throw InputError(option + " " + path + ": " + c.option + " writes there too; give each output its own " + (kind == Claim::Kind::Folder ? "folder" : "file"));
+        if (within) throw InputError(option + " " + path + ": lies in the folder " + c.option + " writes; name a file outside it");
+        if (kind == Claim::Kind::Folder && c.kind != Claim::Kind::Folder && inside(c.path, p))
+            throw InputError(option + " " + path + ": holds " + c.option + "'s file " + c.path.string() + "; name another folder");
+    }
+    claims->push_back({p, option, kind});
+}
+
+}  // namespace
+
+OutputClaims::OutputClaims() {
+    if (claims) throw InternalError("OutputClaims: one job at a time");
+    claims = new std::vector<Claim>();
+}
+
+OutputClaims::~OutputClaims() {
+    delete claims;
+    claims = nullptr;
+}
+
+void OutputClaims::reading(const std::string& option, const std::string& path) { claim(option, path, Claim::Kind::Input); }
+
 OutputFile::OutputFile(std::string option, std::string path) : option_(std::move(option)), path_(std::move(path)) {
     if (path_.empty()) throw InputError(option_ + ": the path is empty; name a file");
+    claim(option_, path_, Claim::Kind::File);
     struct stat st {};
     if (::stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
         throw InputError(option_ + " " + path_ + ": is a folder; name a file inside it");
@@ -143,6 +198,7 @@ void OutputStream::commit() {
 
 void prepareOutputDir(const std::string& option, const std::string& dir) {
     if (dir.empty()) throw InputError(option + ": the folder name is empty");
+    claim(option, dir, Claim::Kind::Folder);
     struct stat st {};
     if (::stat(dir.c_str(), &st) == 0) {
         if (!S_ISDIR(st.st_mode)) throw InputError(option + " " + dir + ": exists and is not a folder; name a folder");

@@ -48,6 +48,21 @@ private:
     std::string option_, path_;
 };
 
+/// The outputs one job names, so that two options never write the same file: while an
+/// OutputClaims lives (the CLI makes one per command), every OutputFile and output folder claims
+/// its path for its option, and a second option naming the same file, or a file inside a folder
+/// another option writes, is refused (InputError) before any work. A plan's --html once replaced
+/// its --plan-out, and exit 0 said the job was done. Without one, nothing is checked.
+class OutputClaims {
+public:
+    OutputClaims();
+    ~OutputClaims();
+    OutputClaims(const OutputClaims&) = delete;
+    OutputClaims& operator=(const OutputClaims&) = delete;
+    /// An input the job reads that no output may replace (view's trace), named by `option`.
+    static void reading(const std::string& option, const std::string& path);
+};
+
 /// Makes sure `dir` is a folder holon can write into, creating it if missing (its parent must exist:
 /// a mistyped parent is refused, not created);
 /// throws InputError naming `option` and the reason.

@@ -79,3 +79,29 @@ TEST_CASE("an output folder is created, but not its missing parent, and a file i
     CHECK_THROWS_AS(prepareOutputDir("--out", ""), InputError);
     fs::remove_all(dir);
 }
+
+TEST_CASE("while a job's outputs are claimed, no two options write the same file or into another's folder") {
+    using holon::rules::OutputClaims;
+    const fs::path dir = fs::temp_directory_path() / "holon_output_claims_test";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string plan = (dir / "plan.jsonl").string(), out = (dir / "out").string();
+    {
+        const OutputClaims claims;
+        OutputFile("--plan-out", plan);
+        OutputFile("--plan-out", plan);  // one option may check its file twice (before and after the work)
+        // A plan's --html once replaced its --plan-out, with exit 0.
+        CHECK_THROWS_WITH_AS(OutputFile("--html", (dir / "." / "plan.jsonl").string()), doctest::Contains(": --plan-out writes there too"), InputError);
+        holon::rules::prepareOutputDir("--out", out);
+        OutputFile("--out", out + "/summary.json");  // the folder's own files
+        CHECK_THROWS_WITH_AS(OutputFile("--trace-out", out + "/summary.json"), doctest::Contains("lies in the folder --out writes"), InputError);
+        CHECK_THROWS_WITH_AS(holon::rules::prepareOutputDir("--hex-disks", dir.string()), doctest::Contains("holds --plan-out's file"), InputError);
+        OutputClaims::reading("the input", (dir / "trace.json").string());
+        CHECK_THROWS_WITH_AS(OutputFile("-o", (dir / "trace.json").string()), doctest::Contains("is also read as the input"), InputError);
+        CHECK_THROWS_AS(OutputClaims(), holon::InternalError);  // one job at a time
+    }
+    // Without a job's claims (the library's default), nothing is compared.
+    OutputFile("--plan-out", plan);
+    OutputFile("--html", plan);
+    fs::remove_all(dir);
+}
