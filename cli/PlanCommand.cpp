@@ -173,10 +173,15 @@ void requirePlanLattice(const rules::System& system, const rules::Lattice& latti
 }
 
 int run(const PlanArgs& a) {
-    // One budget for every phase: setup (shapes, board) and the run share the deadline; the stop
-    // flag is raised once the signal catcher below is installed.
+    // One budget for every phase: setup (shapes, board) and the run share the deadline and the
+    // stop flag of the signal catcher below.
     const Budget budget = Budget(a.timeout) || Budget::onSignals();
+    // From here on a signal stops the job: during setup at the next phase (exit 128 + it, nothing
+    // written), during the run at a round boundary with the files still written. Without the
+    // catcher a signal during a long setup killed holon without a word.
+    const rules::StopSignals guard(true);  // one-shot: a second signal ends holon at once
     const auto during = [&](const std::string& phase) {
+        if (budget.interrupted()) throw Interrupted(budget.signal());
         if (budget.expired()) throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached while " + phase + ", before the plan ran; nothing was written; raise --timeout");
     };
     // Names and output paths are checked before any work: a finished plan is never lost to a
@@ -233,8 +238,6 @@ int run(const PlanArgs& a) {
             throw InputError("--hex-disks: at most " + std::to_string(kMaxDiskMetamodules) + " metamodules in start and target together (every disk move, about 2,300 a template, is written out and replayed); use a smaller --scale");
         disks = std::make_unique<planner::hex::DiskMetamodules>(problem);
     }
-    // From here on a signal stops the run at a round boundary and the files are still written.
-    const rules::StopSignals guard(true);  // one-shot: a second signal ends holon at once
     during("preparing the run");
     planner::Execution execution(problem, *allocator, options);
     running = &execution;

@@ -371,6 +371,10 @@ RunStats Execution::run(const RunObserver& observer) {
         // The fault model held back what could fire: time passes (async: the next step starts a
         // new round, so delays expire).
         if (!fired && deferred_ && options_.scheduler != Scheduler::Sync) sinceUpdate = updateEvery;
+        // Nor is a round whose instances the fault model held back idle: the run waits for the
+        // delays and drops the user asked for, and no-progress would call a plan that completes
+        // (--delay 20000) stuck.
+        if (deferred_) idleSince = stats_.rounds;
         if (!fired && !allocatorMoved && !deferred_) {
             stats_.stopped = StopReason::Stuck;
             break;

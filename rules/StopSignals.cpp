@@ -3,22 +3,46 @@
 
 #include "rules/StopSignals.h"
 
+#include <cstdint>
+#include <ctime>
+
 namespace holon::rules {
 
 namespace {
 
-volatile std::sig_atomic_t caughtSignal = 0;
+volatile std::sig_atomic_t caughtSignal = 0, endOnSecond = 0;
+std::int64_t firstAtNs = 0;  // when the first signal came; written before caughtSignal is set
 
-extern "C" void onStopSignal(int signal) { caughtSignal = signal; }
+std::int64_t nowNs() {
+    timespec now{};
+    clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
+    return std::int64_t{now.tv_sec} * 1'000'000'000 + now.tv_nsec;
+}
+
+extern "C" void onStopSignal(int signal) {
+    if (caughtSignal == 0) {
+        firstAtNs = nowNs();
+        caughtSignal = signal;
+        return;
+    }
+    // A second signal ends holon at once, unless it repeats the first within a second: GNU timeout
+    // signals the process and then its group, two deliveries of one request, and the second one
+    // killed runs mid-write, leaving temporary files and no summary.
+    if (endOnSecond && (signal != caughtSignal || nowNs() - firstAtNs >= 1'000'000'000)) {
+        ::signal(signal, SIG_DFL);
+        ::raise(signal);
+    }
+}
 
 }  // namespace
 
 StopSignals::StopSignals(bool oneShot) {
     caughtSignal = 0;
+    endOnSecond = oneShot ? 1 : 0;
     struct sigaction action {};
     action.sa_handler = onStopSignal;
     sigemptyset(&action.sa_mask);
-    action.sa_flags = oneShot ? SA_RESETHAND : 0;
+    action.sa_flags = 0;
     sigaction(SIGINT, &action, &oldInt_);
     sigaction(SIGTERM, &action, &oldTerm_);
     if (oldInt_.sa_handler == SIG_IGN) sigaction(SIGINT, &oldInt_, nullptr);

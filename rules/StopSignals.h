@@ -9,7 +9,8 @@ namespace holon::rules {
 
 /// Installs the catcher for its lifetime and restores the previous handlers after. A signal the
 /// caller ignores (a shell's background job, nohup) stays ignored. With `oneShot`, a second signal
-/// ends the process at once (the first one's orderly stop is taking too long for the user).
+/// ends the process at once (the first one's orderly stop is taking too long for the user), unless
+/// it is the first one again within a second (one request delivered twice, as GNU timeout does).
 class StopSignals {
 public:
     explicit StopSignals(bool oneShot);

@@ -109,3 +109,32 @@ TEST_CASE("late and dropped messages hold instances back but every plan complete
 }
 
 }  // namespace holon::test
+
+namespace holon::test {
+
+TEST_CASE("delays and drops longer than the no-progress window still end at the goal, not as no-progress") {
+    // --delay 20000 and --drop 0.99999 on box:6x6 -> box:4x9 were stopped as no-progress (exit 1):
+    // the window (1000 + 20 D^2 rounds) counted the rounds the fault model held everything back.
+    const PlannerSystem system("planner_intermediate", 2);
+    const planner::Problem problem = planner::makeProblem(*system.model, planner::parseShape("box:6x6"), planner::parseShape("box:4x9"), std::nullopt, 1);
+    for (const auto& [delay, drop] : {std::pair<std::int64_t, double>{20000, 0}, {0, 0.9999}}) {
+        planner::FaultOptions faults;
+        faults.seed = 1, faults.delay = delay, faults.drop = drop;
+        auto allocator = planner::makeAllocator("random", problem, 1);
+        planner::Faults model(problem, faults);
+        planner::RunOptions options;
+        const planner::Execution* running = nullptr;
+        options.admit = [&](std::int64_t anchor, int shape) { return model.admit(*running, anchor, shape); };
+        planner::Execution ex(problem, *allocator, options);
+        running = &ex;
+        planner::RunObserver observer;
+        observer.fired = [&](std::int64_t a, int s, const planner::BoxEngine::Value* old) { model.fired(ex, a, s, old); };
+        const planner::RunStats stats = ex.run(observer);
+        CAPTURE(delay);
+        CAPTURE(drop);
+        CHECK(stats.complete);
+        CHECK(stats.rounds > 7000);  // beyond the window of 1000 + 20 * 15^2 rounds
+    }
+}
+
+}  // namespace holon::test
