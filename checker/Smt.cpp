@@ -12,6 +12,11 @@
 #define Z3_THROW(x) throw ::holon::checker::smt::Failure((x).msg())
 #include <z3++.h>
 
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <limits>
+#include <thread>
 #include <unordered_set>
 
 namespace holon::checker::smt {
@@ -66,7 +71,10 @@ Term Context::boolVal(bool b) { return wrap(*this, native_->bool_val(b)); }
 Term Context::intVal(std::int64_t n) { return wrap(*this, native_->int_val(n)); }
 Term Context::realVal(std::int64_t n) { return wrap(*this, native_->real_val(n)); }
 Term Context::realVal(std::int64_t num, std::int64_t den) {
-    return wrap(*this, native_->real_val(static_cast<int>(num), static_cast<int>(den)));
+    constexpr std::int64_t lo = std::numeric_limits<int>::min(), hi = std::numeric_limits<int>::max();
+    if (num >= lo && num <= hi && den >= lo && den <= hi) return wrap(*this, native_->real_val(static_cast<int>(num), static_cast<int>(den)));
+    // A mass denominator may pass 2^31 (up to 2^32): narrowing it to int wrapped the value.
+    return wrap(*this, native_->real_val((std::to_string(num) + "/" + std::to_string(den)).c_str()));
 }
 Term Context::constant(const std::string& name, Sort sort) {
     switch (sort) {
@@ -193,7 +201,11 @@ std::optional<Term> Model::definition(const Relation& r) const {
 
 Solver::Solver(Context& ctx, Logic logic)
     : ctx_(&ctx),
-      native_(std::make_shared<Native>(Native{logic == Logic::Horn ? z3::solver(ctx.native(), "HORN") : z3::solver(ctx.native())})) {}
+      native_(std::make_shared<Native>(Native{logic == Logic::Horn ? z3::solver(ctx.native(), "HORN") : z3::solver(ctx.native())})) {
+    z3::params params(ctx.native());
+    params.set("ctrl_c", false);  // holon's catcher stops the check (watched): Z3's took SIGINT for itself
+    native_->solver.set(params);
+}
 void Solver::add(const Term& e) { native_->solver.add(z(e)); }
 void Solver::addFile(const std::string& path) { native_->solver.from_file(path.c_str()); }
 
@@ -208,16 +220,59 @@ Result result(z3::check_result r) {
 }
 }  // namespace
 
-Result Solver::check() { return result(native_->solver.check()); }
+namespace {
+/// Runs one Z3 check with a watcher that interrupts it once the budget's stop flag is raised (a
+/// signal). Z3's own SIGINT catcher is off (ctrl_c, set with the solver's parameters): it took the
+/// signal for itself, so the job went on as if nothing had been asked.
+template <class F>
+z3::check_result watched(Context& ctx, F&& check) {
+    const Budget& budget = ctx.budget();
+    if (!budget.stoppable()) return check();
+    if (budget.interrupted()) return z3::unknown;  // already stopped: nothing to start
+    // The watcher wakes every 20 ms, and at once when the check ends (a sleep would add up to
+    // 20 ms to each of verify's thousands of checks).
+    std::mutex mutex;
+    std::condition_variable ended;
+    bool done = false;
+    std::thread watcher([&] {
+        std::unique_lock lock(mutex);
+        while (!ended.wait_for(lock, std::chrono::milliseconds(20), [&] { return done; }))
+            if (budget.interrupted()) {
+                Z3_interrupt(ctx.native());
+                return;
+            }
+    });
+    struct Join {
+        std::mutex& mutex;
+        std::condition_variable& ended;
+        bool& done;
+        std::thread& watcher;
+        ~Join() {
+            {
+                const std::lock_guard lock(mutex);
+                done = true;
+            }
+            ended.notify_one();
+            watcher.join();
+        }
+    } join{mutex, ended, done, watcher};
+    return check();
+}
+}  // namespace
+
+Result Solver::check() {
+    return result(watched(*ctx_, [&] { return native_->solver.check(); }));
+}
 Result Solver::check(const std::vector<Term>& assumptions) {
     z3::expr_vector v = vector(*ctx_, assumptions);
-    return result(native_->solver.check(v));
+    return result(watched(*ctx_, [&] { return native_->solver.check(v); }));
 }
 void Solver::push() { native_->solver.push(); }
 void Solver::pop() { native_->solver.pop(); }
 void Solver::setTimeout(unsigned milliseconds) {
     z3::params params(ctx_->native());
     params.set("timeout", milliseconds);
+    params.set("ctrl_c", false);
     native_->solver.set(params);
 }
 Model Solver::model() const { return Model(*ctx_, std::make_shared<const Model::Native>(Model::Native{native_->solver.get_model()})); }

@@ -43,7 +43,7 @@ public:
     Term boolVal(bool b);
     Term intVal(std::int64_t n);
     Term realVal(std::int64_t n);
-    /// num/den, each narrowed to int as Z3's C++ API takes them.
+    /// num/den, exactly (Z3's C++ API takes ints: larger ones go through the numeral's text).
     Term realVal(std::int64_t num, std::int64_t den);
     Term constant(const std::string& name, Sort sort);
     Term boolConst(const std::string& name);
@@ -53,6 +53,7 @@ public:
 
     struct Native;  // the Z3 context, in Smt.cpp
     Native& native() const { return *native_; }
+    const Budget& budget() const { return budget_; }
 
 private:
     Budget budget_;

@@ -11,6 +11,7 @@
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
+#include "rules/StopSignals.h"
 
 #include <iomanip>
 #include <iostream>
@@ -32,7 +33,11 @@ struct VerifyArgs {
 
 /// What the reference interpreter found wrong with a counterexample.
 int run(const VerifyArgs& a) {
-    const Budget budget(a.timeout);  // from the start: loading and encoding count
+    // From the start: loading and encoding count. A signal stops the proofs (Z3's own catcher
+    // is off, smt::Solver), the report so far is printed, and the exit is 128 + the signal: Z3's
+    // catcher took SIGINT as one cancelled obligation and the job went on to exit 0 or 3.
+    const rules::StopSignals guard(true);
+    const Budget budget = Budget(a.timeout) || Budget::onSignals();
     if (a.everySize) {
         if (a.depth > 0 || a.reach || !a.from.empty() || !a.inputs.empty())
             throw InputError("--every-size proves one step on a window: --depth, --reach, --from and --input need --region without it");
@@ -106,7 +111,8 @@ int run(const VerifyArgs& a) {
             written.push_back(file.path());
         }
     }
-    const int code = unconfirmed ? kExitInternal : exitCodeFor(report.overall());
+    const int code = unconfirmed ? kExitInternal : caughtSignal() != 0 ? exitCodeFor(StopReason::Interrupted, caughtSignal())
+                                                                       : exitCodeFor(report.overall());
     if (a.json) {
         std::cout << report.toJson().dump(2) << '\n';
         return code;

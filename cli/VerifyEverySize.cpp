@@ -182,7 +182,8 @@ int runEverySize(const EverySizeArgs& a) {
             for (checker::Obligation& o : report.obligations) o.smtFile.clear();  // hashed, and gone with the temporary folder
     }
     const std::vector<std::string> written = writeCounterexamples(a, model, region, report, traceOut, svgOut);
-    const int code = unconfirmed ? kExitInternal : exitCodeFor(report.overall());
+    const int code = unconfirmed ? kExitInternal : caughtSignal() != 0 ? exitCodeFor(StopReason::Interrupted, caughtSignal())
+                                                                       : exitCodeFor(report.overall());
     if (a.json) {
         nlohmann::json j = report.toJson();
         j["lattice"] = model.lattice().name();

@@ -73,6 +73,8 @@ public:
     bool expired() const { return limited() && elapsed() >= seconds_; }
     /// The signal that set the stop flag, 0 for none.
     int signal() const { return stop_ ? static_cast<int>(*stop_) : 0; }
+    /// Whether a signal can stop it (it has a stop flag).
+    bool stoppable() const { return stop_ != nullptr; }
     bool interrupted() const { return signal() != 0; }
 
     /// The first limit reached by a run that has made `done` (a signal first, then the caps, then

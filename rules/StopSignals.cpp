@@ -34,10 +34,13 @@ extern "C" void onStopSignal(int signal) {
     }
 }
 
+int depth = 0;  // catchers installed one inside another (verify's, then a solver race's)
+
 }  // namespace
 
-StopSignals::StopSignals(bool oneShot) {
-    caughtSignal = 0;
+StopSignals::StopSignals(bool oneShot) : outerEndOnSecond_(endOnSecond) {
+    // An inner catcher keeps what the outer one caught: resetting it let verify go on to exit 0.
+    if (depth++ == 0) caughtSignal = 0;
     endOnSecond = oneShot ? 1 : 0;
     struct sigaction action {};
     action.sa_handler = onStopSignal;
@@ -50,6 +53,8 @@ StopSignals::StopSignals(bool oneShot) {
 }
 
 StopSignals::~StopSignals() {
+    --depth;
+    endOnSecond = outerEndOnSecond_;
     sigaction(SIGINT, &oldInt_, nullptr);
     sigaction(SIGTERM, &oldTerm_, nullptr);
 }

@@ -25,6 +25,7 @@ public:
 private:
     struct sigaction oldInt_ {
     }, oldTerm_{};
+    int outerEndOnSecond_;
 };
 
 }  // namespace holon::rules
