@@ -14,8 +14,8 @@
 
 #include <chrono>
 #include <condition_variable>
-#include <mutex>
 #include <limits>
+#include <mutex>
 #include <thread>
 #include <unordered_set>
 
