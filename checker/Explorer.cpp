@@ -70,10 +70,17 @@ void Explorer::addAllLegal() {
     const int a = engine_->model().alphabet().size();
     const double candidates = std::pow(static_cast<double>(a), n);
     const double budget = std::min(4.0e9, static_cast<double>(options_.limits.maxStates) * 64.0);
+    // Beyond what the states cap lets the run hold, the cap stops it (a limit, exit 3); beyond
+    // what any cap allows, the region is too large for --all (bad input, exit 2).
+    if (candidates > budget && candidates <= 4.0e9)
+        throw LimitError(rules::parameterName(rules::Parameter::All) + " on region " + engine_->region().spec() + " means " + std::to_string(a) + "^" + std::to_string(n) +
+                             " candidate configurations, more than " + rules::parameterName(rules::Parameter::MaxStates) + " " + std::to_string(options_.limits.maxStates) +
+                             " lets the run hold (64 candidates per state); raise it",
+                         rules::Parameter::MaxStates);
     if (candidates > budget)
         throw InputError(rules::parameterName(rules::Parameter::All) + " on region " + engine_->region().spec() + " means " + std::to_string(a) + "^" + std::to_string(n) +
-                             " candidate configurations, too many to enumerate; choose a smaller region, raise " + rules::parameterName(rules::Parameter::MaxStates) +
-                             ", or explore from a configuration with " + rules::parameterName(rules::Parameter::Initial),
+                             " candidate configurations, too many to enumerate; choose a smaller region, or explore from a configuration with " +
+                             rules::parameterName(rules::Parameter::Initial),
                          rules::Parameter::All);
     const std::uint64_t total = static_cast<std::uint64_t>(std::llround(candidates));
     // The ranking costs 12 bytes per 64 candidates; it replaces the hash table when that fits

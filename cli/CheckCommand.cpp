@@ -59,7 +59,9 @@ bool printComponents(const checker::Explorer& explorer, const rules::System& sys
     std::map<std::int64_t, int> perAmount;
     if (conserves)
         for (const auto& r : rows) ++perAmount[byMass ? r.minMass : r.minCount];
-    const bool complete = conserves && std::all_of(perAmount.begin(), perAmount.end(), [](const auto& a) { return a.second == 1; });
+    // One component is complete whatever is conserved: every configuration reaches every other
+    // (the JSON said false where the text said so).
+    const bool complete = rows.size() == 1 || (conserves && std::all_of(perAmount.begin(), perAmount.end(), [](const auto& a) { return a.second == 1; }));
     const std::string amount = !conserves ? "" : byMass ? "mass"
                                                         : "number of metamodules";
     const auto massText = [&](std::int64_t units) { return rules::Rational(units, engine.massDenominator()).str(); };

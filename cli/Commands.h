@@ -102,6 +102,10 @@ inline CLI::Validator countValidator() { return CLI::Range(std::int64_t{1}, std:
 
 /// --threads: 1 to 64 (more than the machine has only costs memory; 1000 aborted on thread creation).
 inline CLI::Validator threadsValidator() { return CLI::Range(1, 64); }
+/// A random seed: 0 to 2^64 - 1 (CLI11 read -1 as 2^64 - 1).
+inline CLI::Validator seedValidator() {
+    return CLI::Validator([](std::string& s) { return !s.empty() && s[0] == '-' ? std::string("a seed is a whole number from 0 to 2^64 - 1") : std::string(); }, "0..2^64-1");
+}
 
 /// --memory in MiB, for every subcommand that allocates by its input: 16 MiB to 16 TiB; the
 /// default is the library's (rules::kDefaultMemoryBytes).

@@ -219,7 +219,7 @@ Run addHexCommand(CLI::App& app) {
     sub->add_option("--size", a->setup.size, "lattice points per side of the array")->required();
     sub->add_option("--reps", a->reps, "repetitions with seeds seed, seed+1, ... (1 to 1000)")->check(CLI::Range(1, 1000));
     sub->add_option("--steps", a->setup.steps, "timesteps per run (1 to 10^9)")->check(CLI::Range(1, 1000000000));
-    sub->add_option("--seed", a->seed, "random seed of the first repetition");
+    sub->add_option("--seed", a->seed, "random seed of the first repetition")->check(seedValidator());
     sub->add_option("--tri", a->setup.triFraction, "tri-region edge as a fraction of the array side (0.001 to 1)")->check(finiteValidator(1e-3, 1, "a fraction"));
     sub->add_option("--decay", a->setup.options.decay, "c_decay of the temperature test, timesteps per diameter (0.001 to 10^9)")->check(finiteValidator(1e-3, 1e9, "timesteps per diameter"));
     sub->add_option("--hole-density", a->setup.options.holeDensity, "initial holes per source lattice point (0 to 1)")->check(finiteValidator(0, 1, "holes per point"));

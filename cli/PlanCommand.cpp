@@ -199,6 +199,7 @@ int run(const PlanArgs& a) {
     if (!a.html.empty()) rules::OutputFile("--html", a.html);
     if (!a.hexDisks.empty()) rules::prepareOutputDir("--hex-disks", a.hexDisks);
     std::optional<rules::OutputFile> traceFile;
+    if (!a.traceOut.empty() && !a.check) throw InputError("--trace-out writes the round the monitor finds violating, and without --check nothing monitors the plan; add --check");
     if (!a.traceOut.empty()) traceFile.emplace("--trace-out", a.traceOut);
     else if (!a.out.empty()) traceFile.emplace("--out", a.out + "/violation.itf.json");
 
@@ -331,7 +332,7 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--scale", a->scale, "every cell becomes a KxK (3D: KxKxK) block (1 to 2^29: beyond it no cell fits the coordinate range)")->check(CLI::Range(1, rules::kMaxCoordinate));
     sub->add_option("--allocator", a->allocator, "resource allocator for general_n: " + planner::allocatorChoices() + " (default " + a->allocator + ")");
     sub->add_option("--scheduler", a->scheduler, "sync (rounds, default), async (one instance at a time) or adversarial");
-    sub->add_option("--seed", a->seed, "random seed (default " + std::to_string(a->seed) + ")");
+    sub->add_option("--seed", a->seed, "random seed (default " + std::to_string(a->seed) + ")")->check(seedValidator());
     sub->add_option("--seed-cell", a->seedCell, "the seed metamodule x,y[,z] (default: the overlap cell nearest its centre)");
     sub->add_flag("--check", a->check, "monitor after every step or round that the ensemble stays connected, conserves mass (where the system says so) and holds only states of its alphabet");
     sub->add_flag("--json", a->json, "print the summary as JSON");
@@ -349,7 +350,7 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--lose-random", a->loseRandom, "fault: lose a metamodule drawn at random (--fault-seed) after round ROUND (repeatable)");
     sub->add_option("--delay", a->delay, "fault: every state change reaches the neighbours 1 to D rounds later, drawn at random; an instance waits for the states it reads (1 to 10^6)")->check(CLI::Range(std::int64_t{1}, std::int64_t{1000000}));
     sub->add_option("--drop", a->drop, "fault: each time a relabel would fire, its message is lost with probability P and sent again later (0 < P < 1)")->check(probabilityValidator());
-    sub->add_option("--fault-seed", a->faultSeed, "random seed of the faults: random losses, delays, drops (default: --seed)");
+    sub->add_option("--fault-seed", a->faultSeed, "random seed of the faults: random losses, delays, drops (default: --seed)")->check(seedValidator());
     a->requireProofOption = sub->add_option("--require-proof", a->requireProof,
                                             "refuse to run (exit 2) unless the rules' certificate (holon verify --every-size) is valid and proves these properties "
                                             "for every region: --require-proof alone requires every declared property, --require-proof=termination,mass_conservation those")

@@ -281,7 +281,7 @@ Run addRoombotsCommand(CLI::App& app) {
     sub->add_option("--strategy", a->strategies, "greedy slope step (the paper's, default) and/or reserve (holon's)")->delimiter(',');
     sub->add_option("--recipe", a->recipe, "given (the structure's seeding order, default), auto (derived from the kinematics) or a recipe file");
     sub->add_option("--runs", a->runs, "runs per configuration and strategy, 1 to 1000 (default: the paper's 3 for cube, 4 for chair)")->check(CLI::Range(1, 1000));
-    sub->add_option("--seed", a->seed, "random seed of the shifted starts");
+    sub->add_option("--seed", a->seed, "random seed of the shifted starts")->check(seedValidator());
     sub->add_option("--stall", a->stall, "K: a deadlock is K steps in which no metamodule comes closer to an active seed (1 to 10000; default " + std::to_string(a->stall) + ")")->check(CLI::Range(1, 10000));
     sub->add_option("--clouds", a->clouds, "collision-cloud table (default: the one shipped with holon)");
     sub->add_option("--make-clouds", a->makeClouds, "compute the collision-cloud table from the kinematics, write it to FILE and stop");

@@ -113,13 +113,17 @@ void forEachRun(std::string_view bytes, const Header& h, const std::function<voi
 }
 
 /// Where voxel (0,0,0) lies: the translate of a file holon wrote (scale = D, translate whole
-/// numbers within the coordinate range), else the origin.
+/// numbers), else the origin. A whole-number translate beyond the coordinate range is refused: it
+/// was read as the origin, and a model placed far from the target was planned as if it overlapped.
 Vec originOf(const Header& h) {
     if (!h.placed || h.scale != h.dim) return {};
+    for (double t : h.translate)
+        if (t != std::floor(t)) return {};
     int v[3];
     for (int k = 0; k < 3; ++k) {
         const double t = h.translate[k];
-        if (t != std::floor(t) || std::fabs(t) + h.dim > kMaxCoordinate) return {};
+        if (std::fabs(t) + h.dim > kMaxCoordinate)
+            throw InputError("the header's translate puts voxels beyond the coordinate range of +-" + std::to_string(kMaxCoordinate) + "; move the model closer to the origin");
         v[k] = static_cast<int>(t);
     }
     return {v[0], v[1], v[2]};

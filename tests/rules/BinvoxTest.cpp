@@ -73,6 +73,10 @@ TEST_CASE("a file from elsewhere is read in voxel indices") {
     CHECK(read("#binvox 1\r\ndim 2 2 2\r\ntranslate -0.12 0.5 3\r\nscale 7.2\r\ndata\r\n" + data) == std::vector<Vec>{{1, 1, 1}});
     // Version 2: any value 1 to 255 is a filled voxel.
     CHECK(read("#binvox 2\ndim 2 2 2\ndata\n" + std::string("\x00\x07\xc8\x01", 4)) == std::vector<Vec>{{1, 1, 1}});
+    // A holon-style placement (scale = dim, whole translate) beyond the coordinate range is refused:
+    // it was read as the origin, and the model planned as if it overlapped the target.
+    CHECK(read("#binvox 1\ndim 2 2 2\ntranslate 10 0 0\nscale 2\ndata\n" + data) == std::vector<Vec>{{11, 1, 1}});
+    CHECK_THROWS_WITH_AS(read("#binvox 1\ndim 2 2 2\ntranslate 536870911 0 0\nscale 2\ndata\n" + data), doctest::Contains("beyond the coordinate range"), holon::InputError);
 }
 
 TEST_CASE("malformed files are refused at the byte that is wrong") {
