@@ -156,16 +156,28 @@ CloudTable CloudTable::load(const std::string& path) {
     try {
         const nlohmann::json j = nlohmann::json::parse(in);
         if (j.at("format") != "holon-roombots-clouds-1") throw InputError(path + ": not a holon collision-cloud table (format)");
-        for (Coupling c : kCouplings)
-            for (const auto& e : j.at("couplings").at(couplingName(c))) {
-                const int from = e.at(0), to = e.at(1);
-                if (from < 0 || from >= kJointSettings || to < 0 || to >= kJointSettings)
-                    throw InputError(path + ": joint setting out of range in the " + couplingName(c) + " table");
+        for (Coupling c : kCouplings) {
+            const auto& rows = j.at("couplings").at(couplingName(c));
+            const std::string where = std::string(" in the ") + couplingName(c) + " table";
+            // Every field is checked: an unknown kind was read as "seat", negative durations,
+            // fractional or wrapped joint indices and non-hex clouds were taken as they came.
+            if (!rows.is_array() || rows.empty()) throw InputError(path + ": no transitions" + where + "; regenerate it");
+            for (const auto& e : rows) {
+                if (!e.is_array() || e.size() != 5 || !e.at(0).is_number_integer() || !e.at(1).is_number_integer())
+                    throw InputError(path + ": a transition is [from, to, kind, seconds, cloud] with whole joint settings" + where);
+                const std::int64_t from = e.at(0), to = e.at(1);
+                if (from < 0 || from >= kJointSettings || to < 0 || to >= kJointSettings) throw InputError(path + ": joint setting out of range" + where);
+                const std::string kind = e.at(2);
+                if (kind != "step" && kind != "seat") throw InputError(path + ": transition kind '" + kind + "'" + where + "; use step or seat");
+                const double seconds = e.at(3);
+                if (!(seconds >= 0) || !std::isfinite(seconds)) throw InputError(path + ": a transition's duration must be a number of seconds, 0 or more" + where);
                 const std::string hex = e.at(4);
-                if (static_cast<int>(hex.size()) != (kBits + 3) / 4) throw InputError(path + ": malformed cloud in the " + couplingName(c) + " table");
-                table.table_[static_cast<int>(c)][from].push_back(
-                    Transition{e.at(2) == "step" ? Transition::Kind::Step : Transition::Kind::Seat, Joints::fromIndex(to), e.at(3), decode(hex)});
+                if (static_cast<int>(hex.size()) != (kBits + 3) / 4 || hex.find_first_not_of("0123456789abcdef") != std::string::npos)
+                    throw InputError(path + ": malformed cloud" + where + " (" + std::to_string((kBits + 3) / 4) + " lower-case hex digits)");
+                table.table_[static_cast<int>(c)][static_cast<int>(from)].push_back(
+                    Transition{kind == "step" ? Transition::Kind::Step : Transition::Kind::Seat, Joints::fromIndex(static_cast<int>(to)), seconds, decode(hex)});
             }
+        }
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ": malformed collision-cloud table (" + e.what() + "); regenerate it with `" + rules::parameterName(rules::Parameter::MakeClouds) + "`",
                          rules::Parameter::MakeClouds);

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <csignal>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -157,6 +159,23 @@ TEST_CASE("bad Roombots input is refused with the place and the fix") {
     CHECK_THROWS_WITH_AS(parseStrategy("fast"), doctest::Contains("greedy, slope, step or reserve"), holon::InputError);
     CHECK_THROWS_AS(loadScenario("/nonexistent/recipe.txt", 1), holon::InputError);
     CHECK_THROWS_WITH_AS(CloudTable::load("/nonexistent/clouds.json"), doctest::Contains("regenerate it with `CloudTable::compute /nonexistent/clouds.json`"), holon::InputError);
+    // A table's every field is checked: an unknown kind was read as "seat", a negative duration
+    // or a joint index past 2^32 was taken as it came, an empty table deadlocked every run.
+    const std::string table = "{\"format\": \"holon-roombots-clouds-1\", \"couplings\": {";
+    const std::string cloud = "\"" + std::string(49, '0') + "\"";
+    auto tableWith = [&](const std::string& par) {
+        const std::string path = (std::filesystem::temp_directory_path() / "holon_clouds_test.json").string();
+        std::ofstream(path) << table << "\"PAR\": " << par << ", \"PER\": [[0, 1, \"seat\", 1, " << cloud << "]], \"SRS\": [[0, 1, \"seat\", 1, " << cloud
+                            << "]], \"SRZ\": [[0, 1, \"seat\", 1, " << cloud << "]]}}";
+        return path;
+    };
+    CHECK_NOTHROW(CloudTable::load(tableWith("[[0, 1, \"step\", 2.5, " + cloud + "]]")));
+    CHECK_THROWS_WITH_AS(CloudTable::load(tableWith("[[0, 1, \"bogus\", 2.5, " + cloud + "]]")), doctest::Contains("transition kind 'bogus'"), holon::InputError);
+    CHECK_THROWS_WITH_AS(CloudTable::load(tableWith("[[0, 1, \"step\", -1, " + cloud + "]]")), doctest::Contains("0 or more"), holon::InputError);
+    CHECK_THROWS_WITH_AS(CloudTable::load(tableWith("[[0, 4294967297, \"step\", 1, " + cloud + "]]")), doctest::Contains("out of range"), holon::InputError);
+    CHECK_THROWS_WITH_AS(CloudTable::load(tableWith("[[0, 1.5, \"step\", 1, " + cloud + "]]")), doctest::Contains("whole joint settings"), holon::InputError);
+    CHECK_THROWS_WITH_AS(CloudTable::load(tableWith("[[0, 1, \"step\", 1, \"" + std::string(49, 'g') + "\"]]")), doctest::Contains("malformed cloud"), holon::InputError);
+    CHECK_THROWS_WITH_AS(CloudTable::load(tableWith("[]")), doctest::Contains("no transitions in the PAR table"), holon::InputError);
 }
 
 TEST_CASE("the automatic seeding order is a permutation of the seeds in which each can be filled in turn") {
