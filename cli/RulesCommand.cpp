@@ -192,6 +192,8 @@ Run addRulesCommand(CLI::App& app) {
         nlohmann::ordered_json all = nlohmann::ordered_json::array();
         int failed = 0;
         for (const std::string& file : opts->files) {
+            // --lattice only says where --svg draws: alone it was ignored without a word.
+            if (!opts->lattice.empty() && opts->svgDir.empty()) throw InputError("--lattice chooses the lattice --svg draws the rules on; add --svg DIR, or leave out --lattice");
             // A file that cannot be read is reported like one with errors: the others still get
             // their summaries, and the exit code says something failed.
             std::optional<rules::System> system;

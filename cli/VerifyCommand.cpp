@@ -68,6 +68,7 @@ int run(const VerifyArgs& a) {
     options.smtOutOption = "--smt-out";
     if (a.depth > 0 && a.from.empty()) throw InputError("--depth needs initial configurations: --from CONFIG");
     if (a.reach && a.from.empty()) throw InputError("--reach needs initial configurations: --from CONFIG");
+    if (!a.from.empty() && a.depth == 0 && !a.reach) throw InputError("--from gives the initial configurations of --depth and --reach, and neither is given; add one, or leave out --from");
     // Without --from every input value is quantified over, so an --input would have no effect.
     if (a.from.empty() && !a.inputs.empty())
         throw InputError("--input sets the inputs of --from configurations; without --from, verify proves for every input value");
@@ -162,7 +163,7 @@ Run addVerifyCommand(CLI::App& app) {
     sub->add_flag("--every-size", a->everySize, "prove conservation, rankings and local invariants for every region of the lattice (a window proof)");
     sub->add_option("--lattice", a->lattice, "with --every-size: square2d, hex2d or cubic3d (default: the system's, or --region's)");
     sub->add_option("--property", a->properties, "prove only this property (repeatable)");
-    sub->add_option("--depth", a->depth, "also bounded model checking of the invariants to this depth from --from")->check(CLI::Range(0, 10000));
+    sub->add_option("--depth", a->depth, "also bounded model checking of the invariants to this depth from --from")->check(CLI::Range(1, 10000));
     sub->add_flag("--reach", a->reach, "also prove the invariants for every state reachable from --from, at any depth (Spacer)");
     sub->add_option("--from", a->from, "initial configuration for --depth and --reach (JSON or ASCII art); repeatable");
     sub->add_option("--input", a->inputs, "inputs of the initial configurations: NAME=FILE (ASCII mask), NAME=none or NAME=all; each input must be given with --from");
