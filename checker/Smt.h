@@ -30,7 +30,7 @@ enum class Sort { Bool,
 class Context {
 public:
     /// Throws Failure("out of memory") where Z3 cannot make a context within its memory limit.
-    /// Freed with the Context unless `budget` is spent by then (see the destructor).
+    /// Freed with the Context unless `budget` is spent or interrupted by then (see the destructor).
     explicit Context(const Budget& budget = Budget());
     /// Z3 frees the terms a move assignment left referenced (see Term) only with the context,
     /// layer by layer, in time quadratic in the formulas' depth (40 s after a 0.5 s timeout for

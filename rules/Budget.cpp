@@ -84,6 +84,7 @@ std::optional<StopReason> Budget::reached(const Progress& done, bool readClock) 
 }
 
 void Budget::check(const char* during) const {
+    if (interrupted()) throw Interrupted(signal());  // a signal stops the phase as it stops the job
     if (!expired()) return;
     std::ostringstream text;
     text << "timeout (" << seconds_ << " s) while " << during;

@@ -82,7 +82,8 @@ public:
     /// clock only every so often because its steps are short.
     std::optional<StopReason> reached(const Progress& done = {}, bool readClock = true) const;
 
-    /// Throws OutOfTime once expired; `during` says what was cut short ("building the formulas").
+    /// Throws Interrupted once a signal is caught, OutOfTime once expired; `during` says what was
+    /// cut short ("building the formulas").
     void check(const char* during) const;
 
 private:
