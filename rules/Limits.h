@@ -69,10 +69,12 @@ inline std::string countText(std::uint64_t n) {
 /// it allocates: LimitError (exit 3) saying what needs it, how much, and the parameter to raise.
 inline void requireMemory(std::uint64_t bytes, std::uint64_t budgetBytes, const std::string& what) {
     if (bytes <= budgetBytes) return;
+    // Under a tenth of a GiB in MiB: "0.0 GiB, more than --memory 16 MiB" said nothing.
     char need[32];
-    std::snprintf(need, sizeof need, "%.1f", static_cast<double>(bytes) / double(1 << 30));
+    if (bytes < (std::uint64_t{1} << 30) / 10) std::snprintf(need, sizeof need, "%llu MiB", static_cast<unsigned long long>((bytes >> 20) + 1));
+    else std::snprintf(need, sizeof need, "%.1f GiB", static_cast<double>(bytes) / double(1 << 30));
     const std::string memory = parameterName(Parameter::Memory);
-    throw LimitError(what + " needs about " + need + " GiB, more than " + memory + " " + std::to_string(budgetBytes >> 20) + " MiB; raise " + memory + " or give a smaller job",
+    throw LimitError(what + " needs about " + need + ", more than " + memory + " " + std::to_string(budgetBytes >> 20) + " MiB; raise " + memory + " or give a smaller job",
                      Parameter::Memory);
 }
 
