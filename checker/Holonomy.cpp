@@ -75,7 +75,7 @@ void markPartial(PropertyResult& r, const Budget& budget) {
     r.witness["partial"] = true;
 }
 
-PropertyResult stoppedByTimeout(PropertyResult r, double seconds, const Budget& budget) {
+PropertyResult stoppedEarly(PropertyResult r, double seconds, const Budget& budget) {
     r.verdict = Verdict::Unknown;
     r.summary = budget.interrupted() ? "stopped by a signal during the holonomy check, no violation found yet"
                                      : "stopped by the timeout during the holonomy check, no violation found yet; raise " + rules::parameterName(rules::Parameter::Timeout);
@@ -139,7 +139,7 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
             }
         }
         const std::string adjacency = byMove ? "module move" : "occupancy toggle";
-        if (timedOut && violations == 0) return stoppedByTimeout(r, seconds(), budget);
+        if (timedOut && violations == 0) return stoppedEarly(r, seconds(), budget);
         PropertyResult out = finish(ex, graph, r, violations, best, adjacency,
                                     "configurations one " + adjacency + " apart are one rule step apart, or unreachable");
         out.seconds = seconds();
@@ -215,7 +215,7 @@ PropertyResult checkHolonomy(const Explorer& ex, const Components& comps, const 
             best.add(c, same->second, std::popcount(occupancy[c]));
         }
     }
-    if (timedOut && violations == 0) return stoppedByTimeout(r, seconds(), budget);
+    if (timedOut && violations == 0) return stoppedEarly(r, seconds(), budget);
     PropertyResult out = finish(ex, graph, r, violations, best, "occupancy toggle (modulo transfers)",
                                 "every pixel step is one occupancy change plus transfers, or unreachable");
     out.seconds = seconds();

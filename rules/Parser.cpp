@@ -15,7 +15,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <numeric>
 #include <set>
 
 namespace holon::rules {
@@ -342,22 +341,19 @@ private:
     /// over its fields). Beyond, the sums wrapped and a rule that conserves mass was reported as
     /// changing it.
     void checkMassUnits(SourceLoc at) {
-        using Wide = unsigned __int128;
-        constexpr Wide kMaxUnits = Wide{1} << 32;
-        Wide lcm = 1;
-        for (const MassEntry& e : s_.masses) {
-            const auto den = static_cast<std::uint64_t>(e.mass.den());
-            lcm = lcm / std::gcd(static_cast<std::uint64_t>(lcm % den), den) * den;
-            if (lcm > kMaxUnits) fail(at, "the masses' denominators have a least common multiple above 2^32; holon counts mass exactly as integers over it: use denominators with a smaller common multiple");
-        }
-        std::map<int, Wide> heaviest;  // per field, the most units one of its values holds
-        for (const MassEntry& e : s_.masses) {
-            const Wide units = static_cast<Wide>(e.mass.num() < 0 ? -e.mass.num() : e.mass.num()) * (lcm / static_cast<std::uint64_t>(e.mass.den()));
-            heaviest[e.field] = std::max(heaviest[e.field], units);
-        }
-        Wide cell = 0;
-        for (const auto& [field, units] : heaviest) cell += units;
-        if (cell > kMaxUnits) fail(at, "a cell can hold more than 2^32 units of mass over the masses' least common denominator; holon counts mass exactly in 64 bits: use smaller masses or denominators with a smaller common multiple");
+        constexpr std::int64_t kMaxUnits = std::int64_t{1} << 32;
+        // Denominators are below 10^9 and the common multiple so far at most 2^32: the next one
+        // fits checkedLcm's 64 bits.
+        std::int64_t lcm = 1;
+        for (const MassEntry& e : s_.masses)
+            if ((lcm = checkedLcm(lcm, e.mass.den())) > kMaxUnits)
+                fail(at, "the masses' denominators have a least common multiple above 2^32; holon counts mass exactly as integers over it: use denominators with a smaller common multiple");
+        std::map<int, std::int64_t> heaviest;  // per field, the most units one of its values holds (each below 2^62)
+        for (const MassEntry& e : s_.masses) heaviest[e.field] = std::max(heaviest[e.field], (e.mass.num() < 0 ? -e.mass.num() : e.mass.num()) * (lcm / e.mass.den()));
+        std::int64_t cell = 0;
+        for (const auto& [field, units] : heaviest)
+            if ((cell += std::min(units, kMaxUnits + 1)) > kMaxUnits)
+                fail(at, "a cell can hold more than 2^32 units of mass over the masses' least common denominator; holon counts mass exactly in 64 bits: use smaller masses or denominators with a smaller common multiple");
     }
 
     // ---- rules ---------------------------------------------------------------------------------

@@ -9,7 +9,6 @@
 #include "rules/Error.h"
 #include "rules/Model.h"
 
-#include <numeric>
 #include <set>
 
 namespace holon::rules {
@@ -61,20 +60,17 @@ void checkRightSides(const System& system, const Model& model, Diagnostics& d, s
 /// Arithmetic is exact in 64-bit fractions (Rational): the constants of one expression whose
 /// denominators have a common multiple above 2^32 could not all be summed. Reported at the constant
 /// that takes it past; Rational still refuses, without a place, any sum of counts too large.
-void checkDenominators(const Expr& e, unsigned __int128& lcm, bool& reported, Diagnostics& d) {
-    if (e.kind == Expr::Kind::Number && !reported) {
-        const auto den = static_cast<std::uint64_t>(e.value.den());
-        lcm = lcm / std::gcd(static_cast<std::uint64_t>(lcm % den), den) * den;
-        if (lcm > (static_cast<unsigned __int128>(1) << 32)) {
-            d.error(e.loc, "the denominators of this expression's numbers have a least common multiple above 2^32; holon computes with exact 64-bit fractions: use denominators with a smaller common multiple");
-            reported = true;
-        }
+void checkDenominators(const Expr& e, std::int64_t& lcm, bool& reported, Diagnostics& d) {
+    // Denominators are below 10^9 and the common multiple so far at most 2^32: checkedLcm's 64 bits hold the next.
+    if (e.kind == Expr::Kind::Number && !reported && (lcm = checkedLcm(lcm, e.value.den())) > (std::int64_t{1} << 32)) {
+        d.error(e.loc, "the denominators of this expression's numbers have a least common multiple above 2^32; holon computes with exact 64-bit fractions: use denominators with a smaller common multiple");
+        reported = true;
     }
     for (const Expr& k : e.kids) checkDenominators(k, lcm, reported, d);
 }
 
 void checkDenominators(const Expr& e, Diagnostics& d) {
-    unsigned __int128 lcm = 1;
+    std::int64_t lcm = 1;
     bool reported = false;
     checkDenominators(e, lcm, reported, d);
 }
