@@ -131,6 +131,7 @@ Obligation ProofRunner::solve(const std::string& name, const std::string& kind, 
         if (o.result.trace) o.result.trace->property = name;
         break;
     case smt::Result::Unknown:
+        ctx.checkStopped("solving");  // the deadline or a signal, not the solver, stopped it
         o.result.verdict = Verdict::Unknown;
         o.result.summary = "the solver gave up: " + unknownReason(reason);
         break;
@@ -186,6 +187,7 @@ Obligation ProofRunner::stepwise(const std::string& name, const std::string& kin
             break;
         }
         if (r == smt::Result::Unknown) {
+            ctx.checkStopped("solving");
             o.result.verdict = Verdict::Unknown;
             o.result.summary = "the solver gave up on instance " + std::to_string(p) + ": " + unknownReason(solver.reasonUnknown());
             break;
@@ -230,6 +232,10 @@ Obligation withinLimits(const std::string& name, const std::string& kind, const 
         if (outOfMemory(o.result.summary)) recoverSolverMemory();  // Z3 said unknown rather than throwing
         return o;
     } catch (const OutOfTime& e) {
+        return stopped(e.what());
+    } catch (const Interrupted& e) {
+        // The verdicts so far are reported (the CLI exits 128 + the signal); this obligation and
+        // those after it say why they were not decided.
         return stopped(e.what());
     } catch (const smt::Failure& e) {
         Obligation o = stopped(solverFailure(e));

@@ -12,8 +12,10 @@
 #define Z3_THROW(x) throw ::holon::checker::smt::Failure((x).msg())
 #include <z3++.h>
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <exception>
 #include <limits>
 #include <mutex>
 #include <thread>
@@ -46,6 +48,39 @@ z3::expr_vector vector(Context& ctx, const std::vector<Term>& terms) {
 
 }  // namespace
 
+/// One thread per context, for the context's whole life: it interrupts Z3 once the budget's
+/// deadline passes or a signal is caught, whatever Z3 is doing. A watcher around each check only
+/// missed the rest: asserting square:45x45's formulas (Z3 preprocesses them as they come) ran 18 s
+/// past a 3 s deadline. Z3's own SIGINT catcher is off (ctrl_c, set with each solver's parameters):
+/// it took the signal for itself, and the job went on as if nothing had been asked.
+struct Context::Watcher {
+    std::mutex mutex;
+    std::condition_variable ended;
+    bool done = false;
+    std::atomic<bool> fired{false};
+    std::thread thread;
+
+    explicit Watcher(const Context& ctx)
+        : thread([this, &ctx] {
+              // Wakes every 20 ms, and at once when the context goes.
+              std::unique_lock lock(mutex);
+              while (!ended.wait_for(lock, std::chrono::milliseconds(20), [&] { return done; }))
+                  if (ctx.budget_.expired() || ctx.budget_.interrupted()) {
+                      fired = true;
+                      Z3_interrupt(ctx.native());
+                      return;
+                  }
+          }) {}
+    ~Watcher() {
+        {
+            const std::lock_guard lock(mutex);
+            done = true;
+        }
+        ended.notify_one();
+        thread.join();
+    }
+};
+
 Context::Context(const Budget& budget) : budget_(budget) {
     // z3++ 4.8.12 would use the null context Z3 returns past its memory limit, and crash.
     const Z3_config config = Z3_mk_config();
@@ -54,11 +89,15 @@ Context::Context(const Budget& budget) : budget_(budget) {
     if (!probe) throw Failure("out of memory");
     Z3_del_context(probe);
     native_ = new Native;
+    if (budget_.limited() || budget_.stoppable()) watcher_ = std::make_unique<Watcher>(*this);
 }
 
 Context::~Context() {
-    // Interrupted too: freeing took minutes after a SIGINT on square:30x30.
-    if (!budget_.expired() && !budget_.interrupted()) {
+    watcher_.reset();
+    // Interrupted too: freeing took minutes after a SIGINT on square:30x30. And on the way out of
+    // a failure (Z3 out of memory): freeing square:60x60's formulas after the process hit its
+    // ulimit ran 10 minutes past a 30 s deadline.
+    if (!budget_.expired() && !budget_.interrupted() && std::uncaught_exceptions() == 0) {
         delete native_;
         return;
     }
@@ -66,6 +105,10 @@ Context::~Context() {
     // itself is never destroyed, so it still holds them when the leak check runs at exit.
     static auto* const kept = new std::vector<Native*>;
     kept->push_back(native_);
+}
+
+void Context::checkStopped(const char* during) const {
+    if (watcher_ && watcher_->fired) budget_.check(during);
 }
 
 Term Context::boolVal(bool b) { return wrap(*this, native_->bool_val(b)); }
@@ -115,7 +158,14 @@ Term::~Term() {
 }
 
 unsigned Term::id() const { return z(*this).id(); }
-Term Term::simplify() const { return wrap(*this, z(*this).simplify()); }
+Term Term::simplify() const {
+    try {
+        return wrap(*this, z(*this).simplify());
+    } catch (const Failure&) {
+        ctx_->checkStopped("simplifying a formula");
+        throw;
+    }
+}
 Term Term::substituteVars(const std::vector<Term>& values) const {
     z3::expr_vector v = vector(*ctx_, values);
     return wrap(*this, z(*this).substitute(v));
@@ -193,8 +243,19 @@ Term universalClosure(const Term& sentence) {
 
 Term Relation::operator()(const std::vector<Term>& args) const { return wrap(*ctx_, native_->decl(vector(*ctx_, args))); }
 
-bool Model::isTrue(const Term& e) const { return native_->model.eval(z(e), true).is_true(); }
-int Model::intValue(const Term& e) const { return native_->model.eval(z(e), true).get_numeral_int(); }
+namespace {
+z3::expr evaluated(const Context& ctx, const z3::model& model, const Term& e) {
+    try {
+        return model.eval(z(e), true);
+    } catch (const Failure&) {
+        ctx.checkStopped("reading the solver's model");
+        throw;
+    }
+}
+}  // namespace
+
+bool Model::isTrue(const Term& e) const { return evaluated(*ctx_, native_->model, e).is_true(); }
+int Model::intValue(const Term& e) const { return evaluated(*ctx_, native_->model, e).get_numeral_int(); }
 std::optional<Term> Model::definition(const Relation& r) const {
     if (!native_->model.has_interp(r.native().decl)) return std::nullopt;
     return wrap(*ctx_, native_->model.get_func_interp(r.native().decl).else_value());
@@ -204,10 +265,17 @@ Solver::Solver(Context& ctx, Logic logic)
     : ctx_(&ctx),
       native_(std::make_shared<Native>(Native{logic == Logic::Horn ? z3::solver(ctx.native(), "HORN") : z3::solver(ctx.native())})) {
     z3::params params(ctx.native());
-    params.set("ctrl_c", false);  // holon's catcher stops the check (watched): Z3's took SIGINT for itself
+    params.set("ctrl_c", false);  // the context's watcher stops the check: Z3's catcher took SIGINT for itself
     native_->solver.set(params);
 }
-void Solver::add(const Term& e) { native_->solver.add(z(e)); }
+void Solver::add(const Term& e) {
+    try {
+        native_->solver.add(z(e));
+    } catch (const Failure&) {
+        ctx_->checkStopped("building the formulas");
+        throw;
+    }
+}
 void Solver::addFile(const std::string& path) { native_->solver.from_file(path.c_str()); }
 
 namespace {
@@ -221,52 +289,10 @@ Result result(z3::check_result r) {
 }
 }  // namespace
 
-namespace {
-/// Runs one Z3 check with a watcher that interrupts it once the budget's stop flag is raised (a
-/// signal). Z3's own SIGINT catcher is off (ctrl_c, set with the solver's parameters): it took the
-/// signal for itself, so the job went on as if nothing had been asked.
-template <class F>
-z3::check_result watched(Context& ctx, F&& check) {
-    const Budget& budget = ctx.budget();
-    if (!budget.stoppable()) return check();
-    if (budget.interrupted()) return z3::unknown;  // already stopped: nothing to start
-    // The watcher wakes every 20 ms, and at once when the check ends (a sleep would add up to
-    // 20 ms to each of verify's thousands of checks).
-    std::mutex mutex;
-    std::condition_variable ended;
-    bool done = false;
-    std::thread watcher([&] {
-        std::unique_lock lock(mutex);
-        while (!ended.wait_for(lock, std::chrono::milliseconds(20), [&] { return done; }))
-            if (budget.interrupted()) {
-                Z3_interrupt(ctx.native());
-                return;
-            }
-    });
-    struct Join {
-        std::mutex& mutex;
-        std::condition_variable& ended;
-        bool& done;
-        std::thread& watcher;
-        ~Join() {
-            {
-                const std::lock_guard lock(mutex);
-                done = true;
-            }
-            ended.notify_one();
-            watcher.join();
-        }
-    } join{mutex, ended, done, watcher};
-    return check();
-}
-}  // namespace
-
-Result Solver::check() {
-    return result(watched(*ctx_, [&] { return native_->solver.check(); }));
-}
+Result Solver::check() { return result(native_->solver.check()); }
 Result Solver::check(const std::vector<Term>& assumptions) {
     z3::expr_vector v = vector(*ctx_, assumptions);
-    return result(watched(*ctx_, [&] { return native_->solver.check(v); }));
+    return result(native_->solver.check(v));
 }
 void Solver::push() { native_->solver.push(); }
 void Solver::pop() { native_->solver.pop(); }

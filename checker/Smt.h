@@ -54,10 +54,15 @@ public:
     struct Native;  // the Z3 context, in Smt.cpp
     Native& native() const { return *native_; }
     const Budget& budget() const { return budget_; }
+    /// Throws the budget's OutOfTime or Interrupted once the watcher has interrupted Z3 (which
+    /// then fails every call that checks its limits); `during` says what was cut short.
+    void checkStopped(const char* during) const;
 
 private:
+    struct Watcher;  // interrupts Z3 at the deadline or on a signal, in Smt.cpp
     Budget budget_;
     Native* native_;
+    std::unique_ptr<Watcher> watcher_;
 };
 
 /// A Z3 term, reference-counted; copies share the term. A move assignment keeps the term it

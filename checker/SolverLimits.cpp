@@ -8,6 +8,7 @@
 
 #include <csignal>
 #include <cstdint>
+#include <sys/resource.h>
 
 namespace holon::checker {
 
@@ -42,6 +43,12 @@ std::string unknownReason(const std::string& reason) {
     // Z3 catches SIGINT itself while it solves and answers unknown; the user asked holon to stop.
     if (reason.find("interrupted from keyboard") != std::string::npos) throw Interrupted(SIGINT);
     if (!outOfMemory(reason) || limitMiB == 0) return reason;
+    // A process limit (ulimit -v) below Z3's is reached first: naming Z3's limit then sent the user
+    // to the wrong knob.
+    rlimit space{};
+    if (getrlimit(RLIMIT_AS, &space) == 0 && space.rlim_cur != RLIM_INFINITY && (space.rlim_cur >> 20) < limitMiB)
+        return "out of memory (the process's address-space limit, ulimit -v, is " + std::to_string(space.rlim_cur >> 20) +
+               " MiB, below Z3's limit of " + std::to_string(limitMiB) + " MiB; raise it, or give --memory below it)";
     return "out of memory (Z3's memory limit is " + std::to_string(limitMiB) + " MiB)";
 }
 

@@ -294,7 +294,7 @@ int run(const PlanArgs& a) {
         std::cout << ", relabels " << stats.relabels << "\n  " << stats.rounds << " rounds, " << stats.steps << " steps, " << stats.evaluations
                   << " rule evaluations, " << std::fixed << std::setprecision(3) << stats.seconds << " s\n  ";
         if (stats.complete) std::cout << "complete: the target is reached\n";
-        else if (interrupted) std::cout << "NOT complete: interrupted by " << (budget.signal() == SIGTERM ? "SIGTERM" : "SIGINT") << " after round " << stats.rounds << "\n";
+        else if (interrupted) std::cout << "NOT complete: interrupted by " << Interrupted::signalName(budget.signal()) << " after round " << stats.rounds << "\n";
         else if (faults && !faults->broken().empty()) std::cout << "NOT complete: stopped by a fault: " << faults->broken() << '\n';
         else std::cout << "NOT complete: stopped by " << stopReasonName(stats.stopped) << '\n';
         if (faults) std::cout << "  faults: " << faults->summary() << '\n';

@@ -8,6 +8,7 @@
 
 #include "rules/Parameter.h"
 
+#include <csignal>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -47,8 +48,10 @@ public:
 /// processes): the CLI exits 128 + the signal.
 class Interrupted : public std::runtime_error {
 public:
-    explicit Interrupted(int signal) : std::runtime_error("interrupted by signal " + std::to_string(signal)), signal_(signal) {}
+    explicit Interrupted(int signal) : std::runtime_error("interrupted by " + signalName(signal)), signal_(signal) {}
     int signal() const { return signal_; }
+    static std::string signalName(int signal) { return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM"
+                                                                                                       : "signal " + std::to_string(signal); }
 
 private:
     int signal_;
