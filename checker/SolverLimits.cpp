@@ -5,6 +5,7 @@
 #include "checker/SolverLimits.h"
 
 #include "rules/Error.h"
+#include "rules/Parameter.h"
 
 #include <csignal>
 #include <cstdint>
@@ -48,7 +49,7 @@ std::string unknownReason(const std::string& reason) {
     rlimit space{};
     if (getrlimit(RLIMIT_AS, &space) == 0 && space.rlim_cur != RLIM_INFINITY && (space.rlim_cur >> 20) < limitMiB)
         return "out of memory (the process's address-space limit, ulimit -v, is " + std::to_string(space.rlim_cur >> 20) +
-               " MiB, below Z3's limit of " + std::to_string(limitMiB) + " MiB; raise it, or give --memory below it)";
+               " MiB, below Z3's limit of " + std::to_string(limitMiB) + " MiB; raise it, or give " + rules::parameterName(rules::Parameter::Memory) + " below it)";
     return "out of memory (Z3's memory limit is " + std::to_string(limitMiB) + " MiB)";
 }
 

@@ -18,12 +18,17 @@ namespace holon::cli {
 
 rules::LoadOptions loadOptions(const std::vector<std::string>& noWarnings) {
     rules::LoadOptions load;
+    // As a compiler's -W: every warning is on, -W no-NAME turns one off, -W NAME on again, the
+    // last one given wins (-W NAME used to silence it like -W no-NAME).
+    auto& silenced = load.silencedWarnings;
     for (const std::string& w : noWarnings) {
-        const std::string name = w.rfind("no-", 0) == 0 ? w.substr(3) : w;
+        const bool off = w.rfind("no-", 0) == 0;
+        const std::string name = off ? w.substr(3) : w;
         const auto& known = rules::Diagnostics::warningNames();
         if (std::find(known.begin(), known.end(), name) == known.end())
             throw InputError("unknown warning '" + w + "'; try -W no-unused-value");
-        load.silencedWarnings.push_back(name);
+        silenced.erase(std::remove(silenced.begin(), silenced.end(), name), silenced.end());
+        if (off) silenced.push_back(name);
     }
     return load;
 }
@@ -44,17 +49,30 @@ std::optional<rules::System> loadRules(const std::string& file, const std::vecto
     return rules::loadSystem(rules::rulesPath(file), std::cerr, loadOptions(noWarnings));
 }
 
+namespace {
+
+/// A picture smaller than the region is read as its top-left corner, the rest empty. Said, not
+/// done silently: a start or mask drawn for another region is otherwise taken as it is.
+void notePictureShortfall(const std::string& option, const std::string& path, const rules::Region& region, const std::string& text) {
+    if (const std::string shortfall = rules::pictureShortfall(region, text); !shortfall.empty())
+        std::cerr << "holon: note: " << option << " " << path << " is smaller than region " << region.spec() << " (" << shortfall
+                  << "); it is read as the region's top-left corner, the rest empty\n";
+}
+
+}  // namespace
+
 std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::vector<std::string>& specs, std::uint32_t* named) {
     const rules::Region& region = in.region();
     std::vector<std::uint32_t> bits(region.size(), 0);
-    if (named) *named = 0;
+    std::uint32_t given = 0;
     for (const std::string& spec : specs) {
         const auto eq = spec.find('=');
         if (eq == std::string::npos) throw InputError("--input takes NAME=FILE, NAME=none or NAME=all, as in --input target=target.txt");
         const std::string name = spec.substr(0, eq), path = spec.substr(eq + 1);
         const int k = in.model().system().inputIndex(name);
         if (k < 0) throw InputError("--input " + spec + ": system '" + in.model().system().name + "' has no input '" + name + "'");
-        if (named) *named |= 1u << k;
+        if (given >> k & 1u) throw InputError("--input " + name + " is given twice; give each input once");
+        given |= 1u << k;
         // An input false (or true) everywhere is a value to state, not what a forgotten mask means.
         std::vector<bool> mask(region.size(), path == "all");
         if (path != "none" && path != "all") {
@@ -64,6 +82,7 @@ std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::v
                 if (text.find_first_not_of(" \t\r\n") == std::string::npos)
                     throw InputError("the file is empty; an input that holds nowhere is given as " + name + "=none");
                 mask = rules::maskFromAscii(region, text);
+                notePictureShortfall("--input " + name, path, region, text);
             } catch (const InputError& e) {
                 throw InputError(path + ": " + e.what());
             }
@@ -71,6 +90,7 @@ std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::v
         for (int i = 0; i < region.size(); ++i)
             if (mask[i]) bits[i] |= 1u << k;
     }
+    if (named) *named = given;
     return bits;
 }
 
@@ -125,6 +145,8 @@ std::vector<rules::Configuration> readStarts(const rules::Interpreter& in, const
     for (const std::string& path : from) {
         std::uint32_t namedInFile = 0;
         rules::Configuration c = rules::readConfigFile(in, path, &namedInFile);
+        if (std::error_code error; std::filesystem::is_regular_file(path, error))  // FILE#N is an ITF trace, not a picture
+            notePictureShortfall(option, path, in.region(), rules::readTextFile(path));
         // A configuration of another system reads by field and value names (a design's variant is
         // checked from the reference design's starts); the reader refused any name this system
         // lacks, and the user is told which system the file was written for.
@@ -133,7 +155,11 @@ std::vector<rules::Configuration> readStarts(const rules::Interpreter& in, const
                       << "' by field and value names\n";
         for (std::size_t k = 0; k < system.inputs.size(); ++k)
             if (!((named | namedInFile) >> k & 1u)) throw InputError(missingInput(system, static_cast<int>(k), option + " " + path + ": "));
-        for (int i = 0; i < in.region().size(); ++i) c.inputs[i] |= inputs[i];
+        // --input replaces the configuration's own value of that input; OR-ing the two gave a mask
+        // that was neither (and NAME=none changed nothing).
+        if (named & namedInFile)
+            std::cerr << "holon: note: " << path << " sets inputs that --input also gives; --input's values are used\n";
+        for (int i = 0; i < in.region().size(); ++i) c.inputs[i] = (c.inputs[i] & ~named) | inputs[i];
         for (const rules::Constraint& constraint : system.constraints)
             if (!in.holds(constraint.expr, c))
                 throw InputError(path + ": this configuration violates the constraint '" + rules::printExpr(system, constraint.expr) + "' (" +

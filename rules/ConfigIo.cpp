@@ -249,6 +249,19 @@ std::vector<bool> maskFromAscii(const Region& region, const std::string& text) {
     return mask;
 }
 
+std::string pictureShortfall(const Region& region, const std::string& text) {
+    const auto first = text.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos || text[first] == '{' || region.lattice().dimension() == 3) return "";
+    const auto rows = asciiRows(region);
+    const auto lines = pictureRows(text, region.lattice().kind() != LatticeKind::Hex2D);
+    std::size_t columns = 0, regionColumns = 0;
+    for (const auto& line : lines) columns = std::max(columns, rowTokens(region, line).size());
+    for (const auto& row : rows) regionColumns = std::max(regionColumns, row.size());
+    if (lines.size() >= rows.size() && columns >= regionColumns) return "";
+    return "it draws " + std::to_string(lines.size()) + " of the region's " + std::to_string(rows.size()) + " rows and " + std::to_string(columns) +
+           " of its " + std::to_string(regionColumns) + " columns";
+}
+
 namespace {
 
 /// An ITF integer: a JSON number, or {"#bigint": "123"} as ITF writes large ones.

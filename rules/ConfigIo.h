@@ -21,9 +21,14 @@ Configuration configFromJson(const Interpreter& in, const nlohmann::json& j, std
 
 /// Throws InputError when the lattice is 3D or a state has no one-character name.
 std::string configToAscii(const Interpreter& in, const Configuration& c);
+/// A picture smaller than the region is its top-left corner, the rest empty (a small start on a
+/// large region needs no rows of dots); one larger is refused.
 Configuration configFromAscii(const Interpreter& in, const std::string& text);
 /// A per-cell mask in ASCII art: every character other than '.' and blanks marks a cell.
 std::vector<bool> maskFromAscii(const Region& region, const std::string& text);
+/// For a picture smaller than the region, what it leaves out ("2 of its 16 rows, 5 of its 16
+/// columns"), so the reader can say so; "" when it draws the whole region, or is not a picture.
+std::string pictureShortfall(const Region& region, const std::string& text);
 
 /// Refuses JSON nested deeper than any configuration or trace (InputError with the line and
 /// column where it gets too deep), before a parser recurses into it.

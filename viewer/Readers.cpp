@@ -167,11 +167,16 @@ void addInputs(Run& run, const Cells& cells, const nlohmann::json& inputs, const
 std::vector<int> configuration(const Cells& cells, States& states, const nlohmann::json& config, const std::string& where) {
     if (!config.contains("cells") || !config["cells"].is_array()) throw InputError(where + ": the configuration has no \"cells\" list");
     std::vector<int> c(cells.size(), 0);
+    std::vector<bool> listed(cells.size(), false);
     for (const auto& cell : config["cells"]) {
         if (!cell.is_object() || !cell.contains("at")) throw InputError(where + ": a cell is {\"at\": [x, y], FIELD: VALUE, ...}, found " + cell.dump());
         nlohmann::json fields = cell;
         fields.erase("at");
-        c[cells.of(cell["at"], where)] = states.of(fields, where);
+        const int at = cells.of(cell["at"], where);
+        // As check --from refuses it: which of the two states would the page show?
+        if (listed[at]) throw InputError(where + ": cell " + cell["at"].dump() + " is listed twice; list each cell once");
+        listed[at] = true;
+        c[at] = states.of(fields, where);
     }
     return c;
 }
@@ -365,7 +370,13 @@ Run readItf(const nlohmann::json& itf, const std::string& path, const rules::Sys
     } else if (!description.empty()) {
         run.notes.push_back(description);
     }
-    if (itf.contains("loop") && itf["loop"].is_number_integer()) run.notes.push_back("the last state loops back to state " + std::to_string(itf["loop"].get<int>()));
+    if (itf.contains("loop")) {
+        const nlohmann::json& loop = itf["loop"];
+        if (!loop.is_number_integer() || loop.get<std::int64_t>() < 0 || loop.get<std::int64_t>() >= static_cast<std::int64_t>(states.size()))
+            throw InputError(path + ": \"loop\" is the index of the state the last one loops back to, 0 to " + std::to_string(states.size() - 1) +
+                             "; found " + loop.dump());
+        run.notes.push_back("the last state loops back to state " + std::to_string(loop.get<std::int64_t>()));
+    }
     return run;
 }
 

@@ -138,6 +138,18 @@ TEST_CASE("hostile inputs end in a located message, not a crash") {
     CHECK(viewer::readRun(write("empty_first.itf.json", empty)).cells.size() == 1);
     const std::string huge = R"({"#meta":{"system":"pixel"},"states":[{"cells":{"#map":[[{"#tup":[18446744073709551615,0]},{"state":"M"}]]}}]})";
     CHECK_THROWS_WITH_AS(viewer::readRun(write("huge.itf.json", huge)), doctest::Contains("huge.itf.json: state 0: a cell is [x, y] or [x, y, z] of integers"), InputError);
+    // As check --from refuses them: a cell listed twice in a state, a loop to a state the trace lacks.
+    const std::string twice = R"({"#meta":{"system":"pixel","region":"square:2x1"},"states":[{"cells":{"#map":[[{"#tup":[0,0]},{"state":"M"}],[{"#tup":[0,0]},{"state":"M"}]]}}]})";
+    CHECK_THROWS_WITH_AS(viewer::readRun(write("twice.itf.json", twice)), doctest::Contains("twice.itf.json: state 0: cell [0,0] is listed twice"), InputError);
+    const std::string one = R"({"#meta":{"system":"pixel","region":"square:2x1"},"loop":LOOP,"states":[{"cells":{"#map":[[{"#tup":[0,0]},{"state":"M"}]]}}]})";
+    for (const char* loop : {"1", "-1", "\"0\""}) {
+        std::string bad = one;
+        bad.replace(bad.find("LOOP"), 4, loop);
+        CHECK_THROWS_WITH_AS(viewer::readRun(write("loop.itf.json", bad)), doctest::Contains("\"loop\" is the index of the state the last one loops back to, 0 to 0"), InputError);
+    }
+    std::string fine = one;
+    fine.replace(fine.find("LOOP"), 4, "0");
+    CHECK(viewer::readRun(write("loop.itf.json", fine)).notes.back() == "the last state loops back to state 0");
     const std::string roombots = R"({"run":"roombots","colours":[1,2],"start":{"region":"cubic:2x2x2","cells":[]}})";
     CHECK_THROWS_WITH_AS(viewer::readRun(write("rb.jsonl", roombots)), doctest::Contains("rb.jsonl:1: a Roombots run's first line lists its metamodules' \"colours\""), InputError);
 }
