@@ -7,6 +7,7 @@
 
 #include "checker/Certificate.h"
 
+#include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Parser.h"
 #include "rules/Sha256.h"
@@ -116,7 +117,7 @@ CertificateCheck checkCertificate(const std::string& path, const std::string& ru
         j = nlohmann::json::parse(rules::readTextFile(path, std::size_t{1} << 26));
         check.certificate = fromJson(j);
     } catch (const nlohmann::json::exception& e) {
-        check.why = path + " is not a certificate: not JSON (" + e.what() + ")";
+        check.why = path + " is not a certificate: not JSON (" + rules::jsonErrorText(e) + ")";
         return check;
     } catch (const InputError& e) {
         check.why = path + " is not a certificate: " + e.what();

@@ -45,7 +45,8 @@ int run(const VerifyArgs& a) {
         return runEverySize({a.file, a.lattice, a.region, a.smtOut, a.traceOut, a.svg, a.certificate, a.noCertificate, a.properties, a.noWarnings, budget,
                              a.obligationTimeout, a.memoryMiB, a.json});
     }
-    if (!a.certificate.empty() || a.noCertificate) throw InputError("--certificate records a proof for every region: it needs --every-size");
+    if (!a.certificate.empty() || a.noCertificate)
+        throw InputError(std::string(a.noCertificate ? "--no-certificate" : "--certificate") + " is for --every-size (a certificate records a proof for every region); leave it out of a bounded proof");
     if (!a.lattice.empty()) throw InputError("--lattice is for --every-size; a bounded proof takes the lattice of --region");
     if (a.region.empty()) throw InputError("--region is required: a bounded region such as square:3x3 (or --every-size --lattice L for every region)");
     auto system = loadRules(a.file, a.noWarnings);

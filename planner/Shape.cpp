@@ -6,6 +6,7 @@
 
 #include "rules/Binvox.h"
 #include "rules/Components.h"
+#include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Limits.h"
 #include "rules/Parameter.h"
@@ -145,7 +146,7 @@ Shape fromJson(std::string_view argument, const std::string& text) {
     try {
         j = nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number past a double
-        bad(argument, std::string("not valid JSON: ") + e.what());
+        bad(argument, "not valid JSON: " + rules::jsonErrorText(e));
     }
     const nlohmann::json& list = j.is_object() && j.contains("cells") ? j["cells"] : j;
     if (!list.is_array()) bad(argument, "expected a JSON array of cells, or an object with a \"cells\" array");

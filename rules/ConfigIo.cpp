@@ -40,6 +40,9 @@ std::vector<std::vector<int>> asciiRows(const Region& region) {
     return rows;
 }
 
+/// A UTF-8 byte-order mark (some editors write one) made a JSON file read as ASCII art.
+std::string withoutBom(const std::string& text) { return text.rfind("\xEF\xBB\xBF", 0) == 0 ? text.substr(3) : text; }
+
 std::vector<std::string> rowTokens(const Region& region, const std::string& line) {
     std::vector<std::string> tokens;
     if (region.lattice().kind() == LatticeKind::Hex2D) {
@@ -53,6 +56,12 @@ std::vector<std::string> rowTokens(const Region& region, const std::string& line
 }
 
 }  // namespace
+
+std::string jsonErrorText(const std::exception& e) {
+    const std::string what = e.what();
+    const auto tag = what.rfind("[json.exception.", 0) == 0 ? what.find("] ") : std::string::npos;
+    return tag == std::string::npos ? what : what.substr(tag + 2);
+}
 
 void checkJsonDepth(const std::string& text) {
     int depth = 0, line = 1;
@@ -249,7 +258,8 @@ std::vector<bool> maskFromAscii(const Region& region, const std::string& text) {
     return mask;
 }
 
-std::string pictureShortfall(const Region& region, const std::string& text) {
+std::string pictureShortfall(const Region& region, const std::string& withBom) {
+    const std::string text = withoutBom(withBom);
     const auto first = text.find_first_not_of(" \t\r\n");
     if (first == std::string::npos || text[first] == '{' || region.lattice().dimension() == 3) return "";
     const auto rows = asciiRows(region);
@@ -359,8 +369,9 @@ Configuration readConfigFile(const Interpreter& in, const std::string& spec, std
     }
 }
 
-Configuration configFromText(const Interpreter& in, const std::string& text, std::optional<int> index, std::uint32_t* inputsNamed,
+Configuration configFromText(const Interpreter& in, const std::string& withBom, std::optional<int> index, std::uint32_t* inputsNamed,
                              const std::string& path) {
+    const std::string text = withoutBom(withBom);
     const auto first = text.find_first_not_of(" \t\r\n");
     if (inputsNamed) *inputsNamed = 0;
     // An empty file is a mistake (a failed redirection, the wrong file), not an empty configuration.
@@ -377,7 +388,7 @@ Configuration configFromText(const Interpreter& in, const std::string& text, std
         if (index) throw InputError("'#" + std::to_string(*index) + "' picks a state of an ITF trace, and this is ASCII art; give " + path + " without it");
         return configFromAscii(in, text);
     } catch (const nlohmann::json::exception& e) {
-        throw InputError("not valid JSON: " + excerpt(e.what(), 300));
+        throw InputError("not valid JSON: " + excerpt(jsonErrorText(e), 300));
     }
 }
 

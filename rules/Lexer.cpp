@@ -83,8 +83,8 @@ std::vector<Token> tokenize(std::string_view src, Diagnostics& diagnostics) {
             std::size_t j = i;
             while (j < src.size() && std::isdigit(static_cast<unsigned char>(src[j]))) ++j;
             if (j - i > 9) {
-                diagnostics.error(loc, "number too large");
-                push(Token::Kind::Int, "0", loc);
+                diagnostics.error(loc, "number too large: at most 999999999 (9 digits); write a smaller one, or a fraction");
+                push(Token::Kind::Int, "1", loc);  // not 0: a denominator of 0 added a second error
             } else {
                 push(Token::Kind::Int, std::string(src.substr(i, j - i)), loc);
             }

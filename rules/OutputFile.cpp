@@ -59,6 +59,7 @@ struct Claim {
     enum class Kind { File,
                       Folder,
                       Input } kind;
+    bool created = false;  // a folder this job made: removed at the end if it stays empty
 };
 std::vector<Claim>* claims = nullptr;
 
@@ -97,6 +98,10 @@ OutputClaims::OutputClaims() {
 }
 
 OutputClaims::~OutputClaims() {
+    // A folder the job made and wrote nothing into (a refused, failed or interrupted job) is
+    // removed: outputs are complete or absent. rmdir removes only an empty folder.
+    for (const Claim& c : *claims)
+        if (c.created) ::rmdir(c.path.c_str());
     delete claims;
     claims = nullptr;
 }
@@ -210,7 +215,11 @@ void prepareOutputDir(const std::string& option, const std::string& dir) {
         const std::string folder = up.empty() ? "." : up.string();
         if (::stat(folder.c_str(), &st) != 0) throw InputError(option + " " + dir + ": the folder '" + folder + "' does not exist; create it first");
         if (!S_ISDIR(st.st_mode)) throw InputError(option + " " + dir + ": '" + folder + "' is not a folder");
-        if (::mkdir(dir.c_str(), 0777) != 0 && errno != EEXIST) throw InputError(option + " " + dir + ": cannot create the folder: " + reason());
+        if (::mkdir(dir.c_str(), 0777) == 0) {
+            if (claims) claims->back().created = true;  // claimed just above
+        } else if (errno != EEXIST) {
+            throw InputError(option + " " + dir + ": cannot create the folder: " + reason());
+        }
     }
     if (::access(dir.c_str(), W_OK | X_OK) != 0) throw InputError(option + " " + dir + ": cannot write into the folder: " + reason());
 }

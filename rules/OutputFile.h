@@ -52,7 +52,8 @@ private:
 /// OutputClaims lives (the CLI makes one per command), every OutputFile and output folder claims
 /// its path for its option, and a second option naming the same file, or a file inside a folder
 /// another option writes, is refused (InputError) before any work. A plan's --html once replaced
-/// its --plan-out, and exit 0 said the job was done. Without one, nothing is checked.
+/// its --plan-out, and exit 0 said the job was done. Without one, nothing is checked. A folder
+/// the job created and left empty (refused, failed, interrupted) is removed when it goes.
 class OutputClaims {
 public:
     OutputClaims();

@@ -46,7 +46,7 @@ nlohmann::json PlanLineReader::parse(const std::string& text) const {
         checkJsonDepth(text);
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number past a double
-        throw InputError(where() + ": not a JSON line (" + e.what() + "); the file is cut short or was edited by hand: write it again");
+        throw InputError(where() + ": not a JSON line (" + jsonErrorText(e) + "); the file is cut short or was edited by hand: write it again");
     } catch (const InputError& e) {
         throw InputError(where() + ": " + e.what());
     }

@@ -23,6 +23,8 @@ std::vector<int> parseDims(std::string_view text, std::string_view spec, std::si
     while (true) {
         int value = 0;
         auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (ec == std::errc::result_out_of_range)
+            throw InputError("bad region '" + std::string(spec) + "': a size is larger than 2147483647; choose a smaller region");
         if (ec != std::errc() || value <= 0)
             throw InputError("bad region '" + std::string(spec) + "': sizes must be positive integers");
         dims.push_back(value);

@@ -419,9 +419,9 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
     try {
         itf = nlohmann::json::parse(all);
     } catch (const nlohmann::json::parse_error& e) {
-        throw InputError(path + ":" + lineColumn(all, e.byte == 0 ? 0 : e.byte - 1) + ": not JSON (" + e.what() + "); " + kFormats);
+        throw InputError(path + ":" + lineColumn(all, e.byte == 0 ? 0 : e.byte - 1) + ": not JSON (" + rules::jsonErrorText(e) + "); " + kFormats);
     } catch (const nlohmann::json::exception& e) {
-        throw InputError(path + ":1: not JSON (" + e.what() + "); " + kFormats);
+        throw InputError(path + ":1: not JSON (" + rules::jsonErrorText(e) + "); " + kFormats);
     }
     if (!itf.is_object() || !itf.contains("states")) throw InputError(path + ":1: neither an ITF trace (no \"states\") nor JSON Lines; " + std::string(kFormats));
     const nlohmann::json meta = itf.contains("#meta") ? itf["#meta"] : nlohmann::json::object();

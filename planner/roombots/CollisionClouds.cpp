@@ -11,6 +11,7 @@
 
 #include "planner/roombots/CollisionClouds.h"
 
+#include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Parameter.h"
 
@@ -179,7 +180,7 @@ CloudTable CloudTable::load(const std::string& path) {
             }
         }
     } catch (const nlohmann::json::exception& e) {
-        throw InputError(path + ": malformed collision-cloud table (" + e.what() + "); regenerate it with `" + rules::parameterName(rules::Parameter::MakeClouds) + "`",
+        throw InputError(path + ": malformed collision-cloud table (" + rules::jsonErrorText(e) + "); regenerate it with `" + rules::parameterName(rules::Parameter::MakeClouds) + "`",
                          rules::Parameter::MakeClouds);
     }
     return table;

@@ -55,3 +55,18 @@ TEST_CASE("bad configurations are rejected with the place and the fix") {
         CHECK_THROWS_WITH_AS(rules::configFromJson(*hex.in, nlohmann::json::parse(text)), doctest::Contains("lies outside region hex:r2"), InputError);
     CHECK_THROWS_WITH_AS(w.ascii("FZ"), doctest::Contains("'Z' is not a one-character state"), InputError);
 }
+
+TEST_CASE("a byte-order mark does not turn JSON into ASCII art, and a JSON error reads without the library's tag") {
+    World w = World::library("pixel", "square:3x3");
+    const auto c = rules::configFromText(*w.in, "\xEF\xBB\xBF{\"cells\":[{\"at\":[1,0],\"state\":\"M\"}]}");
+    CHECK(c.cells[w.region.indexOf({1, 0, 0})] != 0);
+    CHECK(rules::pictureShortfall(w.region, "\xEF\xBB\xBF{\"cells\":[]}").empty());
+    CHECK(rules::pictureShortfall(w.region, "M\n") == "it draws 1 of the region's 3 rows and 1 of its 3 columns");
+    CHECK(rules::pictureShortfall(w.region, "...\nM..\n...\n").empty());
+    try {
+        rules::configFromText(*w.in, "{\"cells\": [}");
+        FAIL("accepted broken JSON");
+    } catch (const InputError& e) {
+        CHECK(std::string(e.what()).rfind("not valid JSON: parse error at line 1, column 12", 0) == 0);
+    }
+}
