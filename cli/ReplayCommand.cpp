@@ -33,6 +33,8 @@ struct Args {
 int run(const Args& a) {
     const std::optional<rules::System> system = loadRules(a.rules, {});
     if (!system) return kExitBadInput;
+    // A folder opens as an empty stream, which read as a plan cut short.
+    if (std::error_code error; std::filesystem::is_directory(a.plan, error)) throw InputError(a.plan + ": is a folder; give the plan's file (holon plan --plan-out FILE)");
     std::ifstream file(a.plan);
     if (!file) throw InputError(a.plan + ": cannot open the plan");
     rules::PlanLineReader plan(file, a.plan);
@@ -42,7 +44,13 @@ int run(const Args& a) {
     if (of != system->name) throw InputError(a.plan + ":1: the plan is for system '" + (of.is_string() ? of.get<std::string>() : "") + "', not " + system->name + "; give its rule file");
     const nlohmann::json& start = plan.start();
     if (!start.contains("region") || !start["region"].is_string()) throw InputError(a.plan + ":1: the start configuration names no region");
-    const rules::Region region = rules::Region::parse(start["region"].get<std::string>());
+    const rules::Region region = [&] {
+        try {
+            return rules::Region::parse(start["region"].get<std::string>());
+        } catch (const InputError& e) {
+            throw InputError(a.plan + ":1: " + e.what());
+        }
+    }();
     const rules::Model model(*system, region.lattice());
     const rules::Interpreter in(model, region);
     rules::Configuration now;
