@@ -207,6 +207,7 @@ int run(const PlanArgs& a) {
     if (!system) return 2;
     const std::uint64_t memory = a.memoryMiB << 20;
     planner::Shape from = planner::parseShape(a.from, a.scale, memory);
+    during("making the shapes");  // between the two: each of box:7000x7000's took 1.5 s
     planner::Shape to = planner::parseShape(a.to, a.scale, memory - std::min(memory, from.cells.size() * sizeof(planner::Vec)));
     during("making the shapes");
     const rules::Lattice& lattice = rules::Lattice::get(from.dimension == 3 ? rules::LatticeKind::Cubic3D : rules::LatticeKind::Square2D);
