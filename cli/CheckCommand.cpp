@@ -165,6 +165,7 @@ int run(const CheckArgs& a) {
             written.push_back(file.path());
         }
     }
+    if (violated.empty()) noteNoCounterexample("check", {{"--trace-out", a.traceOut}, {"--html", a.html}, {"--svg", a.svg}});
     if (dotOut) {
         if (report.stats.states > 5000) std::cerr << "holon check: --dot skipped: " << report.stats.states << " states is too many to draw (at most 5000)\n";
         else dotOut->write([&](std::ostream& out) { checker::writeDot(*kept.explorer, in, out); });

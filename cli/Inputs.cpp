@@ -94,6 +94,13 @@ std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::v
     return bits;
 }
 
+void noteNoCounterexample(const std::string& command, const std::vector<std::pair<std::string, std::string>>& options) {
+    std::string given;
+    for (const auto& [option, path] : options)
+        if (!path.empty()) given += (given.empty() ? "" : ", ") + option + " " + path;
+    if (!given.empty()) std::cerr << "holon " << command << ": no counterexample found, so not written: " << given << '\n';
+}
+
 std::string pathFor(const std::string& path, const std::string& property, bool several) {
     if (!several) return path;
     const std::size_t slash = path.find_last_of('/');

@@ -36,6 +36,11 @@ std::string namedInFile(const std::string& path, const std::string& key);
 /// "out/t.safety.itf.json"; with one violated property, the path as given.
 std::string pathFor(const std::string& path, const std::string& property, bool several);
 
+/// Says on stderr that the counterexample outputs asked for (the options given among
+/// `options`, each an option's name and its path, empty when not given) are not written, as no
+/// counterexample was found: a file left at that path by an earlier run looked current.
+void noteNoCounterexample(const std::string& command, const std::vector<std::pair<std::string, std::string>>& options);
+
 /// The start configurations of --from, each with the inputs of `inputSpecs` (--input) added, every
 /// declared input set by one or the other (an input left out is not silently false everywhere), and
 /// each legal (else the error names the constraint that fails, with its line). With no --from,

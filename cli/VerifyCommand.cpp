@@ -113,6 +113,7 @@ int run(const VerifyArgs& a) {
             written.push_back(file.path());
         }
     }
+    if (shown.empty()) noteNoCounterexample("verify", {{"--trace-out", traceOut ? traceOut->path() : ""}, {"--svg", svgOut ? svgOut->path() : ""}});
     const int code = unconfirmed ? kExitInternal : caughtSignal() != 0 ? exitCodeFor(StopReason::Interrupted, caughtSignal())
                                                                        : exitCodeFor(report.overall());
     if (a.json) {
