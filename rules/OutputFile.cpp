@@ -14,8 +14,10 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <sstream>
+#include <string_view>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
 
 namespace holon::rules {
 
@@ -36,7 +38,7 @@ bool isSpecial(const std::string& path) {
 }
 
 /// Writes all of `text` to `fd`; false (with errno set) on any error.
-bool writeAll(int fd, const std::string& text) {
+bool writeAll(int fd, std::string_view text) {
     std::size_t done = 0;
     while (done < text.size()) {
         const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
@@ -165,18 +167,45 @@ void OutputFile::write(const std::function<void(std::ostream&)>& fill) const {
     write(text.str());
 }
 
+/// Buffers what is streamed and writes it to the descriptor in large pieces, keeping errno of the
+/// first write that failed; later writes are dropped.
+struct OutputStream::Buffer : std::streambuf {
+    int fd;
+    int error = 0;
+    std::vector<char> space = std::vector<char>(std::size_t{1} << 16);
+
+    explicit Buffer(int descriptor) : fd(descriptor) { setp(space.data(), space.data() + space.size()); }
+    ~Buffer() override {
+        if (fd >= 0) ::close(fd);
+    }
+    bool drain() {
+        if (!error && pptr() > pbase() && !writeAll(fd, std::string_view(pbase(), static_cast<std::size_t>(pptr() - pbase())))) error = errno ? errno : EIO;
+        setp(space.data(), space.data() + space.size());
+        return error == 0;
+    }
+    int_type overflow(int_type c) override {
+        if (!drain()) return traits_type::eof();
+        if (!traits_type::eq_int_type(c, traits_type::eof())) *pptr() = traits_type::to_char_type(c), pbump(1);
+        return traits_type::not_eof(c);
+    }
+    int sync() override { return drain() ? 0 : -1; }
+};
+
 OutputStream::OutputStream(std::string option, std::string path) : option_(std::move(option)), path_(std::move(path)) {
+    int fd = -1;
     if (isSpecial(path_)) {
-        out_ = std::make_unique<std::ofstream>(path_);
+        fd = ::open(path_.c_str(), O_WRONLY | O_TRUNC);
+        if (fd < 0) throw InputError(option_ + " " + path_ + ": cannot open: " + reason());
     } else {
         temp_ = path_ + ".tmp-XXXXXX";
-        const int fd = ::mkstemp(temp_.data());
+        fd = ::mkstemp(temp_.data());
         if (fd < 0) throw InputError(option_ + " " + path_ + ": cannot create a file beside it: " + reason());
-        ::close(fd);
-        out_ = std::make_unique<std::ofstream>(temp_, std::ios::binary | std::ios::trunc);
     }
-    if (!*out_) throw InputError(option_ + " " + path_ + ": cannot open: " + reason());
+    buffer_ = std::make_unique<Buffer>(fd);
+    out_ = std::make_unique<std::ostream>(buffer_.get());
 }
+
+OutputStream::OutputStream(OutputStream&&) noexcept = default;
 
 OutputStream::~OutputStream() {
     if (!committed_ && !temp_.empty()) ::unlink(temp_.c_str());
@@ -184,11 +213,13 @@ OutputStream::~OutputStream() {
 
 void OutputStream::commit() {
     out_->flush();
-    const bool ok = static_cast<bool>(*out_);
-    const int saved = errno;
-    out_->close();
-    if (!ok || out_->fail()) {
-        errno = ok ? errno : saved;
+    bool ok = buffer_->drain() && !out_->fail();
+    int error = buffer_->error;
+    if (ok && !temp_.empty() && ::fsync(buffer_->fd) != 0) ok = false, error = errno;
+    if (::close(buffer_->fd) != 0 && ok) ok = false, error = errno;
+    buffer_->fd = -1;
+    if (!ok) {
+        errno = error ? error : EIO;
         throw InputError(option_ + " " + path_ + ": cannot write: " + reason());
     }
     if (!temp_.empty()) {

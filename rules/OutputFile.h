@@ -18,15 +18,18 @@ namespace holon::rules {
 class OutputStream {
 public:
     OutputStream(std::string option, std::string path);
-    OutputStream(OutputStream&&) noexcept = default;
+    OutputStream(OutputStream&&) noexcept;
     ~OutputStream();
     std::ostream& stream() { return *out_; }
-    /// Flushes, checks, closes and renames; throws InputError with the reason.
+    /// Flushes, checks, closes and renames; throws InputError with the reason of the first write
+    /// that failed (a stream's error state keeps none: /dev/full was reported as "Invalid argument").
     void commit();
 
 private:
+    struct Buffer;  // a file descriptor's buffer that keeps the first write error (OutputFile.cpp)
     std::string option_, path_, temp_;
-    std::unique_ptr<std::ofstream> out_;
+    std::unique_ptr<Buffer> buffer_;
+    std::unique_ptr<std::ostream> out_;
     bool committed_ = false;
 };
 
