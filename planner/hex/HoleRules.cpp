@@ -53,7 +53,7 @@ struct CompiledHexSystem {
         static std::mutex mutex;
         static std::map<std::string, std::shared_ptr<const CompiledHexSystem>> made;
         const std::lock_guard lock(mutex);
-        auto& slot = made[stem];
+        auto& slot = made[rules::libraryDir() + "/" + stem];  // HOLON_LIBRARY may name another library
         if (!slot) slot = std::make_shared<const CompiledHexSystem>(stem);
         return slot;
     }
