@@ -192,7 +192,7 @@ int run(const PlanArgs& a) {
     else if (a.scheduler == "async") options.scheduler = planner::Scheduler::Async;
     else if (a.scheduler == "adversarial") options.scheduler = planner::Scheduler::Adversarial;
     else throw InputError("--scheduler '" + a.scheduler + "': choose sync, async or adversarial");
-    if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
+    if (!a.out.empty()) rules::prepareOutputDir("--out", a.out, planner::Report::outDirFiles());
     if (!a.planOut.empty()) rules::OutputFile("--plan-out", a.planOut);
     // The viewer reads the plan back from its file once it is complete.
     if (!a.html.empty() && a.planOut.empty()) throw InputError("--html needs --plan-out FILE: the viewer plays the plan written there");

@@ -25,6 +25,12 @@ double fraction(std::int64_t done, std::int64_t total) { return total == 0 ? 1.0
 
 }  // namespace
 
+const std::vector<std::string>& Report::outDirFiles() {
+    // violation.itf.json is the monitor's trace, which the CLI writes there.
+    static const std::vector<std::string> names{"summary.json", "completion.csv", "snapshot-*.svg", "end.json", "violation.itf.json"};
+    return names;
+}
+
 Report::Report(const Problem& problem, const Execution& execution, ReportOptions options)
     : problem_(&problem), execution_(&execution), options_(std::move(options)) {
     if (!options_.planOut.empty()) {
@@ -36,7 +42,7 @@ Report::Report(const Problem& problem, const Execution& execution, ReportOptions
                         << '\n';
     }
     if (!options_.outDir.empty()) {
-        rules::prepareOutputDir(options_.outOption, options_.outDir);
+        rules::prepareOutputDir(options_.outOption, options_.outDir, outDirFiles());
         csv_.emplace(rules::OutputFile(options_.outOption, options_.outDir + "/completion.csv").open());
         csv_->stream() << "round,steps,creations,deletions,transfers,creation_completion,deletion_completion,planner_enabled,planner_held\n";
         rules::OutputFile(options_.outOption, options_.outDir + "/snapshot-start.svg").write(drawBoard(*problem_, execution_->cells(), "start"));

@@ -28,6 +28,9 @@ struct ReportOptions {
 
 class Report {
 public:
+    /// The files a run writes into ReportOptions::outDir (patterns, for rules::prepareOutputDir):
+    /// any other file there may be another output's.
+    static const std::vector<std::string>& outDirFiles();
     /// Creates the output folder and starts the files; a path that cannot be written throws
     /// InputError here, before the run.
     Report(const Problem& problem, const Execution& execution, ReportOptions options);

@@ -8,11 +8,13 @@
 
 #include "rules/Error.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <fnmatch.h>
 #include <sstream>
 #include <string_view>
 #include <sys/stat.h>
@@ -61,7 +63,8 @@ struct Claim {
     enum class Kind { File,
                       Folder,
                       Input } kind;
-    bool created = false;  // a folder this job made: removed at the end if it stays empty
+    bool created = false;            // a folder this job made: removed at the end if it stays empty
+    std::vector<std::string> names;  // a folder's files, if declared (patterns); empty: all of it
 };
 std::vector<Claim>* claims = nullptr;
 
@@ -76,20 +79,30 @@ bool inside(const fs::path& file, const fs::path& folder) {
     return d == folder.end() && f != file.end();
 }
 
-void claim(const std::string& option, const std::string& path, Claim::Kind kind) {
+/// Whether `folder`'s option writes `file` (which lies inside it): any file, unless it declared
+/// the names it writes.
+bool writes(const Claim& folder, const fs::path& file) {
+    if (folder.names.empty()) return true;
+    const std::string relative = file.lexically_relative(folder.path).string();
+    return std::any_of(folder.names.begin(), folder.names.end(), [&](const std::string& name) { return ::fnmatch(name.c_str(), relative.c_str(), FNM_PATHNAME) == 0; });
+}
+
+void claim(const std::string& option, const std::string& path, Claim::Kind kind, const std::vector<std::string>& names = {}) {
     if (!claims) return;
     const fs::path p = canonicalOf(path);
+    const Claim made{p, option, kind, false, names};
     for (const Claim& c : *claims) {
-        const bool same = c.path == p, within = c.kind == Claim::Kind::Folder && kind != Claim::Kind::Folder && inside(p, c.path);
+        const bool same = c.path == p, within = c.kind == Claim::Kind::Folder && kind != Claim::Kind::Folder && inside(p, c.path) && writes(c, p);
         if ((same && c.kind == Claim::Kind::Input) || (same && kind == Claim::Kind::Input && c.kind != Claim::Kind::Folder))
             throw InputError(option + " " + path + ": is also " + (c.kind == Claim::Kind::Input ? "read as " : "written as ") + c.option + "; name another file");
         if (c.option == option) continue;  // one option writing a file twice, or its own folder's files
         if (same) throw InputError(option + " " + path + ": " + c.option + " writes there too; give each output its own " + (kind == Claim::Kind::Folder ? "folder" : "file"));
-        if (within) throw InputError(option + " " + path + ": lies in the folder " + c.option + " writes; name a file outside it");
-        if (kind == Claim::Kind::Folder && c.kind != Claim::Kind::Folder && inside(c.path, p))
+        if (within)
+            throw InputError(option + " " + path + (c.names.empty() ? ": lies in the folder " + c.option + " writes; name a file outside it" : ": " + c.option + " writes a file of that name in its folder; name another file"));
+        if (kind == Claim::Kind::Folder && c.kind != Claim::Kind::Folder && inside(c.path, p) && writes(made, c.path))
             throw InputError(option + " " + path + ": holds " + c.option + "'s file " + c.path.string() + "; name another folder");
     }
-    claims->push_back({p, option, kind});
+    claims->push_back(made);
 }
 
 }  // namespace
@@ -232,9 +245,9 @@ void OutputStream::commit() {
     committed_ = true;
 }
 
-void prepareOutputDir(const std::string& option, const std::string& dir) {
+void prepareOutputDir(const std::string& option, const std::string& dir, const std::vector<std::string>& names) {
     if (dir.empty()) throw InputError(option + ": the folder name is empty");
-    claim(option, dir, Claim::Kind::Folder);
+    claim(option, dir, Claim::Kind::Folder, names);
     struct stat st {};
     if (::stat(dir.c_str(), &st) == 0) {
         if (!S_ISDIR(st.st_mode)) throw InputError(option + " " + dir + ": exists and is not a folder; name a folder");

@@ -9,6 +9,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace holon::rules {
 
@@ -69,7 +70,10 @@ public:
 
 /// Makes sure `dir` is a folder holon can write into, creating it if missing (its parent must exist:
 /// a mistyped parent is refused, not created);
-/// throws InputError naming `option` and the reason.
-void prepareOutputDir(const std::string& option, const std::string& dir);
+/// throws InputError naming `option` and the reason. `names`, when given, are the only files the
+/// option writes there (a '*' matches any text: "snapshot-*.svg"); another option may then name
+/// any other file in the folder (plan --out run --plan-out run/plan.jsonl). Without them the
+/// whole folder is the option's.
+void prepareOutputDir(const std::string& option, const std::string& dir, const std::vector<std::string>& names = {});
 
 }  // namespace holon::rules

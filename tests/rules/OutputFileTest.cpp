@@ -96,6 +96,12 @@ TEST_CASE("while a job's outputs are claimed, no two options write the same file
         OutputFile("--out", out + "/summary.json");  // the folder's own files
         CHECK_THROWS_WITH_AS(OutputFile("--trace-out", out + "/summary.json"), doctest::Contains("lies in the folder --out writes"), InputError);
         CHECK_THROWS_WITH_AS(holon::rules::prepareOutputDir("--hex-disks", dir.string()), doctest::Contains("holds --plan-out's file"), InputError);
+        // A folder whose option declares its files shares the rest: plan --out run --plan-out run/plan.jsonl.
+        const std::string run = (dir / "run").string();
+        holon::rules::prepareOutputDir("--out", run, {"summary.json", "snapshot-*.svg"});
+        OutputFile("--plan-out", run + "/plan.jsonl");
+        CHECK_THROWS_WITH_AS(OutputFile("--html", run + "/snapshot-end.svg"), doctest::Contains("--out writes a file of that name in its folder"), InputError);
+        CHECK_THROWS_WITH_AS(holon::rules::prepareOutputDir("--smt-out", run, {"x.smt2"}), doctest::Contains("--out writes there too"), InputError);
         OutputClaims::reading("the input", (dir / "trace.json").string());
         CHECK_THROWS_WITH_AS(OutputFile("-o", (dir / "trace.json").string()), doctest::Contains("is also read as the input"), InputError);
         CHECK_THROWS_AS(OutputClaims(), holon::InternalError);  // one job at a time
