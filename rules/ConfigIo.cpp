@@ -338,10 +338,17 @@ Configuration configFromItf(const Interpreter& in, const nlohmann::json& itf, st
         throw InputError("the trace has " + std::to_string(count) + (count == 1 ? " state" : " states") + ", numbered 0 to " + std::to_string(count - 1) +
                          "; pick one as FILE#N, or give FILE alone for the last");
     if (itf.contains("#meta") && itf["#meta"].is_object() && itf["#meta"].contains("region") && itf["#meta"]["region"].is_string() &&
-        itf["#meta"]["region"].get<std::string>() != in.region().spec())
-        throw InputError("the trace is for region " + itf["#meta"]["region"].get<std::string>() + ", not " + in.region().spec() + "; run with " +
-                             parameterName(Parameter::Region) + " " + itf["#meta"]["region"].get<std::string>(),
-                         Parameter::Region);
+        itf["#meta"]["region"].get<std::string>() != in.region().spec()) {
+        const std::string named = itf["#meta"]["region"].get<std::string>();
+        // Advice only for a region that can be checked: "run with --region square:0x0" was none.
+        std::string advice = "; run with " + parameterName(Parameter::Region) + " " + named;
+        try {
+            Region::parse(named);
+        } catch (const InputError& e) {
+            advice = "; and the trace's region cannot be used: " + std::string(e.what());
+        }
+        throw InputError("the trace is for region " + excerpt(named, 80) + ", not " + in.region().spec() + advice, Parameter::Region);
+    }
     // The state becomes a configuration's JSON, so one reader checks cells, fields and inputs.
     try {
         return configFromJson(in, itfStateJson(states[k]), inputsNamed);

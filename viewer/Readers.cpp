@@ -405,7 +405,10 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
         in.seekg(0);
         return readLines(path, in, rulesFile);
     }
-    // One JSON document: an ITF trace (pretty-printed over many lines).
+    // One JSON document: an ITF trace (pretty-printed over many lines). An empty file is said to
+    // be one (its parse error pointed at line 2 of a file with none).
+    if (first.find_first_not_of(" \t\r\n") == std::string::npos && in.peek() == std::char_traits<char>::eof())
+        throw InputError(path + ": the file is empty; " + std::string(kFormats));
     std::stringstream rest;
     rest << first << '\n'
          << in.rdbuf();

@@ -70,3 +70,15 @@ TEST_CASE("a byte-order mark does not turn JSON into ASCII art, and a JSON error
         CHECK(std::string(e.what()).rfind("not valid JSON: parse error at line 1, column 12", 0) == 0);
     }
 }
+
+TEST_CASE("a trace for another region names the region to run with, and only one that can be") {
+    World w = World::library("pixel", "square:3x3");
+    const std::string trace = R"({"#meta":{"region":"REGION"},"vars":["cells"],"states":[{"cells":{"#map":[]}}]})";
+    const auto read = [&](const std::string& region) {
+        std::string text = trace;
+        text.replace(text.find("REGION"), 6, region);
+        return rules::configFromText(*w.in, text);
+    };
+    CHECK_THROWS_WITH_AS(read("square:4x4"), doctest::Contains("the trace is for region square:4x4, not square:3x3; run with"), InputError);
+    CHECK_THROWS_WITH_AS(read("square:0x0"), doctest::Contains("the trace's region cannot be used: bad region 'square:0x0'"), InputError);
+}

@@ -138,6 +138,7 @@ TEST_CASE("hostile inputs end in a located message, not a crash") {
     CHECK(viewer::readRun(write("empty_first.itf.json", empty)).cells.size() == 1);
     const std::string huge = R"({"#meta":{"system":"pixel"},"states":[{"cells":{"#map":[[{"#tup":[18446744073709551615,0]},{"state":"M"}]]}}]})";
     CHECK_THROWS_WITH_AS(viewer::readRun(write("huge.itf.json", huge)), doctest::Contains("huge.itf.json: state 0: a cell is [x, y] or [x, y, z] of integers"), InputError);
+    CHECK_THROWS_WITH_AS(viewer::readRun(write("empty.itf.json", "")), doctest::Contains("empty.itf.json: the file is empty; holon view reads"), InputError);
     // As check --from refuses them: a cell listed twice in a state, a loop to a state the trace lacks.
     const std::string twice = R"({"#meta":{"system":"pixel","region":"square:2x1"},"states":[{"cells":{"#map":[[{"#tup":[0,0]},{"state":"M"}],[{"#tup":[0,0]},{"state":"M"}]]}}]})";
     CHECK_THROWS_WITH_AS(viewer::readRun(write("twice.itf.json", twice)), doctest::Contains("twice.itf.json: state 0: cell [0,0] is listed twice"), InputError);
