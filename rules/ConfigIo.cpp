@@ -57,6 +57,29 @@ std::vector<std::string> rowTokens(const Region& region, const std::string& line
 
 }  // namespace
 
+nlohmann::json parseJsonOnceEach(const std::string& text) {
+    // The keys of each open object, innermost last: the parser reports keys as they come.
+    std::vector<std::vector<std::string>> open;
+    return nlohmann::json::parse(text, [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        switch (event) {
+        case nlohmann::json::parse_event_t::object_start: open.emplace_back(); break;
+        case nlohmann::json::parse_event_t::object_end: open.pop_back(); break;
+        case nlohmann::json::parse_event_t::key: {
+            const std::string key = parsed.get<std::string>();
+            auto& keys = open.back();
+            if (std::find(keys.begin(), keys.end(), key) != keys.end())
+                throw InputError("the key \"" + excerpt(key, 60) + "\" appears twice in one object; give each key once");
+            keys.push_back(key);
+            break;
+        }
+        case nlohmann::json::parse_event_t::array_start:
+        case nlohmann::json::parse_event_t::array_end:
+        case nlohmann::json::parse_event_t::value: break;
+        }
+        return true;
+    });
+}
+
 std::string jsonErrorText(const std::exception& e) {
     const std::string what = e.what();
     const auto tag = what.rfind("[json.exception.", 0) == 0 ? what.find("] ") : std::string::npos;
@@ -387,7 +410,7 @@ Configuration configFromText(const Interpreter& in, const std::string& withBom, 
     try {
         if (text[first] == '{') {
             checkJsonDepth(text);
-            const nlohmann::json j = nlohmann::json::parse(text);
+            const nlohmann::json j = parseJsonOnceEach(text);
             if (isItfTrace(j)) return configFromItf(in, j, index, inputsNamed);
             if (index) throw InputError("'#" + std::to_string(*index) + "' picks a state of an ITF trace, and this is a configuration; give " + path + " without it");
             return configFromJson(in, j, inputsNamed);

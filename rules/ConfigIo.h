@@ -30,6 +30,10 @@ std::vector<bool> maskFromAscii(const Region& region, const std::string& text);
 /// columns"), so the reader can say so; "" when it draws the whole region, or is not a picture.
 std::string pictureShortfall(const Region& region, const std::string& text);
 
+/// Parses JSON whose objects name each key once: a key given twice throws InputError (the
+/// library keeps the last one silently: a configuration with two "cells" lists lost the first).
+nlohmann::json parseJsonOnceEach(const std::string& text);
+
 /// A JSON library error as a user reads it: its text without the "[json.exception.parse_error.101] "
 /// tag ("parse error at line 1, column 2: syntax error ...").
 std::string jsonErrorText(const std::exception& e);

@@ -82,3 +82,11 @@ TEST_CASE("a trace for another region names the region to run with, and only one
     CHECK_THROWS_WITH_AS(read("square:4x4"), doctest::Contains("the trace is for region square:4x4, not square:3x3; run with"), InputError);
     CHECK_THROWS_WITH_AS(read("square:0x0"), doctest::Contains("the trace's region cannot be used: bad region 'square:0x0'"), InputError);
 }
+
+TEST_CASE("a key given twice in one JSON object is refused, not the last one kept") {
+    World w = World::library("pixel", "square:3x3");
+    CHECK_THROWS_WITH_AS(rules::configFromText(*w.in, R"({"cells":[{"at":[0,0],"state":"M"}],"cells":[]})"), doctest::Contains("the key \"cells\" appears twice in one object"), InputError);
+    CHECK_THROWS_WITH_AS(rules::configFromText(*w.in, R"({"cells":[{"at":[0,0],"state":"M","at":[1,1]}]})"), doctest::Contains("the key \"at\" appears twice"), InputError);
+    // The same key in different objects is fine.
+    CHECK(rules::configFromText(*w.in, R"({"cells":[{"at":[0,0],"state":"M"},{"at":[1,0],"state":"M"}]})").cells[w.region.indexOf({1, 0, 0})] != 0);
+}
