@@ -112,10 +112,11 @@ public:
         o.result.summary = ob.proved + " (window of radius " + std::to_string(ob.margin) + ", " + std::to_string(w.region().size()) + " cells)";
         for (std::size_t k = 0; k < act.size(); ++k) {
             budget.check("solving");
-            if (budget.limited()) solver.setTimeout(std::max(1u, static_cast<unsigned>(budget.remaining() * 1000)));
+            if (budget.limited()) solver.setTimeout(std::max(1u, static_cast<unsigned>((budget.remaining() + 0.05) * 1000)));  // past it: see ProofRunner::limitTime
             const smt::Result r = solver.check({act[k]});
             if (r == smt::Result::Unsat) continue;
             if (r == smt::Result::Unknown) {
+                ctx.checkStopped("solving");
                 o.result.verdict = Verdict::Unknown;
                 o.result.summary = "the solver gave up on rule '" + ruleOf(w, w.focus()[k]) + "': " + unknownReason(solver.reasonUnknown());
                 break;
@@ -166,7 +167,7 @@ private:
             solver.add(query);
             solver.add(enc.instantiate().all);
             for (const smt::Term& f : enc.facts()) solver.add(f);
-            if (budget.limited()) solver.setTimeout(std::max(1u, static_cast<unsigned>(budget.remaining() * 1000)));
+            if (budget.limited()) solver.setTimeout(std::max(1u, static_cast<unsigned>((budget.remaining() + 0.05) * 1000)));
             switch (solver.check()) {
             case smt::Result::Sat: {
                 const smt::Model m = solver.model();
@@ -175,7 +176,10 @@ private:
                 break;
             }
             case smt::Result::Unsat: why = "no configuration of " + concrete.spec() + " around it breaks the property"; break;
-            case smt::Result::Unknown: why = "the solver gave up completing it: " + unknownReason(solver.reasonUnknown()); break;
+            case smt::Result::Unknown:
+                ctx.checkStopped("completing the counterexample");
+                why = "the solver gave up completing it: " + unknownReason(solver.reasonUnknown());
+                break;
             }
         } catch (const OutOfTime& e) {
             why = e.what();

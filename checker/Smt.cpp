@@ -18,6 +18,7 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <unordered_set>
 
@@ -89,15 +90,22 @@ Context::Context(const Budget& budget) : budget_(budget) {
     if (!probe) throw Failure("out of memory");
     Z3_del_context(probe);
     native_ = new Native;
-    if (budget_.limited() || budget_.stoppable()) watcher_ = std::make_unique<Watcher>(*this);
+    try {
+        if (budget_.limited() || budget_.stoppable()) watcher_ = std::make_unique<Watcher>(*this);
+    } catch (const std::system_error&) {  // no thread to be had (ulimit -u): as out of memory
+        delete native_;
+        throw Failure("out of memory");
+    }
 }
 
 Context::~Context() {
     watcher_.reset();
     // Interrupted too: freeing took minutes after a SIGINT on square:30x30. And on the way out of
-    // a failure (Z3 out of memory): freeing square:60x60's formulas after the process hit its
-    // ulimit ran 10 minutes past a 30 s deadline.
-    if (!budget_.expired() && !budget_.interrupted() && std::uncaught_exceptions() == 0) {
+    // a failure (Z3 out of memory) when the job has a deadline: freeing square:60x60's formulas
+    // after the process hit its ulimit ran 10 minutes past a 30 s deadline. Without a deadline it
+    // is freed: kept, its memory made every later obligation run out at once.
+    const bool failing = std::uncaught_exceptions() > 0 && budget_.limited();
+    if (!budget_.expired() && !budget_.interrupted() && !failing) {
         delete native_;
         return;
     }
@@ -108,8 +116,24 @@ Context::~Context() {
 }
 
 void Context::checkStopped(const char* during) const {
-    if (watcher_ && watcher_->fired) budget_.check(during);
+    // The budget, not whether the watcher has fired yet: Z3's own timer, set to the time left,
+    // often cancels first (the watcher looks every 20 ms).
+    budget_.check(during);
 }
+
+namespace {
+/// Runs a Z3 call; a failure after the deadline or a signal (Z3_interrupt cancels the context for
+/// good, and every later call that reads its limits fails) is the budget's stop, not Z3's error.
+template <class F>
+auto guarded(const Context& ctx, const char* during, F&& call) {
+    try {
+        return call();
+    } catch (const Failure&) {
+        ctx.checkStopped(during);
+        throw;
+    }
+}
+}  // namespace
 
 Term Context::boolVal(bool b) { return wrap(*this, native_->bool_val(b)); }
 Term Context::intVal(std::int64_t n) { return wrap(*this, native_->int_val(n)); }
@@ -159,16 +183,11 @@ Term::~Term() {
 
 unsigned Term::id() const { return z(*this).id(); }
 Term Term::simplify() const {
-    try {
-        return wrap(*this, z(*this).simplify());
-    } catch (const Failure&) {
-        ctx_->checkStopped("simplifying a formula");
-        throw;
-    }
+    return guarded(*ctx_, "simplifying a formula", [&] { return wrap(*this, z(*this).simplify()); });
 }
 Term Term::substituteVars(const std::vector<Term>& values) const {
     z3::expr_vector v = vector(*ctx_, values);
-    return wrap(*this, z(*this).substitute(v));
+    return guarded(*ctx_, "building the formulas", [&] { return wrap(*this, z(*this).substitute(v)); });
 }
 Term::Op Term::op() const {
     const z3::expr e = z(*this);
@@ -245,20 +264,17 @@ Term Relation::operator()(const std::vector<Term>& args) const { return wrap(*ct
 
 namespace {
 z3::expr evaluated(const Context& ctx, const z3::model& model, const Term& e) {
-    try {
-        return model.eval(z(e), true);
-    } catch (const Failure&) {
-        ctx.checkStopped("reading the solver's model");
-        throw;
-    }
+    return guarded(ctx, "reading the solver's model", [&] { return model.eval(z(e), true); });
 }
 }  // namespace
 
 bool Model::isTrue(const Term& e) const { return evaluated(*ctx_, native_->model, e).is_true(); }
 int Model::intValue(const Term& e) const { return evaluated(*ctx_, native_->model, e).get_numeral_int(); }
 std::optional<Term> Model::definition(const Relation& r) const {
-    if (!native_->model.has_interp(r.native().decl)) return std::nullopt;
-    return wrap(*ctx_, native_->model.get_func_interp(r.native().decl).else_value());
+    return guarded(*ctx_, "reading the solver's model", [&]() -> std::optional<Term> {
+        if (!native_->model.has_interp(r.native().decl)) return std::nullopt;
+        return wrap(*ctx_, native_->model.get_func_interp(r.native().decl).else_value());
+    });
 }
 
 Solver::Solver(Context& ctx, Logic logic)
@@ -269,14 +285,11 @@ Solver::Solver(Context& ctx, Logic logic)
     native_->solver.set(params);
 }
 void Solver::add(const Term& e) {
-    try {
-        native_->solver.add(z(e));
-    } catch (const Failure&) {
-        ctx_->checkStopped("building the formulas");
-        throw;
-    }
+    guarded(*ctx_, "building the formulas", [&] { native_->solver.add(z(e)); });
 }
-void Solver::addFile(const std::string& path) { native_->solver.from_file(path.c_str()); }
+void Solver::addFile(const std::string& path) {
+    guarded(*ctx_, "reading the formulas", [&] { native_->solver.from_file(path.c_str()); });
+}
 
 namespace {
 Result result(z3::check_result r) {
@@ -289,19 +302,27 @@ Result result(z3::check_result r) {
 }
 }  // namespace
 
-Result Solver::check() { return result(native_->solver.check()); }
+Result Solver::check() {
+    return guarded(*ctx_, "solving", [&] { return result(native_->solver.check()); });
+}
 Result Solver::check(const std::vector<Term>& assumptions) {
     z3::expr_vector v = vector(*ctx_, assumptions);
-    return result(native_->solver.check(v));
+    return guarded(*ctx_, "solving", [&] { return result(native_->solver.check(v)); });
 }
-void Solver::push() { native_->solver.push(); }
-void Solver::pop() { native_->solver.pop(); }
+void Solver::push() {
+    guarded(*ctx_, "solving", [&] { native_->solver.push(); });
+}
+void Solver::pop() {
+    guarded(*ctx_, "solving", [&] { native_->solver.pop(); });
+}
 void Solver::setTimeout(unsigned milliseconds) {
     z3::params params(ctx_->native());
     params.set("timeout", milliseconds);  // added to the solver's parameters: ctrl_c stays off
     native_->solver.set(params);
 }
-Model Solver::model() const { return Model(*ctx_, std::make_shared<const Model::Native>(Model::Native{native_->solver.get_model()})); }
+Model Solver::model() const {
+    return guarded(*ctx_, "reading the solver's model", [&] { return Model(*ctx_, std::make_shared<const Model::Native>(Model::Native{native_->solver.get_model()})); });
+}
 std::string Solver::reasonUnknown() const { return native_->solver.reason_unknown(); }
 std::string Solver::toSmt2() const { return native_->solver.to_smt2(); }
 

@@ -144,9 +144,11 @@ Shape chair(std::string_view argument, std::string_view size, std::size_t maxCel
 Shape fromJson(std::string_view argument, const std::string& text) {
     nlohmann::json j;
     try {
-        j = nlohmann::json::parse(text);
+        j = rules::parseJsonOnceEach(text);
     } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number past a double
         bad(argument, "not valid JSON: " + rules::jsonErrorText(e));
+    } catch (const InputError& e) {  // a key given twice
+        bad(argument, e.what());
     }
     const nlohmann::json& list = j.is_object() && j.contains("cells") ? j["cells"] : j;
     if (!list.is_array()) bad(argument, "expected a JSON array of cells, or an object with a \"cells\" array");

@@ -248,7 +248,7 @@ Configuration configFromAscii(const Interpreter& in, const std::string& text) {
     const Alphabet& alphabet = in.model().alphabet();
     Configuration c = in.empty();
     const auto rows = asciiRows(region);
-    const auto textLines = pictureRows(text, region.lattice().kind() != LatticeKind::Hex2D);
+    const auto textLines = pictureRows(withoutBom(text), region.lattice().kind() != LatticeKind::Hex2D);
     if (textLines.size() > rows.size())
         throw InputError("the picture has " + std::to_string(textLines.size()) + " rows; region " + region.spec() + " has " + std::to_string(rows.size()));
     for (std::size_t r = 0; r < textLines.size(); ++r) {
@@ -271,7 +271,7 @@ Configuration configFromAscii(const Interpreter& in, const std::string& text) {
 std::vector<bool> maskFromAscii(const Region& region, const std::string& text) {
     std::vector<bool> mask(region.size(), false);
     const auto rows = asciiRows(region);
-    const auto textLines = pictureRows(text, region.lattice().kind() != LatticeKind::Hex2D);
+    const auto textLines = pictureRows(withoutBom(text), region.lattice().kind() != LatticeKind::Hex2D);
     if (textLines.size() > rows.size()) throw InputError("the mask has more rows than region " + region.spec());
     for (std::size_t r = 0; r < textLines.size(); ++r) {
         const auto tokens = rowTokens(region, textLines[r]);

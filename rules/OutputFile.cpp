@@ -19,6 +19,7 @@
 #include <string_view>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <utility>
 #include <vector>
 
 namespace holon::rules {
@@ -214,11 +215,19 @@ OutputStream::OutputStream(std::string option, std::string path) : option_(std::
         fd = ::mkstemp(temp_.data());
         if (fd < 0) throw InputError(option_ + " " + path_ + ": cannot create a file beside it: " + reason());
     }
-    buffer_ = std::make_unique<Buffer>(fd);
+    try {
+        buffer_ = std::make_unique<Buffer>(fd);
+    } catch (...) {
+        ::close(fd);
+        if (!temp_.empty()) ::unlink(temp_.c_str());
+        throw;
+    }
     out_ = std::make_unique<std::ostream>(buffer_.get());
 }
 
-OutputStream::OutputStream(OutputStream&&) noexcept = default;
+OutputStream::OutputStream(OutputStream&& o) noexcept
+    : option_(std::move(o.option_)), path_(std::move(o.path_)), temp_(std::exchange(o.temp_, {})), buffer_(std::move(o.buffer_)), out_(std::move(o.out_)),
+      committed_(o.committed_) {}  // the moved-from one no longer names the temporary it would remove
 
 OutputStream::~OutputStream() {
     if (!committed_ && !temp_.empty()) ::unlink(temp_.c_str());

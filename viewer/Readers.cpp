@@ -420,11 +420,13 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
         throw InputError(path + ": " + e.what());
     }
     try {
-        itf = nlohmann::json::parse(all);
+        itf = rules::parseJsonOnceEach(all);
     } catch (const nlohmann::json::parse_error& e) {
         throw InputError(path + ":" + lineColumn(all, e.byte == 0 ? 0 : e.byte - 1) + ": not JSON (" + rules::jsonErrorText(e) + "); " + kFormats);
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ":1: not JSON (" + rules::jsonErrorText(e) + "); " + kFormats);
+    } catch (const InputError& e) {  // a key given twice
+        throw InputError(path + ": " + e.what());
     }
     if (!itf.is_object() || !itf.contains("states")) throw InputError(path + ":1: neither an ITF trace (no \"states\") nor JSON Lines; " + std::string(kFormats));
     const nlohmann::json meta = itf.contains("#meta") ? itf["#meta"] : nlohmann::json::object();

@@ -63,6 +63,8 @@ TEST_CASE("a byte-order mark does not turn JSON into ASCII art, and a JSON error
     CHECK(rules::pictureShortfall(w.region, "\xEF\xBB\xBF{\"cells\":[]}").empty());
     CHECK(rules::pictureShortfall(w.region, "M\n") == "it draws 1 of the region's 3 rows and 1 of its 3 columns");
     CHECK(rules::pictureShortfall(w.region, "...\nM..\n...\n").empty());
+    CHECK(rules::maskFromAscii(w.region, "\xEF\xBB\xBF.#.\n...\n...\n")[w.region.indexOf({1, 0, 0})]);
+    CHECK(rules::configFromAscii(*w.in, "\xEF\xBB\xBFM..\n...\n...\n").cells[w.region.indexOf({0, 0, 0})] != 0);
     try {
         rules::configFromText(*w.in, "{\"cells\": [}");
         FAIL("accepted broken JSON");
