@@ -112,7 +112,7 @@ public:
         o.result.summary = ob.proved + " (window of radius " + std::to_string(ob.margin) + ", " + std::to_string(w.region().size()) + " cells)";
         for (std::size_t k = 0; k < act.size(); ++k) {
             budget.check("solving");
-            if (budget.limited()) solver.setTimeout(std::max(1u, static_cast<unsigned>((budget.remaining() + 0.05) * 1000)));  // past it: see ProofRunner::limitTime
+            solver.limitTime(budget);
             const smt::Result r = solver.check({act[k]});
             if (r == smt::Result::Unsat) continue;
             if (r == smt::Result::Unknown) {
@@ -167,7 +167,7 @@ private:
             solver.add(query);
             solver.add(enc.instantiate().all);
             for (const smt::Term& f : enc.facts()) solver.add(f);
-            if (budget.limited()) solver.setTimeout(std::max(1u, static_cast<unsigned>((budget.remaining() + 0.05) * 1000)));
+            solver.limitTime(budget);
             switch (solver.check()) {
             case smt::Result::Sat: {
                 const smt::Model m = solver.model();

@@ -67,11 +67,7 @@ smt::Solver ProofRunner::newSolver(smt::Context& ctx, SmtEncoding& enc, double t
 
 void ProofRunner::limitTime(smt::Solver& solver, const Budget& budget, double share) const {
     budget.check("building the formulas");
-    if (!budget.limited()) return;
-    // Past the job's deadline by a little: the watcher stops the check at the deadline as the
-    // budget's stop, and Z3's own timer, which ended it a moment before, read as the solver giving up.
-    const double seconds = std::min(options_.timeoutSeconds * share, budget.remaining() + 0.05);
-    solver.setTimeout(std::max(1u, static_cast<unsigned>(seconds * 1000)));
+    solver.limitTime(budget, options_.timeoutSeconds * share);
 }
 
 Obligation ProofRunner::solve(const std::string& name, const std::string& kind, smt::Context& ctx, SmtEncoding& enc, const smt::Term& query,

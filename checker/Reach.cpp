@@ -195,8 +195,7 @@ ReachProof solveHorn(smt::Context& ctx, const rules::Engine& engine, const BadSt
     // Spacer and each certificate check get the time left.
     auto limitTime = [&](smt::Solver& s) {
         budget.check("building the Horn clauses");
-        if (!budget.limited()) return;
-        s.setTimeout(std::max(1u, static_cast<unsigned>(budget.remaining() * 1000)));
+        s.limitTime(budget);
     };
     solver.add(clause(initBody, at(s)));
     solver.add(clause(stepBody && at(a), at(b)));

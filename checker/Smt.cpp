@@ -12,7 +12,7 @@
 #define Z3_THROW(x) throw ::holon::checker::smt::Failure((x).msg())
 #include <z3++.h>
 
-#include <atomic>
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <exception>
@@ -58,7 +58,6 @@ struct Context::Watcher {
     std::mutex mutex;
     std::condition_variable ended;
     bool done = false;
-    std::atomic<bool> fired{false};
     std::thread thread;
 
     explicit Watcher(const Context& ctx)
@@ -67,7 +66,6 @@ struct Context::Watcher {
               std::unique_lock lock(mutex);
               while (!ended.wait_for(lock, std::chrono::milliseconds(20), [&] { return done; }))
                   if (ctx.budget_.expired() || ctx.budget_.interrupted()) {
-                      fired = true;
                       Z3_interrupt(ctx.native());
                       return;
                   }
@@ -319,6 +317,11 @@ void Solver::setTimeout(unsigned milliseconds) {
     z3::params params(ctx_->native());
     params.set("timeout", milliseconds);  // added to the solver's parameters: ctrl_c stays off
     native_->solver.set(params);
+}
+void Solver::limitTime(const Budget& budget, double capSeconds) {
+    if (!budget.limited()) return;
+    const double seconds = std::min(capSeconds, budget.remaining() + 0.05);
+    setTimeout(std::max(1u, static_cast<unsigned>(seconds * 1000)));
 }
 Model Solver::model() const {
     return guarded(*ctx_, "reading the solver's model", [&] { return Model(*ctx_, std::make_shared<const Model::Native>(Model::Native{native_->solver.get_model()})); });

@@ -54,8 +54,8 @@ public:
     struct Native;  // the Z3 context, in Smt.cpp
     Native& native() const { return *native_; }
     const Budget& budget() const { return budget_; }
-    /// Throws the budget's OutOfTime or Interrupted once the watcher has interrupted Z3 (which
-    /// then fails every call that checks its limits); `during` says what was cut short.
+    /// Throws the budget's OutOfTime or Interrupted once it is spent or a signal is caught (the
+    /// watcher has then interrupted Z3, or is about to); `during` says what was cut short.
     void checkStopped(const char* during) const;
 
 private:
@@ -187,6 +187,11 @@ public:
     void push();
     void pop();
     void setTimeout(unsigned milliseconds);
+    /// Z3's own timer for the checks to come: the time `budget` has left, at most `capSeconds`;
+    /// none without a deadline. It runs a little past the deadline, so that the context's watcher
+    /// stops the check at the deadline as the budget's stop (Z3's timer, ending it a moment
+    /// before, read as the solver giving up).
+    void limitTime(const Budget& budget, double capSeconds = 1e9);
     /// Of the last check, when it was Sat.
     Model model() const;
     /// Of the last check, when it was Unknown.

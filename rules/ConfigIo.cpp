@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
+#include <unordered_set>
 
 namespace holon::rules {
 
@@ -58,18 +59,16 @@ std::vector<std::string> rowTokens(const Region& region, const std::string& line
 }  // namespace
 
 nlohmann::json parseJsonOnceEach(const std::string& text) {
-    // The keys of each open object, innermost last: the parser reports keys as they come.
-    std::vector<std::vector<std::string>> open;
+    // The keys of each open object, innermost last: the parser reports keys as they come. A set:
+    // one object of a 64 MiB file may have a million keys.
+    std::vector<std::unordered_set<std::string>> open;
     return nlohmann::json::parse(text, [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
         switch (event) {
         case nlohmann::json::parse_event_t::object_start: open.emplace_back(); break;
         case nlohmann::json::parse_event_t::object_end: open.pop_back(); break;
         case nlohmann::json::parse_event_t::key: {
             const std::string key = parsed.get<std::string>();
-            auto& keys = open.back();
-            if (std::find(keys.begin(), keys.end(), key) != keys.end())
-                throw InputError("the key \"" + excerpt(key, 60) + "\" appears twice in one object; give each key once");
-            keys.push_back(key);
+            if (!open.back().insert(key).second) throw InputError("the key \"" + excerpt(key, 60) + "\" appears twice in one object; give each key once");
             break;
         }
         case nlohmann::json::parse_event_t::array_start:
