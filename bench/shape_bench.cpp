@@ -45,6 +45,7 @@ struct Options {
 struct Outcome {
     bool complete = false;
     std::int64_t transfers = 0, rounds = 0;
+    std::int64_t firstChange = -1;  // the round of the first creation or deletion, -1 if none
     double seconds = 0;
     std::string stopped;
 };
@@ -55,8 +56,14 @@ Outcome run(const rules::Model& model, const bench::ShapePair& pair, const std::
     planner::RunOptions options;
     options.scheduler = planner::Scheduler::Sync, options.seed = seed, options.budget = Budget(timeout);
     planner::Execution ex(problem, *alloc, options);
-    const planner::RunStats s = ex.run();
-    return {s.complete, s.transfers, s.rounds, s.seconds, stopReasonName(s.stopped)};
+    std::int64_t firstChange = -1;
+    planner::RunObserver observer;
+    observer.roundEnd = [&](const planner::RunStats& now) {
+        if (firstChange < 0 && now.creations + now.deletions > 0) firstChange = now.rounds;
+        return true;
+    };
+    const planner::RunStats s = ex.run(observer);
+    return {s.complete, s.transfers, s.rounds, firstChange, s.seconds, stopReasonName(s.stopped)};
 }
 
 struct Distribution {
@@ -128,7 +135,7 @@ int main(int argc, char** argv) try {
     std::ofstream csv;
     if (!o.csv.empty()) {
         csv.open(o.csv);
-        csv << "dimension,index,family,start,target,bound,intermediate_rounds,allocator,complete,transfers,rounds,seconds,stopped\n";
+        csv << "dimension,index,family,start,target,bound,intermediate_rounds,allocator,complete,transfers,rounds,seconds,stopped,first_change_round\n";
     }
     int incomplete = 0;
     const rules::System general = rules::librarySystem(o.system), intermediate = rules::librarySystem("planner_intermediate");
@@ -139,6 +146,7 @@ int main(int argc, char** argv) try {
         const rules::Lattice& lattice = rules::Lattice::get(dimension == 3 ? rules::LatticeKind::Cubic3D : rules::LatticeKind::Square2D);
         const rules::Model generalModel(general, lattice), intermediateModel(intermediate, lattice);
         std::map<std::string, Tally> tally;
+        Distribution beforeChange;  // per problem: the fewest rounds before a creation or deletion, over the intermediate's
         int redrawn = 0;
         std::vector<double> sizes;
         for (int index = 0; index < pairs; ++index) {
@@ -160,8 +168,10 @@ int main(int argc, char** argv) try {
                 for (const auto& [name, shape] : {std::pair{"start", &pair.start}, std::pair{"target", &pair.target}})
                     writeCells(o.shapesOut + "/" + std::to_string(dimension) + "d_" + std::to_string(index) + "_" + name + ".json", *shape);
             const Outcome base = run(intermediateModel, pair, "random", o.timeout, o.seed);
+            std::int64_t fewestBeforeChange = -1;
             for (const std::string& allocator : o.allocators) {
                 const Outcome r = run(generalModel, pair, allocator, o.timeout, o.seed);
+                if (r.firstChange >= 0 && (fewestBeforeChange < 0 || r.firstChange < fewestBeforeChange)) fewestBeforeChange = r.firstChange;
                 Tally& t = tally[allocator];
                 t.seconds += r.seconds;
                 if (!r.complete) ++t.incomplete, ++incomplete;
@@ -173,8 +183,9 @@ int main(int argc, char** argv) try {
                 if (csv.is_open())
                     csv << dimension << ',' << index << ',' << pair.family << ',' << pair.start.cells.size() << ',' << pair.target.cells.size() << ',' << bound << ','
                         << base.rounds << ',' << allocator << ',' << (r.complete ? 1 : 0) << ',' << r.transfers << ',' << r.rounds << ',' << r.seconds << ','
-                        << r.stopped << '\n';
+                        << r.stopped << ',' << r.firstChange << '\n';
             }
+            if (fewestBeforeChange > 0 && base.complete && base.rounds > 0) beforeChange.values.push_back(double(fewestBeforeChange - 1) / double(base.rounds));
         }
         if (sizes.empty()) continue;  // --only names no problem of this dimension
         std::sort(sizes.begin(), sizes.end());
@@ -187,6 +198,9 @@ int main(int argc, char** argv) try {
             std::printf("%-10s %-22s %-22s %10d %9d %8.1f\n", allocator.c_str(), t.transfers.show().c_str(), t.rounds.show().c_str(), t.incomplete, t.zeroBound,
                         t.seconds);
         }
+        const auto over3 = std::count_if(beforeChange.values.begin(), beforeChange.values.end(), [](double v) { return v > 3; });
+        std::printf("%-33s %-22s (over 3 on %d of %zu problems)\n", "rounds before a creation/deletion", beforeChange.show().c_str(), int(over3),
+                    beforeChange.values.size());
     }
     return incomplete == 0 ? 0 : 1;
 } catch (const std::exception& e) {

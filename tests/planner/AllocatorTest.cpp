@@ -5,7 +5,9 @@
 // that the problems still tell the allocators apart (the gradient allocator breaks the bound on
 // at least one), so a generator that drew only easy problems would fail it too. The eager
 // allocator against demand on the block at K = 16: under 0.7 times demand's rounds (measured
-// 0.55) and 1.5 times the bound (measured 1.33).
+// 0.55) and 1.5 times the bound (measured 1.33). And what no allocator can change: a start with no
+// creator waits for the relabelling wave before anything else can happen, which on a spiral start
+// is more rounds than issue 28's 3 times the intermediate planner's (docs/allocators.md).
 
 #include "PlannerSupport.h"
 #include "ShapeGenerator.h"
@@ -92,6 +94,42 @@ TEST_CASE("eager allocator: the C's no creation claims are drawn on, so the bloc
     REQUIRE(eager.complete);
     CHECK(double(eager.rounds) < 0.7 * double(demand.rounds));
     CHECK(double(eager.transfers) < 1.5 * double(planner::transferLowerBound(p)));
+}
+
+TEST_CASE("a start with no creator: the rounds before the first deletion are the relabelling wave's under every allocator, over 3x the intermediate planner's on a spiral") {
+    // 2D problem 13 of the shape bench (seed 1, about 300 metamodules): a one-wide spiral of 253
+    // metamodules -> a polyomino of 206. Measured: 251 rounds of relabelling, then the first
+    // deletion; the intermediate planner takes 40 rounds in all.
+    PlannerSystem general("planner_general1", 2), intermediate("planner_intermediate", 2);
+    const bench::ShapePair pair = bench::shapePair(2, 1, 13, 0, 300, 1.9);
+    REQUIRE(pair.family == "spiral->polyomino");
+    const planner::Problem p = planner::makeProblem(*general.model, pair.start, pair.target, rules::Vec{}, 1);
+    const planner::Problem base = planner::makeProblem(*intermediate.model, pair.start, pair.target, rules::Vec{}, 1);
+    REQUIRE(p.creators == 0);
+    auto firstChange = [](const planner::Problem& problem, const std::string& name) {
+        auto a = planner::makeAllocator(name, problem, 1);
+        planner::RunOptions options;
+        options.seed = 1, options.budget = Budget::maxRounds(100000);
+        planner::Execution ex(problem, *a, options);
+        std::int64_t first = -1, transfersBefore = 0;
+        planner::RunObserver observer;
+        observer.roundEnd = [&](const planner::RunStats& now) {
+            if (first < 0 && now.creations + now.deletions > 0) first = now.rounds;
+            if (first < 0) transfersBefore = now.transfers;
+            return true;
+        };
+        const planner::RunStats s = ex.run(observer);
+        CHECK(s.complete);
+        CHECK(transfersBefore == 0);  // no C to move: the allocator has nothing to decide
+        return std::pair{first, s.rounds};
+    };
+    const std::int64_t baseRounds = firstChange(base, "random").second;
+    const std::int64_t wave = firstChange(p, "random").first;
+    for (const char* name : {"gradient", "demand", "eager", "optimal"}) {
+        CAPTURE(name);
+        CHECK(firstChange(p, name).first == wave);
+    }
+    CHECK(double(wave - 1) > 3.0 * double(baseRounds));
 }
 
 }  // namespace holon::test
