@@ -70,6 +70,7 @@ PathResult aStarPath(const rules::Engine& engine, const Footprints& footprints, 
             std::copy(cells.begin(), cells.end(), after.begin());
             engine.forEachMatch(cells.data(), [&](int placed) {
                 engine.apply(after.data(), placed, saved);
+                if (stop == StopReason::Finished) stop = meter.poll();
                 if (stop == StopReason::Finished) {
                     const rules::Engine::Placed& instance = engine.instances()[placed];
                     StateId next = tree.findNear(id, instance, after.data());

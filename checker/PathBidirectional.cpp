@@ -58,7 +58,8 @@ PathResult bidirectionalPath(const rules::Engine& engine, const Predecessors& pr
             evaluator.load(cells.data());
             const auto visit = [&](int placed, const CellValue* next) {
                 const rules::Engine::Placed& instance = engine.instances()[placed];
-                if (meet[0] != kNoState || stop != StopReason::Finished || tree.findNear(id, instance, next) != kNoState || !legalNear(evaluator, instance, cells.data(), next)) return;
+                if (meet[0] != kNoState || stop != StopReason::Finished || (stop = meter.poll()) != StopReason::Finished) return;
+                if (tree.findNear(id, instance, next) != kNoState || !legalNear(evaluator, instance, cells.data(), next)) return;
                 if ((stop = meter.admit(states())) != StopReason::Finished) return;
                 const StateId found = tree.addMissing(id, placed);
                 if (const StateId other = trees[1 - side].findAsIn(tree); other != kNoState) meet[side] = found, meet[1 - side] = other;
@@ -76,6 +77,7 @@ PathResult bidirectionalPath(const rules::Engine& engine, const Predecessors& pr
             }
             if (stop == StopReason::Finished) stop = meter.check(states(), bytes(), depth[0] + depth[1]);
         }
+        if (stop != StopReason::Finished) break;  // a level cut short is not finished: no bound from it
         begin[side] = end, ++depth[side];
     }
     if (meet[0] == kNoState) {

@@ -112,13 +112,17 @@ public:
     StopReason admit(std::uint64_t stored) const;
     /// Asked after: StopReason::Finished while within the memory bound and the budget.
     StopReason check(std::uint64_t states, std::size_t bytes, int depth);
+    /// Asked of every candidate step, stored or not: the deadline and the signals, read every 16th
+    /// call. One candidate's legality check can cost as much as the region is large (pixel's
+    /// connectivity), so the clock read after every 1,024 stored states came minutes late.
+    StopReason poll();
     ExploreStats finish(std::uint64_t states, std::size_t bytes, int depth, StopReason why) const;
 
 private:
     const PathQuery* query_;
     Budget budget_;
     double lastReport_ = 0;
-    std::uint32_t ticks_ = 0;
+    std::uint32_t ticks_ = 0, polls_ = 0;
 };
 
 class Evaluator;

@@ -81,6 +81,12 @@ StopReason SearchMeter::check(std::uint64_t states, std::size_t bytes, int depth
     return StopReason::Finished;
 }
 
+StopReason SearchMeter::poll() {
+    if (++polls_ < 16) return StopReason::Finished;
+    polls_ = 0;
+    return budget_.reached().value_or(StopReason::Finished);
+}
+
 ExploreStats SearchMeter::finish(std::uint64_t states, std::size_t bytes, int depth, StopReason why) const {
     ExploreStats s;
     s.states = states, s.bytes = bytes, s.depth = depth, s.stopped = why, s.seconds = budget_.elapsed();

@@ -227,6 +227,32 @@ TEST_CASE("a path search stopped by a limit is undecided, not unreachable") {
     }
 }
 
+TEST_CASE("a path search stopped by a limit claims no path within d steps only when the shortest is longer, for every cap") {
+    // A stopped search reports how far it got: stats.depth steps with no path. A bidirectional
+    // search cut off in the middle of a level counted that level as finished and claimed one step
+    // too many ("none within 12 steps" with a 12-step path).
+    World w = World::library("pixel", "square:4x4");
+    checker::PathQuery query;
+    query.from = w.ascii("M...\n....\n....\n....\n");
+    query.to = w.ascii("....\n....\n....\n...M\n");
+    const rules::Engine engine(*w.model, w.region, query.from.inputs);
+    for (const auto search : kSearches) {
+        INFO(checker::pathSearchName(search));
+        query.search = search;
+        query.limits.maxStates = 1'000'000;
+        const auto found = checker::shortestPath(engine, query);
+        REQUIRE(found.outcome == checker::PathOutcome::Found);
+        const int shortest = static_cast<int>(found.trace.steps.size()) - 1;
+        for (std::uint64_t cap = 1; cap < found.stats.states; ++cap) {
+            CAPTURE(cap);
+            query.limits.maxStates = cap;
+            const auto stopped = checker::shortestPath(engine, query);
+            if (stopped.outcome != checker::PathOutcome::Undecided) continue;
+            CHECK(stopped.stats.depth < shortest);
+        }
+    }
+}
+
 TEST_CASE("a path search that stores exactly Limits::maxStates states decides, one that needs one more is undecided") {
     World w = World::library("pixel", "square:4x4");
     checker::PathQuery query;
