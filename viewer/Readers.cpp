@@ -18,6 +18,8 @@
 #include "rules/Region.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -81,8 +83,11 @@ public:
             label = filled ? system.fields[fill_].name + " = " + system.fields[fill_].values[values[fill_]] : "no " + (fill_ >= 0 ? system.fields[fill_].name : "fill field");
             words = checker::cellText(system, values);
         } else {
-            const int m = fields.size() == 1 && fields.contains("module") && fields["module"].is_number_integer() ? fields["module"].get<int>() : -1;
-            if (m < 0 || m >= static_cast<int>(colours_.size())) throw InputError(where + ": " + key + " is not " + what_);
+            // Compared as 64-bit: narrowed first, 2^32 + 1 read as metamodule 1.
+            const std::int64_t wide = fields.size() == 1 && fields.contains("module") && fields["module"].is_number_integer() ? fields["module"].get<std::int64_t>() : -1;
+            if (wide < 0 || wide >= static_cast<std::int64_t>(colours_.size()) || (fields["module"].is_number_unsigned() && fields["module"].get<std::uint64_t>() > INT64_MAX))
+                throw InputError(where + ": " + key + " is not " + what_);
+            const int m = static_cast<int>(wide);
             colour = colours_[m], label = "metamodule " + std::to_string(m), words = std::to_string(m);
         }
         const int s = run_->state(key, colour, words);
@@ -219,8 +224,14 @@ Run readLines(const std::string& path, std::istream& in, const std::string& rule
     std::optional<States> states;
     if (kind == "roombots") {
         const nlohmann::json colours = head.contains("colours") ? head["colours"] : nlohmann::json();
-        if (!colours.is_array() || !std::all_of(colours.begin(), colours.end(), [](const auto& c) { return c.is_string(); }))
-            throw InputError(where1 + ": a Roombots run's first line lists its metamodules' \"colours\"; write it again with holon roombots --out");
+        // A colour goes into the page's styles: only #rrggbb, never markup a file could smuggle in.
+        const auto hexColour = [](const nlohmann::json& c) {
+            if (!c.is_string()) return false;
+            const std::string& t = c.get_ref<const std::string&>();
+            return t.size() == 7 && t[0] == '#' && std::all_of(t.begin() + 1, t.end(), [](char h) { return std::isxdigit(static_cast<unsigned char>(h)) != 0; });
+        };
+        if (!colours.is_array() || !std::all_of(colours.begin(), colours.end(), hexColour))
+            throw InputError(where1 + ": a Roombots run's first line lists its metamodules' \"colours\" as \"#rrggbb\" strings; write it again with holon roombots --out");
         states.emplace(run, head["colours"].get<std::vector<std::string>>());
     } else {
         system.emplace(loadNamed(rulesFile, text(head, "source"), text(head, "system"), where1));

@@ -153,4 +153,22 @@ TEST_CASE("hostile inputs end in a located message, not a crash") {
     CHECK(viewer::readRun(write("loop.itf.json", fine)).notes.back() == "the last state loops back to state 0");
     const std::string roombots = R"({"run":"roombots","colours":[1,2],"start":{"region":"cubic:2x2x2","cells":[]}})";
     CHECK_THROWS_WITH_AS(viewer::readRun(write("rb.jsonl", roombots)), doctest::Contains("rb.jsonl:1: a Roombots run's first line lists its metamodules' \"colours\""), InputError);
+    // A colour goes into the page's styles: markup there ran script when the page was opened.
+    const std::string run = R"({"run":"roombots","colours":[COLOUR,"#d62728"],"start":{"region":"cubic:2x2x2","cells":[{"at":[0,0,0],"module":MODULE}]}})";
+    const auto roombotsRun = [&](const std::string& colour, const std::string& module) {
+        std::string text = run;
+        text.replace(text.find("COLOUR"), 6, colour);
+        text.replace(text.find("MODULE"), 6, module);
+        return viewer::readRun(write("rb_run.jsonl", text));
+    };
+    CHECK(roombotsRun("\"#1f77b4\"", "1").cells.size() == 8);
+    for (const char* colour : {R"("red\"><img src=x onerror=\"alert(1)\">")", R"("red")", R"("#12345g")", R"("#1234567")"}) {
+        CAPTURE(colour);
+        CHECK_THROWS_WITH_AS(roombotsRun(colour, "1"), doctest::Contains("as \"#rrggbb\" strings"), InputError);
+    }
+    // Module numbers are compared before they are narrowed: 2^32 + 1 was drawn as metamodule 1.
+    for (const char* module : {"4294967297", "4294967296", "9223372036854775808", "18446744073709551615", "-1", "2"}) {
+        CAPTURE(module);
+        CHECK_THROWS_WITH_AS(roombotsRun("\"#1f77b4\"", module), doctest::Contains("is not a metamodule of the run"), InputError);
+    }
 }
