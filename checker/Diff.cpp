@@ -8,94 +8,135 @@
 
 #include "rules/Budget.h"
 
+#include <algorithm>
 #include <map>
+#include <span>
 #include <unordered_map>
-#include <unordered_set>
 
 namespace holon::checker {
 
 namespace {
 
-using Key = std::vector<std::uint32_t>;
-
-struct KeyHash {
-    std::size_t operator()(const Key& k) const {
-        std::size_t h = 1469598103934665603ull;
-        for (std::uint32_t v : k) h = (h ^ v) * 1099511628211ull;
-        return h;
-    }
-};
-
-/// Names of cell states, numbered in the order met, shared by both designs.
+/// Names of cell states, numbered in the order met, shared by both designs: per design, the
+/// number of each of its values (a lookup per cell, not a string per cell and state).
 class NameTable {
 public:
-    Key key(const rules::Engine& engine, const std::vector<CellValue>& cells) {
-        Key k(cells.size());
-        for (std::size_t i = 0; i < cells.size(); ++i) {
-            const std::string name = engine.model().alphabet().name(cells[i]);
-            k[i] = ids_.emplace(name, static_cast<std::uint32_t>(ids_.size())).first->second;
-        }
-        return k;
+    std::vector<std::uint32_t> numbers(const rules::Engine& engine) {
+        const rules::Alphabet& alphabet = engine.model().alphabet();
+        std::vector<std::uint32_t> out(static_cast<std::size_t>(alphabet.size()));
+        for (int v = 0; v < alphabet.size(); ++v)
+            out[static_cast<std::size_t>(v)] = ids_.emplace(alphabet.name(static_cast<CellValue>(v)), static_cast<std::uint32_t>(ids_.size())).first->second;
+        return out;
     }
 
 private:
     std::map<std::string, std::uint32_t> ids_;
 };
 
-/// One side: every state's key, and the index from keys to states.
+/// One side: every state's key (its cells' state numbers) in one flat array, and the states by
+/// the key's hash.
 struct Keyed {
-    std::vector<Key> keyOf;  // by state id (empty for holes)
-    std::unordered_map<Key, StateId, KeyHash> stateOf;
+    std::size_t cells = 0;
+    std::vector<std::uint32_t> keys;  // state s's key at keys[s * cells, (s + 1) * cells); holes are zeros
+    std::unordered_multimap<std::uint64_t, StateId> byHash;
+    std::span<const std::uint32_t> key(StateId s) const { return {keys.data() + static_cast<std::size_t>(s) * cells, cells}; }
+    static std::uint64_t hash(std::span<const std::uint32_t> k) {
+        std::uint64_t h = 1469598103934665603ull;
+        for (std::uint32_t v : k) h = (h ^ v) * 1099511628211ull;
+        return h;
+    }
+    StateId find(std::span<const std::uint32_t> k) const {
+        const auto [from, to] = byHash.equal_range(hash(k));
+        for (auto it = from; it != to; ++it)
+            if (std::equal(k.begin(), k.end(), key(it->second).begin())) return it->second;
+        return kNoState;
+    }
 };
 
-Keyed keyAll(const ExploredDesign& d, NameTable& names) {
+/// Reads the budget every 4,096 states: a comparison of millions of states takes seconds.
+struct Pacer {
+    const Budget* budget;
+    std::uint32_t ticks = 0;
+    std::optional<StopReason> stop;
+    bool stopped() {
+        if (stop) return true;
+        if (++ticks < 4096) return false;
+        ticks = 0;
+        stop = budget->reached();
+        return stop.has_value();
+    }
+};
+
+std::optional<Keyed> keyAll(const ExploredDesign& d, NameTable& names, Pacer& pacer) {
     Keyed k;
-    k.keyOf.resize(d.explorer->store().capacityUsed());
+    const std::vector<std::uint32_t> number = names.numbers(*d.engine);
+    k.cells = static_cast<std::size_t>(d.engine->region().size());
+    k.keys.assign(d.explorer->store().capacityUsed() * k.cells, 0);
+    k.byHash.reserve(d.explorer->stats().states);
     for (StateId s : d.explorer->ids()) {
-        k.keyOf[s] = names.key(*d.engine, d.explorer->cells(s));
-        k.stateOf.emplace(k.keyOf[s], s);
+        if (pacer.stopped()) return std::nullopt;
+        const std::vector<CellValue> cells = d.explorer->cells(s);
+        std::uint32_t* key = k.keys.data() + static_cast<std::size_t>(s) * k.cells;
+        for (std::size_t i = 0; i < k.cells; ++i) key[i] = number[cells[i]];
+        k.byHash.emplace(Keyed::hash(k.key(s)), s);
     }
     return k;
 }
 
-/// Whether `other` has the step from the configuration keyed `from` to the one keyed `to`.
-bool hasStep(const ExploredDesign& other, const Keyed& keyed, const Key& from, const Key& to) {
-    const auto f = keyed.stateOf.find(from), t = keyed.stateOf.find(to);
-    if (f == keyed.stateOf.end() || t == keyed.stateOf.end()) return false;
+/// Whether `other` has the step from its state f to its state t (kNoState: it lacks the configuration).
+bool hasStep(const ExploredDesign& other, StateId f, StateId t) {
+    if (f == kNoState || t == kNoState) return false;
     const auto& row = other.explorer->rowStart();
     const auto& succ = other.explorer->successors();
-    for (std::uint64_t e = row[f->second]; e < row[f->second + 1]; ++e)
-        if (succ[e] == t->second) return true;
+    for (std::uint64_t e = row[f]; e < row[f + 1]; ++e)
+        if (succ[e] == t) return true;
     return false;
+}
+
+/// Steps from a start to state s along the explorer's tree.
+std::size_t depthOf(const Explorer& ex, StateId s) {
+    std::size_t depth = 0;
+    for (StateId p = ex.parent(s); p != kNoState; p = ex.parent(p)) ++depth;
+    return depth;
 }
 
 }  // namespace
 
-DesignDifference compareDesigns(const ExploredDesign& a, const ExploredDesign& b) {
+std::variant<DesignDifference, StopReason> compareDesigns(const ExploredDesign& a, const ExploredDesign& b, const Budget& budget) {
     NameTable names;
+    Pacer pacer{&budget, 0, std::nullopt};
     const ExploredDesign sides[2] = {a, b};
-    const Keyed keyed[2] = {keyAll(a, names), keyAll(b, names)};
+    std::optional<Keyed> keyed[2];
+    for (int side = 0; side < 2; ++side)
+        if (!(keyed[side] = keyAll(sides[side], names, pacer))) return *pacer.stop;
     DesignDifference diff;
+    std::vector<StateId> seen;  // a state's distinct successors: several instances may lead to one
+    std::vector<StateId> twin;  // per state of this side: the other side's state of the same configuration
     for (int side = 0; side < 2; ++side) {
-        const ExploredDesign& mine = sides[side];
         const ExploredDesign& other = sides[1 - side];
-        const Keyed& k = keyed[side];
-        const Explorer& ex = *mine.explorer;
+        const Keyed& k = *keyed[side];
+        const Explorer& ex = *sides[side].explorer;
         const auto& row = ex.rowStart();
         const auto& succ = ex.successors();
+        twin.assign(ex.store().capacityUsed(), kNoState);
+        for (StateId s : ex.ids()) {
+            if (pacer.stopped()) return *pacer.stop;
+            ++diff.states[side];
+            if ((twin[s] = keyed[1 - side]->find(k.key(s))) == kNoState) ++diff.onlyStates[side];
+        }
         StateId nearest = kNoState;
         std::uint64_t nearestEdge = 0;
         std::size_t nearestDepth = 0;
         for (StateId s : ex.ids()) {
-            ++diff.states[side];
-            if (!keyed[1 - side].stateOf.count(k.keyOf[s])) ++diff.onlyStates[side];
-            std::unordered_set<StateId> seen;  // several instances may lead to one successor
+            if (pacer.stopped()) return *pacer.stop;
+            seen.clear();
             for (std::uint64_t e = row[s]; e < row[s + 1]; ++e) {
-                if (!seen.insert(succ[e]).second) continue;
+                if (std::find(seen.begin(), seen.end(), succ[e]) != seen.end()) continue;
+                seen.push_back(succ[e]);
                 ++diff.transitions[side];
-                if (hasStep(other, keyed[1 - side], k.keyOf[s], k.keyOf[succ[e]])) continue;
+                if (hasStep(other, twin[s], twin[succ[e]])) continue;
                 ++diff.onlyTransitions[side];
-                const std::size_t depth = ex.pathTo(s).size();
+                const std::size_t depth = depthOf(ex, s);
                 if (nearest == kNoState || depth < nearestDepth) nearest = s, nearestEdge = e, nearestDepth = depth;
             }
         }
@@ -154,8 +195,10 @@ DiffReport diff(const rules::Model& a, const rules::Model& b, const rules::Regio
         x.explorer->explore();
         report.systems[side] = models[side]->system().name;
     }
-    if (report.stopped() < 0)
-        report.difference = compareDesigns({report.explored[0].engine.get(), report.explored[0].explorer.get()}, {report.explored[1].engine.get(), report.explored[1].explorer.get()});
+    if (report.stopped() >= 0) return report;
+    auto compared = compareDesigns({report.explored[0].engine.get(), report.explored[0].explorer.get()}, {report.explored[1].engine.get(), report.explored[1].explorer.get()}, budget);
+    if (auto* d = std::get_if<DesignDifference>(&compared)) report.difference = std::move(*d);
+    else report.comparisonStopped = std::get<StopReason>(compared);
     return report;
 }
 

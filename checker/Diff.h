@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <optional>
+#include <variant>
 #include <string>
 #include <vector>
 
@@ -33,8 +34,9 @@ struct DesignDifference {
     bool same() const { return !onlyTransitions[0] && !onlyTransitions[1] && !onlyStates[0] && !onlyStates[1]; }
 };
 
-/// Compares two fully explored designs (the caller checks that neither stopped at a limit).
-DesignDifference compareDesigns(const ExploredDesign& a, const ExploredDesign& b);
+/// Compares two fully explored designs (the caller checks that neither stopped at a limit), or
+/// says why it stopped: the budget's deadline or a signal, read as it goes.
+std::variant<DesignDifference, StopReason> compareDesigns(const ExploredDesign& a, const ExploredDesign& b, const Budget& budget);
 
 struct DiffOptions {
     /// For the whole comparison: one timeout, and memoryBytes shared by the two explorations.
@@ -49,8 +51,10 @@ struct DiffOptions {
 struct DiffReport {
     std::string systems[2], region;
     Exploration explored[2];
-    /// Set when both explorations finished.
+    /// Set when both explorations and the comparison finished.
     std::optional<DesignDifference> difference;
+    /// Why the comparison stopped (the deadline, a signal) when both explorations finished; else unset.
+    std::optional<StopReason> comparisonStopped;
     /// The first design (0 for A, 1 for B) whose exploration a limit stopped, or -1.
     int stopped() const;
     /// What a side's transition witness shows: "A fires 'rule' after 2 steps; B has no such step".

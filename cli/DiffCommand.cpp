@@ -32,7 +32,9 @@ struct Design {
 };
 
 int run(const DiffArgs& a) {
-    if (a.all == !a.from.empty()) throw InputError("say where both designs start: --from CONFIG (repeatable), or --all for every legal configuration, not both");
+    if (a.all == !a.from.empty())
+        throw InputError(std::string(a.all ? "--all and --from name both" : "say") + " where both designs start: --from CONFIG (repeatable), or --all for every legal configuration" +
+                         (a.all ? "; give one" : ""));
     const rules::Region region = rules::Region::parse(a.region, 1u << 22);
     const rules::StopSignals guard(true);  // a signal stops the exploration: undecided, 128 + the signal
     std::optional<rules::OutputFile> svgOut;
@@ -51,18 +53,31 @@ int run(const DiffArgs& a) {
         options.initial[side] = readStarts(*d.in, a.from, a.inputs, &options.inputs[side]);
     }
     const checker::DiffReport report = checker::diff(*designs[0].model, *designs[1].model, region, options);
+    // Undecided: a limit or a signal stopped an exploration or the comparison after them.
+    const auto undecided = [&](const std::string& what, StopReason why, std::optional<std::uint64_t> states) {
+        if (svgOut) std::cerr << "holon: note: --svg " << a.svg << " is not written: the comparison is undecided\n";
+        if (a.json) {
+            nlohmann::json j = {{"a", report.systems[0]}, {"b", report.systems[1]}, {"region", region.spec()}, {"outcome", "undecided"}, {"stopped", stopReasonName(why)}, {"while", what}};
+            if (states) j["states"] = *states;
+            std::cout << j.dump(2) << '\n';
+        } else {
+            std::cout << "undecided: " << what << " stopped by " << stopReasonName(why) << (states ? " after " + std::to_string(*states) + " states" : "")
+                      << (limitOption(why).empty() ? "" : "; raise the limit (--max-states, --timeout or --memory) to compare whole graphs") << '\n';
+        }
+        return exitCodeFor(why, caughtSignal());
+    };
     if (const int side = report.stopped(); side >= 0) {
         const auto& st = report.explored[side].explorer->stats();
-        std::cout << "undecided: exploring " << report.systems[side] << " stopped by " << stopReasonName(st.stopped) << " after " << st.states << " states"
-                  << (limitOption(st.stopped).empty() ? "" : "; raise the limit (--max-states, --timeout or --memory) to compare whole graphs") << '\n';
-        return exitCodeFor(st.stopped, caughtSignal());
+        return undecided(std::string("exploring ") + (side ? "B (" : "A (") + report.systems[side] + ")", st.stopped, st.states);
     }
+    if (report.comparisonStopped) return undecided("comparing the two graphs", *report.comparisonStopped, std::nullopt);
     const checker::DesignDifference& d = *report.difference;
     const int code = d.same() ? kExitOk : kExitViolated;
     // The witness drawn: B's extra transition first (a variant's new move), else A's.
     const int shown = d.transitionWitness[1] ? 1 : d.transitionWitness[0] ? 0
                                                                           : -1;
     if (svgOut && shown >= 0) svgOut->write(checker::drawTraceSvg(*d.transitionWitness[shown], *report.explored[shown].engine, report.witnessText(shown)));
+    if (svgOut && shown < 0) std::cerr << "holon: note: --svg " << a.svg << " is not written: no transition differs, so there is nothing to draw\n";
     if (a.json) {
         std::cout << report.toJson().dump(2) << '\n';
         return code;

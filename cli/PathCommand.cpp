@@ -46,7 +46,9 @@ checker::PathSearch searchNamed(const std::string& name) {
 }
 
 int run(const PathArgs& a) {
-    if (a.to.empty() == !a.goal) throw InputError("say where to go: --to CONFIG (JSON or ASCII art) or --goal (any configuration where the system's goal holds), not both");
+    if (a.to.empty() == !a.goal)
+        throw InputError(std::string(a.goal ? "--to and --goal both say" : "say") + " where to go: --to CONFIG (JSON or ASCII art) or --goal (any configuration where the system's goal holds)" +
+                         (a.goal ? "; give one" : ""));
     const checker::PathSearch search = searchNamed(a.search);
     auto system = loadRules(a.file, a.noWarnings);
     if (!system) return kExitBadInput;
@@ -96,6 +98,9 @@ int run(const PathArgs& a) {
     if (found && traceOut) traceOut->write(checker::toItf(result.trace, engine, a.file).dump(2) + "\n");
     if (found && svgOut) svgOut->write(checker::drawTraceSvg(result.trace, engine, title));
     if (found && htmlOut) htmlOut->write(viewer::page(viewer::readItf(checker::toItf(result.trace, engine, a.file), "the shortest path", *system)));
+    if (!found)
+        for (const auto& [option, out] : {std::pair{"--trace-out", &traceOut}, std::pair{"--svg", &svgOut}, std::pair{"--html", &htmlOut}})
+            if (*out) std::cerr << "holon: note: " << option << " " << (*out)->path() << " is not written: no path was found (" << outcomeName(result.outcome) << ")\n";
 
     const auto& s = result.stats;
     int code = kExitOk;

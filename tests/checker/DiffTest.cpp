@@ -83,7 +83,9 @@ TEST_CASE("diff counts equal the set differences of independently computed trans
     const rules::Configuration &startA = g.startA, &startB = g.startB;
     const ReferenceGraph &ga = g.ga, &gb = g.gb;
     Design da(a.system, "square:4x2", startA), db(b.system, "square:4x2", startB);
-    const auto d = checker::compareDesigns({da.engine.get(), da.explorer.get()}, {db.engine.get(), db.explorer.get()});
+    const auto compared = checker::compareDesigns({da.engine.get(), da.explorer.get()}, {db.engine.get(), db.explorer.get()}, Budget());
+    REQUIRE(std::holds_alternative<checker::DesignDifference>(compared));
+    const auto& d = std::get<checker::DesignDifference>(compared);
     CHECK(d.states[0] == ga.states.size());
     CHECK(d.states[1] == gb.states.size());
     CHECK(d.transitions[0] == ga.transitions.size());
@@ -108,11 +110,27 @@ TEST_CASE("a design compared with itself has no difference") {
     World a = World::library("pixel", "square:3x3");
     const auto start = a.ascii("M..\nMM.\n...\n");
     Design d1(a.system, "square:3x3", start), d2(a.system, "square:3x3", start);
-    const auto d = checker::compareDesigns({d1.engine.get(), d1.explorer.get()}, {d2.engine.get(), d2.explorer.get()});
+    const auto compared = checker::compareDesigns({d1.engine.get(), d1.explorer.get()}, {d2.engine.get(), d2.explorer.get()}, Budget());
+    REQUIRE(std::holds_alternative<checker::DesignDifference>(compared));
+    const auto& d = std::get<checker::DesignDifference>(compared);
     CHECK(d.same());
     CHECK(d.transitions[0] == d.transitions[1]);
     CHECK(d.transitions[0] > 0);
     CHECK_FALSE(d.transitionWitness[0]);
+}
+
+TEST_CASE("the comparison reads the budget: a deadline that passes while it runs makes it undecided") {
+    // The comparison once ran 50 s past --timeout 10 (pixel on square:5x5, every configuration).
+    World a = World::library("pixel", "square:4x4");
+    const auto start = a.ascii("M...\n....\n....\n....\n");
+    Design d1(a.system, "square:4x4", start), d2(a.system, "square:4x4", start);
+    REQUIRE(d1.explorer->stats().states > 4096);  // the comparison reads the clock every 4,096 states
+    const auto stopped = checker::compareDesigns({d1.engine.get(), d1.explorer.get()}, {d2.engine.get(), d2.explorer.get()}, Budget(1e-9));
+    REQUIRE(std::holds_alternative<StopReason>(stopped));
+    CHECK(std::get<StopReason>(stopped) == StopReason::Timeout);
+    const auto whole = checker::compareDesigns({d1.engine.get(), d1.explorer.get()}, {d2.engine.get(), d2.explorer.get()}, Budget(3600));
+    REQUIRE(std::holds_alternative<checker::DesignDifference>(whole));
+    CHECK(std::get<checker::DesignDifference>(whole).same());
 }
 
 TEST_CASE("a library caller diffs two designs without the CLI: checker::diff explores both and compares") {
