@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include <optional>
-#include <variant>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace holon::checker {
