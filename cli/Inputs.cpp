@@ -7,6 +7,7 @@
 #include "rules/Error.h"
 #include "rules/Escape.h"
 #include "rules/Library.h"
+#include "rules/OutputFile.h"
 #include "rules/Parser.h"
 #include "rules/Printer.h"
 
@@ -46,7 +47,9 @@ CLI::Option* addRulesFiles(CLI::App* sub, const std::string& name, std::vector<s
 }
 
 std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings) {
-    return rules::loadSystem(rules::rulesPath(file), std::cerr, loadOptions(noWarnings));
+    const std::string path = rules::rulesPath(file);
+    rules::OutputClaims::reading("the rule file", path);
+    return rules::loadSystem(path, std::cerr, loadOptions(noWarnings));
 }
 
 namespace {
@@ -76,6 +79,7 @@ std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::v
         // An input false (or true) everywhere is a value to state, not what a forgotten mask means.
         std::vector<bool> mask(region.size(), path == "all");
         if (path != "none" && path != "all") {
+            rules::OutputClaims::reading("--input " + name, path);
             try {
                 const std::string text = rules::readTextFile(path);
                 // An empty file is a mistake (a failed redirection), not a way to say "nowhere".

@@ -15,6 +15,7 @@
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
+#include "rules/OutputFile.h"
 #include "rules/PlanLines.h"
 
 #include <filesystem>
@@ -54,11 +55,18 @@ int run(const Args& a) {
     const rules::Model model(*system, region.lattice());
     const rules::Interpreter in(model, region);
     rules::Configuration now;
+    std::uint32_t named = 0;
     try {
-        now = rules::configFromJson(in, start);
+        now = rules::configFromJson(in, start, &named);
     } catch (const InputError& e) {
         throw InputError(a.plan + ":1: " + e.what());
     }
+    // holon plan writes every input; one missing was read as false everywhere, and the first step
+    // that reads it was reported as an illegal plan.
+    for (std::size_t k = 0; k < system->inputs.size(); ++k)
+        if (!(named >> k & 1u))
+            throw InputError(a.plan + ":1: the start configuration does not set input '" + system->inputs[k] + "' of system " + system->name +
+                             "; write the plan again with holon plan --plan-out");
 
     std::int64_t steps = 0, losses = 0;
     rules::PlanLine step;

@@ -9,6 +9,7 @@
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Limits.h"
+#include "rules/OutputFile.h"
 #include "rules/Parameter.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
@@ -262,6 +263,7 @@ Shape fromFile(std::string_view argument, std::size_t maxCells, std::uint64_t me
         for (const auto& [name, what] : shapeGenerators()) known += (known.empty() ? "" : ", ") + name;
         bad(argument, "neither a shape generator (" + known + ") nor a readable file");
     }
+    rules::OutputClaims::reading("the shape", path);
     const std::string text = rules::readTextFile(path);
     auto endsWith = [&](std::string_view suffix) { return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0; };
     if (endsWith(".json")) return fromJson(argument, text);

@@ -11,6 +11,7 @@
 
 #include "rules/Error.h"
 #include "rules/Escape.h"
+#include "rules/OutputFile.h"
 #include "rules/Parameter.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
@@ -59,6 +60,7 @@ std::vector<std::string> rowTokens(const Region& region, const std::string& line
 }  // namespace
 
 nlohmann::json parseJsonOnceEach(const std::string& text) {
+    checkJsonText(text);
     // The keys of each open object, innermost last: the parser reports keys as they come. A set:
     // one object of a 64 MiB file may have a million keys.
     std::vector<std::unordered_set<std::string>> open;
@@ -85,7 +87,7 @@ std::string jsonErrorText(const std::exception& e) {
     return tag == std::string::npos ? what : what.substr(tag + 2);
 }
 
-void checkJsonDepth(const std::string& text) {
+void checkJsonText(const std::string& text) {
     int depth = 0, line = 1;
     std::size_t lineStart = 0;
     bool inString = false;
@@ -105,6 +107,9 @@ void checkJsonDepth(const std::string& text) {
         } else if (c == '\n') {
             ++line, lineStart = i + 1;
         }
+        // The JSON library reads a NUL as the end of the input: what follows was silently dropped.
+        if (c == '\0')
+            throw InputError("line " + std::to_string(line) + ", column " + std::to_string(i - lineStart + 1) + ": a NUL byte; JSON text has none: is it the right file?");
     }
 }
 
@@ -391,6 +396,7 @@ Configuration readConfigFile(const Interpreter& in, const std::string& spec, std
             throw InputError(spec + ": after '#' comes the index of a state of an ITF trace, as in " + path + "#0 for the first state");
         index = std::stoi(n);
     }
+    OutputClaims::reading("the configuration", path);
     try {
         return configFromText(in, readTextFile(path), index, inputsNamed, path);
     } catch (const InputError& e) {
@@ -408,7 +414,7 @@ Configuration configFromText(const Interpreter& in, const std::string& withBom, 
         throw InputError("the file is empty; a configuration is JSON or ASCII art, with '.' for each empty cell");
     try {
         if (text[first] == '{') {
-            checkJsonDepth(text);
+            checkJsonText(text);
             const nlohmann::json j = parseJsonOnceEach(text);
             if (isItfTrace(j)) return configFromItf(in, j, index, inputsNamed);
             if (index) throw InputError("'#" + std::to_string(*index) + "' picks a state of an ITF trace, and this is a configuration; give " + path + " without it");

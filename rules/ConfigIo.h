@@ -32,15 +32,17 @@ std::string pictureShortfall(const Region& region, const std::string& text);
 
 /// Parses JSON whose objects name each key once: a key given twice throws InputError (the
 /// library keeps the last one silently: a configuration with two "cells" lists lost the first).
+/// The text is checked first (checkJsonText).
 nlohmann::json parseJsonOnceEach(const std::string& text);
 
 /// A JSON library error as a user reads it: its text without the "[json.exception.parse_error.101] "
 /// tag ("parse error at line 1, column 2: syntax error ...").
 std::string jsonErrorText(const std::exception& e);
 
-/// Refuses JSON nested deeper than any configuration or trace (InputError with the line and
-/// column where it gets too deep), before a parser recurses into it.
-void checkJsonDepth(const std::string& text);
+/// Refuses JSON nested deeper than any configuration or trace, and a NUL byte (the parser takes it
+/// for the end and drops the rest), with InputError naming the line and column, before a parser
+/// recurses into the text.
+void checkJsonText(const std::string& text);
 
 /// True for an ITF trace (holon's --trace-out: an object with "states"), false for a configuration.
 bool isItfTrace(const nlohmann::json& j);

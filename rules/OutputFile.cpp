@@ -93,6 +93,7 @@ void claim(const std::string& option, const std::string& path, Claim::Kind kind,
     const fs::path p = canonicalOf(path);
     const Claim made{p, option, kind, false, names};
     for (const Claim& c : *claims) {
+        if (kind == Claim::Kind::Input && c.kind == Claim::Kind::Input) continue;  // a file read twice, or as two inputs
         const bool same = c.path == p, within = c.kind == Claim::Kind::Folder && kind != Claim::Kind::Folder && inside(p, c.path) && writes(c, p);
         if ((same && c.kind == Claim::Kind::Input) || (same && kind == Claim::Kind::Input && c.kind != Claim::Kind::Folder))
             throw InputError(option + " " + path + ": is also " + (c.kind == Claim::Kind::Input ? "read as " : "written as ") + c.option + "; name another file");

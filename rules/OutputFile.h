@@ -64,7 +64,9 @@ public:
     ~OutputClaims();
     OutputClaims(const OutputClaims&) = delete;
     OutputClaims& operator=(const OutputClaims&) = delete;
-    /// An input the job reads that no output may replace (view's trace), named by `option`.
+    /// An input the job reads that no output may replace, named by `option`: every file a command
+    /// reads its rules, configurations, masks and shapes from (path --svg once replaced the rule
+    /// file it was given, and exit 0 said the job was done).
     static void reading(const std::string& option, const std::string& path);
 };
 

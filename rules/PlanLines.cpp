@@ -1,6 +1,8 @@
 // The reader of plan-format JSON Lines (PlanLines.h). A line is parsed only after its nesting is
-// checked (checkJsonDepth), so a hostile file cannot make the parser recurse; cells are read as
-// bounded lattice points with the start's offset added, so callers index their cells directly.
+// checked (checkJsonText), so a hostile file cannot make the parser recurse, and as the other
+// readers parse (a key given twice is refused); a line is read up to kMaxLineBytes, so /dev/zero
+// ends in a message, not all of memory. Cells are read as bounded lattice points with the start's
+// offset added, so callers index their cells directly.
 
 #include "rules/PlanLines.h"
 
@@ -9,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 
 namespace holon::rules {
 
@@ -21,9 +24,34 @@ Vec pointFromJson(const nlohmann::json& j, const std::string& where) {
     return {j[0].get<int>(), j[1].get<int>(), j.size() == 3 ? j[2].get<int>() : 0};
 }
 
+namespace {
+
+/// std::getline with a bound: false at the end of the input; InputError past kMaxLineBytes or at a
+/// NUL byte (/dev/zero is refused at once).
+bool boundedLine(std::istream& in, std::string& line, const std::string& where) {
+    line.clear();
+    char chunk[1 << 16];
+    for (;;) {
+        in.get(chunk, sizeof chunk, '\n');
+        const auto got = static_cast<std::size_t>(in.gcount());
+        if (std::memchr(chunk, '\0', got)) throw InputError(where + ": a NUL byte; a plan's lines are JSON text: is it the right file?");
+        line.append(chunk, got);
+        if (line.size() > PlanLineReader::kMaxLineBytes)
+            throw InputError(where + ": a line longer than " + std::to_string(PlanLineReader::kMaxLineBytes >> 20) + " MiB; is it the right file?");
+        if (in.eof()) return !line.empty();
+        if (in.fail()) in.clear();  // an empty read: the next character is the newline
+        if (in.peek() == '\n') {
+            in.get();
+            return true;
+        }
+    }
+}
+
+}  // namespace
+
 PlanLineReader::PlanLineReader(std::istream& in, std::string path) : in_(&in), path_(std::move(path)) {
     std::string first;
-    std::getline(in, first);
+    boundedLine(in, first, path_ + ":1");
     head_ = parse(first);
     if (!head_.is_object()) throw InputError(where() + ": expected a JSON object");
     if (head_.contains("start") && head_["start"].is_object() && head_["start"].contains("offset"))
@@ -43,8 +71,7 @@ const nlohmann::json& PlanLineReader::start() const {
 
 nlohmann::json PlanLineReader::parse(const std::string& text) const {
     try {
-        checkJsonDepth(text);
-        return nlohmann::json::parse(text);
+        return parseJsonOnceEach(text);
     } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number past a double
         throw InputError(where() + ": not a JSON line (" + jsonErrorText(e) + "); the file is cut short or was edited by hand: write it again");
     } catch (const InputError& e) {
@@ -55,7 +82,7 @@ nlohmann::json PlanLineReader::parse(const std::string& text) const {
 bool PlanLineReader::next(PlanLine& line) {
     std::string text;
     do {
-        if (!std::getline(*in_, text)) return false;
+        if (!boundedLine(*in_, text, path_ + ":" + std::to_string(lineNo_ + 1))) return false;
         ++lineNo_;
     } while (text.find_first_not_of(" \t\r") == std::string::npos);
     nlohmann::json j = parse(text);

@@ -32,6 +32,8 @@ struct PlanLine {
 
 class PlanLineReader {
 public:
+    /// The longest line read: a 10^7-metamodule start configuration is about 300 MB.
+    static constexpr std::size_t kMaxLineBytes = std::size_t{1} << 30;
     /// Reads the first line (InputError "PATH:1: ..." when it is not a JSON object).
     PlanLineReader(std::istream& in, std::string path);
     const nlohmann::json& head() const { return head_; }

@@ -236,6 +236,11 @@ Run readLines(const std::string& path, std::istream& in, const std::string& rule
     } else {
         system.emplace(loadNamed(rulesFile, text(head, "source"), text(head, "system"), where1));
         states.emplace(run, *system, rules::Lattice::get(run.lattice));
+        // The commands that write runs write every input; one missing would be drawn as nowhere.
+        for (const std::string& name : system->inputs)
+            if (!start.contains("inputs") || !start["inputs"].is_object() || !start["inputs"].contains(name))
+                throw InputError(where1 + ": the start configuration does not set input '" + name + "' of system " + system->name +
+                                 "; write the file again with the holon command that made it");
     }
     run.title = (kind == "plan" ? "plan " : kind == "hex" ? "hex run "
                                                           : "Roombots run ") +
@@ -405,7 +410,7 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
     nlohmann::json head;
     bool line = false;
     try {
-        rules::checkJsonDepth(first);
+        rules::checkJsonText(first);
         head = nlohmann::json::parse(first);
         line = head.is_object() && !head.contains("states");
     } catch (const nlohmann::json::exception&) {
@@ -426,7 +431,7 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
     const std::string all = rest.str();
     nlohmann::json itf;
     try {
-        rules::checkJsonDepth(all);
+        rules::checkJsonText(all);
     } catch (const InputError& e) {
         throw InputError(path + ": " + e.what());
     }
