@@ -50,6 +50,8 @@ struct Element {
 
 bool nameChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' || c == ':'; }
 
+constexpr std::size_t kMaxDepth = 64;
+
 void walkXml(std::string_view text, Places& places, const std::function<void(const Element&)>& onElement,
              const std::function<void(std::string_view)>& onComment) {
     std::vector<std::pair<std::string, std::size_t>> open;
@@ -105,6 +107,9 @@ void walkXml(std::string_view text, Places& places, const std::function<void(con
                 if (!e.attributes.emplace(attribute, std::string(text.substr(j + 1, end - j - 1))).second) places.bad(nameStart, "attribute " + attribute + " given twice");
                 j = end + 1;
             }
+            // A world nests 4 deep; each element's path names its ancestors, so depth must be
+            // bounded (10^6 nested elements took over 10 minutes to read).
+            if (open.size() >= kMaxDepth) places.bad(i, "<" + name + "> is nested " + std::to_string(open.size() + 1) + " elements deep; a VisibleSim world nests at most a few");
             for (const auto& [ancestor, offset] : open) e.path += ancestor + "/";
             e.path += name;
             rootSeen = true;

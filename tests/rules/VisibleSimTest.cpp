@@ -238,4 +238,8 @@ TEST_CASE("malformed worlds are refused at their line and column") {
           "line 2, column 45: this position is beyond +-536870912 in holon's coordinates; give a smaller grid or offset");
     CHECK(readRefusal("<!-- only a comment") == "line 1, column 5: a comment is not closed ('-->' missing)");
     CHECK(readRefusal("") == "line 1, column 1: no element; a VisibleSim world is an XML file with a <world> element");
+    // Nesting is bounded: every element's path names its ancestors, so 10^6 levels took minutes.
+    std::string deep = head + "<block position=\"1,1,0\"/>\n";
+    for (int k = 0; k < 100; ++k) deep += "<a>";
+    CHECK(readRefusal(deep) == "line 4, column 187: <a> is nested 65 elements deep; a VisibleSim world nests at most a few");
 }
