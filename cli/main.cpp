@@ -7,6 +7,8 @@
 #include "rules/Error.h"
 #include "rules/Escape.h"
 
+#include "rules/StopSignals.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -79,6 +81,7 @@ std::string stdoutFailure() {
 }  // namespace
 
 int main(int argc, char** argv) {
+    holon::rules::endOnSignalsCleanly();
     if (!isatty(STDOUT_FILENO)) checkedStdout.install();
     int code = holon::cli::runHolon(argc, argv);
     const std::string lost = stdoutFailure();

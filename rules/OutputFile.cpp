@@ -9,12 +9,14 @@
 #include "rules/Error.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <fnmatch.h>
+#include <mutex>
 #include <sstream>
 #include <string_view>
 #include <sys/stat.h>
@@ -55,6 +57,30 @@ bool writeAll(int fd, std::string_view text) {
 }  // namespace
 
 namespace {
+
+/// The temporaries being written now, for removeTemporaries: fixed buffers and lock-free flags, so
+/// a signal handler can read them (unlink is async-signal-safe; nothing here allocates).
+constexpr int kTemporaries = 32;
+char temporaryPaths[kTemporaries][4096];
+std::atomic<bool> temporaryInUse[kTemporaries];
+std::mutex temporaryLock;  // between threads that start or finish writing; never taken in a handler
+
+/// Registers a temporary; -1 when the table is full or the path too long (then it is not removed
+/// on a signal, only on an error).
+int trackTemporary(const std::string& path) {
+    const std::lock_guard<std::mutex> hold(temporaryLock);
+    for (int k = 0; k < kTemporaries; ++k)
+        if (!temporaryInUse[k].load() && path.size() < sizeof temporaryPaths[k]) {
+            std::memcpy(temporaryPaths[k], path.c_str(), path.size() + 1);
+            temporaryInUse[k].store(true);
+            return k;
+        }
+    return -1;
+}
+
+void untrackTemporary(int k) {
+    if (k >= 0) temporaryInUse[k].store(false);
+}
 
 /// The paths claimed while an OutputClaims lives: a file or folder, the option that names it, and
 /// whether it is a folder (whose files belong to that option) or an input (nothing may replace it).
@@ -156,6 +182,10 @@ void OutputFile::write(const std::string& text) const {
     std::string temp = path_ + ".tmp-XXXXXX";
     const int fd = ::mkstemp(temp.data());
     if (fd < 0) throw fail("cannot create a file beside it");
+    struct Tracked {
+        int k;
+        ~Tracked() { untrackTemporary(k); }
+    } tracked{trackTemporary(temp)};
     const bool written = writeAll(fd, text) && ::fsync(fd) == 0;
     const int saved = errno;
     const bool closed = ::close(fd) == 0;
@@ -215,12 +245,14 @@ OutputStream::OutputStream(std::string option, std::string path) : option_(std::
         temp_ = path_ + ".tmp-XXXXXX";
         fd = ::mkstemp(temp_.data());
         if (fd < 0) throw InputError(option_ + " " + path_ + ": cannot create a file beside it: " + reason());
+        tracked_ = trackTemporary(temp_);
     }
     try {
         buffer_ = std::make_unique<Buffer>(fd);
     } catch (...) {
         ::close(fd);
         if (!temp_.empty()) ::unlink(temp_.c_str());
+        untrackTemporary(std::exchange(tracked_, -1));
         throw;
     }
     out_ = std::make_unique<std::ostream>(buffer_.get());
@@ -228,10 +260,11 @@ OutputStream::OutputStream(std::string option, std::string path) : option_(std::
 
 OutputStream::OutputStream(OutputStream&& o) noexcept
     : option_(std::move(o.option_)), path_(std::move(o.path_)), temp_(std::exchange(o.temp_, {})), buffer_(std::move(o.buffer_)), out_(std::move(o.out_)),
-      committed_(o.committed_) {}  // the moved-from one no longer names the temporary it would remove
+      committed_(o.committed_), tracked_(std::exchange(o.tracked_, -1)) {}  // the moved-from one no longer names the temporary it would remove
 
 OutputStream::~OutputStream() {
     if (!committed_ && !temp_.empty()) ::unlink(temp_.c_str());
+    untrackTemporary(tracked_);
 }
 
 void OutputStream::commit() {
@@ -253,6 +286,12 @@ void OutputStream::commit() {
             throw InputError(option_ + " " + path_ + ": cannot move the finished file into place: " + reason());
     }
     committed_ = true;
+    untrackTemporary(std::exchange(tracked_, -1));
+}
+
+void removeTemporaries() noexcept {
+    for (int k = 0; k < kTemporaries; ++k)
+        if (temporaryInUse[k].load()) ::unlink(temporaryPaths[k]);
 }
 
 void prepareOutputDir(const std::string& option, const std::string& dir, const std::vector<std::string>& names) {

@@ -32,7 +32,13 @@ private:
     std::unique_ptr<Buffer> buffer_;
     std::unique_ptr<std::ostream> out_;
     bool committed_ = false;
+    int tracked_ = -1;  // its entry among the temporaries removeTemporaries removes
 };
+
+/// Removes every temporary being written now (async-signal-safe): a signal that ends holon before
+/// its files are renamed into place leaves none behind (export interrupted mid-write left 200 MB
+/// of FILE.tmp-XXXXXX).
+void removeTemporaries() noexcept;
 
 class OutputFile {
 public:

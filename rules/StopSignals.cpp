@@ -3,6 +3,8 @@
 
 #include "rules/StopSignals.h"
 
+#include "rules/OutputFile.h"
+
 #include <cstdint>
 #include <ctime>
 
@@ -19,6 +21,16 @@ std::int64_t nowNs() {
     return std::int64_t{now.tv_sec} * 1'000'000'000 + now.tv_nsec;
 }
 
+/// Ends holon as the signal would, without the temporaries it was writing: the signal comes again
+/// with its default action, at once or, where the handler blocks it, as the handler returns.
+void endNow(int signal) {
+    removeTemporaries();
+    ::signal(signal, SIG_DFL);
+    ::raise(signal);
+}
+
+extern "C" void onEndSignal(int signal) { endNow(signal); }
+
 extern "C" void onStopSignal(int signal) {
     if (caughtSignal == 0) {
         firstAtNs = nowNs();
@@ -28,10 +40,7 @@ extern "C" void onStopSignal(int signal) {
     // A second signal ends holon at once, unless it repeats the first within a second: GNU timeout
     // signals the process and then its group, two deliveries of one request, and the second one
     // killed runs mid-write, leaving temporary files and no summary.
-    if (endOnSecond && (signal != caughtSignal || nowNs() - firstAtNs >= 1'000'000'000)) {
-        ::signal(signal, SIG_DFL);
-        ::raise(signal);
-    }
+    if (endOnSecond && (signal != caughtSignal || nowNs() - firstAtNs >= 1'000'000'000)) endNow(signal);
 }
 
 int depth = 0;  // catchers installed one inside another (verify's, then a solver race's)
@@ -60,5 +69,17 @@ StopSignals::~StopSignals() {
 }
 
 const volatile std::sig_atomic_t* StopSignals::caught() { return &caughtSignal; }
+
+void endOnSignalsCleanly() {
+    struct sigaction action {
+    }, old{};
+    action.sa_handler = onEndSignal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_NODEFER;  // the re-raised signal is delivered at once, with its default action
+    for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        sigaction(signal, &action, &old);
+        if (old.sa_handler == SIG_IGN) sigaction(signal, &old, nullptr);  // a shell's background job, nohup
+    }
+}
 
 }  // namespace holon::rules

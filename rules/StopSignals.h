@@ -28,4 +28,9 @@ private:
     int outerEndOnSecond_;
 };
 
+/// For the whole process, outside any StopSignals: SIGINT, SIGTERM and SIGHUP end holon as they
+/// would, after removing the temporaries being written (rules::removeTemporaries). A signal the
+/// caller ignores stays ignored.
+void endOnSignalsCleanly();
+
 }  // namespace holon::rules

@@ -4,11 +4,14 @@
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
 #include "rules/Parser.h"
+#include "rules/StopSignals.h"
 
 #include <doctest/doctest.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using holon::InputError;
 using holon::rules::OutputFile;
@@ -58,6 +61,42 @@ TEST_CASE("a piecewise write appears whole on commit and not at all when abandon
     s.commit();
     CHECK(holon::rules::readTextFile((dir / "plan.jsonl").string()) == "whole\n");
     CHECK(entries(dir) == 1);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a signal that ends holon mid-write leaves no temporary behind") {
+    // export interrupted while writing a 400 MB world left FILE.tmp-XXXXXX: the process died of the
+    // signal with the temporary still open. A child writes and is signalled; it must die of that
+    // signal (as before) and leave its folder empty.
+    const fs::path dir = fs::temp_directory_path() / "holon_output_signal_test";
+    for (const int signal : {SIGINT, SIGTERM}) {
+        CAPTURE(signal);
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        const pid_t child = ::fork();
+        REQUIRE(child >= 0);
+        if (child == 0) {
+            holon::rules::endOnSignalsCleanly();
+            auto s = OutputFile("--visiblesim", (dir / "world.xml").string()).open();
+            s.stream() << std::string(1 << 20, 'x');
+            s.stream().flush();
+            ::raise(signal);
+            ::_exit(0);  // not reached: the signal ends the child
+        }
+        int status = 0;
+        REQUIRE(::waitpid(child, &status, 0) == child);
+        CHECK(WIFSIGNALED(status));
+        CHECK(WTERMSIG(status) == signal);
+        CHECK(entries(dir) == 0);
+    }
+    // The same registry, asked directly: a stream being written is listed until it is committed.
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    auto s = OutputFile("--plan-out", (dir / "plan.jsonl").string()).open();
+    s.stream() << "half";
+    CHECK(entries(dir) == 1);
+    holon::rules::removeTemporaries();
+    CHECK(entries(dir) == 0);
     fs::remove_all(dir);
 }
 
