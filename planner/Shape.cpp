@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <optional>
@@ -256,9 +257,12 @@ Shape fromVisibleSim(std::string_view argument, const std::string& text, bool ta
 Shape fromFile(std::string_view argument, std::size_t maxCells, std::uint64_t memoryBytes) {
     // WORLD.xml#target: the target of a VisibleSim world, when no file has that name.
     std::string path(argument);
-    const bool target = path.ends_with(".xml#target") && !std::ifstream(path);
+    // exists(), not opening the file: opening a FIFO waits for its writer (readTextFile does, and
+    // a signal stops it there).
+    std::error_code missing;
+    const bool target = path.ends_with(".xml#target") && !std::filesystem::exists(path, missing);
     if (target) path.resize(path.size() - 7);
-    if (!std::ifstream(path)) {
+    if (!std::filesystem::exists(path, missing)) {
         std::string known;
         for (const auto& [name, what] : shapeGenerators()) known += (known.empty() ? "" : ", ") + name;
         bad(argument, "neither a shape generator (" + known + ") nor a readable file");

@@ -39,8 +39,10 @@ std::string text(const nlohmann::json& j, const char* key) { return j.is_object(
 
 /// The system a file's states belong to: --rules, else the file it names, else the bundled one.
 rules::System loadNamed(const std::string& rulesFile, const std::string& source, const std::string& name, const std::string& where) {
-    const std::string path = rules::rulesPath(!rulesFile.empty() ? rulesFile : !source.empty() && std::filesystem::exists(source) ? source
-                                                                                                                                  : name);
+    // A "source" the file names is followed only to a regular file: a FIFO there hung view.
+    std::error_code error;
+    const std::string path = rules::rulesPath(!rulesFile.empty() ? rulesFile : !source.empty() && std::filesystem::is_regular_file(source, error) ? source
+                                                                                                                                                  : name);
     if (!std::filesystem::exists(path))
         throw InputError(!rulesFile.empty() ? "--rules " + rulesFile + ": no such file or bundled system"
                                             : where + ": the rule file it names ('" + (source.empty() ? name : source) + "') is not there; give it with --rules FILE");
