@@ -8,6 +8,7 @@
 #include "rules/Components.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
+#include "rules/Escape.h"
 #include "rules/Limits.h"
 #include "rules/OutputFile.h"
 #include "rules/Parameter.h"
@@ -216,7 +217,7 @@ Shape fromAscii(std::string_view argument, const std::string& text) {
             // Line r is row y = r, as in the checker's pictures (rules/ConfigIo.h): y runs down the page.
             if (std::string_view("#XxOo@*1").find(ch) != std::string_view::npos) s.cells.push_back({c, r, 0});
             else if (std::string_view(". _0\t").find(ch) == std::string_view::npos)
-                bad(argument, "line " + std::to_string(r + 1) + ", column " + std::to_string(c + 1) + ": '" + std::string(1, ch) +
+                bad(argument, "line " + std::to_string(r + 1) + ", column " + std::to_string(c + 1) + ": '" + rules::escapeText(std::string(1, ch)) +
                                   "' is neither a cell ('#') nor empty ('.')");
         }
     return s;
@@ -270,11 +271,12 @@ Shape fromFile(std::string_view argument, std::size_t maxCells, std::uint64_t me
     rules::OutputClaims::reading("the shape", path);
     const std::string text = rules::readTextFile(path);
     auto endsWith = [&](std::string_view suffix) { return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0; };
-    if (endsWith(".json")) return fromJson(argument, text);
     if (endsWith(".binvox")) return fromBinvox(argument, text, maxCells, memoryBytes);
-    if (endsWith(".xml")) return fromVisibleSim(argument, text, target, maxCells);
-    if (endsWith(".xyz") || endsWith(".vox")) return fromVoxels(argument, text);
-    return fromAscii(argument, text);
+    const std::string body = rules::withoutBom(text);  // a text format: an editor's byte-order mark is not a character of it
+    if (endsWith(".json")) return fromJson(argument, body);
+    if (endsWith(".xml")) return fromVisibleSim(argument, body, target, maxCells);
+    if (endsWith(".xyz") || endsWith(".vox")) return fromVoxels(argument, body);
+    return fromAscii(argument, body);
 }
 
 }  // namespace

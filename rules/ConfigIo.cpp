@@ -42,9 +42,6 @@ std::vector<std::vector<int>> asciiRows(const Region& region) {
     return rows;
 }
 
-/// A UTF-8 byte-order mark (some editors write one) made a JSON file read as ASCII art.
-std::string withoutBom(const std::string& text) { return text.rfind("\xEF\xBB\xBF", 0) == 0 ? text.substr(3) : text; }
-
 std::vector<std::string> rowTokens(const Region& region, const std::string& line) {
     std::vector<std::string> tokens;
     if (region.lattice().kind() == LatticeKind::Hex2D) {
@@ -58,6 +55,8 @@ std::vector<std::string> rowTokens(const Region& region, const std::string& line
 }
 
 }  // namespace
+
+std::string withoutBom(const std::string& text) { return text.rfind("\xEF\xBB\xBF", 0) == 0 ? text.substr(3) : text; }
 
 nlohmann::json parseJsonOnceEach(const std::string& text) {
     checkJsonText(text);
@@ -265,7 +264,7 @@ Configuration configFromAscii(const Interpreter& in, const std::string& text) {
             if (ch == '.' || ch == '_') continue;
             const int v = alphabet.byGlyph(ch);
             if (v < 0) throw InputError("row " + std::to_string(r + 1) + ", column " + std::to_string(k + 1) + ": '" +
-                                        std::string(1, ch) + "' is not a one-character state of '" + in.model().system().name + "'");
+                                        escapeText(std::string(1, ch)) + "' is not a one-character state of '" + in.model().system().name + "'");
             c.cells[rows[r][k]] = static_cast<CellValue>(v);
         }
     }

@@ -30,6 +30,10 @@ std::vector<bool> maskFromAscii(const Region& region, const std::string& text);
 /// columns"), so the reader can say so; "" when it draws the whole region, or is not a picture.
 std::string pictureShortfall(const Region& region, const std::string& text);
 
+/// `text` without a leading UTF-8 byte-order mark (some editors write one; it made a JSON file
+/// read as ASCII art, and a picture's first row one character too wide).
+std::string withoutBom(const std::string& text);
+
 /// Parses JSON whose objects name each key once: a key given twice throws InputError (the
 /// library keeps the last one silently: a configuration with two "cells" lists lost the first).
 /// The text is checked first (checkJsonText).

@@ -105,7 +105,7 @@ private:
     System s_;
     std::size_t p_ = 0;
     std::set<std::string> ruleNames_, propertyNames_;
-    bool sawSystem_ = false, sawSymmetry_ = false;
+    bool sawSystem_ = false, sawSymmetry_ = false, sawLattice_ = false;
     // Context of the rule being parsed: pattern length for @k references, guard mode.
     int patternCells_ = -1;
     bool inGuard_ = false;
@@ -193,7 +193,7 @@ private:
         const Token& kw = identifier("a declaration (system, field, rule, constraint, ...)");
         const std::string& k = kw.text;
         if (k == "system") return systemDecl(kw);
-        if (k == "lattice") return latticeDecl();
+        if (k == "lattice") return latticeDecl(kw);
         if (k == "symmetry") return symmetryDecl(kw);
         if (k == "field") {
             const std::string& name = freshName("a field").text;
@@ -226,7 +226,10 @@ private:
         s_.name = name.text;
     }
 
-    void latticeDecl() {
+    void latticeDecl(const Token& kw) {
+        // The last one won: a rule drawn for square2d was read as hex.
+        if (sawLattice_) fail(kw.loc, "the lattice is declared twice; keep one 'lattice' line");
+        sawLattice_ = true;
         const Token& name = identifier("a lattice");
         if (!s_.rules.empty()) fail(name.loc, "declare the lattice before the rules");
         if (name.text == "any") return;
