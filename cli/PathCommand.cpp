@@ -28,6 +28,7 @@ struct PathArgs {
     std::vector<std::string> inputs, noWarnings;
     bool goal = false, json = false, parallel = false;
     ExploreLimitArgs limits;
+    const CLI::Option* threadsOption = nullptr;  // given or not: only the forward search uses threads
 };
 
 std::string outcomeName(checker::PathOutcome o) {
@@ -79,6 +80,9 @@ int run(const PathArgs& a) {
     const rules::Engine engine(model, region, query.from.inputs);
     const checker::PathResult result = checker::shortestPath(engine, query);
     if (terminal) std::cerr << "\r" << std::string(70, ' ') << "\r";
+    if (a.threadsOption && a.threadsOption->count() && result.search != checker::PathSearch::Forward)
+        std::cerr << "holon: note: --threads " << a.limits.threads << " is not used: the " << checker::pathSearchName(result.search)
+                  << " search runs on one thread (--search forward uses the threads)\n";
 
     const bool found = result.outcome == checker::PathOutcome::Found;
     std::string why;
@@ -169,6 +173,7 @@ Run addPathCommand(CLI::App& app) {
     sub->add_flag("--parallel", a->parallel, "also group the path's steps into rounds of instances that fire together, with the makespan");
     sub->add_option("--input", a->inputs, "set an input from an ASCII mask: NAME=FILE (any character but '.' marks a cell)");
     addExploreLimits(sub, a->limits, "the search");
+    a->threadsOption = sub->get_option("--threads");
     sub->add_flag("--json", a->json, "print the result as JSON (length: the number of rule steps)");
     sub->add_option("--trace-out", a->traceOut, "write the path as an ITF JSON trace");
     sub->add_option("--svg", a->svg, "draw the path as SVG");

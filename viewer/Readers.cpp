@@ -109,13 +109,18 @@ private:
 /// Lattice positions to cell indices.
 class Cells {
 public:
-    explicit Cells(const Run& run) {
+    explicit Cells(const Run& run) : lattice_(&rules::Lattice::get(run.lattice)) {
         for (std::size_t i = 0; i < run.cells.size(); ++i) index_[key(run.cells[i])] = static_cast<int>(i);
     }
     /// [x, y] or [x, y, z]: its cell, or an error naming `where`.
     int of(const nlohmann::json& j, const std::string& where) const { return at(point(j, where), j, where); }
     /// The cell at lattice point v, written `j` in the file.
     int at(Vec v, const nlohmann::json& j, const std::string& where) const {
+        // [x, y] on a cubic region read as [x, y, 0]: a square plan edited to name one was drawn in 3D.
+        const nlohmann::json& p = j.is_object() && j.contains("#tup") ? j["#tup"] : j;
+        if (p.is_array() && static_cast<int>(p.size()) != lattice_->dimension())
+            throw InputError(where + ": cell " + j.dump() + " has " + std::to_string(p.size()) + " coordinates; a cell of " + lattice_->name() + " has " +
+                             std::to_string(lattice_->dimension()) + "; write the file again with the holon command that made it");
         const auto it = index_.find(key(v));
         if (it == index_.end()) throw InputError(where + ": cell " + j.dump() + " lies outside the run's cells (its region or points); the file was edited by hand or mixes two runs: write it again with the holon command that made it");
         return it->second;
@@ -127,6 +132,7 @@ public:
 
 private:
     static std::tuple<int, int, int> key(Vec v) { return {v.x, v.y, v.z}; }
+    const rules::Lattice* lattice_;
     std::map<std::tuple<int, int, int>, int> index_;
 };
 
@@ -224,6 +230,8 @@ Run readLines(const std::string& path, std::istream& in, const std::string& rule
     const Cells cells(run);
     std::optional<rules::System> system;
     std::optional<States> states;
+    if (kind == "roombots" && !rulesFile.empty())
+        throw InputError("--rules " + rulesFile + ": a Roombots run has no rule system (its metamodules are drawn in their colours); leave --rules out");
     if (kind == "roombots") {
         const nlohmann::json colours = head.contains("colours") ? head["colours"] : nlohmann::json();
         // A colour goes into the page's styles: only #rrggbb, never markup a file could smuggle in.
@@ -237,6 +245,10 @@ Run readLines(const std::string& path, std::istream& in, const std::string& rule
         states.emplace(run, head["colours"].get<std::vector<std::string>>());
     } else {
         system.emplace(loadNamed(rulesFile, text(head, "source"), text(head, "system"), where1));
+        // A square2d plan edited to name a cubic region was drawn as a 3D run (replay refuses it).
+        if (system->lattice && *system->lattice != run.lattice)
+            throw InputError(where1 + ": the run lies on " + rules::Lattice::get(run.lattice).name() + ", but system " + system->name + " is for " +
+                             rules::Lattice::get(*system->lattice).name() + "; write the file again with the holon command that made it");
         states.emplace(run, *system, rules::Lattice::get(run.lattice));
         // The commands that write runs write every input; one missing would be drawn as nowhere.
         for (const std::string& name : system->inputs)

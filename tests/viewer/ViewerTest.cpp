@@ -166,6 +166,17 @@ TEST_CASE("hostile inputs end in a located message, not a crash") {
         CAPTURE(colour);
         CHECK_THROWS_WITH_AS(roombotsRun(colour, "1"), doctest::Contains("as \"#rrggbb\" strings"), InputError);
     }
+    // --rules names a rule system, which a Roombots run has none of: it was ignored, even a missing file.
+    {
+        std::string text = run;
+        text.replace(text.find("COLOUR"), 6, "\"#1f77b4\"");
+        text.replace(text.find("MODULE"), 6, "1");
+        CHECK_THROWS_WITH_AS(viewer::readRun(write("rb_rules.jsonl", text), "pixel"), doctest::Contains("a Roombots run has no rule system"), InputError);
+    }
+    // A cell has its lattice's coordinates: a square plan edited to name a cubic region was drawn in 3D.
+    std::string cubic = kPlan;
+    cubic.replace(cubic.find("square:3x1"), 10, "cubic:3x1x1");
+    CHECK_THROWS_WITH_AS(viewer::readRun(write("cubic.jsonl", cubic)), doctest::Contains("cubic.jsonl:1: cell [0,0] has 2 coordinates; a cell of cubic3d has 3"), InputError);
     // Module numbers are compared before they are narrowed: 2^32 + 1 was drawn as metamodule 1.
     for (const char* module : {"4294967297", "4294967296", "9223372036854775808", "18446744073709551615", "-1", "2"}) {
         CAPTURE(module);
