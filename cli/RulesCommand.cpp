@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 namespace holon::cli {
@@ -191,6 +192,7 @@ Run addRulesCommand(CLI::App& app) {
         const rules::LoadOptions load = loadOptions(opts->noWarnings);
         nlohmann::ordered_json all = nlohmann::ordered_json::array();
         int failed = 0;
+        std::map<std::string, std::string> drawn;  // system name -> the file --svg drew it from
         for (const std::string& file : opts->files) {
             // --lattice only says where --svg draws: alone it was ignored without a word.
             if (!opts->lattice.empty() && opts->svgDir.empty()) throw InputError("--lattice chooses the lattice --svg draws the rules on; add --svg DIR, or leave out --lattice");
@@ -209,7 +211,14 @@ Run addRulesCommand(CLI::App& app) {
             nlohmann::ordered_json j = summarise(*system);
             if (opts->json) all.push_back(j);
             else printHuman(j, std::cout);
-            if (!opts->svgDir.empty()) drawRules(*system, *opts);
+            // Drawings are named SYSTEM.RULE.svg: a second file of the same system replaced the
+            // first one's, and both were reported as drawn.
+            if (!opts->svgDir.empty()) {
+                if (const auto [it, fresh] = drawn.emplace(system->name, file); !fresh)
+                    throw InputError("--svg " + opts->svgDir + ": " + it->second + " and " + file + " both declare system '" + system->name +
+                                     "', and its drawings are named after it; draw them into two folders (one --svg each)");
+                drawRules(*system, *opts);
+            }
         }
         if (opts->json) std::cout << all.dump(2) << '\n';
         return failed ? 2 : 0;
