@@ -46,7 +46,8 @@ Header readHeader(std::string_view bytes) {
     const auto line = [&](std::size_t& start) {
         start = at;
         const std::size_t end = bytes.find('\n', at);
-        if (end == std::string_view::npos || end - at > 200) badAt(at, "the header ends early; binvox headers are lines ending in a newline, the last one 'data'");
+        if (end == std::string_view::npos) badAt(at, "the header ends early; binvox headers are lines ending in a newline, the last one 'data'");
+        if (end - at > 200) badAt(at, "a header line of " + std::to_string(end - at) + " bytes; binvox header lines are short ('dim D D D', 'translate X Y Z', 'scale S', 'data')");
         std::string_view text = bytes.substr(at, end - at);
         if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
         at = end + 1;
@@ -66,19 +67,24 @@ Header readHeader(std::string_view bytes) {
             if (in >> extra) badAt(start, "'data' must be alone on its line");
             break;
         }
+        // A key given twice is refused: the last one won silently.
+        const auto once = [&](bool& seen) {
+            if (seen) badAt(start, "'" + key + "' is given twice; a binvox header gives each line once");
+            seen = true;
+        };
         if (key == "dim") {
+            once(haveDim);
             long long d[3];
             if (!(in >> d[0] >> d[1] >> d[2]) || (in >> extra)) badAt(start, "expected 'dim D D D' with three whole numbers");
             if (d[0] != d[1] || d[1] != d[2]) badAt(start, "the grid is " + std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]) + "; binvox grids are cubes (dim D D D)");
             if (d[0] < 1 || d[0] > kMaxBinvoxDim) badAt(start, "dim " + std::to_string(d[0]) + " is not from 1 to " + std::to_string(kMaxBinvoxDim));
             h.dim = static_cast<int>(d[0]);
-            haveDim = true;
         } else if (key == "translate") {
+            once(haveTranslate);
             if (!(in >> h.translate[0] >> h.translate[1] >> h.translate[2]) || (in >> extra)) badAt(start, "expected 'translate X Y Z' with three numbers");
-            haveTranslate = true;
         } else if (key == "scale") {
+            once(haveScale);
             if (!(in >> h.scale) || (in >> extra)) badAt(start, "expected 'scale S' with one number");
-            haveScale = true;
         } else {
             badAt(start, "unknown header line '" + text.substr(0, 40) + "'; a binvox header has dim, translate, scale and data");
         }

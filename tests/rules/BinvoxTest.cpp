@@ -90,6 +90,10 @@ TEST_CASE("malformed files are refused at the byte that is wrong") {
     CHECK(refusal("#binvox 1\ndim 0 0 0\ndata\n").find("byte 10: dim 0 is not from 1 to") == 0);
     CHECK(refusal("#binvox 1\ndata\n") == "byte 10: 'data' before 'dim D D D'; the header must give the grid's size");
     CHECK(refusal("#binvox 1\ndim 2 2 2\ncolour red\ndata\n").find("byte 20: unknown header line 'colour red'") == 0);
+    // A line given twice was taken last-wins; a long line was said to end the header early.
+    CHECK(refusal("#binvox 1\ndim 2 2 2\ndim 4 4 4\ndata\n") == "byte 20: 'dim' is given twice; a binvox header gives each line once");
+    CHECK(refusal("#binvox 1\ndim 2 2 2\nscale 1\nscale 2\ndata\n") == "byte 28: 'scale' is given twice; a binvox header gives each line once");
+    CHECK(refusal("#binvox 1\ntranslate " + std::string(300, '0') + " 0 0\ndata\n").find("byte 10: a header line of 314 bytes") == 0);
     // A run past the 8 voxels: the count byte of the second pair (offset 52).
     CHECK(refusal(kCubeHeader + std::string("\x01\x01\x00\x09", 4)) == "byte 52: a run of 9 voxels from voxel 1 overruns the 8 voxels of a 2^3 grid");
     CHECK(refusal(kCubeHeader + std::string("\x01\x00", 2)) == "byte 50: a run of 0 voxels; counts are 1 to 255");
