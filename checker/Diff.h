@@ -55,7 +55,8 @@ struct DiffReport {
     std::optional<DesignDifference> difference;
     /// Why the comparison stopped (the deadline, a signal) when both explorations finished; else unset.
     std::optional<StopReason> comparisonStopped;
-    /// The first design (0 for A, 1 for B) whose exploration a limit stopped, or -1.
+    /// The first design (0 for A, 1 for B) whose exploration a limit stopped, or -1; with -1 the
+    /// comparison after them may still have stopped (comparisonStopped, and no `difference`).
     int stopped() const;
     /// What a side's transition witness shows: "A fires 'rule' after 2 steps; B has no such step".
     std::string witnessText(int side) const;

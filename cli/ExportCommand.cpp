@@ -33,13 +33,15 @@ struct ExportArgs {
 };
 
 // What the export holds per module at its peak, beside the shape's own cells: the module and its
-// colour (48 bytes), its line of the world (about 55) and the copy the writer makes of the text.
-// Measured: box:200x200x200 (8 million modules) peaked at 1.25 GB, 156 bytes a module.
-constexpr std::uint64_t kBytesPerModule = 160;
+// colour (48 bytes), its line of a VisibleSim world (about 55) and the copy the writer makes of the
+// text. Measured: box:200x200x200 (8 million modules) peaked at 1.25 GB, 156 bytes a module. A
+// .binvox alone holds the modules and their cells (60 bytes) and a bit per voxel of the cube.
+constexpr std::uint64_t kBytesPerModule = 160, kBytesPerVoxelModule = 64;
 
 /// Refuses an export whose modules would not fit --memory, before the world is built.
-void requireExportMemory(std::uint64_t modules, std::uint64_t memoryMiB) {
-    rules::requireMemory(rules::checkedProduct({modules, kBytesPerModule}), memoryMiB << 20, "writing " + rules::countText(modules) + " modules");
+void requireExportMemory(std::uint64_t modules, const ExportArgs& a) {
+    const std::uint64_t perModule = a.visibleSim.empty() ? kBytesPerVoxelModule : kBytesPerModule;
+    rules::requireMemory(rules::checkedProduct({modules, perModule}), a.memoryMiB << 20, "writing " + rules::countText(modules) + " modules");
 }
 
 // A shape's modules and its target cells: the first two colours of the checker's palette.
@@ -57,7 +59,7 @@ struct Exported {
 Exported fromShapes(const ExportArgs& a) {
     const std::uint64_t memory = a.memoryMiB << 20;
     const planner::Shape shape = planner::parseShape(a.shape, a.scale, memory);
-    requireExportMemory(shape.cells.size(), a.memoryMiB);
+    requireExportMemory(shape.cells.size(), a);
     Exported e;
     e.lattice = &rules::Lattice::get(shape.dimension == 3 ? rules::LatticeKind::Cubic3D : rules::LatticeKind::Square2D);
     for (rules::Vec v : shape.cells) e.blocks.push_back({v, kShapeColour});
@@ -68,7 +70,7 @@ Exported fromShapes(const ExportArgs& a) {
         if (target.dimension != shape.dimension)
             throw InputError("--target '" + a.target + "' is a " + std::to_string(target.dimension) + "D shape, --shape '" + a.shape + "' a " +
                              std::to_string(shape.dimension) + "D one; give two shapes of the same dimension, as plan --from and --to");
-        requireExportMemory(shape.cells.size() + target.cells.size(), a.memoryMiB);
+        requireExportMemory(shape.cells.size() + target.cells.size(), a);
         for (rules::Vec v : target.cells) e.targets.push_back({v, kTargetColour});
         e.comments.push_back("target (targetList): shape " + target.name + ", " + std::to_string(target.cells.size()) + " cells in " + kTargetColour);
     }
@@ -93,7 +95,7 @@ Exported fromConfiguration(const ExportArgs& a) {
     const rules::Configuration c = rules::readConfigFile(in, a.config);
     std::uint64_t modules = 0;
     for (const rules::CellValue v : c.cells) modules += v != 0;
-    requireExportMemory(modules, a.memoryMiB);
+    requireExportMemory(modules, a);
     Exported e;
     e.lattice = &region.lattice();
     std::map<std::string, std::string> legend;  // colour -> the states drawn in it

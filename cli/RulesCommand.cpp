@@ -214,7 +214,7 @@ Run addRulesCommand(CLI::App& app) {
             // Drawings are named SYSTEM.RULE.svg: a second file of the same system replaced the
             // first one's, and both were reported as drawn.
             if (!opts->svgDir.empty()) {
-                if (const auto [it, fresh] = drawn.emplace(system->name, file); !fresh)
+                if (const auto [it, fresh] = drawn.emplace(system->name, file); !fresh && it->second != file)
                     throw InputError("--svg " + opts->svgDir + ": " + it->second + " and " + file + " both declare system '" + system->name +
                                      "', and its drawings are named after it; draw them into two folders (one --svg each)");
                 drawRules(*system, *opts);

@@ -116,6 +116,9 @@ bool writes(const Claim& folder, const fs::path& file) {
 
 void claim(const std::string& option, const std::string& path, Claim::Kind kind, const std::vector<std::string>& names = {}) {
     if (!claims) return;
+    // Reading a terminal or a pipe replaces nothing (a configuration typed at the terminal while
+    // --svg writes /dev/stdout resolved to one /dev/pts/N and was refused).
+    if (kind == Claim::Kind::Input && isSpecial(path)) return;
     const fs::path p = canonicalOf(path);
     const Claim made{p, option, kind, false, names};
     for (const Claim& c : *claims) {

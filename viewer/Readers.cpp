@@ -14,6 +14,7 @@
 #include "rules/Error.h"
 #include "rules/Library.h"
 #include "rules/Model.h"
+#include "rules/OutputFile.h"
 #include "rules/PlanLines.h"
 #include "rules/Region.h"
 
@@ -46,6 +47,7 @@ rules::System loadNamed(const std::string& rulesFile, const std::string& source,
     if (!std::filesystem::exists(path))
         throw InputError(!rulesFile.empty() ? "--rules " + rulesFile + ": no such file or bundled system"
                                             : where + ": the rule file it names ('" + (source.empty() ? name : source) + "') is not there; give it with --rules FILE");
+    rules::OutputClaims::reading("the rule file", path);  // -o must not replace it
     std::optional<rules::System> system = rules::loadSystem(path, std::cerr);
     if (!system) throw InputError(path + ": the rule file has errors (above); fix it or give another with --rules FILE");
     if (!name.empty() && system->name != name)

@@ -8,6 +8,7 @@
 
 #include "rules/Components.h"
 #include "rules/Error.h"
+#include "rules/OutputFile.h"
 #include "rules/Parameter.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
@@ -43,6 +44,7 @@ std::vector<std::uint8_t> readPicture(const HexArray& array, const std::string& 
     if (!std::ifstream(path)) throw InputError(role + " '" + path + "': not square, T, rectangle or circle, and no such file");
     std::vector<std::string> lines;
     try {
+        rules::OutputClaims::reading("the picture", path);  // --steps-out must not replace it
         lines = rules::pictureRows(rules::readTextFile(path), true);
     } catch (const InputError& e) {
         throw InputError(role + " '" + path + "': " + e.what());

@@ -13,6 +13,7 @@
 
 #include "planner/Random.h"
 #include "rules/Error.h"
+#include "rules/OutputFile.h"
 #include "rules/Parser.h"
 
 #include <algorithm>
@@ -113,6 +114,7 @@ void validate(const Setting& s, const std::string& where) {
 }
 
 Setting parseFile(const std::string& path, const Budget& budget) {
+    rules::OutputClaims::reading("--structure", path);
     const std::string text = rules::readTextFile(path);
     std::istringstream lines(text);
     std::string line;
