@@ -175,6 +175,7 @@ struct Property {
 
 struct System {
     std::string name;
+    SourceLoc loc{1, 1};                 // the 'system' line, for warnings about the whole system
     std::optional<LatticeKind> lattice;  // none: the system works on every lattice
     // The rules hold in every orientation this group gives; a design with gravity or a handedness
     // narrows it (`symmetry rotations`, `symmetry none`).

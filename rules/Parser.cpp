@@ -223,7 +223,7 @@ private:
         const Token& name = freshName("the system");
         if (sawSystem_) fail(kw.loc, "a file declares one system; '" + s_.name + "' was declared already");
         sawSystem_ = true;
-        s_.name = name.text;
+        s_.name = name.text, s_.loc = kw.loc;
     }
 
     void latticeDecl(const Token& kw) {

@@ -97,7 +97,7 @@ void validate(const System& system, Diagnostics& d) {
             return;
         }
     }
-    if (system.rules.empty()) d.warning({1, 1}, "no-rules", "system '" + system.name + "' has no rules");
+    if (system.rules.empty()) d.warning(system.loc, "no-rules", "system '" + system.name + "' has no rules");
 
     std::set<std::pair<int, int>> usedValues;
     std::set<int> usedInputs;

@@ -114,7 +114,7 @@ void validate(const Setting& s, const std::string& where) {
 }
 
 Setting parseFile(const std::string& path, const Budget& budget) {
-    rules::OutputClaims::reading("--structure", path);
+    rules::OutputClaims::reading("the structure", path);
     const std::string text = rules::readTextFile(path);
     std::istringstream lines(text);
     std::string line;
