@@ -413,7 +413,6 @@ Configuration configFromText(const Interpreter& in, const std::string& withBom, 
         throw InputError("the file is empty; a configuration is JSON or ASCII art, with '.' for each empty cell");
     try {
         if (text[first] == '{') {
-            checkJsonText(text);
             const nlohmann::json j = parseJsonOnceEach(text);
             if (isItfTrace(j)) return configFromItf(in, j, index, inputsNamed);
             if (index) throw InputError("'#" + std::to_string(*index) + "' picks a state of an ITF trace, and this is a configuration; give " + path + " without it");

@@ -17,7 +17,6 @@
 #include <filesystem>
 #include <fnmatch.h>
 #include <mutex>
-#include <sstream>
 #include <string_view>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -170,49 +169,15 @@ OutputFile::OutputFile(std::string option, std::string path) : option_(std::move
     if (::access(folder.c_str(), W_OK | X_OK) != 0) throw InputError(option_ + " " + path_ + ": cannot write into '" + folder + "': " + reason());
 }
 
+// One way to write a file, whole or in pieces: the stream's temporary, checks and rename.
 void OutputFile::write(const std::string& text) const {
-    auto fail = [&](const std::string& what) { return InputError(option_ + " " + path_ + ": " + what + ": " + reason()); };
-    if (isSpecial(path_)) {
-        const int fd = ::open(path_.c_str(), O_WRONLY | O_TRUNC);
-        if (fd < 0) throw fail("cannot open");
-        const bool ok = writeAll(fd, text);
-        const int saved = errno;
-        ::close(fd);
-        errno = saved;
-        if (!ok) throw fail("cannot write");
-        return;
-    }
-    std::string temp = path_ + ".tmp-XXXXXX";
-    const int fd = ::mkstemp(temp.data());
-    if (fd < 0) throw fail("cannot create a file beside it");
-    struct Tracked {
-        int k;
-        ~Tracked() { untrackTemporary(k); }
-    } tracked{trackTemporary(temp)};
-    const bool written = writeAll(fd, text) && ::fsync(fd) == 0;
-    const int saved = errno;
-    const bool closed = ::close(fd) == 0;
-    if (!written || !closed) {
-        errno = written ? errno : saved;
-        const InputError e = fail("cannot write");
-        ::unlink(temp.c_str());
-        throw e;
-    }
-    // mkstemp makes the file private; give it the mode an ordinary new file gets.
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    ::chmod(temp.c_str(), 0666 & ~mask);
-    if (::rename(temp.c_str(), path_.c_str()) != 0) {
-        const InputError e = fail("cannot move the finished file into place");
-        ::unlink(temp.c_str());
-        throw e;
-    }
+    write([&](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
 }
 
 void OutputFile::write(const std::function<void(std::ostream&)>& fill) const {
-    std::ostringstream text;
-    fill(text);
-    write(text.str());
+    OutputStream s = open();
+    fill(s.stream());
+    s.commit();
 }
 
 /// Buffers what is streamed and writes it to the descriptor in large pieces, keeping errno of the
@@ -237,6 +202,16 @@ struct OutputStream::Buffer : std::streambuf {
         return traits_type::not_eof(c);
     }
     int sync() override { return drain() ? 0 : -1; }
+    // A piece larger than the buffer (a whole file given at once) goes straight to the descriptor.
+    std::streamsize xsputn(const char* s, std::streamsize n) override {
+        if (static_cast<std::size_t>(n) < space.size()) return std::streambuf::xsputn(s, n);
+        if (!drain()) return 0;
+        if (!writeAll(fd, std::string_view(s, static_cast<std::size_t>(n)))) {
+            error = errno ? errno : EIO;
+            return 0;
+        }
+        return n;
+    }
 };
 
 OutputStream::OutputStream(std::string option, std::string path) : option_(std::move(option)), path_(std::move(path)) {

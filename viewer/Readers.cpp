@@ -87,10 +87,10 @@ public:
             label = filled ? system.fields[fill_].name + " = " + system.fields[fill_].values[values[fill_]] : "no " + (fill_ >= 0 ? system.fields[fill_].name : "fill field");
             words = checker::cellText(system, values);
         } else {
-            // Compared as 64-bit: narrowed first, 2^32 + 1 read as metamodule 1.
+            // Compared as 64-bit (one past INT64_MAX reads negative): narrowed first, 2^32 + 1 was
+            // read as metamodule 1.
             const std::int64_t wide = fields.size() == 1 && fields.contains("module") && fields["module"].is_number_integer() ? fields["module"].get<std::int64_t>() : -1;
-            if (wide < 0 || wide >= static_cast<std::int64_t>(colours_.size()) || (fields["module"].is_number_unsigned() && fields["module"].get<std::uint64_t>() > INT64_MAX))
-                throw InputError(where + ": " + key + " is not " + what_);
+            if (wide < 0 || wide >= static_cast<std::int64_t>(colours_.size())) throw InputError(where + ": " + key + " is not " + what_);
             const int m = static_cast<int>(wide);
             colour = colours_[m], label = "metamodule " + std::to_string(m), words = std::to_string(m);
         }
@@ -247,7 +247,8 @@ Run readLines(const std::string& path, std::istream& in, const std::string& rule
         states.emplace(run, head["colours"].get<std::vector<std::string>>());
     } else {
         system.emplace(loadNamed(rulesFile, text(head, "source"), text(head, "system"), where1));
-        // A square2d plan edited to name a cubic region was drawn as a 3D run (replay refuses it).
+        // A system fixed to one lattice, drawn on another (a hex region has 2D cells too, so the
+        // cells' dimension does not tell; replay refuses it).
         if (system->lattice && *system->lattice != run.lattice)
             throw InputError(where1 + ": the run lies on " + rules::Lattice::get(run.lattice).name() + ", but system " + system->name + " is for " +
                              rules::Lattice::get(*system->lattice).name() + "; write the file again with the holon command that made it");
@@ -426,8 +427,7 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
     nlohmann::json head;
     bool line = false;
     try {
-        rules::checkJsonText(first);
-        head = nlohmann::json::parse(first);
+        head = rules::parseJsonOnceEach(first);
         line = head.is_object() && !head.contains("states");
     } catch (const nlohmann::json::exception&) {
     } catch (const InputError&) {
@@ -447,17 +447,12 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
     const std::string all = rest.str();
     nlohmann::json itf;
     try {
-        rules::checkJsonText(all);
-    } catch (const InputError& e) {
-        throw InputError(path + ": " + e.what());
-    }
-    try {
         itf = rules::parseJsonOnceEach(all);
     } catch (const nlohmann::json::parse_error& e) {
         throw InputError(path + ":" + lineColumn(all, e.byte == 0 ? 0 : e.byte - 1) + ": not JSON (" + rules::jsonErrorText(e) + "); " + kFormats);
     } catch (const nlohmann::json::exception& e) {
         throw InputError(path + ":1: not JSON (" + rules::jsonErrorText(e) + "); " + kFormats);
-    } catch (const InputError& e) {  // a key given twice
+    } catch (const InputError& e) {  // a key given twice, a NUL byte, too deep
         throw InputError(path + ": " + e.what());
     }
     if (!itf.is_object() || !itf.contains("states")) throw InputError(path + ":1: neither an ITF trace (no \"states\") nor JSON Lines; " + std::string(kFormats));
