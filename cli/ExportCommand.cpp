@@ -35,7 +35,8 @@ struct ExportArgs {
 // What the export holds per module at its peak, beside the shape's own cells: the module and its
 // colour (48 bytes), its line of a VisibleSim world (about 55) and the copy the writer makes of the
 // text. Measured: box:200x200x200 (8 million modules) peaked at 1.25 GB, 156 bytes a module. A
-// .binvox alone holds the modules and their cells (60 bytes) and a bit per voxel of the cube.
+// .binvox alone holds the modules and their cells (60 bytes) and a bit per voxel of the cube: the
+// same box peaked at 494 MB, 62 bytes a module.
 constexpr std::uint64_t kBytesPerModule = 160, kBytesPerVoxelModule = 64;
 
 /// Refuses an export whose modules would not fit --memory, before the world is built.
