@@ -55,7 +55,7 @@ std::optional<Child> spawn(const ForkedJob& job) {
         // gone before this line is seen as a new parent id.
         prctl(PR_SET_PDEATHSIG, SIGKILL);
         if (getppid() != parent) _exit(1);
-        signal(SIGINT, SIG_DFL), signal(SIGTERM, SIG_DFL), signal(SIGHUP, SIG_DFL);  // the parent's cleanup handler would remove its temporaries
+        rules::leaveTemporariesToParent();
         close(fds[0]);
         const std::string text = answerOf(job, true).dump();
         for (std::size_t done = 0; done < text.size();) {

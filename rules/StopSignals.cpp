@@ -6,7 +6,9 @@
 #include "rules/OutputFile.h"
 
 #include <cstdint>
+#include <cstdlib>
 #include <ctime>
+#include <exception>
 
 namespace holon::rules {
 
@@ -43,6 +45,12 @@ extern "C" void onStopSignal(int signal) {
     if (endOnSecond && (signal != caughtSignal || nowNs() - firstAtNs >= 1'000'000'000)) endNow(signal);
 }
 
+// SIGPIPE too: `holon plan --plan-out FILE | head` ends holon at its next line of output, and
+// SIGQUIT (Ctrl-\) still dumps core; neither leaves FILE.tmp-XXXXXX behind.
+constexpr int kEndSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE};
+std::terminate_handler previousTerminate = nullptr;
+bool inForkedChild = false;
+
 int depth = 0;  // catchers installed one inside another (verify's, then a solver race's)
 
 }  // namespace
@@ -76,10 +84,26 @@ void endOnSignalsCleanly() {
     action.sa_handler = onEndSignal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_NODEFER;  // the re-raised signal is delivered at once, with its default action
-    for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    for (int signal : kEndSignals) {
         sigaction(signal, &action, &old);
         if (old.sa_handler == SIG_IGN) sigaction(signal, &old, nullptr);  // a shell's background job, nohup
     }
+    // An exception no one catches (a thread's) ends holon through std::terminate: the same cleanup,
+    // then the library's handler, which names the exception and aborts.
+    static const bool once = [] {
+        previousTerminate = std::set_terminate([] {
+            if (!inForkedChild) removeTemporaries();
+            if (previousTerminate) previousTerminate();
+            std::abort();
+        });
+        return true;
+    }();
+    (void)once;
+}
+
+void leaveTemporariesToParent() {
+    inForkedChild = true;
+    for (int signal : kEndSignals) ::signal(signal, SIG_DFL);
 }
 
 }  // namespace holon::rules

@@ -28,9 +28,13 @@ private:
     int outerEndOnSecond_;
 };
 
-/// For the whole process, outside any StopSignals: SIGINT, SIGTERM and SIGHUP end holon as they
-/// would, after removing the temporaries being written (rules::removeTemporaries). A signal the
-/// caller ignores stays ignored.
+/// For the whole process, outside any StopSignals: SIGINT, SIGTERM, SIGHUP, SIGQUIT and SIGPIPE
+/// end holon as they would, and so does std::terminate, after removing the temporaries being
+/// written (rules::removeTemporaries). A signal the caller ignores stays ignored.
 void endOnSignalsCleanly();
+
+/// In a forked child: signals end it with their default actions and std::terminate removes
+/// nothing, since the temporaries it inherited are its parent's to finish or remove.
+void leaveTemporariesToParent();
 
 }  // namespace holon::rules

@@ -13,14 +13,16 @@
 
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
+#include "rules/OutputFile.h"
 #include "rules/Parameter.h"
+#include "rules/Parser.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <filesystem>
 #include <numbers>
 #include <optional>
 #include <set>
@@ -149,13 +151,23 @@ std::string CloudTable::json() const {
 }
 
 CloudTable CloudTable::load(const std::string& path) {
-    std::ifstream in(path);
-    if (!in)
+    // Read like every other input: claimed (no output may replace it), bounded in size, a FIFO
+    // stops on a signal, and the JSON checked for depth, NUL bytes and keys given twice.
+    rules::OutputClaims::reading("the collision-cloud table", path);
+    std::error_code error;
+    if (!std::filesystem::exists(path, error))
         throw InputError(path + ": cannot read the collision-cloud table; regenerate it with `" + rules::parameterName(rules::Parameter::MakeClouds) + " " + path + "`",
                          rules::Parameter::MakeClouds);
+    const std::string text = rules::readTextFile(path);
     CloudTable table;
     try {
-        const nlohmann::json j = nlohmann::json::parse(in);
+        const nlohmann::json j = [&] {
+            try {
+                return rules::parseJsonOnceEach(text);
+            } catch (const InputError& e) {
+                throw InputError(path + ": " + e.what() + "; regenerate it with `" + rules::parameterName(rules::Parameter::MakeClouds) + "`", rules::Parameter::MakeClouds);
+            }
+        }();
         if (j.at("format") != "holon-roombots-clouds-1") throw InputError(path + ": not a holon collision-cloud table (format)");
         for (Coupling c : kCouplings) {
             const auto& rows = j.at("couplings").at(couplingName(c));

@@ -176,6 +176,10 @@ TEST_CASE("bad Roombots input is refused with the place and the fix") {
     CHECK_THROWS_WITH_AS(CloudTable::load(tableWith("[[0, 1.5, \"step\", 1, " + cloud + "]]")), doctest::Contains("whole joint settings"), holon::InputError);
     CHECK_THROWS_WITH_AS(CloudTable::load(tableWith("[[0, 1, \"step\", 1, \"" + std::string(49, 'g') + "\"]]")), doctest::Contains("malformed cloud"), holon::InputError);
     CHECK_THROWS_WITH_AS(CloudTable::load(tableWith("[]")), doctest::Contains("no transitions in the PAR table"), holon::InputError);
+    // Read like every other JSON input: a key given twice was read as its last value, and a NUL
+    // ended the text.
+    CHECK_THROWS_WITH_AS(CloudTable::load(tableWith("[], \"PAR\": [[0, 1, \"step\", 2.5, " + cloud + "]]")), doctest::Contains("appears twice"), holon::InputError);
+    CHECK_THROWS_WITH_AS(CloudTable::load(tableWith(std::string("[[0, 1, \"step\", 2.5, ") + cloud + "]]" + std::string(1, '\0'))), doctest::Contains("NUL"), holon::InputError);
 }
 
 TEST_CASE("the automatic seeding order is a permutation of the seeds in which each can be filled in turn") {
