@@ -45,8 +45,8 @@ extern "C" void onStopSignal(int signal) {
     if (endOnSecond && (signal != caughtSignal || nowNs() - firstAtNs >= 1'000'000'000)) endNow(signal);
 }
 
-// SIGPIPE too: `holon plan --plan-out FILE | head` ends holon at its next line of output, and
-// SIGQUIT (Ctrl-\) still dumps core; neither leaves FILE.tmp-XXXXXX behind.
+// SIGPIPE too (a reader of holon's output that goes away ends holon at its next line), and SIGQUIT
+// (Ctrl-\), which still dumps core; neither leaves FILE.tmp-XXXXXX behind.
 constexpr int kEndSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE};
 std::terminate_handler previousTerminate = nullptr;
 bool inForkedChild = false;
