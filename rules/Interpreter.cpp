@@ -49,15 +49,16 @@ bool Interpreter::matches(const Configuration& c, const Instance& instance) cons
     }
     for (std::size_t i = 0; i < at.positions.size(); ++i)
         if (!matchesTerm(rule.lhs()[i], valueAt(at.positions[i], c), context(at.positions[i], c, &at))) return false;
-    // A `<=>` rule read backwards tests its input atoms on the (now right) left side as well.
-    if (rule.reversed)
-        for (std::size_t i = 0; i < at.positions.size(); ++i)
-            for (const Atom& a : rule.rhs()[i].atoms) {
-                CellTerm inputOnly;
-                inputOnly.atoms = {a};
-                if (a.kind == Atom::Kind::Input && !matchesTerm(inputOnly, valueAt(at.positions[i], c), context(at.positions[i], c, &at)))
-                    return false;
-            }
+    // The input atoms of a `<=>` rule's right side are conditions of both directions (only such a
+    // rule may have them): fired forwards, a move onto `A&target` needs the target there too. Read
+    // only backwards, a rule pair's verdicts depended on which way round it was written.
+    for (std::size_t i = 0; i < at.positions.size(); ++i)
+        for (const Atom& a : rule.rhs()[i].atoms) {
+            CellTerm inputOnly;
+            inputOnly.atoms = {a};
+            if (a.kind == Atom::Kind::Input && !matchesTerm(inputOnly, valueAt(at.positions[i], c), context(at.positions[i], c, &at)))
+                return false;
+        }
     return !rule.guard() || holdsAt(*rule.guard(), c, &at);
 }
 
@@ -70,7 +71,7 @@ Blocked Interpreter::blocked(const Configuration& c, const Instance& instance) c
     for (std::size_t i = 0; i < at.positions.size(); ++i) {
         const CellContext here = context(at.positions[i], c, &at);
         bool ok = matchesTerm(rule.lhs()[i], valueAt(at.positions[i], c), here);
-        for (const Atom& a : rule.reversed ? rule.rhs()[i].atoms : std::vector<Atom>{}) {
+        for (const Atom& a : rule.rhs()[i].atoms) {
             CellTerm inputOnly;
             inputOnly.atoms = {a};
             ok = ok && (a.kind != Atom::Kind::Input || matchesTerm(inputOnly, valueAt(at.positions[i], c), here));

@@ -156,7 +156,7 @@ RuleTables::RuleTables(const Model& model, std::vector<std::uint32_t> combos)
         if (shape.offsets.size() > kMaxCells) throw InternalError("rule '" + rule.name + "' has more cells than the parser admits");
         Shape t;
         for (std::size_t k = 0; k < shape.offsets.size(); ++k) {
-            t.lhs.push_back(compileTerm(rule.lhs()[k], &shape.offsets, shape.offsets[k], rule.reversed ? &rule.rhs()[k] : nullptr));
+            t.lhs.push_back(compileTerm(rule.lhs()[k], &shape.offsets, shape.offsets[k], &rule.rhs()[k]));  // the right side's inputs hold in both directions
             const CellTerm& rhs = rule.rhs()[k];
             t.copyFrom.push_back(rhs.copyFrom);
             std::vector<CellValue> table;

@@ -174,3 +174,34 @@ TEST_CASE("a copy term moves a module with its fields, blocking cells must be oc
     w.set(c, 0, 2, "M&charge=0");
     for (const auto& i : w.in->enabled(c)) CHECK_FALSE(w.at(*w.in->successor(c, i), 1, 0) == "M&charge=2");
 }
+
+TEST_CASE("a <=> rule's right-side inputs are conditions of both directions, whichever way it is written") {
+    // Fired forwards, `step` tested only its left side: it moved a module onto a cell outside the
+    // target, so `no(A&!target)` failed for this pair and held for the same pair written the other
+    // way round (the audit's wrong verdict).
+    for (const char* rule : {"rule step / back: A&target _ <=> _ A&target\n", "rule back / step: _ A&target <=> A&target _\n"}) {
+        CAPTURE(rule);
+        World w(test::parse(std::string("system t\nlattice square2d\nsymmetry none\nstates A\ninput target\n") + rule), "square:3x1");
+        const auto count = [&](const rules::Configuration& c, const std::string& name) {
+            const auto names = w.enabledRules(c);
+            const auto interpreted = std::count(names.begin(), names.end(), name);
+            // The compiled tables agree with the reference interpreter.
+            const rules::Engine engine(*w.model, w.region, c.inputs);
+            long compiled = 0;
+            engine.forEachMatch(c.cells.data(), [&](int p) { compiled += w.model->rules()[engine.instances()[p].rule].name == name; });
+            CHECK(compiled == interpreted);
+            return interpreted;
+        };
+        auto c = w.ascii("A..");
+        w.mark(c, "target", "X..");
+        CHECK(count(c, "step") == 0);  // the cell it would move to is not in the target
+        CHECK(count(c, "back") == 0);
+        w.mark(c, "target", "XX.");
+        CHECK(count(c, "step") == 1);
+        auto d = w.ascii(".A.");
+        w.mark(d, "target", ".X.");
+        CHECK(count(d, "back") == 0);  // the cell it would move back to is not in the target
+        w.mark(d, "target", "XX.");
+        CHECK(count(d, "back") == 1);
+    }
+}
