@@ -37,9 +37,11 @@ Report::Report(const Problem& problem, const Execution& execution, ReportOptions
         plan_.emplace(rules::OutputFile(options_.planOutOption, options_.planOut).open());
         // The first line makes the plan self-contained: what it starts from, target included.
         const rules::System& system = problem.model->system();
-        plan_->stream() << nlohmann::json{{"plan", "holon"}, {"system", system.name}, {"source", system.sourceName}, {"start", configurationJson(problem, execution.cells())}}
-                               .dump()
-                        << '\n';
+        // The keys in the order the JSON library dumps them, the start streamed a cell at a time.
+        std::ostream& out = plan_->stream();
+        out << R"({"plan":"holon","source":)" << nlohmann::json(system.sourceName).dump() << R"(,"start":)";
+        writeConfiguration(out, problem, execution.cells());
+        out << R"(,"system":)" << nlohmann::json(system.name).dump() << "}\n";
     }
     if (!options_.outDir.empty()) {
         rules::prepareOutputDir(options_.outOption, options_.outDir, outDirFiles());
@@ -86,7 +88,13 @@ void Report::finish(const RunStats& stats, std::int64_t transferLowerBound) {
     if (options_.outDir.empty()) return;
     snapshot("end");
     attempt([&] { csv_->commit(); });
-    if (!stats.complete) attempt([&] { rules::OutputFile(options_.outOption, options_.outDir + "/end.json").write(configurationJson(*problem_, execution_->cells()).dump() + '\n'); });
+    if (!stats.complete)
+        attempt([&] {
+            rules::OutputFile(options_.outOption, options_.outDir + "/end.json").write([&](std::ostream& out) {
+                writeConfiguration(out, *problem_, execution_->cells());
+                out << '\n';
+            });
+        });
     const auto [short_, shortCount] = cellsShortOfGoal(*execution_, 20);
     nlohmann::json unfinished = nlohmann::json::array();
     std::optional<BoardConfiguration> board;
@@ -148,11 +156,9 @@ nlohmann::json planLine(const BoxEngine& engine, std::int64_t round, std::int64_
     return {{"round", round}, {"rule", model.rules()[engine.ruleOf(shape)].name}, {"cells", points}, {"after", after}};
 }
 
-nlohmann::json configurationJson(const Problem& problem, const std::vector<BoxEngine::Value>& cells) {
+void writeConfiguration(std::ostream& out, const Problem& problem, const std::vector<BoxEngine::Value>& cells) {
     const BoardConfiguration board(problem, cells);
-    nlohmann::json j = rules::configToJson(board.interpreter(), board.configuration());
-    if (board.shift() != Vec{}) j["offset"] = rules::pointJson(problem.board->lattice(), board.shift());
-    return j;
+    rules::writeConfigJson(out, board.interpreter(), board.configuration(), board.shift() != Vec{} ? rules::pointJson(problem.board->lattice(), board.shift()) : nlohmann::json());
 }
 
 std::pair<std::vector<std::int64_t>, std::int64_t> cellsShortOfGoal(const Execution& execution, std::size_t limit) {

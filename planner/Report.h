@@ -65,7 +65,7 @@ private:
 /// A configuration on the planner's board as the reference interpreter sees it: on the box region
 /// square:WxH or cubic:WxHxD that holds the board, target input included; boards reaching below 0
 /// are shifted by `shift` into the region. For what the interpreter judges (invariants after a
-/// fault, the rule a stuck cell waits on) and for configurationJson.
+/// fault, the rule a stuck cell waits on) and for writeConfiguration.
 class BoardConfiguration {
 public:
     BoardConfiguration(const Problem& problem, const std::vector<BoxEngine::Value>& cells);
@@ -93,7 +93,7 @@ nlohmann::json planLine(const BoxEngine& engine, std::int64_t round, std::int64_
 /// (rules::configToJson) on the box region square:WxH or cubic:WxHxD that holds the board, so
 /// `holon check --from` reads it. Boards reaching below 0 are shifted into the region and the
 /// shift is recorded as "offset".
-nlohmann::json configurationJson(const Problem& problem, const std::vector<BoxEngine::Value>& cells);
+void writeConfiguration(std::ostream& out, const Problem& problem, const std::vector<BoxEngine::Value>& cells);
 
 /// Board cells whose state the goal does not accept yet (at most `limit`, in board order) and how
 /// many there are in all: where a run that stopped short is stuck.

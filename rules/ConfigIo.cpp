@@ -153,17 +153,24 @@ nlohmann::json pointJson(const Lattice& lattice, Vec v) {
     return {v.x, v.y};
 }
 
+namespace {
+
+/// One occupied cell as configToJson lists it: its fields and "at".
+nlohmann::json cellRecord(const Model& model, const Region& region, int i, CellValue v) {
+    nlohmann::json cell = stateFields(model, v);
+    cell["at"] = position(region, region.cell(i));
+    return cell;
+}
+
+}  // namespace
+
 nlohmann::json configToJson(const Interpreter& in, const Configuration& c) {
     const Region& region = in.region();
     const Model& model = in.model();
     const System& system = model.system();
     nlohmann::json cells = nlohmann::json::array();
-    for (int i = 0; i < region.size(); ++i) {
-        if (!c.cells[i]) continue;
-        nlohmann::json cell = stateFields(model, c.cells[i]);
-        cell["at"] = position(region, region.cell(i));
-        cells.push_back(cell);
-    }
+    for (int i = 0; i < region.size(); ++i)
+        if (c.cells[i]) cells.push_back(cellRecord(model, region, i, c.cells[i]));
     nlohmann::json j{{"system", system.name}, {"region", region.spec()}, {"cells", cells}};
     nlohmann::json inputs = nlohmann::json::object();
     for (std::size_t k = 0; k < system.inputs.size(); ++k) {
@@ -174,6 +181,38 @@ nlohmann::json configToJson(const Interpreter& in, const Configuration& c) {
     }
     if (!system.inputs.empty()) j["inputs"] = inputs;
     return j;
+}
+
+void writeConfigJson(std::ostream& out, const Interpreter& in, const Configuration& c, const nlohmann::json& offset) {
+    // The same text as configToJson(in, c) with "offset" added, dumped, written a cell at a time:
+    // the document of a 10^6-cell plan took gigabytes in memory (and an allocation failing inside
+    // the JSON library ended holon). Keys in the library's order: cells, inputs, offset, region,
+    // system.
+    const Region& region = in.region();
+    const Model& model = in.model();
+    const System& system = model.system();
+    out << "{\"cells\":[";
+    bool first = true;
+    for (int i = 0; i < region.size(); ++i)
+        if (c.cells[i]) out << (first ? "" : ",") << cellRecord(model, region, i, c.cells[i]).dump(), first = false;
+    out << ']';
+    if (!system.inputs.empty()) {
+        std::vector<std::size_t> order(system.inputs.size());
+        for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return system.inputs[a] < system.inputs[b]; });
+        out << ",\"inputs\":{";
+        for (std::size_t n = 0; n < order.size(); ++n) {
+            const std::size_t k = order[n];
+            out << (n ? "," : "") << nlohmann::json(system.inputs[k]).dump() << ":[";
+            bool firstCell = true;
+            for (int i = 0; i < region.size(); ++i)
+                if ((c.inputs[i] >> k) & 1u) out << (firstCell ? "" : ",") << position(region, region.cell(i)).dump(), firstCell = false;
+            out << ']';
+        }
+        out << '}';
+    }
+    if (!offset.is_null()) out << ",\"offset\":" << offset.dump();
+    out << ",\"region\":" << nlohmann::json(region.spec()).dump() << ",\"system\":" << nlohmann::json(system.name).dump() << '}';
 }
 
 Configuration configFromJson(const Interpreter& in, const nlohmann::json& j, std::uint32_t* inputsNamed) {

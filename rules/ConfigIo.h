@@ -6,11 +6,15 @@
 
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <ostream>
 #include <string>
 
 namespace holon::rules {
 
 nlohmann::json configToJson(const Interpreter& in, const Configuration& c);
+/// Writes configToJson(in, c), with `offset` as "offset" unless it is null, dumped compactly, a
+/// cell at a time (a configuration of millions of cells never stands in memory as a document).
+void writeConfigJson(std::ostream& out, const Interpreter& in, const Configuration& c, const nlohmann::json& offset = nullptr);
 /// A cell state's fields by name ({"label": "P", "parent": "+x"}); empty for the vacuum.
 nlohmann::json stateFields(const Model& model, CellValue v);
 /// A lattice point as [x, y] or [x, y, z].

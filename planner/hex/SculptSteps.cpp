@@ -16,23 +16,30 @@ SculptSteps::SculptSteps(std::ostream& out, const HoleSculptor& sculptor)
           flush();
           if (a.engine) pending_ = a;
       }) {
+    // Streamed a point at a time, keys in the order the JSON library dumps them: the whole header
+    // as one document took gigabytes on large arrays, and an allocation failing inside the
+    // library ended holon.
     const HexArray& array = sculptor.array();
     const rules::Model& model = sculptor.rules().holeEngine().tables().model();
     const rules::Lattice& lattice = array.board().lattice();
-    nlohmann::json points = nlohmann::json::array(), cells = nlohmann::json::array(), target = nlohmann::json::array();
-    for (std::int64_t i : array.points()) {
-        const nlohmann::json at = rules::pointJson(lattice, array.board().point(i));
-        points.push_back(at);
-        if (sculptor.cell(i)) {
-            nlohmann::json cell = rules::stateFields(model, sculptor.cell(i));
-            cell["at"] = at;
-            cells.push_back(cell);
-        }
-        if (sculptor.target()[i]) target.push_back(at);
-    }
-    *out_ << nlohmann::json{{"run", "hex"}, {"system", model.system().name}, {"source", model.system().sourceName}, {"start", {{"lattice", lattice.name()}, {"points", points}, {"cells", cells}, {"inputs", {{"target", target}}}}}}
-                 .dump()
-          << '\n';
+    const auto list = [&](auto&& keep, auto&& item) {
+        bool first = true;
+        for (std::int64_t i : array.points())
+            if (keep(i)) *out_ << (first ? "" : ",") << item(i).dump(), first = false;
+    };
+    const auto at = [&](std::int64_t i) { return rules::pointJson(lattice, array.board().point(i)); };
+    *out_ << R"({"run":"hex","source":)" << nlohmann::json(model.system().sourceName).dump() << R"(,"start":{"cells":[)";
+    list([&](std::int64_t i) { return sculptor.cell(i) != 0; },
+         [&](std::int64_t i) {
+             nlohmann::json cell = rules::stateFields(model, sculptor.cell(i));
+             cell["at"] = at(i);
+             return cell;
+         });
+    *out_ << R"(],"inputs":{"target":[)";
+    list([&](std::int64_t i) { return sculptor.target()[i] != 0; }, at);
+    *out_ << R"(]},"lattice":)" << nlohmann::json(lattice.name()).dump() << R"(,"points":[)";
+    list([](std::int64_t) { return true; }, at);
+    *out_ << R"(]},"system":)" << nlohmann::json(model.system().name).dump() << "}\n";
 }
 
 void SculptSteps::timestepEnded() {

@@ -3,6 +3,8 @@
 #include "TestSupport.h"
 #include "rules/Error.h"
 
+#include <sstream>
+
 using namespace holon;
 using test::World;
 
@@ -16,6 +18,28 @@ TEST_CASE("JSON round trip keeps every field and input") {
     CHECK(j["cells"][1]["parent"] == "-x");
     CHECK(rules::configFromJson(*w.in, j) == c);
     CHECK(rules::configFromJson(*w.in, nlohmann::json::parse(j.dump())) == c);
+}
+
+TEST_CASE("a configuration written a cell at a time is the document configToJson dumps") {
+    // holon plan streams its start and end configurations (a 10^6-cell document took gigabytes);
+    // readers must see the same bytes as before, offset included.
+    for (const auto& [system, spec] : {std::pair{"planner_general1", "square:4x3"}, std::pair{"planner_general1", "cubic:2x2x2"}, std::pair{"pixel", "hex:r2"},
+                                       std::pair{"general_lock2", "square:3x3"}}) {
+        CAPTURE(system);
+        World w = World::library(system, spec);
+        auto c = w.in->empty();
+        for (int i = 0; i < w.region.size(); ++i) {
+            c.cells[i] = static_cast<rules::CellValue>((i * 7 + 3) % w.model->alphabet().size());
+            if (!w.system.inputs.empty() && i % 3 == 0) c.inputs[i] = 1;
+        }
+        for (const nlohmann::json& offset : {nlohmann::json(), nlohmann::json{2, -5}}) {
+            nlohmann::json expected = rules::configToJson(*w.in, c);
+            if (!offset.is_null()) expected["offset"] = offset;
+            std::ostringstream streamed;
+            rules::writeConfigJson(streamed, *w.in, c, offset);
+            CHECK(streamed.str() == expected.dump());
+        }
+    }
 }
 
 TEST_CASE("ASCII art round trips on square and hex regions") {
