@@ -91,8 +91,8 @@ nlohmann::json planLine(const BoxEngine& engine, std::int64_t round, std::int64_
 
 /// A configuration on the planner's board, with the target input, as holon's canonical JSON
 /// (rules::configToJson) on the box region square:WxH or cubic:WxHxD that holds the board, so
-/// `holon check --from` reads it. Boards reaching below 0 are shifted into the region and the
-/// shift is recorded as "offset".
+/// `holon check --from` reads it. A board that does not start at the origin is shifted into the
+/// region and the shift is recorded as "offset".
 void writeConfiguration(std::ostream& out, const Problem& problem, const std::vector<BoxEngine::Value>& cells);
 
 /// Board cells whose state the goal does not accept yet (at most `limit`, in board order) and how
