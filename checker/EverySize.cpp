@@ -119,6 +119,7 @@ public:
                 ctx.checkStopped("solving");
                 o.result.verdict = Verdict::Unknown;
                 o.result.summary = "the solver gave up on rule '" + ruleOf(w, w.focus()[k]) + "': " + unknownReason(solver.reasonUnknown());
+                o.result.limited = limitReached(solver.reasonUnknown());
                 break;
             }
             const smt::Model m = solver.model();
@@ -289,9 +290,11 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
         } catch (const OutOfTime& e) {
             o.result.name = ob.name, o.result.kind = ob.kind, o.scope = "every region";
             o.result.summary = e.what();
+            o.result.limited = true;
         } catch (const smt::Failure& e) {
             o.result.name = ob.name, o.result.kind = ob.kind, o.scope = "every region";
             o.result.summary = solverFailure(e);
+            o.result.limited = true;  // solverFailure throws unless Z3 ran out of memory
             recoverSolverMemory();
         }
         return std::make_pair(o, drawing);

@@ -203,9 +203,11 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 if (t.property->kind == rules::Property::Kind::Invariant) known.push_back(t.property);
             } else if (proof.verdict == Verdict::Unknown) {
                 o.result.summary = "the solver gave up: " + unknownReason(proof.reason);
+                o.result.limited = limitReached(proof.reason);
             } else {
                 o.result.verdict = Verdict::Unknown;
                 o.result.summary = "a bad state is reachable, but no trace to it within the timeout";
+                o.result.limited = true;
                 Obligation shortest = withinLimits(name, "reach", [&] { return bmc(t, std::numeric_limits<int>::max(), name); });
                 o.result.seconds += shortest.result.seconds;
                 if (shortest.result.verdict == Verdict::Violated) {

@@ -132,6 +132,7 @@ Obligation ProofRunner::solve(const std::string& name, const std::string& kind, 
         ctx.checkStopped("solving");  // the deadline or a signal, not the solver, stopped it
         o.result.verdict = Verdict::Unknown;
         o.result.summary = "the solver gave up: " + unknownReason(reason);
+        o.result.limited = limitReached(reason);
         break;
     }
     return o;
@@ -188,6 +189,7 @@ Obligation ProofRunner::stepwise(const std::string& name, const std::string& kin
             ctx.checkStopped("solving");
             o.result.verdict = Verdict::Unknown;
             o.result.summary = "the solver gave up on instance " + std::to_string(p) + ": " + unknownReason(solver.reasonUnknown());
+            o.result.limited = limitReached(solver.reasonUnknown());
             break;
         }
     }
@@ -223,6 +225,7 @@ Obligation withinLimits(const std::string& name, const std::string& kind, const 
     auto stopped = [&](const std::string& why) {
         Obligation o = notEncoded(name, kind, why);
         o.result.seconds = clock.elapsed();
+        o.result.limited = true;
         return o;
     };
     try {

@@ -53,6 +53,10 @@ std::string unknownReason(const std::string& reason) {
     return "out of memory (Z3's memory limit is " + std::to_string(limitMiB) + " MiB)";
 }
 
+bool limitReached(const std::string& reason) {
+    return outOfMemory(reason) || reason.find("timeout") != std::string::npos || reason.find("canceled") != std::string::npos || reason.find("resource") != std::string::npos;
+}
+
 std::string solverFailure(const smt::Failure& e) {
     if (!outOfMemory(e.what())) throw InternalError(std::string("Z3 failed: ") + e.what());
     return "Z3 ran " + unknownReason(e.what());

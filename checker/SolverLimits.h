@@ -21,6 +21,9 @@ bool outOfMemory(const std::string& message);
 /// A reason for "unknown" as a verdict's summary says it: naming the memory limit where it was hit.
 /// Z3's "interrupted from keyboard" (it catches SIGINT while solving) throws Interrupted(SIGINT).
 std::string unknownReason(const std::string& reason);
+/// Whether Z3's reason for unknown is a limit it reached (time, memory, a cancel), not a question
+/// it cannot decide.
+bool limitReached(const std::string& reason);
 /// A Z3 failure as an obligation's summary: running out of memory (with the limit); any other
 /// failure throws InternalError.
 std::string solverFailure(const smt::Failure& e);

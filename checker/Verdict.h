@@ -56,6 +56,9 @@ struct PropertyResult {
     std::string summary;               // one line for the table
     nlohmann::json witness = nullptr;  // machine-readable evidence
     double seconds = 0;
+    /// Unknown because a limit (time, memory) or a signal cut the work short, not because the
+    /// solver could not decide: a record of such a run is partial (no certificate replaces one).
+    bool limited = false;
     std::optional<Trace> trace;
     /// Per cell, the input bits (bit k: input k) the evidence holds under, where the check chose
     /// them (verify's solver, over every input value or the given ones); unset: the problem's.

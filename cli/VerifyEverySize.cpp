@@ -176,7 +176,15 @@ int runEverySize(const EverySizeArgs& a) {
         }
     }
     if (terminal) std::cerr << "\r" << std::string(60, ' ') << "\r";
-    if (certificate) {
+    // A run a limit or a signal cut short is a partial record, like one with --property: at the
+    // default place it would replace the complete certificate `holon plan` reads (a stray
+    // --timeout 2 left every verdict unknown there, and --require-proof refused the next plan).
+    const auto cut = std::find_if(report.obligations.begin(), report.obligations.end(), [](const checker::Obligation& o) { return o.result.limited; });
+    const bool certified = certificate && (!a.certificate.empty() || cut == report.obligations.end());
+    if (certificate && !certified)
+        certificateNote = "none written: a limit cut the run short (" + cut->result.name + ": " + cut->result.summary + "), and a partial record must not replace " +
+                          certificate->path() + "; raise the limit, or give --certificate PATH to write it anyway";
+    if (certified) {
         certificate->write(checker::certificateText(checker::certificateOf(report, rulePath, ruleText, model.lattice().name())));
         if (hashed)
             for (checker::Obligation& o : report.obligations) o.smtFile.clear();  // hashed, and gone with the temporary folder
@@ -187,7 +195,7 @@ int runEverySize(const EverySizeArgs& a) {
     if (a.json) {
         nlohmann::json j = report.toJson();
         j["lattice"] = model.lattice().name();
-        j["certificate"] = certificate ? nlohmann::json(certificate->path()) : nlohmann::json();
+        j["certificate"] = certified ? nlohmann::json(certificate->path()) : nlohmann::json();
         std::cout << j.dump(2) << '\n';
         return code;
     }
@@ -218,8 +226,8 @@ int runEverySize(const EverySizeArgs& a) {
         for (const std::string& w : written) std::cout << "\n  " << w;
         std::cout << '\n';
     }
-    std::cout << "\ncertificate: " << (certificate ? certificate->path() + " (holon plan reads it; docs/every-size.md, \"Certificates\")" : certificateNote.empty() ? "none written (--no-certificate)"
-                                                                                                                                                                    : certificateNote)
+    std::cout << "\ncertificate: " << (certified ? certificate->path() + " (holon plan reads it; docs/every-size.md, \"Certificates\")" : certificateNote.empty() ? "none written (--no-certificate)"
+                                                                                                                                                                  : certificateNote)
               << '\n';
     return code;
 }
