@@ -291,6 +291,12 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
             o.result.name = ob.name, o.result.kind = ob.kind, o.scope = "every region";
             o.result.summary = e.what();
             o.result.limited = true;
+        } catch (const Interrupted& e) {
+            // The verdicts so far are reported, as bounded verify reports them (the CLI exits
+            // 128 + the signal); a signal ended the run with no table at all.
+            o.result.name = ob.name, o.result.kind = ob.kind, o.scope = "every region";
+            o.result.summary = e.what();
+            o.result.limited = true;
         } catch (const smt::Failure& e) {
             o.result.name = ob.name, o.result.kind = ob.kind, o.scope = "every region";
             o.result.summary = solverFailure(e);

@@ -186,8 +186,26 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             announce(name);
             const std::optional<rules::OutputFile> file = options.smtOut.empty() ? std::nullopt : std::optional(run.smtPath(name));
             const bool isKnown = std::find(known.begin(), known.end(), t.property) != known.end();
-            const ReachProof proof = isKnown ? ReachProof{} : proveUnreachable(e, t.bad, options.initial, options.obligationBudget(), file ? &*file : nullptr, known.empty() ? BadStates() : BadStates(knownAt));
+            // A signal or the deadline during the race is this obligation's verdict, unknown, as
+            // withinLimits makes it for the others: it ended verify with no table at all.
+            ReachProof proof;
+            std::string stopped;
+            const Budget clock;
+            try {
+                if (!isKnown) proof = proveUnreachable(e, t.bad, options.initial, options.obligationBudget(), file ? &*file : nullptr, known.empty() ? BadStates() : BadStates(knownAt));
+            } catch (const Interrupted& e) {
+                stopped = e.what();
+            } catch (const OutOfTime& e) {
+                stopped = e.what();
+            }
             Obligation o = ProofRunner::named(name, "reach");
+            if (!stopped.empty()) {
+                o.result.summary = stopped;
+                o.result.limited = true;
+                o.result.seconds = clock.elapsed();
+                add(std::move(o), *t.type, Evidence::Path);
+                continue;
+            }
             for (const std::string& f : proof.certificateFiles) o.smtFile += (o.smtFile.empty() ? "" : " ") + f;
             o.result.verdict = proof.verdict;
             o.result.seconds = proof.seconds;
