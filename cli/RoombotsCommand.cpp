@@ -137,10 +137,22 @@ void printTables(std::ostream& out, const std::vector<rb::Coupling>& couplings, 
     out << std::right;
 }
 
-int run(const RoombotsArgs& a) {
+int run(const RoombotsArgs& a, const CLI::App& sub) {
     if (!a.makeClouds.empty()) {
+        // It computes the table and stops: an option of the runs given with it was dropped in
+        // silence (and --structure FILE --make-clouds FILE replaced the structure).
+        std::string dropped;
+        for (const char* option : {"--structure", "--metamodule", "--strategy", "--recipe", "--runs", "--seed", "--stall", "--clouds", "--out", "--json", "--memory"})
+            if (sub.count(option) > 0) dropped += (dropped.empty() ? "" : ", ") + std::string(option);
+        if (!dropped.empty()) throw InputError("--make-clouds computes the collision-cloud table and stops, so " + dropped + " would do nothing; leave them out, or run without --make-clouds");
         const rules::OutputFile file("--make-clouds", a.makeClouds);  // checked before the table is computed
-        const rb::CloudTable table = rb::CloudTable::compute();
+        const rules::StopSignals guard(true);
+        rb::CloudTable table;
+        try {
+            table = rb::CloudTable::compute(Budget(a.timeout) || Budget::onSignals());
+        } catch (const OutOfTime& e) {
+            throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached while computing the collision-cloud table; nothing was written; raise --timeout");
+        }
         file.write([&](std::ostream& out) { out << table.json(); });
         std::cout << "wrote " << table.size() << " transitions to " << a.makeClouds << '\n';
         return 0;
@@ -291,7 +303,7 @@ Run addRoombotsCommand(CLI::App& app) {
     sub->add_option("--out", a->out, "directory for per-run traces (CSV), foot-trace pictures and assembly snapshots (SVG), and each run action by action for holon view (steps_*.jsonl) (created if missing; its parent must exist)");
     sub->add_flag("--json", a->json, "print a JSON summary");
     sub->add_flag("--quiet", a->quiet, "no progress bar");
-    return [a] { return withinMemory(a->memoryMiB, [&] { return run(*a); }); };
+    return [a, sub] { return withinMemory(a->memoryMiB, [&] { return run(*a, *sub); }); };
 }
 
 }  // namespace holon::cli

@@ -88,7 +88,7 @@ bool standsOnFloor(const Posture& p) {
 
 }  // namespace
 
-CloudTable CloudTable::compute() {
+CloudTable CloudTable::compute(const Budget& budget) {
     CloudTable table;
     for (Coupling coupling : kCouplings) {
         const Metamodule m(coupling);
@@ -104,6 +104,7 @@ CloudTable CloudTable::compute() {
         auto& rows = table.table_[static_cast<int>(coupling)];
         std::set<int> pending{0};
         while (!pending.empty()) {
+            budget.check("computing the collision-cloud table");
             const Joints from = Joints::fromIndex(*pending.begin());
             pending.erase(pending.begin());
             auto& row = rows[from.index()];

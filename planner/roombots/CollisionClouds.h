@@ -5,6 +5,7 @@
 // only read at run time, as the paper's external table.
 
 #include "planner/roombots/Kinematics.h"
+#include "rules/Budget.h"
 
 #include <array>
 #include <map>
@@ -28,7 +29,8 @@ public:
     static constexpr double kRadius = 0.45;
     /// Every transition from the start posture (all joints 0, the upright I) and from every posture a
     /// walk reaches, to one representative per reachable target (fewest cells swept, then fastest).
-    static CloudTable compute();
+    /// `budget` is read between postures (Budget::check: a signal or the deadline ends it).
+    static CloudTable compute(const Budget& budget = {});
     static CloudTable load(const std::string& path);  // throws InputError naming the file
     /// The default table that ships with holon.
     static std::string defaultPath();
