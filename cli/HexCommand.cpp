@@ -132,6 +132,7 @@ int run(HexArgs a) {
     rules::requireMemory(rules::checkedProduct({perRun, std::uint64_t(parallel)}) + rules::checkedProduct({series, std::uint64_t(a.reps)}), a.memoryMiB << 20,
                          std::to_string(a.reps) + (a.reps == 1 ? " run of " : " runs of ") + std::to_string(a.setup.steps) + " timesteps on " + std::to_string(a.setup.size) + "x" +
                              std::to_string(a.setup.size) + " (" + std::to_string(parallel) + " at once)");
+    if (!a.out.empty()) rules::removeEarlierOutputs(a.out, {"frame_*.svg", "series.svg", "series.csv"});
     std::vector<planner::hex::SculptResult> runs(a.reps);
     std::vector<char> ran(a.reps, 0);
     WriteErrors errors;  // written only by run 0 (the frames), read after every run has ended

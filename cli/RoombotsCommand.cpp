@@ -218,6 +218,7 @@ int run(const RoombotsArgs& a, const CLI::App& sub) {
     const int parallel = std::min(static_cast<int>(jobs.size()), a.threads > 0 ? a.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
     rules::requireMemory((std::uint64_t{16} << 20) * std::uint64_t(parallel) + (std::uint64_t{64} << 10) * jobs.size(), a.memoryMiB << 20,
                          std::to_string(jobs.size()) + " runs (" + std::to_string(parallel) + " at once)");
+    if (!a.out.empty()) rules::removeEarlierOutputs(a.out, {"trace_*.csv", "feet_*.svg", "assembly_*.svg", "steps_*.jsonl", "coordination_*.json"});
     rb::AssemblyOptions options;
     options.stallSteps = a.stall;
     options.budget = budget;  // a run the budget cuts short is dropped, not counted

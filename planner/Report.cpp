@@ -45,6 +45,7 @@ Report::Report(const Problem& problem, const Execution& execution, ReportOptions
     }
     if (!options_.outDir.empty()) {
         rules::prepareOutputDir(options_.outOption, options_.outDir, outDirFiles());
+        rules::removeEarlierOutputs(options_.outDir, outDirFiles());
         csv_.emplace(rules::OutputFile(options_.outOption, options_.outDir + "/completion.csv").open());
         csv_->stream() << "round,steps,creations,deletions,transfers,creation_completion,deletion_completion,planner_enabled,planner_held\n";
         rules::OutputFile(options_.outOption, options_.outDir + "/snapshot-start.svg").write(drawBoard(*problem_, execution_->cells(), "start"));

@@ -272,6 +272,15 @@ void removeTemporaries() noexcept {
         if (temporaryInUse[k].load()) ::unlink(temporaryPaths[k]);
 }
 
+void removeEarlierOutputs(const std::string& dir, const std::vector<std::string>& names) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_regular_file(ec) && std::any_of(names.begin(), names.end(), [&](const std::string& n) { return ::fnmatch(n.c_str(), name.c_str(), FNM_PATHNAME) == 0; }))
+            fs::remove(entry.path(), ec);
+    }
+}
+
 void prepareOutputDir(const std::string& option, const std::string& dir, const std::vector<std::string>& names) {
     if (dir.empty()) throw InputError(option + ": the folder name is empty");
     claim(option, dir, Claim::Kind::Folder, names);

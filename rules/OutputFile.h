@@ -84,4 +84,10 @@ public:
 /// whole folder is the option's.
 void prepareOutputDir(const std::string& option, const std::string& dir, const std::vector<std::string>& names = {});
 
+/// Removes the files in `dir` (not below it) whose names match `names` (patterns as above): the
+/// outputs an earlier run left in a reused folder. Called when a run starts writing, so the folder
+/// holds one run's files; a stale violation.itf.json or frame_2000.svg beside a new run's summary
+/// read as this run's.
+void removeEarlierOutputs(const std::string& dir, const std::vector<std::string>& names);
+
 }  // namespace holon::rules
