@@ -56,6 +56,11 @@ Certificate fromJson(const nlohmann::json& j) {
     if (!j.contains("properties") || !j["properties"].is_array()) throw InputError("no list \"properties\"");
     for (const nlohmann::json& p : j["properties"]) {
         CertifiedProperty q{field(p, "name"), field(p, "kind"), field(p, "verdict"), field(p, "scope"), field(p, "evidence"), {}};
+        // holon writes each property once with one of its verdicts: a file edited and sealed again
+        // with a property twice was read by its first entry.
+        if (c.property(q.name)) throw InputError("property '" + q.name + "' is listed twice");
+        if (q.verdict != "proved" && q.verdict != "counterexample" && q.verdict != "unknown")
+            throw InputError("property '" + q.name + "' has verdict '" + q.verdict + "', not proved, counterexample or unknown");
         if (!p.contains("obligations") || !p["obligations"].is_array()) throw InputError("property '" + q.name + "' has no list \"obligations\"");
         for (const nlohmann::json& o : p["obligations"]) q.obligations.emplace_back(field(o, "file"), field(o, "sha256"));
         c.properties.push_back(std::move(q));
@@ -112,6 +117,12 @@ CertificateCheck checkCertificate(const std::string& path, const std::string& ru
         return check;
     }
     check.status = CertificateStatus::Unreadable;
+    // holon writes a certificate as a regular file; anything else (a FIFO) would block every plan
+    // of these rules, --require-proof or not, deaf to --timeout.
+    if (!std::filesystem::is_regular_file(path, error)) {
+        check.why = path + " is not a certificate: not a regular file";
+        return check;
+    }
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(rules::readTextFile(path, std::size_t{1} << 26));

@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sys/stat.h>
 
 using namespace holon;
 using checker::CertificateStatus;
@@ -65,4 +66,24 @@ TEST_CASE("checkCertificate trusts only a certificate that matches") {
     const checker::CertificateCheck check = checker::checkCertificate(written("older", checker::certificateText(older)), kRules, "square2d");
     CHECK(check.status == CertificateStatus::OtherHolon);
     CHECK(check.why.find("written by holon 0.0.1, not by this holon " + checker::holonVersion()) != std::string::npos);
+
+    // Sealed again after an edit holon never makes: a property twice (the first entry was read), or
+    // a verdict holon does not write.
+    checker::Certificate twice = sample();
+    twice.properties.push_back(twice.properties.front());
+    twice.properties.back().verdict = "unknown";
+    const checker::CertificateCheck dup = checker::checkCertificate(written("twice", checker::certificateText(twice)), kRules, "square2d");
+    CHECK(dup.status == CertificateStatus::Unreadable);
+    CHECK(dup.why.find("property 'termination' is listed twice") != std::string::npos);
+    checker::Certificate odd = sample();
+    odd.properties.front().verdict = "maybe";
+    CHECK(checker::checkCertificate(written("verdict", checker::certificateText(odd)), kRules, "square2d").status == CertificateStatus::Unreadable);
+    // A FIFO at the certificate's place blocked every plan of the rules.
+    const std::string fifo = (std::filesystem::temp_directory_path() / "holon_certificate_test_fifo.json").string();
+    std::filesystem::remove(fifo);
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    const checker::CertificateCheck notFile = checker::checkCertificate(fifo, kRules, "square2d");
+    CHECK(notFile.status == CertificateStatus::Unreadable);
+    CHECK(notFile.why.find("not a regular file") != std::string::npos);
+    std::filesystem::remove(fifo);
 }
