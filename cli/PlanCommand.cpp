@@ -69,6 +69,7 @@ struct PlanArgs {
     std::string rules = "planner_intermediate", from, to, allocator = "random", scheduler = "sync", out, planOut, seedCell, traceOut, hexDisks, html;
     std::string requireProof;  // --require-proof's list; every declared property when given bare
     const CLI::Option* requireProofOption = nullptr;
+    const CLI::Option* allocatorOption = nullptr;
     std::vector<std::string> noWarnings, lose, loseRandom;
     std::int64_t delay = 0;
     double drop = 0;
@@ -218,6 +219,9 @@ int run(const PlanArgs& a) {
     rules::Model model(*system, lattice);
     const std::optional<planner::Vec> seedCell = parseCell(a.seedCell, from.dimension);
     planner::Problem problem = planner::makeProblem(model, std::move(from), std::move(to), seedCell, a.seed, memory);
+    // An option that cannot act is refused, not passed over in silence.
+    if (a.allocatorOption->count() > 0 && !planner::movesResources(problem))
+        throw InputError("--allocator " + a.allocator + ": " + system->name + " has no transfers, so there is nothing to allocate; leave --allocator out");
     std::unique_ptr<planner::Allocator> allocator = planner::makeAllocator(allocatorKind, problem, a.seed);
     during("laying out the board");
 
@@ -229,6 +233,8 @@ int run(const PlanArgs& a) {
     for (const std::string& text : a.lose) faultOptions.losses.push_back(planner::parseLoss("--lose", text, lattice.dimension(), true));
     for (const std::string& text : a.loseRandom) faultOptions.losses.push_back(planner::parseLoss("--lose-random", text, lattice.dimension(), false));
     faultOptions.delay = a.delay, faultOptions.drop = a.drop, faultOptions.seed = a.faultSeed.value_or(a.seed);
+    if (a.faultSeed && a.loseRandom.empty() && a.delay == 0 && a.drop == 0)
+        throw InputError("--fault-seed draws the random faults, and none is given; add --lose-random, --delay or --drop, or leave --fault-seed out");
     std::unique_ptr<planner::Faults> faults = faultOptions.any() ? std::make_unique<planner::Faults>(problem, faultOptions) : nullptr;
     const planner::Execution* running = nullptr;  // the admit hook is called only while it runs
     if (faults) options.admit = [&](std::int64_t anchor, int shape) { return faults->admit(*running, anchor, shape); };
@@ -331,7 +337,7 @@ Run addPlanCommand(CLI::App& app) {
     sub->add_option("--from", a->from, "start shape")->required();
     sub->add_option("--to", a->to, "target shape")->required();
     sub->add_option("--scale", a->scale, "every cell becomes a KxK (3D: KxKxK) block (1 to 2^29: beyond it no cell fits the coordinate range)")->check(CLI::Range(1, rules::kMaxCoordinate));
-    sub->add_option("--allocator", a->allocator, "resource allocator for general_n: " + planner::allocatorChoices() + " (default " + a->allocator + ")");
+    a->allocatorOption = sub->add_option("--allocator", a->allocator, "resource allocator for general_n: " + planner::allocatorChoices() + " (default " + a->allocator + ")");
     sub->add_option("--scheduler", a->scheduler, "sync (rounds, default), async (one instance at a time) or adversarial");
     sub->add_option("--seed", a->seed, "random seed (default " + std::to_string(a->seed) + ")")->check(seedValidator());
     sub->add_option("--seed-cell", a->seedCell, "the seed metamodule x,y[,z] (default: the overlap cell nearest its centre)");

@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 #include <functional>
@@ -169,10 +170,17 @@ int run(const RoombotsArgs& a, const CLI::App& sub) {
     };
     known("--structure", a.structure, "cube", "chair");
     known("--recipe", a.recipe, "given", "auto");
+    // A configuration or strategy named twice ran twice, and its runs were counted twice.
     std::vector<rb::Coupling> couplings;
-    for (const std::string& m : a.metamodules) couplings.push_back(rb::parseCoupling(m));
+    for (const std::string& m : a.metamodules) {
+        couplings.push_back(rb::parseCoupling(m));
+        if (std::count(couplings.begin(), couplings.end(), couplings.back()) > 1) throw InputError("--metamodule " + m + ": named twice; name each configuration once");
+    }
     std::vector<rb::Strategy> strategies;
-    for (const std::string& s : a.strategies) strategies.push_back(rb::parseStrategy(s));
+    for (const std::string& s : a.strategies) {
+        strategies.push_back(rb::parseStrategy(s));
+        if (std::count(strategies.begin(), strategies.end(), strategies.back()) > 1) throw InputError("--strategy " + s + ": named twice; name each strategy once");
+    }
     const std::vector<rb::Setting> settings = rb::loadScenario(a.structure, a.seed, a.runs, budget);
     const rb::CloudTable table = rb::CloudTable::load(a.clouds.empty() ? rb::CloudTable::defaultPath() : a.clouds);
     // The seeding order per metamodule configuration and run: the structure's, or derived (--recipe auto).
