@@ -54,8 +54,13 @@ PlanLineReader::PlanLineReader(std::istream& in, std::string path) : in_(&in), p
     boundedLine(in, first, path_ + ":1");
     head_ = parse(first);
     if (!head_.is_object()) throw InputError(where() + ": expected a JSON object");
-    if (head_.contains("start") && head_["start"].is_object() && head_["start"].contains("offset"))
+    if (head_.contains("start") && head_["start"].is_object() && head_["start"].contains("offset")) {
         offset_ = pointFromJson(head_["start"]["offset"], where() + ": offset");
+        coordinates_ = head_["start"]["offset"].size();
+    }
+    // The start's region names its lattice, and with it the cells' dimension.
+    if (head_.contains("start") && head_["start"].is_object() && head_["start"].contains("region") && head_["start"]["region"].is_string())
+        coordinates_ = head_["start"]["region"].get<std::string>().rfind("cubic", 0) == 0 ? 3 : 2;
 }
 
 std::string PlanLineReader::kind() const {
@@ -92,11 +97,24 @@ bool PlanLineReader::next(PlanLine& line) {
     if (!fault && (!j.is_object() || !j.contains("round") || !j["round"].is_number_integer() || !j.contains("rule") || !j["rule"].is_string() || !j.contains("cells") ||
                    !j["cells"].is_array() || !j.contains("after") || !j["after"].is_array() || j["after"].size() != j["cells"].size()))
         throw InputError(where() + ": a step must be {\"round\": R, \"rule\": NAME, \"cells\": [[x, y], ...], \"after\": [{...}, ...]}, one state after per cell");
+    // What holon writes, and nothing else: an edited file with rounds out of order, a key holon
+    // never writes or a cell of another dimension was replayed as legal.
+    for (const auto& [key, value] : j.items())
+        if (key != "round" && key != "cells" && (fault ? key != "fault" : key != "rule" && key != "after" && key != "system" && key != "time"))
+            throw InputError(where() + ": unknown key \"" + key + "\"; the file was edited by hand: write it again");
     line.round = j["round"].get<std::int64_t>();
+    if (line.round < (fault ? 1 : 0) || line.round < lastRound_)
+        throw InputError(where() + ": round " + std::to_string(line.round) + (line.round >= 0 && line.round < lastRound_ ? " after round " + std::to_string(lastRound_) : "") +
+                         "; rounds count from " + (fault ? "1 for a loss (after that round)" : "0") + " and never go back");
+    lastRound_ = line.round;
     line.fault = fault;
     line.rule = fault ? "" : j["rule"].get<std::string>();
     line.cells.clear();
-    for (const auto& c : j["cells"]) line.cells.push_back(pointFromJson(c, where()) + offset_);
+    for (const auto& c : j["cells"]) {
+        line.cells.push_back(pointFromJson(c, where()) + offset_);
+        if (coordinates_ == 0) coordinates_ = c.size();
+        if (c.size() != coordinates_) throw InputError(where() + ": cell " + c.dump() + " has " + std::to_string(c.size()) + " coordinates, the plan's cells " + std::to_string(coordinates_));
+    }
     line.json = std::move(j);
     return true;
 }

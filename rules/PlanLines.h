@@ -54,6 +54,8 @@ private:
     int lineNo_ = 1;
     nlohmann::json head_;
     Vec offset_;
+    std::int64_t lastRound_ = 0;
+    std::size_t coordinates_ = 0;  // of every cell: the start region's lattice's, else the first cell's
 };
 
 }  // namespace holon::rules

@@ -39,6 +39,23 @@ TEST_CASE("plan lines: offset added, blank lines skipped, faults checked, errors
     CHECK_THROWS_WITH_AS(fails(R"({"round":0,"rule":"r","cells":[[0,0]],"after":[]})"), doctest::Contains("b.jsonl:2: a step must be"), InputError);
     CHECK_THROWS_WITH_AS(fails(R"({"round":0,"rule":"r","cells":[[2147483647,0]],"after":[{}]})"), doctest::Contains("b.jsonl:2: a cell is [x, y] or [x, y, z] of integers"), InputError);
     CHECK_THROWS_WITH_AS(fails("{oops"), doctest::Contains("b.jsonl:2: not a JSON line"), InputError);
+    // What holon writes and nothing else: an edited file was replayed as legal.
+    const auto lines = [](const std::string& text) {
+        std::istringstream plan(R"({"plan":"holon","start":{"region":"square:3x3","cells":[]}})"
+                                "\n" +
+                                text);
+        rules::PlanLineReader r(plan, "e.jsonl");
+        rules::PlanLine l;
+        while (r.next(l)) {
+        }
+    };
+    const std::string step = R"({"round":2,"rule":"r","cells":[[0,0]],"after":[{}]})";
+    CHECK_NOTHROW(lines(step + "\n" + step + "\n"));
+    CHECK_THROWS_WITH_AS(lines(step + "\n" + R"({"round":1,"rule":"r","cells":[[0,0]],"after":[{}]})"), doctest::Contains("e.jsonl:3: round 1 after round 2"), InputError);
+    CHECK_THROWS_WITH_AS(lines(R"({"round":-1,"rule":"r","cells":[[0,0]],"after":[{}]})"), doctest::Contains("e.jsonl:2: round -1; rounds count from 0"), InputError);
+    CHECK_THROWS_WITH_AS(lines(R"({"round":0,"fault":"lose","cells":[[0,0]]})"), doctest::Contains("rounds count from 1 for a loss"), InputError);
+    CHECK_THROWS_WITH_AS(lines(R"({"round":0,"rule":"r","cells":[[0,0]],"after":[{}],"bogus":1})"), doctest::Contains("e.jsonl:2: unknown key \"bogus\""), InputError);
+    CHECK_THROWS_WITH_AS(lines(R"({"round":0,"rule":"r","cells":[[0,0,0]],"after":[{}]})"), doctest::Contains("has 3 coordinates, the plan's cells 2"), InputError);
     std::istringstream notObject("[1]\n");
     CHECK_THROWS_WITH_AS(rules::PlanLineReader(notObject, "n.jsonl"), doctest::Contains("n.jsonl:1: expected a JSON object"), InputError);
 }
