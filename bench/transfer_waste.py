@@ -21,14 +21,15 @@ def main(path):
         head = json.loads(f.readline())
         steps = [json.loads(line) for line in f if line.strip()]
     start = head['start']
-    offset = start['offset']  # the header's cells are region coordinates; the steps' are not
+    dimension = 3 if start['region'].startswith('cubic') else 2
+    # The header's cells are region coordinates, the steps' the shapes': region = shape + offset.
+    offset = start.get('offset', [0] * dimension)
 
     def shifted(at):
         return tuple(a - o for a, o in zip(at, offset))
 
     res = {shifted(c['at']): c['res'] for c in start['cells']}
     target = {shifted(t) for t in start.get('inputs', {}).get('target', [])}
-    dimension = len(offset)
     moves = [tuple(s * (k == d) for k in range(dimension)) for d in range(dimension) for s in (1, -1)]
     startCells = set(res)
 

@@ -167,7 +167,12 @@ int run(const CheckArgs& a) {
     }
     if (violated.empty()) noteNoCounterexample("check", {{"--trace-out", a.traceOut}, {"--html", a.html}, {"--svg", a.svg}});
     if (dotOut) {
-        if (report.stats.states > 5000) std::cerr << "holon check: --dot skipped: " << report.stats.states << " states is too many to draw (at most 5000)\n";
+        // A graph cut short (a limit, or every property asked for already violated) is part of
+        // one, which the file would not say (an empty digraph came out of --max-states 50): as
+        // --components, none is drawn.
+        if (kept.explorer->stats().stopped != StopReason::Finished)
+            std::cerr << "holon check: --dot not written: the exploration stopped before the whole graph was seen (" << stopReasonName(kept.explorer->stats().stopped) << ")\n";
+        else if (report.stats.states > 5000) std::cerr << "holon check: --dot not written: " << report.stats.states << " states is too many to draw (at most 5000)\n";
         else dotOut->write([&](std::ostream& out) { checker::writeDot(*kept.explorer, in, out); });
     }
 

@@ -96,7 +96,8 @@ std::optional<planner::Vec> parseCell(const std::string& text, int dimension) {
             throw InputError("--seed-cell '" + text + "': '" + part + "' is not an integer; give " + want);
         v.push_back(value);
     }
-    if (static_cast<int>(v.size()) != dimension || text.back() == ',')
+    if (text.back() == ',') throw InputError("--seed-cell '" + text + "': ends with ','; give " + want);
+    if (static_cast<int>(v.size()) != dimension)
         throw InputError("--seed-cell '" + text + "': " + std::to_string(v.size()) + " coordinates, but the shapes are " + std::to_string(dimension) + "D; give " + want);
     return planner::Vec{v[0], v[1], dimension == 3 ? v[2] : 0};
 }

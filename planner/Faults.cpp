@@ -45,7 +45,8 @@ Loss parseLoss(const std::string& option, const std::string& text, int dimension
         if (part.empty() || ec != std::errc{} || end != part.data() + part.size()) return fail("'" + part + "' is not an integer");
         numbers.push_back(v);
     }
-    if (text.back() == ',' || numbers.size() != (cell ? 1u + static_cast<unsigned>(dimension) : 1u))
+    if (text.back() == ',') return fail("ends with ','");
+    if (numbers.size() != (cell ? 1u + static_cast<unsigned>(dimension) : 1u))
         return fail(cell ? std::to_string(numbers.size() - 1) + " coordinates, but the shapes are " + std::to_string(dimension) + "D" : "one number");
     if (numbers[0] < 1) return fail("round " + std::to_string(numbers[0]));
     Loss loss{numbers[0], std::nullopt};
