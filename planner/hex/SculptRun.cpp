@@ -21,12 +21,22 @@ std::uint64_t sculptBytes(const SculptSetup& setup) {
 SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const HoleSculptor&)>& frame, const Budget& budget,
                        const std::function<void(const HoleSculptor&)>& started) {
     const auto begin = std::chrono::steady_clock::now();
-    const HexArray array(setup.size);
-    const auto source = sculptShape(array, setup.from, rules::parameterName(rules::Parameter::SculptFrom));
-    const auto target = sculptShape(array, setup.to, rules::parameterName(rules::Parameter::SculptTo));
-    const TriPlan plan = planTriRegions(array, source, target, std::max(2.0, setup.triFraction * setup.size));
-    HoleSculptor sculptor(array, source, target, plan, setup.options);
+    // The setup reads the budget between its phases, each seconds long on large arrays: a signal
+    // or the deadline waited for all of them (hex --size 4000 --timeout 1 ran 6 s).
     SculptResult result;
+    const auto stoppedDuringSetup = [&] {
+        if (const auto why = budget.reached()) return result.stopped = *why, true;
+        return false;
+    };
+    const HexArray array(setup.size);
+    if (stoppedDuringSetup()) return result;
+    const auto source = sculptShape(array, setup.from, rules::parameterName(rules::Parameter::SculptFrom));
+    if (stoppedDuringSetup()) return result;
+    const auto target = sculptShape(array, setup.to, rules::parameterName(rules::Parameter::SculptTo));
+    if (stoppedDuringSetup()) return result;
+    const TriPlan plan = planTriRegions(array, source, target, std::max(2.0, setup.triFraction * setup.size));
+    if (stoppedDuringSetup()) return result;
+    HoleSculptor sculptor(array, source, target, plan, setup.options);
     result.modules = sculptor.modules();
     result.startHoles = sculptor.holes();
     result.holeBudget = sculptor.holeBudget();
