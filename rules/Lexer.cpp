@@ -104,7 +104,10 @@ std::vector<Token> tokenize(std::string_view src, Diagnostics& diagnostics) {
         }
         if (matched) continue;
         const unsigned char u = static_cast<unsigned char>(c);
+        // NAME.rev is how holon shows an unnamed reverse rule; a file names it with `/ REVERSE`.
+        const bool reverse = c == '.' && src.substr(i + 1, 3) == "rev" && !tokens.empty() && tokens.back().kind == Token::Kind::Ident;
         diagnostics.error(loc, u >= 0x80 ? std::string("non-ASCII character; .holon files are plain ASCII")
+                               : reverse ? "unexpected character '.': '" + tokens.back().text + ".rev' is how a reverse rule is shown; to name it here, declare it 'rule " + tokens.back().text + " / NAME: ...' and write NAME"
                                          : "unexpected character '" + escapeText(std::string_view(&c, 1)) + "'");
         // Skip a whole UTF-8 sequence so one character gives one diagnostic.
         std::size_t j = i + 1;
