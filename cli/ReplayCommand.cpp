@@ -44,6 +44,10 @@ int run(const Args& a) {
     const nlohmann::json& of = plan.head().contains("system") ? plan.head()["system"] : nlohmann::json();
     if (of != system->name) throw InputError(a.plan + ":1: the plan is for system '" + (of.is_string() ? of.get<std::string>() : "") + "', not " + system->name + "; give its rule file");
     const nlohmann::json& start = plan.start();
+    // The start names its system too (holon writes the same name twice): an edited start of another
+    // system was replayed.
+    if (start.contains("system") && start["system"] != system->name)
+        throw InputError(a.plan + ":1: the start configuration is of system " + start["system"].dump() + ", and the plan of " + system->name + "; write the plan again");
     if (!start.contains("region") || !start["region"].is_string()) throw InputError(a.plan + ":1: the start configuration names no region");
     const rules::Region region = [&] {
         try {
