@@ -21,6 +21,7 @@
 #include "checker/Draw.h"
 #include "checker/EverySizeInvariant.h"
 #include "checker/EverySizeProgress.h"
+#include "checker/ProofRunner.h"
 #include "checker/Property.h"
 #include "checker/SmtEncoding.h"
 #include "checker/SolverLimits.h"
@@ -280,29 +281,13 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
         out.notLocal.push_back(p.name);
         add(o);
     };
-    // Runs one step obligation within its limits: a timeout or Z3 out of memory is unknown.
+    // Runs one step obligation within its limits (withinLimits): a timeout, a signal or Z3 out of
+    // memory is unknown, and the verdicts so far are reported.
     auto run = [&](const StepObligation& ob) {
         if (onObligation) onObligation(ob.name);
         std::string drawing;
-        Obligation o;
-        try {
-            o = prover.prove(ob, drawing);
-        } catch (const OutOfTime& e) {
-            o.result.name = ob.name, o.result.kind = ob.kind, o.scope = "every region";
-            o.result.summary = e.what();
-            o.result.limited = true;
-        } catch (const Interrupted& e) {
-            // The verdicts so far are reported, as bounded verify reports them (the CLI exits
-            // 128 + the signal); a signal ended the run with no table at all.
-            o.result.name = ob.name, o.result.kind = ob.kind, o.scope = "every region";
-            o.result.summary = e.what();
-            o.result.limited = true;
-        } catch (const smt::Failure& e) {
-            o.result.name = ob.name, o.result.kind = ob.kind, o.scope = "every region";
-            o.result.summary = solverFailure(e);
-            o.result.limited = true;  // solverFailure throws unless Z3 ran out of memory
-            recoverSolverMemory();
-        }
+        Obligation o = withinLimits(ob.name, ob.kind, [&] { return prover.prove(ob, drawing); });
+        o.scope = "every region";
         return std::make_pair(o, drawing);
     };
     // Invariants conjunct by conjunct (checker/EverySizeInvariant.h); the first that fails decides. `local`:

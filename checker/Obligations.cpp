@@ -186,55 +186,42 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             announce(name);
             const std::optional<rules::OutputFile> file = options.smtOut.empty() ? std::nullopt : std::optional(run.smtPath(name));
             const bool isKnown = std::find(known.begin(), known.end(), t.property) != known.end();
-            // A signal or the deadline during the race is this obligation's verdict, unknown, as
-            // withinLimits makes it for the others: it ended verify with no table at all.
-            ReachProof proof;
-            std::string stopped;
-            const Budget clock;
-            try {
-                if (!isKnown) proof = proveUnreachable(e, t.bad, options.initial, options.obligationBudget(), file ? &*file : nullptr, known.empty() ? BadStates() : BadStates(knownAt));
-            } catch (const Interrupted& e) {
-                stopped = e.what();
-            } catch (const OutOfTime& e) {
-                stopped = e.what();
-            }
-            Obligation o = ProofRunner::named(name, "reach");
-            if (!stopped.empty()) {
-                o.result.summary = stopped;
-                o.result.limited = true;
-                o.result.seconds = clock.elapsed();
-                add(std::move(o), *t.type, Evidence::Path);
-                continue;
-            }
-            for (const std::string& f : proof.certificateFiles) o.smtFile += (o.smtFile.empty() ? "" : " ") + f;
-            o.result.verdict = proof.verdict;
-            o.result.seconds = proof.seconds;
-            if (isKnown) {
-                o.result.verdict = Verdict::Holds;
-                o.result.summary = "holds in every reachable state: it is inductive and holds initially";
-            } else if (proof.verdict == Verdict::Holds) {
-                std::string given;
-                if (proof.usedKnown)
-                    for (const rules::Property* k : known) given += (given.empty() ? ", given " : " and ") + k->name;
-                o.result.summary = "holds in every reachable state (inductive invariant of " + std::to_string(proof.invariant.size()) + " clauses" + given + ")";
-                o.result.witness = {{"inductive_invariant", proof.invariant}};
-                if (t.property->kind == rules::Property::Kind::Invariant) known.push_back(t.property);
-            } else if (proof.verdict == Verdict::Unknown) {
-                o.result.summary = "the solver gave up: " + unknownReason(proof.reason);
-                o.result.limited = limitReached(proof.reason);
-            } else {
-                o.result.verdict = Verdict::Unknown;
-                o.result.summary = "a bad state is reachable, but no trace to it within the timeout";
-                o.result.limited = true;
-                Obligation shortest = withinLimits(name, "reach", [&] { return bmc(t, std::numeric_limits<int>::max(), name); });
-                o.result.seconds += shortest.result.seconds;
-                if (shortest.result.verdict == Verdict::Violated) {
-                    shortest.result.kind = "reach";
-                    shortest.result.seconds = o.result.seconds;
-                    shortest.smtFile = o.smtFile;
-                    o = shortest;
+            // Within its limits like every other obligation: a signal or the deadline during the
+            // race ended verify with no table at all.
+            Obligation o = withinLimits(name, "reach", [&] {
+                const ReachProof proof = isKnown ? ReachProof{} : proveUnreachable(e, t.bad, options.initial, options.obligationBudget(), file ? &*file : nullptr, known.empty() ? BadStates() : BadStates(knownAt));
+                Obligation o = ProofRunner::named(name, "reach");
+                for (const std::string& f : proof.certificateFiles) o.smtFile += (o.smtFile.empty() ? "" : " ") + f;
+                o.result.verdict = proof.verdict;
+                o.result.seconds = proof.seconds;
+                if (isKnown) {
+                    o.result.verdict = Verdict::Holds;
+                    o.result.summary = "holds in every reachable state: it is inductive and holds initially";
+                } else if (proof.verdict == Verdict::Holds) {
+                    std::string given;
+                    if (proof.usedKnown)
+                        for (const rules::Property* k : known) given += (given.empty() ? ", given " : " and ") + k->name;
+                    o.result.summary = "holds in every reachable state (inductive invariant of " + std::to_string(proof.invariant.size()) + " clauses" + given + ")";
+                    o.result.witness = {{"inductive_invariant", proof.invariant}};
+                    if (t.property->kind == rules::Property::Kind::Invariant) known.push_back(t.property);
+                } else if (proof.verdict == Verdict::Unknown) {
+                    o.result.summary = "the solver gave up: " + unknownReason(proof.reason);
+                    o.result.limited = limitReached(proof.reason);
+                } else {
+                    o.result.verdict = Verdict::Unknown;
+                    o.result.summary = "a bad state is reachable, but no trace to it within the timeout";
+                    o.result.limited = true;
+                    Obligation shortest = withinLimits(name, "reach", [&] { return bmc(t, std::numeric_limits<int>::max(), name); });
+                    o.result.seconds += shortest.result.seconds;
+                    if (shortest.result.verdict == Verdict::Violated) {
+                        shortest.result.kind = "reach";
+                        shortest.result.seconds = o.result.seconds;
+                        shortest.smtFile = o.smtFile;
+                        o = shortest;
+                    }
                 }
-            }
+                return o;
+            });
             add(std::move(o), *t.type, Evidence::Path);
         }
     return report;
