@@ -155,7 +155,7 @@ nlohmann::json pointJson(const Lattice& lattice, Vec v) {
 
 namespace {
 
-/// One occupied cell as configToJson lists it: its fields and "at".
+/// One occupied cell as a configuration lists it: its fields and "at".
 nlohmann::json cellRecord(const Model& model, const Region& region, int i, CellValue v) {
     nlohmann::json cell = stateFields(model, v);
     cell["at"] = position(region, region.cell(i));
@@ -164,30 +164,10 @@ nlohmann::json cellRecord(const Model& model, const Region& region, int i, CellV
 
 }  // namespace
 
-nlohmann::json configToJson(const Interpreter& in, const Configuration& c) {
-    const Region& region = in.region();
-    const Model& model = in.model();
-    const System& system = model.system();
-    nlohmann::json cells = nlohmann::json::array();
-    for (int i = 0; i < region.size(); ++i)
-        if (c.cells[i]) cells.push_back(cellRecord(model, region, i, c.cells[i]));
-    nlohmann::json j{{"system", system.name}, {"region", region.spec()}, {"cells", cells}};
-    nlohmann::json inputs = nlohmann::json::object();
-    for (std::size_t k = 0; k < system.inputs.size(); ++k) {
-        nlohmann::json list = nlohmann::json::array();
-        for (int i = 0; i < region.size(); ++i)
-            if ((c.inputs[i] >> k) & 1u) list.push_back(position(region, region.cell(i)));
-        inputs[system.inputs[k]] = list;
-    }
-    if (!system.inputs.empty()) j["inputs"] = inputs;
-    return j;
-}
-
 void writeConfigJson(std::ostream& out, const Interpreter& in, const Configuration& c, const nlohmann::json& offset) {
-    // The same text as configToJson(in, c) with "offset" added, dumped, written a cell at a time:
-    // the document of a 10^6-cell plan took gigabytes in memory (and an allocation failing inside
-    // the JSON library ended holon). Keys in the library's order: cells, inputs, offset, region,
-    // system.
+    // Written a cell at a time: the document of a 10^6-cell plan took gigabytes in memory (and an
+    // allocation failing inside the JSON library ended holon). Keys in the order the library dumps
+    // them (cells, inputs, offset, region, system), so a document read back dumps the same text.
     const Region& region = in.region();
     const Model& model = in.model();
     const System& system = model.system();
@@ -213,6 +193,14 @@ void writeConfigJson(std::ostream& out, const Interpreter& in, const Configurati
     }
     if (!offset.is_null()) out << ",\"offset\":" << offset.dump();
     out << ",\"region\":" << nlohmann::json(region.spec()).dump() << ",\"system\":" << nlohmann::json(system.name).dump() << '}';
+}
+
+// One writer of the format: the document is the streamed text read back (configurations made
+// this way are trace states and table rows, small).
+nlohmann::json configToJson(const Interpreter& in, const Configuration& c) {
+    std::ostringstream text;
+    writeConfigJson(text, in, c);
+    return nlohmann::json::parse(text.str());
 }
 
 Configuration configFromJson(const Interpreter& in, const nlohmann::json& j, std::uint32_t* inputsNamed) {

@@ -11,10 +11,13 @@
 
 namespace holon::rules {
 
-nlohmann::json configToJson(const Interpreter& in, const Configuration& c);
-/// Writes configToJson(in, c), with `offset` as "offset" unless it is null, dumped compactly, a
+/// A configuration as holon's canonical JSON: "cells" (each its fields and "at"), "inputs" (per
+/// input, its cells), "region", "system", and "offset" unless it is null; written compactly, a
 /// cell at a time (a configuration of millions of cells never stands in memory as a document).
+/// The text is the library's dump of the same document.
 void writeConfigJson(std::ostream& out, const Interpreter& in, const Configuration& c, const nlohmann::json& offset = nullptr);
+/// The same as a document (writeConfigJson read back).
+nlohmann::json configToJson(const Interpreter& in, const Configuration& c);
 /// A cell state's fields by name ({"label": "P", "parent": "+x"}); empty for the vacuum.
 nlohmann::json stateFields(const Model& model, CellValue v);
 /// A lattice point as [x, y] or [x, y, z].
