@@ -163,7 +163,7 @@ int run(HexArgs a) {
     for (int r = 0; r < a.reps; ++r)
         if (ran[r]) kept.push_back(std::move(runs[r]));
     if (kept.empty() && budget.interrupted()) throw Interrupted(budget.signal());
-    if (kept.empty()) throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached before the first timestep; nothing was written; raise --timeout");
+    if (kept.empty()) throw timeoutBeforeOutput(a.timeout, "before the first timestep");
     runs = std::move(kept);
     int steps = a.setup.steps;
     for (const auto& r : runs) steps = std::min(steps, r.steps);

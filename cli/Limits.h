@@ -11,6 +11,7 @@
 
 #include "checker/Explorer.h"
 #include "cli/Commands.h"
+#include "rules/Error.h"
 #include "rules/Limits.h"
 #include "rules/StopSignals.h"
 
@@ -98,6 +99,12 @@ inline std::string limitOption(StopReason r) {
 
 /// The signal rules::StopSignals caught (SIGINT, SIGTERM), 0 for none.
 inline int caughtSignal() { return *rules::StopSignals::caught(); }
+
+/// --timeout run out before a job wrote anything: `when` says where ("while laying out the
+/// board").
+inline LimitError timeoutBeforeOutput(double seconds, const std::string& when) {
+    return LimitError("--timeout " + (std::ostringstream() << seconds).str() + " s: reached " + when + "; nothing was written; raise --timeout");
+}
 
 /// "; raise --timeout" after a message of a run stopped by `r`, or nothing.
 inline std::string raiseAdvice(StopReason r, const std::string& then = "") {

@@ -184,7 +184,7 @@ int run(const PlanArgs& a) {
     const rules::StopSignals guard(true);  // one-shot: a second signal ends holon at once
     const auto during = [&](const std::string& phase) {
         if (budget.interrupted()) throw Interrupted(budget.signal());
-        if (budget.expired()) throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached while " + phase + ", before the plan ran; nothing was written; raise --timeout");
+        if (budget.expired()) throw timeoutBeforeOutput(a.timeout, "while " + phase + ", before the plan ran");
     };
     // Names and output paths are checked before any work: a finished plan is never lost to a
     // typo, and a misspelt name does not wait for a large board to be laid out.

@@ -142,9 +142,11 @@ int run(const RoombotsArgs& a, const CLI::App& sub) {
     if (!a.makeClouds.empty()) {
         // It computes the table and stops: an option of the runs given with it was dropped in
         // silence (and --structure FILE --make-clouds FILE replaced the structure).
+        // Every option but these is one of the runs', a new one included.
         std::string dropped;
-        for (const char* option : {"--structure", "--metamodule", "--strategy", "--recipe", "--runs", "--seed", "--stall", "--clouds", "--out", "--json", "--memory"})
-            if (sub.count(option) > 0) dropped += (dropped.empty() ? "" : ", ") + std::string(option);
+        for (const CLI::Option* option : sub.get_options())
+            if (option->count() > 0 && option->get_name() != "--make-clouds" && option->get_name() != "--timeout" && option->get_name() != "--quiet")
+                dropped += (dropped.empty() ? "" : ", ") + option->get_name();
         if (!dropped.empty()) throw InputError("--make-clouds computes the collision-cloud table and stops, so " + dropped + " would do nothing; leave them out, or run without --make-clouds");
         const rules::OutputFile file("--make-clouds", a.makeClouds);  // checked before the table is computed
         const rules::StopSignals guard(true);
@@ -152,7 +154,7 @@ int run(const RoombotsArgs& a, const CLI::App& sub) {
         try {
             table = rb::CloudTable::compute(Budget(a.timeout) || Budget::onSignals());
         } catch (const OutOfTime& e) {
-            throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached while computing the collision-cloud table; nothing was written; raise --timeout");
+            throw timeoutBeforeOutput(a.timeout, "while computing the collision-cloud table");
         }
         file.write([&](std::ostream& out) { out << table.json(); });
         std::cout << "wrote " << table.size() << " transitions to " << a.makeClouds << '\n';
@@ -207,7 +209,7 @@ int run(const RoombotsArgs& a, const CLI::App& sub) {
             budget);
         if (derived < static_cast<int>(keys.size()) && budget.interrupted()) throw Interrupted(budget.signal());
         if (derived < static_cast<int>(keys.size()))
-            throw LimitError("--timeout " + (std::ostringstream() << a.timeout).str() + " s: reached while deriving the recipes, before any run; nothing was written; raise --timeout");
+            throw timeoutBeforeOutput(a.timeout, "while deriving the recipes, before any run");
     }
 
     for (rb::Coupling c : couplings)  // a shape the configuration cannot take is the structure's fault, not the strategy's
