@@ -9,6 +9,7 @@
 #include "rules/ConfigIo.h"
 #include "rules/Library.h"
 #include "rules/Parser.h"
+#include "rules/TextFile.h"
 
 #include <algorithm>
 #include <cstdio>

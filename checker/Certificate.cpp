@@ -11,6 +11,7 @@
 #include "rules/Error.h"
 #include "rules/Parser.h"
 #include "rules/Sha256.h"
+#include "rules/TextFile.h"
 
 #include <filesystem>
 #include <nlohmann/json.hpp>

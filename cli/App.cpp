@@ -4,6 +4,7 @@
 
 #include "cli/Commands.h"
 #include "cli/ParameterNames.h"
+#include "rules/Budget.h"
 #include "rules/Error.h"
 #include "rules/Escape.h"
 #include "rules/OutputFile.h"
@@ -78,6 +79,10 @@ int runHolon(int argc, char** argv) {
                     if (option->count() > 0 && option->get_expected_min() > 0)
                         for (const std::string& value : option->results())
                             if (value.empty()) throw InputError(option->get_name() + ": the value is empty; give one, or leave the option out");
+                // --timeout counts from the job's start, for the waits no run's budget reaches yet
+                // (an input read from a FIFO that nothing writes).
+                if (const CLI::Option* timeout = sub->get_option_no_throw("--timeout"); timeout && timeout->count() > 0)
+                    setJobDeadline(timeout->as<double>());
                 const rules::OutputClaims outputs;  // no two options write the same file
                 return run();
             }

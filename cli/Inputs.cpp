@@ -10,6 +10,7 @@
 #include "rules/OutputFile.h"
 #include "rules/Parser.h"
 #include "rules/Printer.h"
+#include "rules/TextFile.h"
 
 #include <algorithm>
 #include <filesystem>

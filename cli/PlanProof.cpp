@@ -9,6 +9,7 @@
 #include "rules/Error.h"
 #include "rules/Library.h"
 #include "rules/Parser.h"
+#include "rules/TextFile.h"
 
 #include <algorithm>
 #include <sstream>

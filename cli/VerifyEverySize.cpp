@@ -13,6 +13,7 @@
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
 #include "rules/Parser.h"
+#include "rules/TextFile.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -14,6 +14,7 @@
 #include "rules/Parameter.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
+#include "rules/TextFile.h"
 #include "rules/VisibleSim.h"
 
 #include <nlohmann/json.hpp>

@@ -7,6 +7,8 @@
 #include "rules/StopSignals.h"
 
 #include <algorithm>
+#include <atomic>
+#include <limits>
 #include <sstream>
 
 namespace holon {
@@ -28,6 +30,23 @@ std::string stopReasonName(StopReason r) {
     case StopReason::Interrupted: return "interrupted";
     }
     throw InternalError("stopReasonName: a StopReason out of range");
+}
+
+namespace {
+// Nanoseconds of the steady clock; 0: no deadline. Atomic: read from worker threads too.
+std::atomic<std::int64_t> jobDeadline{0};
+}  // namespace
+
+void setJobDeadline(double seconds) {
+    const auto now = std::chrono::steady_clock::now().time_since_epoch();
+    jobDeadline = seconds > 0 ? std::chrono::duration_cast<std::chrono::nanoseconds>(now + std::chrono::duration<double>(seconds)).count() : 0;
+}
+
+double jobSecondsLeft() {
+    const std::int64_t deadline = jobDeadline;
+    if (deadline == 0) return std::numeric_limits<double>::infinity();
+    const std::int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    return deadline > now ? static_cast<double>(deadline - now) * 1e-9 : 0;
 }
 
 Budget::Budget(double seconds) : seconds_(seconds > 0 ? seconds : 0) {}

@@ -94,4 +94,11 @@ private:
     const volatile std::sig_atomic_t* stop_ = nullptr;
 };
 
+/// The whole job's deadline, for the waits no run's budget reaches: an input read from a pipe or
+/// FIFO that nothing writes yet. The CLI sets it once at startup from --timeout, which counts from
+/// the job's start; `seconds` <= 0: none.
+void setJobDeadline(double seconds);
+/// Seconds left before the job's deadline (0 once passed); infinity when there is none.
+double jobSecondsLeft();
+
 }  // namespace holon

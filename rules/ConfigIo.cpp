@@ -15,6 +15,7 @@
 #include "rules/Parameter.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
+#include "rules/TextFile.h"
 
 #include <algorithm>
 #include <filesystem>

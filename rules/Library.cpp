@@ -6,6 +6,7 @@
 
 #include "rules/Error.h"
 #include "rules/Parser.h"
+#include "rules/TextFile.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -9,17 +9,11 @@
 #include "rules/Error.h"
 #include "rules/Lexer.h"
 #include "rules/Limits.h"
-#include "rules/StopSignals.h"
 #include "rules/Validate.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <fcntl.h>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
-#include <unistd.h>
 
 namespace holon::rules {
 
@@ -918,38 +912,6 @@ std::optional<System> parseSystem(std::string_view source, Diagnostics& diagnost
     validate(system, diagnostics);
     if (diagnostics.hasErrors()) return std::nullopt;
     return system;
-}
-
-std::string readTextFile(const std::string& path, std::size_t maxBytes) {
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error)) throw InputError("cannot read '" + path + "': it is a folder, not a file");
-    // POSIX reads, so that SIGINT or SIGTERM while blocked on a pipe or FIFO with no writer stops
-    // the job as an interrupt (130, 143), not as a file that cannot be read (2).
-    const auto interrupted = [] { return *StopSignals::caught() != 0; };
-    int fd = -1;
-    while ((fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC)) < 0 && errno == EINTR)
-        if (interrupted()) throw Interrupted(*StopSignals::caught());
-    if (fd < 0) throw InputError("cannot read '" + path + "': no such file or not readable");
-    struct Closer {
-        int fd;
-        ~Closer() { ::close(fd); }
-    } closer{fd};
-    std::string text;
-    std::vector<char> buffer(1 << 16);
-    for (;;) {
-        const ssize_t got = ::read(fd, buffer.data(), buffer.size());
-        if (got == 0) break;
-        if (got < 0) {
-            if (errno != EINTR) throw InputError("cannot read '" + path + "': a read error");
-            if (interrupted()) throw Interrupted(*StopSignals::caught());
-            continue;
-        }
-        text.append(buffer.data(), static_cast<std::size_t>(got));
-        if (text.size() > maxBytes)
-            throw InputError("'" + path + "' is larger than " + std::to_string(maxBytes >> 20) +
-                             " MiB, the most holon reads from such a file; is it the right file?");
-    }
-    return text;
 }
 
 int System::fieldIndex(const std::string& name) const {

@@ -15,8 +15,4 @@ namespace holon::rules {
 /// reported either way. Each phase (syntax and names, then semantics) reports all its errors.
 std::optional<System> parseSystem(std::string_view source, Diagnostics& diagnostics, std::string sourceName = "");
 
-/// Reads a whole file; throws InputError naming the file when it cannot be read, is a folder, or
-/// holds more than `maxBytes` (so /dev/zero or a wrong file stops with a message, not the machine).
-std::string readTextFile(const std::string& path, std::size_t maxBytes = kMaxFileBytes);
-
 }  // namespace holon::rules

@@ -12,6 +12,7 @@
 #include "rules/Parameter.h"
 #include "rules/Parser.h"
 #include "rules/Picture.h"
+#include "rules/TextFile.h"
 
 #include <cmath>
 #include <fstream>

@@ -16,6 +16,7 @@
 #include "rules/OutputFile.h"
 #include "rules/Parameter.h"
 #include "rules/Parser.h"
+#include "rules/TextFile.h"
 
 #include <nlohmann/json.hpp>
 

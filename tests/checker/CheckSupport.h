@@ -5,6 +5,7 @@
 #include "checker/Check.h"
 #include "checker/Trace.h"
 #include "rules/Error.h"
+#include "rules/TextFile.h"
 
 namespace holon::test {
 

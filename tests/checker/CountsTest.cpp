@@ -5,6 +5,7 @@
 #include "BruteForce.h"
 #include "CheckSupport.h"
 #include "checker/Graph.h"
+#include "rules/TextFile.h"
 #include <set>
 
 using namespace holon;

@@ -6,6 +6,7 @@
 #include "checker/Diff.h"
 #include "rules/Engine.h"
 #include "rules/Parser.h"
+#include "rules/TextFile.h"
 
 #include <set>
 

@@ -7,6 +7,7 @@
 #include "checker/EverySize.h"
 #include "checker/EverySizeInvariant.h"
 #include "checker/Window.h"
+#include "rules/TextFile.h"
 
 using namespace holon;
 using checker::Verdict;

@@ -6,6 +6,7 @@
 #include "CheckSupport.h"
 #include "checker/Draw.h"
 #include "checker/Holonomy.h"
+#include "rules/TextFile.h"
 
 #include <regex>
 

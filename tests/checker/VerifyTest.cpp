@@ -5,6 +5,7 @@
 #include "CheckSupport.h"
 #include "checker/Obligations.h"
 #include "checker/SmtEncoding.h"
+#include "rules/TextFile.h"
 
 #include <filesystem>
 #include <memory>

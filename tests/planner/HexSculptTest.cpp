@@ -8,6 +8,7 @@
 #include "rules/Error.h"
 #include "rules/Library.h"
 #include "rules/Parser.h"
+#include "rules/TextFile.h"
 
 #include <bit>
 #include <cstdlib>

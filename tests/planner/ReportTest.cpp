@@ -9,6 +9,7 @@
 #include "rules/Error.h"
 
 #include "rules/Parser.h"
+#include "rules/TextFile.h"
 #include <csignal>
 #include <filesystem>
 

@@ -4,6 +4,7 @@
 
 #include "rules/Diagnostics.h"
 #include "rules/Parser.h"
+#include "rules/TextFile.h"
 
 #include <cstdlib>
 #include <doctest/doctest.h>

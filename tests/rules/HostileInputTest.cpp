@@ -7,6 +7,7 @@
 #include "rules/Error.h"
 #include "rules/Escape.h"
 #include "rules/Printer.h"
+#include "rules/TextFile.h"
 
 #include <chrono>
 #include <filesystem>

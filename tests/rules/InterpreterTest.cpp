@@ -4,6 +4,7 @@
 #include "TestSupport.h"
 #include "rules/Engine.h"
 #include "rules/Printer.h"
+#include "rules/TextFile.h"
 
 using namespace holon;
 using test::World;

@@ -5,6 +5,7 @@
 #include "rules/OutputFile.h"
 #include "rules/Parser.h"
 #include "rules/StopSignals.h"
+#include "rules/TextFile.h"
 
 #include <doctest/doctest.h>
 #include <filesystem>

@@ -4,6 +4,7 @@
 #include "TestSupport.h"
 #include "rules/Library.h"
 #include "rules/Printer.h"
+#include "rules/TextFile.h"
 
 #include <filesystem>
 
