@@ -285,7 +285,17 @@ int run(const PlanArgs& a) {
     report.finish(stats, lowerBound);
     WriteErrors errors;
     for (const std::string& e : report.writeErrors()) errors.add(e);
-    if (!a.html.empty() && report.writeErrors().empty()) errors.attempt([&] { rules::OutputFile("--html", a.html).write(viewer::page(viewer::readRun(a.planOut))); });
+    // A signal while the page is built (seconds at 10^6 metamodules) stops it: the page is not
+    // written, the summary is still printed, and the exit says the signal.
+    int pageSignal = 0;
+    if (!a.html.empty() && report.writeErrors().empty()) {
+        try {
+            errors.attempt([&] { rules::OutputFile("--html", a.html).write(viewer::page(viewer::readRun(a.planOut))); });
+        } catch (const Interrupted& e) {
+            pageSignal = e.signal();
+            std::cerr << "holon plan: --html " << a.html << " not written: " << e.what() << " while the page was built\n";
+        }
+    }
 
     if (a.json) {
         nlohmann::json j = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", lowerBound >= 0 ? nlohmann::json(lowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"relabels", stats.relabels}, {"evaluations", stats.evaluations}, {"stopped", stopReasonName(stats.stopped)}, {"system", system->name}, {"allocator", allocator->name()}, {"scheduler", a.scheduler}, {"seed", a.seed}, {"proof", proof.json()}};
@@ -322,6 +332,7 @@ int run(const PlanArgs& a) {
     }
     // A file that could not be written outranks the verdict: the summary above is all there is.
     errors.raise();
+    if (pageSignal != 0) return exitCodeFor(StopReason::Interrupted, pageSignal);
     if (!interrupted && (!disksOk || violated)) return kExitViolated;
     return exitCodeFor(stats.stopped, budget.signal());
 }

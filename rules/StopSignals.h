@@ -22,6 +22,10 @@ public:
     /// address is what a run polls (planner::RunOptions::interrupt).
     static const volatile std::sig_atomic_t* caught();
 
+    /// Throws Interrupted once the catcher installed now has caught a signal: for work that polls no
+    /// budget (reading an input, building a page) but must stop as a run would.
+    static void stopIfCaught();
+
 private:
     struct sigaction oldInt_ {
     }, oldTerm_{};

@@ -23,14 +23,10 @@ namespace holon::rules {
 
 namespace {
 
-void stopIfInterrupted() {
-    if (const int signal = *StopSignals::caught()) throw Interrupted(signal);
-}
-
 /// Waits until `fd` has data or its writer has gone, a slice at a time.
 void waitReadable(int fd, const std::string& path) {
     for (;;) {
-        stopIfInterrupted();
+        StopSignals::stopIfCaught();
         const double left = jobSecondsLeft();
         if (left <= 0)
             throw LimitError("the job's " + parameterName(Parameter::Timeout) + " ran out while holon waited for '" + path +
@@ -51,7 +47,7 @@ std::string readTextFile(const std::string& path, std::size_t maxBytes) {
     if (std::filesystem::is_directory(path, error)) throw InputError("cannot read '" + path + "': it is a folder, not a file");
     // Non-blocking, so that opening a FIFO does not wait for its writer (the wait is below).
     int fd = -1;
-    while ((fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)) < 0 && errno == EINTR) stopIfInterrupted();
+    while ((fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)) < 0 && errno == EINTR) StopSignals::stopIfCaught();
     if (fd < 0) throw InputError("cannot read '" + path + "': no such file or not readable");
     struct Closer {
         int fd;
@@ -67,7 +63,7 @@ std::string readTextFile(const std::string& path, std::size_t maxBytes) {
         if (got == 0) break;
         if (got < 0) {
             if (errno != EINTR && errno != EAGAIN) throw InputError("cannot read '" + path + "': a read error");
-            stopIfInterrupted();
+            StopSignals::stopIfCaught();
             continue;
         }
         text.append(buffer.data(), static_cast<std::size_t>(got));

@@ -6,6 +6,7 @@
 
 #include "checker/Draw.h"
 #include "rules/Error.h"
+#include "rules/StopSignals.h"
 #include "viewer/ViewerPage.h"
 
 #include <nlohmann/json.hpp>
@@ -111,6 +112,7 @@ std::string pageData(const Run& run) {
 
 std::string page(Run run) {
     sample(run);
+    rules::StopSignals::stopIfCaught();
     std::string html = kViewerPage;
     const std::string marker = "HOLON_VIEWER_DATA";
     const std::size_t at = html.find(marker);

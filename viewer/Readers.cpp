@@ -17,6 +17,7 @@
 #include "rules/OutputFile.h"
 #include "rules/PlanLines.h"
 #include "rules/Region.h"
+#include "rules/StopSignals.h"
 
 #include <algorithm>
 #include <cctype>
@@ -290,6 +291,8 @@ Run readLines(const std::string& path, std::istream& in, const std::string& rule
     };
     rules::PlanLine j;
     while (lines.next(j)) {
+        // holon plan --html builds the page after its run, with its signal catcher installed.
+        rules::StopSignals::stopIfCaught();
         const std::string where = lines.where();
         if (!round || j.round != *round) {
             close();

@@ -1,11 +1,13 @@
 // The viewer's readers, sampling and page, without a browser (browser.sh opens the pages in one).
 
 #include "rules/Error.h"
+#include "rules/StopSignals.h"
 #include "viewer/Page.h"
 #include "viewer/Readers.h"
 
 #include <doctest/doctest.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 
@@ -54,6 +56,21 @@ TEST_CASE("a plan becomes one step per round: the cells each changes, and those 
     CHECK(run.steps[2].label == "round 4: delete 1");
     // The fill colours are the SVG pictures' (checker::valueColour), one legend entry per value.
     CHECK(run.legend.size() == 3);
+}
+
+TEST_CASE("a signal caught while a plan is read for its page stops the reading (holon plan --html builds it after the run)") {
+    const std::string path = write("plan.jsonl", kPlan);
+    {
+        const rules::StopSignals catcher(false);
+        std::raise(SIGTERM);
+        try {
+            (void)viewer::readRun(path);
+            FAIL("the plan was read to its end past the signal");
+        } catch (const Interrupted& e) {
+            CHECK(e.signal() == SIGTERM);
+        }
+    }
+    CHECK(viewer::readRun(path).steps.size() == 3);  // with no catcher installed the signal is done with
 }
 
 TEST_CASE("a bad step names its file and line and the fix") {
