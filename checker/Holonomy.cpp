@@ -40,6 +40,7 @@ PropertyResult finish(const Explorer& ex, const GraphView& graph, PropertyResult
                       const std::string& adjacency, const std::string& holdsText) {
     if (violations == 0) {
         r.verdict = ex.stats().stopped == StopReason::Finished ? Verdict::Holds : Verdict::Unknown;
+        r.limited = r.verdict == Verdict::Unknown;
         r.summary = r.verdict == Verdict::Holds ? holdsText
                                                 : "no violation among the states explored before the limit";
         return r;
@@ -77,6 +78,7 @@ void markPartial(PropertyResult& r, const Budget& budget) {
 
 PropertyResult stoppedEarly(PropertyResult r, double seconds, const Budget& budget) {
     r.verdict = Verdict::Unknown;
+    r.limited = true;
     r.summary = budget.interrupted() ? "stopped by a signal during the holonomy check, no violation found yet"
                                      : "stopped by the timeout during the holonomy check, no violation found yet; raise " + rules::parameterName(rules::Parameter::Timeout);
     r.seconds = seconds;

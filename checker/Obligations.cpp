@@ -133,6 +133,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             if (budget.expired()) {
                 o.result.verdict = Verdict::Unknown;
                 o.result.summary = "timeout at depth " + std::to_string(k);
+                o.result.limited = true;
                 break;
             }
             path.push_back(enc.state("s" + std::to_string(k)));

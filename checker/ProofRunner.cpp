@@ -174,6 +174,7 @@ Obligation ProofRunner::stepwise(const std::string& name, const std::string& kin
         if (enc.budget().expired()) {
             o.result.verdict = Verdict::Unknown;
             o.result.summary = "timeout after " + std::to_string(p) + " of " + std::to_string(count) + " instances";
+            o.result.limited = true;
             break;
         }
         limitTime(solver, enc.budget());

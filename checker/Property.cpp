@@ -61,6 +61,7 @@ namespace properties {
 
 void holdsOrUnknown(PropertyResult& r, const ExploredGraph& g, const std::string& holdsText) {
     r.verdict = g.complete ? Verdict::Holds : Verdict::Unknown;
+    r.limited = !g.complete;
     r.summary = g.complete ? holdsText : "no violation among the " + std::to_string(g.explorer.stats().states) + " states explored before the limit";
 }
 

@@ -147,6 +147,7 @@ int run(const VerifyArgs& a) {
                 std::cout << "(no run from the given start reaches it: '" << o.result.name << "' is proved)\n";
         std::cout << checker::drawTraceAscii(*r->trace, drawingFor(*r));  // with one mask per input
     }
+    noteObligationsWithoutSmt(report.obligations, a.smtOut);
     if (shown.size() > 1 && !written.empty()) {
         std::cout << "\ntraces written:";
         for (const std::string& w : written) std::cout << ' ' << w;

@@ -227,10 +227,22 @@ int runEverySize(const EverySizeArgs& a) {
         for (const std::string& w : written) std::cout << "\n  " << w;
         std::cout << '\n';
     }
+    noteObligationsWithoutSmt(report.obligations, a.smtOut);
     std::cout << "\ncertificate: " << (certified ? certificate->path() + " (holon plan reads it; docs/every-size.md, \"Certificates\")" : certificateNote.empty() ? "none written (--no-certificate)"
                                                                                                                                                                   : certificateNote)
               << '\n';
     return code;
+}
+
+void noteObligationsWithoutSmt(const std::vector<checker::Obligation>& obligations, const std::string& smtOut) {
+    if (smtOut.empty()) return;
+    std::string stopped;
+    for (const checker::Obligation& o : obligations)
+        if (o.result.limited) stopped += (stopped.empty() ? "" : ", ") + o.result.name;
+    // An obligation in parts (safety_1, safety_2, ...) writes each part before solving it, so one
+    // cut short may lack the files of its later parts.
+    if (!stopped.empty())
+        std::cout << "\n--smt-out " << smtOut << " may lack files: a limit or a signal cut short " << stopped << ", whose files are written only as each is built\n";
 }
 
 }  // namespace holon::cli

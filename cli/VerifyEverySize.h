@@ -4,6 +4,7 @@
 // proof on R instead, and say so in their scope. It writes a certificate for `holon plan` and, on
 // request, each confirmed counterexample as an ITF trace and an SVG picture.
 
+#include "checker/Obligations.h"
 #include "rules/Budget.h"
 
 #include <cstdint>
@@ -26,5 +27,9 @@ struct EverySizeArgs {
 };
 
 int runEverySize(const EverySizeArgs& a);
+
+/// After either verify table: the obligations a limit or a signal cut short, whose files `smtOut`
+/// (--smt-out) may lack, so that a partial folder is not taken for the whole set.
+void noteObligationsWithoutSmt(const std::vector<checker::Obligation>& obligations, const std::string& smtOut);
 
 }  // namespace holon::cli
