@@ -219,7 +219,7 @@ int run(const PlanArgs& a) {
     if (a.requireProofOption->count() > 0) requireProof(proof, requiredProperties(a.requireProof, *system));
     rules::Model model(*system, lattice);
     const std::optional<planner::Vec> seedCell = parseCell(a.seedCell, from.dimension);
-    planner::Problem problem = planner::makeProblem(model, std::move(from), std::move(to), seedCell, a.seed, memory);
+    planner::Problem problem = planner::makeProblem(model, std::move(from), std::move(to), seedCell, a.seed, memory, [&] { during("laying out the board"); });
     // An option that cannot act is refused, not passed over in silence.
     if (a.allocatorOption->count() > 0 && !planner::movesResources(problem))
         throw InputError("--allocator " + a.allocator + ": " + system->name + " has no transfers, so there is nothing to allocate; leave --allocator out");

@@ -82,7 +82,8 @@ PlannerSchema PlannerSchema::of(const rules::System& system) {
     return s;
 }
 
-Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::optional<Vec> seed, std::uint64_t randomSeed, std::uint64_t memoryBytes) {
+Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::optional<Vec> seed, std::uint64_t randomSeed, std::uint64_t memoryBytes,
+                    const std::function<void()>& checkpoint) {
     Problem p;
     p.model = &model;
     p.schema = PlannerSchema::of(model.system());
@@ -104,7 +105,9 @@ Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::o
                              "the plan's board (" + rules::countText(cells) + " cells: the box around start and target)");
     }
     requireConnected(target, "target");
+    checkpoint();
     requireConnected(start, "start");
+    checkpoint();
     std::vector<Vec> both;
     std::set_intersection(start.cells.begin(), start.cells.end(), target.cells.begin(), target.cells.end(), std::back_inserter(both));
     if (both.empty()) throw InputError("start '" + start.name + "' and target '" + target.name + "' do not overlap; the planner grows the target from a seed in both");
@@ -157,6 +160,7 @@ Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::o
     board.forEachInside([&](std::int64_t i, Vec) { combo[i] = plain; });
     for (Vec v : target.cells) combo[board.index(v)] = inTarget;
     p.engine = std::make_unique<BoxEngine>(*p.tables, board, std::move(combo));
+    checkpoint();
 
     std::vector<std::pair<int, int>> unknown = {{schema.label, schema.unknown}}, final = {{schema.label, schema.final}};
     if (schema.resource >= 0) unknown.push_back({schema.resource, schema.full}), final.push_back({schema.resource, schema.full});

@@ -6,6 +6,7 @@
 #include "planner/Shape.h"
 #include "rules/Model.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <random>
@@ -58,7 +59,9 @@ constexpr std::uint64_t planBytesPerCell(int shapes, int degree, bool resources)
 /// the wrong dimension for the lattice, a seed outside start and target, or a system whose goal is
 /// not of the form all(P) (the planner stops when every cell satisfies P); throws LimitError (exit
 /// 3) before the board is made when it needs more than `memoryBytes` (planBytesPerCell).
+/// `checkpoint` is called between its phases (each a second or so at 10^7 cells), where the caller
+/// may stop it by throwing (a deadline, a signal).
 Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::optional<Vec> seed, std::uint64_t randomSeed,
-                    std::uint64_t memoryBytes = UINT64_MAX);
+                    std::uint64_t memoryBytes = UINT64_MAX, const std::function<void()>& checkpoint = [] {});
 
 }  // namespace holon::planner

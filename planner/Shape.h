@@ -33,7 +33,8 @@ Shape parseShape(std::string_view argument, int scale = 1, std::uint64_t memoryB
 /// Every cell becomes a KxK (2D) or KxKxK (3D) block.
 Shape scaled(const Shape& shape, int k, std::size_t maxCells, std::uint64_t memoryBytes = UINT64_MAX);
 
-/// Face-connected components of a cell set (6- or 4-neighbourhood), each sorted.
+/// Face-connected components of a cell set (6- or 4-neighbourhood), in the order of their first
+/// cells in `cells`, each cell of a component in the order a flood from that first cell reaches it.
 std::vector<std::vector<Vec>> components(const std::vector<Vec>& cells, int dimension);
 
 /// The procedural generators with a one-line description each, for --help and messages.
