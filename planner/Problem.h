@@ -61,7 +61,8 @@ constexpr std::uint64_t planBytesPerCell(int shapes, int degree, bool resources)
 /// 3) before the board is made when it needs more than `memoryBytes` (planBytesPerCell).
 /// `checkpoint` is called between its phases (each a second or so at 10^7 cells), where the caller
 /// may stop it by throwing (a deadline, a signal).
-Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::optional<Vec> seed, std::uint64_t randomSeed,
-                    std::uint64_t memoryBytes = UINT64_MAX, const std::function<void()>& checkpoint = [] {});
+Problem makeProblem(
+    const rules::Model& model, Shape start, Shape target, std::optional<Vec> seed, std::uint64_t randomSeed,
+    std::uint64_t memoryBytes = UINT64_MAX, const std::function<void()>& checkpoint = [] {});
 
 }  // namespace holon::planner
