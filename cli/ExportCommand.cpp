@@ -81,10 +81,11 @@ Exported fromShapes(const ExportArgs& a) {
 Exported fromConfiguration(const ExportArgs& a) {
     // A JSON configuration (plan's end.json included) names its system and region, a trace its
     // rule file and region: those are the defaults; ASCII art names neither.
-    const std::string source = namedInFile(a.config, "source");
+    const rules::ConfigText file = rules::readConfigText(a.config);  // once: a pipe gives its text once
+    const std::string source = namedInText(file.text, "source");
     const std::string rulesName = !a.rules.empty() ? a.rules : !source.empty() ? source
-                                                                               : namedInFile(a.config, "system");
-    const std::string regionSpec = !a.region.empty() ? a.region : namedInFile(a.config, "region");
+                                                                               : namedInText(file.text, "system");
+    const std::string regionSpec = !a.region.empty() ? a.region : namedInText(file.text, "region");
     if (rulesName.empty() || regionSpec.empty())
         throw InputError("--config " + a.config + " does not name its " + (rulesName.empty() ? "system" : "region") +
                          "; give --rules (the system it is a configuration of) and --region (the region it lies on), as holon check --from takes them");
@@ -93,7 +94,7 @@ Exported fromConfiguration(const ExportArgs& a) {
     const rules::Region region = rules::Region::parse(regionSpec, 1u << 22);
     const rules::Model model(*system, region.lattice());
     const rules::Interpreter in(model, region);
-    const rules::Configuration c = rules::readConfigFile(in, a.config);
+    const rules::Configuration c = rules::configFromText(in, file);
     std::uint64_t modules = 0;
     for (const rules::CellValue v : c.cells) modules += v != 0;
     requireExportMemory(modules, a);

@@ -124,10 +124,7 @@ std::string missingInput(const rules::System& system, int k, const std::string& 
 
 }  // namespace
 
-std::string namedInFile(const std::string& path, const std::string& key) {
-    std::error_code error;  // FILE#N picks a trace's state; a file whose own name holds '#' is read as it is
-    const std::string file = std::filesystem::exists(path, error) ? path : path.substr(0, path.rfind('#'));
-    const std::string text = rules::readTextFile(file);
+std::string namedInText(const std::string& text, const std::string& key) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos || text[text.find_first_not_of(" \t\r\n")] != '{') return "";
     const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);  // a parse error reads as "names nothing"
     if (!j.is_object()) return "";
@@ -139,7 +136,7 @@ std::string namedInFile(const std::string& path, const std::string& key) {
 namespace {
 
 /// The system a JSON configuration or ITF trace says it was written for, or "" (ASCII art names none).
-std::string writtenFor(const std::string& path) { return namedInFile(path, "system"); }
+std::string writtenFor(const std::string& text) { return namedInText(text, "system"); }
 
 }  // namespace
 
@@ -156,13 +153,14 @@ std::vector<rules::Configuration> readStarts(const rules::Interpreter& in, const
     std::vector<rules::Configuration> starts;
     for (const std::string& path : from) {
         std::uint32_t namedInFile = 0;
-        rules::Configuration c = rules::readConfigFile(in, path, &namedInFile);
-        if (std::error_code error; std::filesystem::is_regular_file(path, error))  // FILE#N is an ITF trace, not a picture
-            notePictureShortfall(option, path, in.region(), rules::readTextFile(path));
+        // Read once: a pipe or FIFO gives its text once (a second read waited for ever).
+        const rules::ConfigText file = rules::readConfigText(path);
+        rules::Configuration c = rules::configFromText(in, file, &namedInFile);
+        if (!file.index) notePictureShortfall(option, path, in.region(), file.text);  // FILE#N is an ITF trace, not a picture
         // A configuration of another system reads by field and value names (a design's variant is
         // checked from the reference design's starts); the reader refused any name this system
         // lacks, and the user is told which system the file was written for.
-        if (const std::string other = writtenFor(path); !other.empty() && other != system.name)
+        if (const std::string other = writtenFor(file.text); !other.empty() && other != system.name)
             std::cerr << "holon: note: " << path << " was written for system '" << rules::excerpt(other) << "'; reading it as '" << system.name
                       << "' by field and value names\n";
         for (std::size_t k = 0; k < system.inputs.size(); ++k)

@@ -28,10 +28,10 @@ std::optional<rules::System> loadRules(const std::string& file, const std::vecto
 /// gets bit k set for each input k an argument names.
 std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::vector<std::string>& specs, std::uint32_t* named = nullptr);
 
-/// What a JSON configuration or an ITF trace (`FILE#N` too) says of itself: its top-level `key`
-/// ("system", "region") or its "#meta" one ("source", the rule file of a trace); "" for ASCII art
-/// or a file that does not say.
-std::string namedInFile(const std::string& path, const std::string& key);
+/// What a JSON configuration or an ITF trace says of itself, from its text (rules::readConfigText):
+/// its top-level `key` ("system", "region") or its "#meta" one ("source", the rule file of a
+/// trace); "" for ASCII art or a file that does not say.
+std::string namedInText(const std::string& text, const std::string& key);
 /// Where the trace of one of several violated properties goes: "out/t.itf.json" becomes
 /// "out/t.safety.itf.json"; with one violated property, the path as given.
 std::string pathFor(const std::string& path, const std::string& property, bool several);

@@ -428,25 +428,35 @@ Configuration configFromItf(const Interpreter& in, const nlohmann::json& itf, st
     }
 }
 
-Configuration readConfigFile(const Interpreter& in, const std::string& spec, std::uint32_t* inputsNamed) {
+ConfigText readConfigText(const std::string& spec) {
     // FILE#N picks state N of an ITF trace; a file whose own name holds '#' is read as it is.
-    std::string path = spec;
-    std::optional<int> index;
+    ConfigText file{spec, spec, "", std::nullopt};
     std::error_code missing;
     if (const auto hash = spec.rfind('#'); hash != std::string::npos && !std::filesystem::exists(spec, missing)) {
-        path = spec.substr(0, hash);
+        file.path = spec.substr(0, hash);
         const std::string n = spec.substr(hash + 1);
         if (n.empty() || n.size() > 9 || n.find_first_not_of("0123456789") != std::string::npos)
-            throw InputError(spec + ": after '#' comes the index of a state of an ITF trace, as in " + path + "#0 for the first state");
-        index = std::stoi(n);
+            throw InputError(spec + ": after '#' comes the index of a state of an ITF trace, as in " + file.path + "#0 for the first state");
+        file.index = std::stoi(n);
     }
-    OutputClaims::reading("the configuration", path);
+    OutputClaims::reading("the configuration", file.path);
     try {
-        return configFromText(in, readTextFile(path), index, inputsNamed, path);
+        file.text = readTextFile(file.path);
     } catch (const InputError& e) {
         throw InputError(spec + ": " + e.what());
     }
+    return file;
 }
+
+Configuration configFromText(const Interpreter& in, const ConfigText& file, std::uint32_t* inputsNamed) {
+    try {
+        return configFromText(in, file.text, file.index, inputsNamed, file.path);
+    } catch (const InputError& e) {
+        throw InputError(file.spec + ": " + e.what());
+    }
+}
+
+Configuration readConfigFile(const Interpreter& in, const std::string& spec, std::uint32_t* inputsNamed) { return configFromText(in, readConfigText(spec), inputsNamed); }
 
 Configuration configFromText(const Interpreter& in, const std::string& withBom, std::optional<int> index, std::uint32_t* inputsNamed,
                              const std::string& path) {

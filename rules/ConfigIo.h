@@ -68,10 +68,21 @@ nlohmann::json itfStateJson(const nlohmann::json& state);
 /// {NAME: {"#set": [{"#tup": [x, y]}, ...]}}. Throws InputError naming the state and the fix.
 Configuration configFromItf(const Interpreter& in, const nlohmann::json& itf, std::optional<int> index, std::uint32_t* inputsNamed = nullptr);
 
+/// A configuration file's text, read once: `spec` is FILE, or FILE#N for state N of an ITF trace.
+/// Everything taken from the file (the configuration, the names it gives, a picture's shortfall)
+/// comes from this text: a pipe or FIFO can be read only once.
+struct ConfigText {
+    std::string spec, path, text;
+    std::optional<int> index;
+};
+ConfigText readConfigText(const std::string& spec);
+
 /// Reads a configuration from a file: an ITF trace (`FILE#N` picks state N, the last by default),
 /// JSON if it starts with '{', ASCII art otherwise (which names no inputs: `inputsNamed` as for
 /// configFromJson).
-Configuration readConfigFile(const Interpreter& in, const std::string& path, std::uint32_t* inputsNamed = nullptr);
+Configuration readConfigFile(const Interpreter& in, const std::string& spec, std::uint32_t* inputsNamed = nullptr);
+/// The same for a file already read.
+Configuration configFromText(const Interpreter& in, const ConfigText& file, std::uint32_t* inputsNamed = nullptr);
 /// The same for text already read (`path` only names it in messages).
 Configuration configFromText(const Interpreter& in, const std::string& text, std::optional<int> index = std::nullopt,
                              std::uint32_t* inputsNamed = nullptr, const std::string& path = "the configuration");
