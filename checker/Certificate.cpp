@@ -86,10 +86,10 @@ std::string certificatePath(const std::string& ruleFile, const std::string& latt
     return (file.parent_path() / "certificates" / (file.stem().string() + "." + lattice + ".json")).string();
 }
 
-Certificate certificateOf(const VerifyReport& report, const std::string& ruleFile, const std::string& ruleText, const std::string& lattice) {
+Certificate certificateOf(const VerifyReport& report, const std::string& ruleFile, const std::string& rulesSha256, const std::string& lattice) {
     Certificate c;
     c.rulesFile = std::filesystem::path(ruleFile).filename().string();
-    c.rulesSha256 = rules::sha256Hex(ruleText);
+    c.rulesSha256 = rulesSha256;
     c.system = report.system;
     c.lattice = lattice;
     c.holon = holonVersion();
@@ -109,7 +109,7 @@ std::string certificateText(const Certificate& c) {
     return j.dump(2) + "\n";
 }
 
-CertificateCheck checkCertificate(const std::string& path, const std::string& ruleText, const std::string& lattice) {
+CertificateCheck checkCertificate(const std::string& path, const std::string& rulesSha256, const std::string& lattice) {
     CertificateCheck check;
     check.path = path;
     std::error_code error;
@@ -144,10 +144,10 @@ CertificateCheck checkCertificate(const std::string& path, const std::string& ru
     } else if (c.holon != holonVersion()) {
         check.status = CertificateStatus::OtherHolon;
         check.why = path + " was written by holon " + c.holon + ", not by this holon " + holonVersion();
-    } else if (c.rulesSha256 != rules::sha256Hex(ruleText)) {
+    } else if (c.rulesSha256 != rulesSha256) {
         check.status = CertificateStatus::Stale;
         check.why = path + " is stale: it was written for another version of the rule file (sha256 " + c.rulesSha256.substr(0, 12) + "..., the file is now " +
-                    rules::sha256Hex(ruleText).substr(0, 12) + "...)";
+                    rulesSha256.substr(0, 12) + "...)";
     } else if (c.lattice != lattice) {
         check.status = CertificateStatus::OtherLattice;
         check.why = path + " is for the " + c.lattice + " lattice, not " + lattice;

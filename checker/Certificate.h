@@ -34,9 +34,10 @@ std::string holonVersion();
 /// bundled system).
 std::string certificatePath(const std::string& ruleFile, const std::string& lattice);
 
-/// The certificate of an --every-size report on the rule file `ruleFile` (its text `ruleText`).
-/// Each obligation's smtFile (space-separated paths) is read back and hashed.
-Certificate certificateOf(const VerifyReport& report, const std::string& ruleFile, const std::string& ruleText, const std::string& lattice);
+/// The certificate of an --every-size report on the rule file `ruleFile`, whose text has the
+/// SHA-256 `rulesSha256` (rules::System::sourceSha256). Each obligation's smtFile (space-separated
+/// paths) is read back and hashed.
+Certificate certificateOf(const VerifyReport& report, const std::string& ruleFile, const std::string& rulesSha256, const std::string& lattice);
 
 /// The certificate as JSON text: deterministic (no time, no path beyond the file's name), with a
 /// "seal", the SHA-256 of the rest, so that an edit by hand shows.
@@ -56,7 +57,8 @@ struct CertificateCheck {
     Certificate certificate;  // as read; trust it only when valid
 };
 
-/// Reads the certificate at `path` and checks it against the rule file's text and the lattice.
-CertificateCheck checkCertificate(const std::string& path, const std::string& ruleText, const std::string& lattice);
+/// Reads the certificate at `path` and checks it against the rule file's SHA-256 (of its text, as
+/// rules::System::sourceSha256) and the lattice.
+CertificateCheck checkCertificate(const std::string& path, const std::string& rulesSha256, const std::string& lattice);
 
 }  // namespace holon::checker

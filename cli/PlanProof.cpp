@@ -51,7 +51,7 @@ bool valid(const PlanProof& p) { return p.check.status == checker::CertificateSt
 PlanProof planProof(const std::string& rules, const rules::System& system, const std::string& lattice) {
     const std::string path = rules::rulesPath(rules);
     PlanProof proof;
-    proof.check = checker::checkCertificate(checker::certificatePath(path, lattice), rules::readTextFile(path), lattice);
+    proof.check = checker::checkCertificate(checker::certificatePath(path, lattice), system.sourceSha256, lattice);
     proof.verify = "holon verify " + rules + " --every-size --lattice " + lattice;
     for (const rules::Property& p : system.properties) {
         const checker::CertifiedProperty* c = valid(proof) ? proof.check.certificate.property(p.name) : nullptr;

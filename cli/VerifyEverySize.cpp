@@ -132,8 +132,7 @@ int runEverySize(const EverySizeArgs& a) {
     std::optional<rules::OutputFile> traceOut, svgOut;
     if (!a.traceOut.empty()) traceOut.emplace("--trace-out", a.traceOut);
     if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
-    const std::string ruleText = certificate ? rules::readTextFile(rulePath) : "";  // hashed as it was proved, not as it may be after
-    std::optional<TempDir> hashed;                                                  // the obligations a certificate hashes, when --smt-out keeps none
+    std::optional<TempDir> hashed;  // the obligations a certificate hashes, when --smt-out keeps none
     if (certificate && a.smtOut.empty()) hashed.emplace();
     checker::EverySizeOptions options;
     options.timeoutSeconds = a.obligationTimeout;
@@ -186,7 +185,7 @@ int runEverySize(const EverySizeArgs& a) {
         certificateNote = "none written: a limit cut the run short (" + cut->result.name + ": " + cut->result.summary + "), and a partial record must not replace " +
                           certificate->path() + "; raise the limit, or give --certificate PATH to write it anyway";
     if (certified) {
-        certificate->write(checker::certificateText(checker::certificateOf(report, rulePath, ruleText, model.lattice().name())));
+        certificate->write(checker::certificateText(checker::certificateOf(report, rulePath, system->sourceSha256, model.lattice().name())));
         if (hashed)
             for (checker::Obligation& o : report.obligations) o.smtFile.clear();  // hashed, and gone with the temporary folder
     }

@@ -189,6 +189,9 @@ struct System {
     std::optional<Expr> goal;
     std::vector<Property> properties;
     std::string sourceName;  // file the system came from, for messages
+    /// SHA-256 of the text it was parsed from (rules::loadSystem), which a certificate names
+    /// (checker/Certificate.h); the file is not read again for it, since a pipe gives its text once.
+    std::string sourceSha256;
     friend bool operator==(const System& a, const System& b) {
         return a.name == b.name && a.lattice == b.lattice && a.symmetry == b.symmetry && a.fields == b.fields && a.inputs == b.inputs &&
                a.masses == b.masses && a.rules == b.rules && a.constraints == b.constraints &&

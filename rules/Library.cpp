@@ -6,6 +6,7 @@
 
 #include "rules/Error.h"
 #include "rules/Parser.h"
+#include "rules/Sha256.h"
 #include "rules/TextFile.h"
 
 #include <algorithm>
@@ -20,6 +21,7 @@ std::optional<System> loadSystem(const std::string& path, std::ostream& out, con
     Diagnostics diagnostics(path, text);
     for (const std::string& w : options.silencedWarnings) diagnostics.silence(w);
     auto system = parseSystem(text, diagnostics, path);
+    if (system) system->sourceSha256 = sha256Hex(text);
     out << diagnostics.render();
     if (diagnostics.hasErrors())
         out << path << ": " << diagnostics.errorCount() << (diagnostics.errorCount() == 1 ? " error" : " errors") << '\n';
