@@ -8,7 +8,6 @@
 #include "checker/Obligations.h"
 #include "rules/ConfigIo.h"
 #include "rules/Library.h"
-#include "rules/Parser.h"
 #include "rules/TextFile.h"
 
 #include <algorithm>

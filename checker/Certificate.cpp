@@ -9,7 +9,6 @@
 
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
-#include "rules/Parser.h"
 #include "rules/Sha256.h"
 #include "rules/TextFile.h"
 

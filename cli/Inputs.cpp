@@ -8,7 +8,6 @@
 #include "rules/Escape.h"
 #include "rules/Library.h"
 #include "rules/OutputFile.h"
-#include "rules/Parser.h"
 #include "rules/Printer.h"
 #include "rules/TextFile.h"
 

@@ -8,7 +8,6 @@
 
 #include "rules/Error.h"
 #include "rules/Library.h"
-#include "rules/Parser.h"
 #include "rules/TextFile.h"
 
 #include <algorithm>

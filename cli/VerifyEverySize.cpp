@@ -12,7 +12,6 @@
 #include "cli/Inputs.h"
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
-#include "rules/Parser.h"
 #include "rules/TextFile.h"
 
 #include <algorithm>

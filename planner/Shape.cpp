@@ -12,7 +12,6 @@
 #include "rules/Limits.h"
 #include "rules/OutputFile.h"
 #include "rules/Parameter.h"
-#include "rules/Parser.h"
 #include "rules/Picture.h"
 #include "rules/TextFile.h"
 #include "rules/VisibleSim.h"

@@ -13,7 +13,6 @@
 #include "rules/Escape.h"
 #include "rules/OutputFile.h"
 #include "rules/Parameter.h"
-#include "rules/Parser.h"
 #include "rules/Picture.h"
 #include "rules/TextFile.h"
 

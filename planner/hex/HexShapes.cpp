@@ -10,12 +10,11 @@
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
 #include "rules/Parameter.h"
-#include "rules/Parser.h"
 #include "rules/Picture.h"
 #include "rules/TextFile.h"
 
 #include <cmath>
-#include <fstream>
+#include <filesystem>
 #include <functional>
 
 namespace holon::planner::hex {
@@ -42,7 +41,10 @@ Inside namedShape(const std::string& name, double a) {
 }
 
 std::vector<std::uint8_t> readPicture(const HexArray& array, const std::string& path, const std::string& role) {
-    if (!std::ifstream(path)) throw InputError(role + " '" + path + "': not square, T, rectangle or circle, and no such file");
+    // exists(), not opening the file: opening a FIFO waited for its writer and took what it wrote,
+    // and the read below then waited for a second writer.
+    if (std::error_code missing; !std::filesystem::exists(path, missing))
+        throw InputError(role + " '" + path + "': not square, T, rectangle or circle, and no such file");
     std::vector<std::string> lines;
     try {
         rules::OutputClaims::reading("the picture", path);  // --steps-out must not replace it

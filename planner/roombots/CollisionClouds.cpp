@@ -15,7 +15,6 @@
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
 #include "rules/Parameter.h"
-#include "rules/Parser.h"
 #include "rules/TextFile.h"
 
 #include <nlohmann/json.hpp>

@@ -14,7 +14,6 @@
 #include "planner/Random.h"
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
-#include "rules/Parser.h"
 #include "rules/TextFile.h"
 
 #include <algorithm>

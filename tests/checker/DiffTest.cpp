@@ -5,7 +5,6 @@
 #include "TestSupport.h"
 #include "checker/Diff.h"
 #include "rules/Engine.h"
-#include "rules/Parser.h"
 #include "rules/TextFile.h"
 
 #include <set>

@@ -7,7 +7,6 @@
 #include "planner/hex/SculptRun.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
-#include "rules/Parser.h"
 #include "rules/TextFile.h"
 
 #include <bit>

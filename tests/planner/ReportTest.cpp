@@ -8,7 +8,6 @@
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 
-#include "rules/Parser.h"
 #include "rules/TextFile.h"
 #include <csignal>
 #include <filesystem>

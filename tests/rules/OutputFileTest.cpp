@@ -3,7 +3,6 @@
 
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
-#include "rules/Parser.h"
 #include "rules/StopSignals.h"
 #include "rules/TextFile.h"
 
