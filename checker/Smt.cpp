@@ -9,6 +9,8 @@
 
 #include "checker/Smt.h"
 
+#include "checker/SolverLimits.h"
+
 #define Z3_THROW(x) throw ::holon::checker::smt::Failure((x).msg())
 #include <z3++.h>
 
@@ -81,6 +83,9 @@ struct Context::Watcher {
 };
 
 Context::Context(const Budget& budget) : budget_(budget) {
+    // None after the deadline or a signal: a context made then is kept, not freed (below), and
+    // verify with 3,000 properties kept one for each obligation left, gigabytes, past --timeout.
+    budget_.check("starting the solver");
     // z3++ 4.8.12 would use the null context Z3 returns past its memory limit, and crash.
     const Z3_config config = Z3_mk_config();
     const Z3_context probe = config ? Z3_mk_context_rc(config) : nullptr;
@@ -102,8 +107,10 @@ Context::~Context() {
     // a failure (Z3 out of memory) when the job has a deadline: freeing square:60x60's formulas
     // after the process hit its ulimit ran 10 minutes past a 30 s deadline. Without a deadline it
     // is freed: kept, its memory made every later obligation run out at once.
+    // Nor after a check that answered unknown for want of memory: Z3 took 50 s to several minutes
+    // to free such a context (square:20x20 with a memory bound), deaf to the deadline and signals.
     const bool failing = std::uncaught_exceptions() > 0 && budget_.limited();
-    if (!budget_.expired() && !budget_.interrupted() && !failing) {
+    if (!budget_.expired() && !budget_.interrupted() && !failing && !exhausted_) {
         delete native_;
         return;
     }
@@ -301,11 +308,15 @@ Result result(z3::check_result r) {
 }  // namespace
 
 Result Solver::check() {
-    return guarded(*ctx_, "solving", [&] { return result(native_->solver.check()); });
+    return noteExhaustion(guarded(*ctx_, "solving", [&] { return result(native_->solver.check()); }));
 }
 Result Solver::check(const std::vector<Term>& assumptions) {
     z3::expr_vector v = vector(*ctx_, assumptions);
-    return guarded(*ctx_, "solving", [&] { return result(native_->solver.check(v)); });
+    return noteExhaustion(guarded(*ctx_, "solving", [&] { return result(native_->solver.check(v)); }));
+}
+Result Solver::noteExhaustion(Result r) {
+    if (r == Result::Unknown && outOfMemory(reasonUnknown())) ctx_->markExhausted();
+    return r;
 }
 void Solver::push() {
     guarded(*ctx_, "solving", [&] { native_->solver.push(); });

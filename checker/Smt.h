@@ -57,11 +57,14 @@ public:
     /// Throws the budget's OutOfTime or Interrupted once it is spent or a signal is caught (the
     /// watcher has then interrupted Z3, or is about to); `during` says what was cut short.
     void checkStopped(const char* during) const;
+    /// A check in this context answered unknown for want of memory: it is not freed then (below).
+    void markExhausted() { exhausted_ = true; }
 
 private:
     struct Watcher;  // interrupts Z3 at the deadline or on a signal, in Smt.cpp
     Budget budget_;
     Native* native_;
+    bool exhausted_ = false;
     std::unique_ptr<Watcher> watcher_;
 };
 
@@ -201,6 +204,7 @@ public:
     struct Native;  // the Z3 solver, in Smt.cpp
 
 private:
+    Result noteExhaustion(Result r);
     Context* ctx_;
     std::shared_ptr<Native> native_;
 };
