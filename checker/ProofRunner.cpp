@@ -129,7 +129,7 @@ Obligation ProofRunner::solve(const std::string& name, const std::string& kind, 
         if (o.result.trace) o.result.trace->property = name;
         break;
     case smt::Result::Unknown:
-        ctx.checkStopped("solving");  // the deadline or a signal, not the solver, stopped it
+        ctx.checkStopped("solving");                   // the deadline or a signal, not the solver, stopped it
         if (outOfMemory(reason)) ctx.markExhausted();  // the answer may come from a forked child
         o.result.verdict = Verdict::Unknown;
         o.result.summary = "the solver gave up: " + unknownReason(reason);
