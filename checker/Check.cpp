@@ -74,6 +74,11 @@ std::string beyondLimits(const ExploreStats& stats, const Limits& limits, const 
 }  // namespace
 
 std::unique_ptr<rules::Engine> checkEngine(const rules::Model& model, const rules::Region& region, const CheckOptions& options) {
+    // One engine, one set of inputs: a start under other inputs was explored under the first's.
+    for (const rules::Configuration& c : options.initial)
+        if (c.inputs != options.initial.front().inputs)
+            throw InputError("the initial configurations (" + rules::parameterName(rules::Parameter::Initial) +
+                             ") hold different inputs; an exploration runs under one set of inputs: explore them one at a time");
     return std::make_unique<rules::Engine>(model, region, !options.all && !options.initial.empty() ? options.initial.front().inputs : options.inputs);
 }
 

@@ -116,6 +116,7 @@ int run(const CheckArgs& a) {
     if (a.all && !a.from.empty()) throw InputError("give either --all or --from, not both");
     if (!a.all && a.from.empty()) throw InputError("say where to start: --from CONFIG (JSON or ASCII art), or --all for every legal configuration");
     options.initial = readStarts(in, a.from, a.inputs, &options.inputs);
+    requireSharedInputs(options.initial, a.from);
     const bool terminal = isatty(2) && !a.json;
     if (terminal)
         options.onProgress = [](const checker::ExploreStats& s) {

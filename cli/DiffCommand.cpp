@@ -51,6 +51,7 @@ int run(const DiffArgs& a) {
         d.model = std::make_unique<rules::Model>(d.system, region.lattice());
         d.in = std::make_unique<rules::Interpreter>(*d.model, region);
         options.initial[side] = readStarts(*d.in, a.from, a.inputs, &options.inputs[side]);
+        requireSharedInputs(options.initial[side], a.from);
     }
     const checker::DiffReport report = checker::diff(*designs[0].model, *designs[1].model, region, options);
     // Undecided: a limit or a signal stopped an exploration or the comparison after them.

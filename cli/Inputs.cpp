@@ -178,4 +178,11 @@ std::vector<rules::Configuration> readStarts(const rules::Interpreter& in, const
     return starts;
 }
 
+void requireSharedInputs(const std::vector<rules::Configuration>& starts, const std::vector<std::string>& from) {
+    for (std::size_t k = 1; k < starts.size(); ++k)
+        if (starts[k].inputs != starts[0].inputs)
+            throw InputError("--from " + from[k] + ": its inputs differ from those of --from " + from[0] +
+                             "; an exploration runs every start under one set of inputs: check them one at a time, or give the inputs with --input");
+}
+
 }  // namespace holon::cli

@@ -50,4 +50,9 @@ std::vector<rules::Configuration> readStarts(const rules::Interpreter& in, const
                                              const std::vector<std::string>& inputSpecs, std::vector<std::uint32_t>* inputsOut = nullptr,
                                              const std::string& option = "--from");
 
+/// For an exploration (check, diff), which runs every start under one set of inputs: starts
+/// whose inputs differ are refused, naming the first two files (all were explored under the
+/// first's inputs, and the verdict hung on the order of --from).
+void requireSharedInputs(const std::vector<rules::Configuration>& starts, const std::vector<std::string>& from);
+
 }  // namespace holon::cli
