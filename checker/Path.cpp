@@ -38,6 +38,9 @@ PathResult forwardPath(const rules::Engine& engine, const PathQuery& query) {
     std::mutex mutex;
     StateId best = kNoState;
     std::vector<CellValue> bestCells;
+    // The smallest target of the nearest level: the level stored while the one before is expanded,
+    // but the start is at distance 0, and a smaller target one step away won over it (an audit).
+    bool atStart = true, startIsTarget = false;
     Explorer::Options options;
     options.limits = query.limits;
     options.recordEdges = false;
@@ -45,7 +48,9 @@ PathResult forwardPath(const rules::Engine& engine, const PathQuery& query) {
     options.onState = [&](StateId id, const CellValue* cells) {
         if (!isTarget(cells)) return;
         std::lock_guard<std::mutex> lock(mutex);
-        if (best == kNoState || std::lexicographical_compare(cells, cells + n, bestCells.begin(), bestCells.end()))
+        if (startIsTarget) return;
+        startIsTarget = atStart;
+        if (best == kNoState || startIsTarget || std::lexicographical_compare(cells, cells + n, bestCells.begin(), bestCells.end()))
             best = id, bestCells.assign(cells, cells + n);
     };
     options.decided = [&] {
@@ -54,6 +59,7 @@ PathResult forwardPath(const rules::Engine& engine, const PathQuery& query) {
     };
     Explorer explorer(engine, options);
     explorer.addInitial(query.from.cells.data());
+    atStart = false;
     PathResult result;
     result.search = PathSearch::Forward;
     result.stats = explorer.explore();

@@ -206,6 +206,22 @@ TEST_CASE("shortest paths have the reference interpreter's BFS distances on ever
     CHECK(bidirectionalPaths[0] == 0);  // every covered library system runs backwards
 }
 
+TEST_CASE("a start at the goal is a path of no steps, though a smaller goal configuration lies one step away") {
+    // The forward search kept the smallest target of the levels it had stored, and level 1 is
+    // stored while the start's level is expanded: 'A..' lost to '.A.' (an audit).
+    World w(test::parse("system g\nlattice square2d\nstates A\nrule r: A _ => _ A\ngoal some(A)\n"), "square:3x1");
+    checker::PathQuery query;
+    query.from = w.ascii("A..\n");
+    const rules::Engine engine(*w.model, w.region, query.from.inputs);
+    for (const auto search : {checker::PathSearch::Auto, checker::PathSearch::Forward}) {
+        query.search = search;
+        const auto result = checker::shortestPath(engine, query);
+        REQUIRE(result.outcome == checker::PathOutcome::Found);
+        CHECK(result.trace.steps.size() == 1);
+        CHECK(result.trace.steps[0].cells == query.from.cells);
+    }
+}
+
 TEST_CASE("a path search stopped by a limit is undecided, not unreachable, and claims no path within d steps only when the shortest is longer") {
     World w = World::library("pixel", "square:4x4");
     checker::PathQuery query;
