@@ -6,7 +6,9 @@
 
 #include "rules/OutputFile.h"
 
+#include "rules/Budget.h"
 #include "rules/Error.h"
+#include "rules/StopSignals.h"
 
 #include <algorithm>
 #include <atomic>
@@ -31,6 +33,25 @@ namespace fs = std::filesystem;
 
 std::string reason() { return std::strerror(errno); }
 
+/// Opens a device, pipe or FIFO for writing. A FIFO with no reader yet is waited for in slices:
+/// a blocking open waited for ever, past --timeout, and a signal read as "cannot open" (exit 2).
+int openSpecial(const std::string& option, const std::string& path) {
+    for (;;) {
+        const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_NONBLOCK | O_CLOEXEC);
+        if (fd >= 0) {
+            ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);  // writes wait for a slow reader
+            return fd;
+        }
+        if (errno != ENXIO && errno != EINTR) throw InputError(option + " " + path + ": cannot open: " + reason());
+        StopSignals::stopIfCaught();
+        if (jobSecondsLeft() <= 0)
+            throw LimitError("the job's " + parameterName(Parameter::Timeout) + " ran out while holon waited for a reader of " + option + " " + path +
+                                 " (a FIFO nothing reads); start its reader first, or raise the limit",
+                             Parameter::Timeout);
+        ::usleep(50'000);
+    }
+}
+
 std::string folderOf(const std::string& path) {
     const fs::path parent = fs::path(path).parent_path();
     return parent.empty() ? "." : parent.string();
@@ -41,12 +62,14 @@ bool isSpecial(const std::string& path) {
     return ::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
 }
 
-/// Writes all of `text` to `fd`; false (with errno set) on any error.
+/// Writes all of `text` to `fd`; false (with errno set) on any error. A write blocked on a pipe
+/// nobody reads ends at a caught SIGINT or SIGTERM (EINTR; commit() then says Interrupted): it
+/// retried for ever, deaf to them.
 bool writeAll(int fd, std::string_view text) {
     std::size_t done = 0;
     while (done < text.size()) {
         const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-        if (n < 0 && errno == EINTR) continue;
+        if (n < 0 && errno == EINTR && *StopSignals::caught() == 0) continue;
         if (n <= 0) return false;
         done += static_cast<std::size_t>(n);
     }
@@ -217,8 +240,7 @@ struct OutputStream::Buffer : std::streambuf {
 OutputStream::OutputStream(std::string option, std::string path) : option_(std::move(option)), path_(std::move(path)) {
     int fd = -1;
     if (isSpecial(path_)) {
-        fd = ::open(path_.c_str(), O_WRONLY | O_TRUNC);
-        if (fd < 0) throw InputError(option_ + " " + path_ + ": cannot open: " + reason());
+        fd = openSpecial(option_, path_);
     } else {
         temp_ = path_ + ".tmp-XXXXXX";
         fd = ::mkstemp(temp_.data());
@@ -253,6 +275,7 @@ void OutputStream::commit() {
     if (::close(buffer_->fd) != 0 && ok) ok = false, error = errno;
     buffer_->fd = -1;
     if (!ok) {
+        if (error == EINTR) StopSignals::stopIfCaught();
         errno = error ? error : EIO;
         throw InputError(option_ + " " + path_ + ": cannot write: " + reason());
     }

@@ -94,6 +94,10 @@ void endOnSignalsCleanly() {
         sigaction(signal, &action, &old);
         if (old.sa_handler == SIG_IGN) sigaction(signal, &old, nullptr);  // a shell's background job, nohup
     }
+    // A file-size limit (ulimit -f) is a write that fails with EFBIG, reported as any failed write
+    // (exit 2, the temporary removed); SIGXFSZ's default action killed holon mid-write (exit 153,
+    // no word, FILE.tmp-XXXXXX left behind).
+    ::signal(SIGXFSZ, SIG_IGN);
     // An exception no one catches (a thread's) ends holon through std::terminate: the same cleanup,
     // then the library's handler, which names the exception and aborts.
     static const bool once = [] {

@@ -34,7 +34,8 @@ private:
 
 /// For the whole process, outside any StopSignals: SIGINT, SIGTERM, SIGHUP, SIGQUIT and SIGPIPE
 /// end holon as they would, and so does std::terminate, after removing the temporaries being
-/// written (rules::removeTemporaries). A signal the caller ignores stays ignored.
+/// written (rules::removeTemporaries). A signal the caller ignores stays ignored. SIGXFSZ is
+/// ignored: a write past a file-size limit fails (EFBIG) and is reported as a failed write.
 void endOnSignalsCleanly();
 
 /// In a forked child: signals end it with their default actions and std::terminate removes
