@@ -10,6 +10,7 @@
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
 #include "cli/Limits.h"
+#include "cli/WriteErrors.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Library.h"
@@ -147,24 +148,25 @@ int run(const CheckArgs& a) {
                                                                 : exitCodeFor(report.overall());
     };
     // Every violated property gets its own trace file (named after it when there are several).
+    // A write that fails (a full disk) is said after the report, which it no longer takes with it.
+    WriteErrors errors;
     std::vector<std::string> written;
     for (const checker::PropertyResult* p : violated) {
         const bool several = violated.size() > 1;
-        if (traceOut) {
-            const rules::OutputFile file("--trace-out", pathFor(traceOut->path(), p->name, several));
-            file.write(checker::toItf(*p->trace, engine, a.file).dump(2) + "\n");
-            written.push_back(file.path());
-        }
-        if (htmlOut) {
-            const rules::OutputFile file("--html", pathFor(htmlOut->path(), p->name, several));
-            file.write(viewer::page(viewer::readItf(checker::toItf(*p->trace, engine, a.file), "the counterexample for '" + p->name + "'", *system)));
-            written.push_back(file.path());
-        }
-        if (svgOut) {
-            const rules::OutputFile file("--svg", pathFor(svgOut->path(), p->name, several));
-            file.write(checker::drawTraceSvg(*p->trace, engine, system->name + " on " + region.spec() + ": " + p->name + " " + checker::verdictName(p->verdict) + " -- " + p->trace->description));
-            written.push_back(file.path());
-        }
+        if (traceOut) errors.write(
+            "--trace-out", pathFor(traceOut->path(), p->name, several), [&] { return checker::toItf(*p->trace, engine, a.file).dump(2) + "\n"; }, written);
+        if (htmlOut)
+            errors.write(
+                "--html", pathFor(htmlOut->path(), p->name, several), [&] {
+                    return viewer::page(viewer::readItf(checker::toItf(*p->trace, engine, a.file), "the counterexample for '" + p->name + "'", *system));
+                },
+                written);
+        if (svgOut)
+            errors.write(
+                "--svg", pathFor(svgOut->path(), p->name, several), [&] {
+                    return checker::drawTraceSvg(*p->trace, engine, system->name + " on " + region.spec() + ": " + p->name + " " + checker::verdictName(p->verdict) + " -- " + p->trace->description);
+                },
+                written);
     }
     if (violated.empty()) noteNoCounterexample("check", {{"--trace-out", a.traceOut}, {"--html", a.html}, {"--svg", a.svg}});
     if (dotOut) {
@@ -174,7 +176,7 @@ int run(const CheckArgs& a) {
         if (kept.explorer->stats().stopped != StopReason::Finished)
             std::cerr << "holon check: --dot not written: the exploration stopped before the whole graph was seen (" << stopReasonName(kept.explorer->stats().stopped) << ")\n";
         else if (report.stats.states > 5000) std::cerr << "holon check: --dot not written: " << report.stats.states << " states is too many to draw (at most 5000)\n";
-        else dotOut->write([&](std::ostream& out) { checker::writeDot(*kept.explorer, in, out); });
+        else errors.attempt([&] { dotOut->write([&](std::ostream& out) { checker::writeDot(*kept.explorer, in, out); }); }, "--dot " + dotOut->path());
     }
 
     // A table asked for and not computed (a limit) leaves the run undecided.
@@ -183,6 +185,7 @@ int run(const CheckArgs& a) {
         nlohmann::json j = report.toJson();
         const bool shown = !a.components || printComponents(*kept.explorer, *system, &j);
         std::cout << j.dump(2) << '\n';
+        errors.raise();
         return exitWith(shown);
     }
     const auto& s = report.stats;
@@ -210,7 +213,9 @@ int run(const CheckArgs& a) {
         for (const std::string& w : written) std::cout << ' ' << w;
         std::cout << '\n';
     }
-    return exitWith(!a.components || printComponents(*kept.explorer, *system, nullptr));
+    const bool shown = !a.components || printComponents(*kept.explorer, *system, nullptr);
+    errors.raise();  // a file that could not be written outranks the verdict, as in plan
+    return exitWith(shown);
 }
 
 }  // namespace

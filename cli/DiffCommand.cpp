@@ -9,6 +9,7 @@
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
 #include "cli/Limits.h"
+#include "cli/WriteErrors.h"
 #include "rules/OutputFile.h"
 
 #include <iostream>
@@ -77,10 +78,14 @@ int run(const DiffArgs& a) {
     // The witness drawn: B's extra transition first (a variant's new move), else A's.
     const int shown = d.transitionWitness[1] ? 1 : d.transitionWitness[0] ? 0
                                                                           : -1;
-    if (svgOut && shown >= 0) svgOut->write(checker::drawTraceSvg(*d.transitionWitness[shown], *report.explored[shown].engine, report.witnessText(shown)));
+    // A write that fails (a full disk) is said after the comparison, which it no longer takes with it.
+    WriteErrors errors;
+    if (svgOut && shown >= 0)
+        errors.attempt([&] { svgOut->write(checker::drawTraceSvg(*d.transitionWitness[shown], *report.explored[shown].engine, report.witnessText(shown))); }, "--svg " + svgOut->path());
     if (svgOut && shown < 0) std::cerr << "holon: note: --svg " << a.svg << " is not written: no transition differs, so there is nothing to draw\n";
     if (a.json) {
         std::cout << report.toJson().dump(2) << '\n';
+        errors.raise();
         return code;
     }
     std::cout << "A " << report.systems[0] << " (" << a.a << ") against B " << report.systems[1] << " (" << a.b << ") on " << region.spec() << ", "
@@ -90,12 +95,14 @@ int run(const DiffArgs& a) {
                   << (side ? "B" : "A") << ": " << d.onlyStates[side] << " configurations, " << d.onlyTransitions[side] << " transitions\n";
     if (d.same()) {
         std::cout << "  the same reconfiguration graph\n";
+        errors.raise();
         return code;
     }
     for (int side : {1, 0})
         if (d.transitionWitness[side])
             std::cout << "\nnearest transition only in " << (side ? "B" : "A") << ": " << report.witnessText(side) << '\n'
                       << checker::drawTraceAscii(*d.transitionWitness[side], *report.explored[side].engine);
+    errors.raise();  // a file that could not be written outranks the verdict, as in plan
     return code;
 }
 

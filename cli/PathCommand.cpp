@@ -11,6 +11,7 @@
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
 #include "cli/Limits.h"
+#include "cli/WriteErrors.h"
 #include "rules/OutputFile.h"
 #include "viewer/Page.h"
 #include "viewer/Readers.h"
@@ -99,9 +100,12 @@ int run(const PathArgs& a) {
             reportInternalError("path", "the parallel schedule does not replay: " + why);
     }
     const std::string title = system->name + " on " + region.spec() + ": " + (found ? "a shortest path, " + checker::stepCount(length) : outcomeName(result.outcome));
-    if (found && traceOut) traceOut->write(checker::toItf(result.trace, engine, a.file).dump(2) + "\n");
-    if (found && svgOut) svgOut->write(checker::drawTraceSvg(result.trace, engine, title));
-    if (found && htmlOut) htmlOut->write(viewer::page(viewer::readItf(checker::toItf(result.trace, engine, a.file), "the shortest path", *system)));
+    // A write that fails (a full disk) is said after the result, which it no longer takes with it.
+    WriteErrors errors;
+    if (found && traceOut) errors.attempt([&] { traceOut->write(checker::toItf(result.trace, engine, a.file).dump(2) + "\n"); }, "--trace-out " + traceOut->path());
+    if (found && svgOut) errors.attempt([&] { svgOut->write(checker::drawTraceSvg(result.trace, engine, title)); }, "--svg " + svgOut->path());
+    if (found && htmlOut)
+        errors.attempt([&] { htmlOut->write(viewer::page(viewer::readItf(checker::toItf(result.trace, engine, a.file), "the shortest path", *system))); }, "--html " + htmlOut->path());
     if (!found)
         for (const auto& [option, out] : {std::pair{"--trace-out", &traceOut}, std::pair{"--svg", &svgOut}, std::pair{"--html", &htmlOut}})
             if (*out) std::cerr << "holon: note: " << option << " " << (*out)->path() << " is not written: no path was found (" << outcomeName(result.outcome) << ")\n";
@@ -121,6 +125,7 @@ int run(const PathArgs& a) {
         if (found) j["length"] = length, j["replayed"] = replayed, j["path"] = traceJson(result.trace, engine, in);
         if (schedule) j["parallel"] = {{"makespan", schedule->makespan()}, {"rounds", schedule->rounds}, {"replayed", scheduled}};
         std::cout << j.dump(2) << '\n';
+        errors.raise();
         return code;
     }
     std::cout << system->name << " on " << region.spec() << ", from " << a.from << " to " << (a.goal ? "the goal" : a.to) << '\n'
@@ -156,6 +161,7 @@ int run(const PathArgs& a) {
                   << ")" << raiseAdvice(s.stopped, " to search further") << '\n';
         break;
     }
+    errors.raise();  // a file that could not be written outranks the result, as in plan
     return code;
 }
 

@@ -8,6 +8,7 @@
 #include "cli/Inputs.h"
 #include "cli/Limits.h"
 #include "cli/VerifyEverySize.h"
+#include "cli/WriteErrors.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
@@ -97,27 +98,28 @@ int run(const VerifyArgs& a) {
     std::stable_partition(shown.begin(), shown.end(), [](const checker::PropertyResult* r) { return r->kind == "bmc" || r->kind == "reach"; });
     const std::vector<std::uint32_t> noInputs(region.size(), 0);
     auto drawingFor = [&](const checker::PropertyResult& r) { return rules::Engine(model, region, r.inputs.value_or(noInputs)); };
+    // A write that fails (a full disk) is said after the table, which it no longer takes with it.
+    WriteErrors errors;
     std::vector<std::string> written;
     for (const checker::PropertyResult* r : shown) {
         if (!r->trace) continue;
         const rules::Engine drawing = drawingFor(*r);
         const bool several = shown.size() > 1;
-        if (traceOut) {
-            const rules::OutputFile file("--trace-out", pathFor(traceOut->path(), r->name, several));
-            file.write(checker::toItf(*r->trace, drawing, a.file).dump(2) + "\n");
-            written.push_back(file.path());
-        }
-        if (svgOut) {
-            const rules::OutputFile file("--svg", pathFor(svgOut->path(), r->name, several));
-            file.write(checker::drawTraceSvg(*r->trace, drawing, system->name + " on " + region.spec() + ": " + r->name + " -- " + r->trace->description));
-            written.push_back(file.path());
-        }
+        if (traceOut) errors.write(
+            "--trace-out", pathFor(traceOut->path(), r->name, several), [&] { return checker::toItf(*r->trace, drawing, a.file).dump(2) + "\n"; }, written);
+        if (svgOut)
+            errors.write(
+                "--svg", pathFor(svgOut->path(), r->name, several), [&] {
+                    return checker::drawTraceSvg(*r->trace, drawing, system->name + " on " + region.spec() + ": " + r->name + " -- " + r->trace->description);
+                },
+                written);
     }
     if (shown.empty()) noteNoCounterexample("verify", {{"--trace-out", traceOut ? traceOut->path() : ""}, {"--svg", svgOut ? svgOut->path() : ""}});
     const int code = unconfirmed ? kExitInternal : caughtSignal() != 0 ? exitCodeFor(StopReason::Interrupted, caughtSignal())
                                                                        : exitCodeFor(report.overall());
     if (a.json) {
         std::cout << report.toJson().dump(2) << '\n';
+        errors.raise();
         return code;
     }
     std::cout << system->name << " on " << region.spec() << ": every configuration of the region"
@@ -153,6 +155,7 @@ int run(const VerifyArgs& a) {
         for (const std::string& w : written) std::cout << ' ' << w;
         std::cout << '\n';
     }
+    errors.raise();  // a file that could not be written outranks the verdict, as in plan
     return code;
 }
 

@@ -10,6 +10,7 @@
 #include "checker/NamedRegion.h"
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
+#include "cli/WriteErrors.h"
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
 #include "rules/TextFile.h"
@@ -44,7 +45,7 @@ const rules::Lattice& latticeFor(const EverySizeArgs& a, const rules::System& sy
 /// Returns what was written, with the region a re-check needs.
 std::vector<std::string> writeCounterexamples(const EverySizeArgs& a, const rules::Model& model, const std::optional<rules::Region>& region,
                                               const checker::VerifyReport& report, const std::optional<rules::OutputFile>& traceOut,
-                                              const std::optional<rules::OutputFile>& svgOut) {
+                                              const std::optional<rules::OutputFile>& svgOut, WriteErrors& errors) {
     std::vector<std::string> written;
     if (!traceOut && !svgOut) return written;
     std::vector<const checker::PropertyResult*> shown;
@@ -65,16 +66,14 @@ std::vector<std::string> writeCounterexamples(const EverySizeArgs& a, const rule
         const rules::Engine engine(model, named->region, named->inputs);
         const bool several = shown.size() > 1;
         const std::string on = " (on " + named->region.spec() + ")";
-        if (traceOut) {
-            const rules::OutputFile file("--trace-out", pathFor(traceOut->path(), r->name, several));
-            file.write(checker::toItf(named->trace, engine, a.file).dump(2) + "\n");
-            written.push_back(file.path() + on);
-        }
-        if (svgOut) {
-            const rules::OutputFile file("--svg", pathFor(svgOut->path(), r->name, several));
-            file.write(checker::drawTraceSvg(named->trace, engine, model.system().name + " on " + named->region.spec() + ": " + r->name + " -- " + named->trace.description));
-            written.push_back(file.path() + on);
-        }
+        if (traceOut) errors.write(
+            "--trace-out", pathFor(traceOut->path(), r->name, several), [&] { return checker::toItf(named->trace, engine, a.file).dump(2) + "\n"; }, written, on);
+        if (svgOut)
+            errors.write(
+                "--svg", pathFor(svgOut->path(), r->name, several), [&] {
+                    return checker::drawTraceSvg(named->trace, engine, model.system().name + " on " + named->region.spec() + ": " + r->name + " -- " + named->trace.description);
+                },
+                written, on);
     }
     return written;
 }
@@ -179,16 +178,20 @@ int runEverySize(const EverySizeArgs& a) {
     // default place it would replace the complete certificate `holon plan` reads (a stray
     // --timeout 2 left every verdict unknown there, and --require-proof refused the next plan).
     const auto cut = std::find_if(report.obligations.begin(), report.obligations.end(), [](const checker::Obligation& o) { return o.result.limited; });
-    const bool certified = certificate && (!a.certificate.empty() || cut == report.obligations.end());
+    bool certified = certificate && (!a.certificate.empty() || cut == report.obligations.end());
     if (certificate && !certified)
         certificateNote = "none written: a limit cut the run short (" + cut->result.name + ": " + cut->result.summary + "), and a partial record must not replace " +
                           certificate->path() + "; raise the limit, or give --certificate PATH to write it anyway";
+    // A write that fails (a full disk) is said after the table, which it no longer takes with it.
+    WriteErrors errors;
     if (certified) {
-        certificate->write(checker::certificateText(checker::certificateOf(report, rulePath, system->sourceSha256, model.lattice().name())));
+        certified = errors.attempt([&] { certificate->write(checker::certificateText(checker::certificateOf(report, rulePath, system->sourceSha256, model.lattice().name()))); },
+                                   "the certificate " + certificate->path());
+        if (!certified) certificateNote = "none written (below)";
         if (hashed)
             for (checker::Obligation& o : report.obligations) o.smtFile.clear();  // hashed, and gone with the temporary folder
     }
-    const std::vector<std::string> written = writeCounterexamples(a, model, region, report, traceOut, svgOut);
+    const std::vector<std::string> written = writeCounterexamples(a, model, region, report, traceOut, svgOut, errors);
     const int code = unconfirmed ? kExitInternal : caughtSignal() != 0 ? exitCodeFor(StopReason::Interrupted, caughtSignal())
                                                                        : exitCodeFor(report.overall());
     if (a.json) {
@@ -196,6 +199,7 @@ int runEverySize(const EverySizeArgs& a) {
         j["lattice"] = model.lattice().name();
         j["certificate"] = certified ? nlohmann::json(certificate->path()) : nlohmann::json();
         std::cout << j.dump(2) << '\n';
+        errors.raise();
         return code;
     }
     int scopeWidth = 16;  // "region hex:r2" and longer region names get their column too
@@ -229,6 +233,7 @@ int runEverySize(const EverySizeArgs& a) {
     std::cout << "\ncertificate: " << (certified ? certificate->path() + " (holon plan reads it; docs/every-size.md, \"Certificates\")" : certificateNote.empty() ? "none written (--no-certificate)"
                                                                                                                                                                   : certificateNote)
               << '\n';
+    errors.raise();  // a file that could not be written outranks the verdict, as in plan
     return code;
 }
 

@@ -5,8 +5,10 @@
 // so what is collected here is what no check could foresee.
 
 #include "rules/Error.h"
+#include "rules/OutputFile.h"
 
 #include <functional>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -14,13 +16,31 @@ namespace holon::cli {
 
 class WriteErrors {
 public:
-    /// Runs `write`; an InputError it throws is kept, with its reason, instead of propagating.
-    void attempt(const std::function<void()>& write) {
+    /// Runs `write`; an InputError it throws is kept, with its reason, instead of propagating, and
+    /// so is running out of memory while it makes what it writes (the SVG of a huge region).
+    /// `what` names the output in that message ("--svg out.svg"). Whether it was written.
+    bool attempt(const std::function<void()>& write, const std::string& what = "an output") {
         try {
             write();
+            return true;
         } catch (const InputError& e) {
             add(e.what());
+        } catch (const std::bad_alloc&) {
+            add(what + ": not written: the machine has no memory left to make it");
         }
+        return false;
+    }
+    /// Writes `text()` to `path` for `option`, adding the path and `note` to `written` when it is
+    /// written.
+    void write(const std::string& option, const std::string& path, const std::function<std::string()>& text, std::vector<std::string>& written,
+               const std::string& note = "") {
+        attempt(
+            [&] {
+                const rules::OutputFile file(option, path);
+                file.write(text());
+                written.push_back(file.path() + note);
+            },
+            option + " " + path);
     }
     void add(std::string message) { messages_.push_back(std::move(message)); }
     bool empty() const { return messages_.empty(); }
