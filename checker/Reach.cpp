@@ -304,6 +304,9 @@ ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, c
     const ForkedAnswer answer = firstDecisive(
         jobs, [](const nlohmann::json& a) { return a.contains("verdict") && static_cast<Verdict>(a["verdict"].get<int>()) != Verdict::Unknown; }, budget);
     ReachProof best = answer.job >= 0 ? reachProofFromJson(answer.answer) : ReachProof{};
+    // No child answered (the solvers overran the grace past the budget): the reason firstDecisive
+    // gives, and the time spent, not "the solver gave up: " and 0 ms.
+    if (answer.job < 0) best.reason = answer.answer.value("error", std::string("timeout: no solver process answered")), best.seconds = budget.elapsed();
     const int winner = best.verdict != Verdict::Unknown ? answer.job : -1;
     // The winner's files take the plain names; the others' are removed, with the temporaries of a
     // loser stopped in the middle of a write (OutputFile writes beside the file, then renames).

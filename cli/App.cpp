@@ -77,8 +77,14 @@ int runHolon(int argc, char** argv) {
                 // out: nothing written, nothing said.
                 for (const CLI::Option* option : sub->get_options())
                     if (option->count() > 0 && option->get_expected_min() > 0)
-                        for (const std::string& value : option->results())
+                        for (const std::string& value : option->results()) {
                             if (value.empty()) throw InputError(option->get_name() + ": the value is empty; give one, or leave the option out");
+                            // CLI11 reads integers in C's base 0: --seed 010 ran with seed 8, 0x10 was 16
+                            // and 09 "not in range".
+                            if (option->get_type_name().starts_with("INT") || option->get_type_name().starts_with("UINT"))
+                                if (const std::size_t at = value.find_first_not_of("+- "); at != std::string::npos && value[at] == '0' && at + 1 < value.size())
+                                    throw InputError(option->get_name() + " " + value + ": write the number in decimal, without a leading 0 or a 0x prefix");
+                        }
                 // --timeout counts from the job's start, for the waits no run's budget reaches yet
                 // (an input read from a FIFO that nothing writes).
                 if (const CLI::Option* timeout = sub->get_option_no_throw("--timeout"); timeout && timeout->count() > 0)
