@@ -288,12 +288,16 @@ int run(const PlanArgs& a) {
     // A signal while the page is built (seconds at 10^6 metamodules) stops it: the page is not
     // written, the summary is still printed, and the exit says the signal.
     int pageSignal = 0;
+    bool pageTimedOut = false;
     if (!a.html.empty() && report.writeErrors().empty()) {
         try {
             errors.attempt([&] { rules::OutputFile("--html", a.html).write(viewer::page(viewer::readRun(a.planOut))); });
         } catch (const Interrupted& e) {
             pageSignal = e.signal();
             std::cerr << "holon plan: --html " << a.html << " not written: " << e.what() << " while the page was built\n";
+        } catch (const LimitError& e) {
+            pageTimedOut = true;
+            std::cerr << "holon plan: --html " << a.html << " not written: " << e.what() << "; raise --timeout\n";
         }
     }
 
@@ -333,6 +337,7 @@ int run(const PlanArgs& a) {
     // A file that could not be written outranks the verdict: the summary above is all there is.
     errors.raise();
     if (pageSignal != 0) return exitCodeFor(StopReason::Interrupted, pageSignal);
+    if (pageTimedOut) return exitCodeFor(StopReason::Timeout, 0);
     if (!interrupted && (!disksOk || violated)) return kExitViolated;
     return exitCodeFor(stats.stopped, budget.signal());
 }

@@ -49,6 +49,11 @@ double jobSecondsLeft() {
     return deadline > now ? static_cast<double>(deadline - now) * 1e-9 : 0;
 }
 
+void checkJobDeadline(const std::string& during) {
+    if (jobSecondsLeft() <= 0)
+        throw LimitError("the job's " + rules::parameterName(rules::Parameter::Timeout) + " ran out while " + during, rules::Parameter::Timeout);
+}
+
 Budget::Budget(double seconds) : seconds_(seconds > 0 ? seconds : 0) {}
 
 Budget Budget::maxStates(std::uint64_t n) {

@@ -100,5 +100,8 @@ private:
 void setJobDeadline(double seconds);
 /// Seconds left before the job's deadline (0 once passed); infinity when there is none.
 double jobSecondsLeft();
+/// Throws LimitError about the timeout once the job's deadline has passed; `during` says what it
+/// cut short ("building the page").
+void checkJobDeadline(const std::string& during);
 
 }  // namespace holon

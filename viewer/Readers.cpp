@@ -291,8 +291,9 @@ Run readLines(const std::string& path, std::istream& in, const std::string& rule
     };
     rules::PlanLine j;
     while (lines.next(j)) {
-        // holon plan --html builds the page after its run, with its signal catcher installed.
+        // holon plan --html builds the page after its run, within its --timeout and signal catcher.
         rules::StopSignals::stopIfCaught();
+        checkJobDeadline("building the page");
         const std::string where = lines.where();
         if (!round || j.round != *round) {
             close();

@@ -25,4 +25,11 @@ grep -q "html $dir/plan.html not written: interrupted by SIGINT while the page w
 grep -q "complete: the target is reached" "$dir/stdout" || fail "the summary was not printed"
 [ -e "$dir/plan.html" ] && fail "a page was written"
 if ls "$dir" "$dir/out" | grep -q '\.tmp-'; then fail "temporaries left behind"; fi
+# --timeout holds while the page is built too: it was built to its end past the deadline (exit 0).
+# Whether the deadline falls in the run or in the page, the page is not written and the exit is 3.
+"$holon" plan --rules planner_intermediate --from box:400x400 --to box:200x800 --quiet \
+    --plan-out "$dir/plan2.jsonl" --html "$dir/plan2.html" --timeout 1.5 >"$dir/stdout" 2>"$dir/stderr"
+got=$?
+[ "$got" = 3 ] || fail "expected exit 3 with --timeout 1.5, got $got"
+[ -e "$dir/plan2.html" ] && fail "a page was written past the deadline"
 exit 0
