@@ -535,7 +535,7 @@ private:
                 fail(c.loc, std::string("'#' on the ") + side + " side does not say which state the cell becomes; name it");
             std::set<int> fields;
             for (const Atom& a : c.atoms) {
-                if (a.negated) fail(a.loc, std::string("a negation on the ") + side + " side does not say what the cell becomes");
+                if (a.negated && a.kind != Atom::Kind::Input) fail(a.loc, std::string("a negation on the ") + side + " side does not say what the cell becomes");
                 if (a.kind == Atom::Kind::Input && !inputsAllowed)
                     fail(a.loc, "inputs are read-only; move the condition '" + s_.inputs[a.index] + "' to the left side");
                 if (a.kind == Atom::Kind::Field && !fields.insert(a.index).second)

@@ -206,3 +206,30 @@ TEST_CASE("a <=> rule's right-side inputs are conditions of both directions, whi
         CHECK(count(d, "back") == 1);
     }
 }
+
+TEST_CASE("a <=> rule's right side may say where an input does not hold: '!target' is a condition of both directions") {
+    // language.md allows `!target` on either side of a `<=>` rule; the parser refused every negated
+    // atom there ("does not say what the cell becomes"), though an input is not written (an audit).
+    World w(test::parse("system t\nlattice square2d\nsymmetry none\nstates A\ninput target\nrule step / back: A _ <=> _ A&!target\n"), "square:3x1");
+    const auto count = [&](const rules::Configuration& c, const std::string& name) {
+        const auto names = w.enabledRules(c);
+        const auto interpreted = std::count(names.begin(), names.end(), name);
+        const rules::Engine engine(*w.model, w.region, c.inputs);
+        long compiled = 0;
+        engine.forEachMatch(c.cells.data(), [&](int p) { compiled += w.model->rules()[engine.instances()[p].rule].name == name; });
+        CHECK(compiled == interpreted);
+        return interpreted;
+    };
+    auto c = w.ascii("A..");
+    w.mark(c, "target", ".X.");
+    CHECK(count(c, "step") == 0);  // it would move onto the target
+    auto e = w.ascii("A..");
+    w.mark(e, "target", "..X");
+    CHECK(count(e, "step") == 1);
+    auto d = w.ascii(".A.");
+    w.mark(d, "target", ".X.");
+    CHECK(count(d, "back") == 0);  // it stands on the target, which its right side excludes
+    auto f = w.ascii(".A.");
+    w.mark(f, "target", "X..");
+    CHECK(count(f, "back") == 1);
+}
