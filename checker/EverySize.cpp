@@ -264,6 +264,7 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
     if (!options.smtOut.empty()) rules::prepareOutputDir(options.smtOutName(), options.smtOut);
     for (const std::string& name : options.properties)
         if (!system.property(name)) throw InputError("system '" + system.name + "' has no property '" + name + "'");
+    rules::requirePatternsNear(model, "a proof for every size (its window around each rule)");
     limitSolverMemory(options.memoryMiB);
     EverySizeReport out;
     out.report.system = system.name;

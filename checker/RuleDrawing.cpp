@@ -93,6 +93,7 @@ rules::SvgPicture drawOrientation(const rules::Model& model, int shape, int orie
 }  // namespace
 
 std::string drawRuleSvg(const rules::Model& model, int rule) {
+    rules::requirePatternsNear(model, "a drawing of a rule");
     std::vector<int> shapes;
     for (int s = 0; s < static_cast<int>(model.shapes().size()); ++s)
         if (model.shapes()[s].rule == rule) shapes.push_back(s);

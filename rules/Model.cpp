@@ -208,4 +208,16 @@ int Model::shapeCount(int rule) const {
     return static_cast<int>(std::count_if(shapes_.begin(), shapes_.end(), [&](const RuleShape& s) { return s.rule == rule; }));
 }
 
+void requirePatternsNear(const Model& model, const std::string& what) {
+    for (const RuleShape& shape : model.shapes())
+        for (Vec o : shape.offsets) {
+            const Vec d = o - shape.offsets.front();
+            if (std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)}) <= kMaxPatternReach) continue;
+            const Rule& rule = *model.rules()[shape.rule].rule;
+            throw InputError(model.system().sourceName + ":" + std::to_string(rule.loc.line) + ":" + std::to_string(rule.loc.col) + ": rule '" + rule.name +
+                             "' has a cell " + std::to_string(std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)})) + " steps from its first, and " + what +
+                             " needs a rule's cells within " + std::to_string(kMaxPatternReach) + " steps of each other; bring them nearer");
+        }
+}
+
 }  // namespace holon::rules

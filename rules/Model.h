@@ -91,4 +91,14 @@ private:
     std::vector<std::pair<int, int>> duplicates_;
 };
 
+/// How far (steps along any axis) a rule's cells may lie from its first cell where a job lays
+/// out the rule itself: a drawing, the every-size window. Exploring a region needs no such bound.
+constexpr int kMaxPatternReach = 64;
+
+/// Throws InputError at the rule (FILE:LINE:COL) whose cells lie farther than kMaxPatternReach
+/// from its first; `what` says which job needs them near ("a drawing of a rule"). A rule reaching
+/// 10^9 cells away was laid out on a box of 10^18 cells: an internal error, or a false "out of
+/// memory" (1,000 away: a 906 MB drawing).
+void requirePatternsNear(const Model& model, const std::string& what);
+
 }  // namespace holon::rules

@@ -11,6 +11,8 @@
 #include "checker/properties/Kinds.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 
 namespace holon::checker::properties {
 
@@ -18,11 +20,14 @@ namespace {
 
 /// How far a rule instance reaches, in lattice steps: the largest pattern, twice its radius (an
 /// instance touching the region lies within this of it).
+/// In 64 bits, then capped: a rule reaching 999,999,999 cells away made 2 * radius wrap negative,
+/// the reach became 1, and stuck states only the far cell could free were called deadlocks
+/// (progress "violated", where it is unknown at 1,000 cells away).
 int ruleReach(const rules::Model& model) {
-    int radius = 0;
+    std::int64_t radius = 0;
     for (const rules::RuleShape& s : model.shapes())
-        for (rules::Vec v : s.offsets) radius = std::max(radius, std::abs(v.x) + std::abs(v.y) + std::abs(v.z));
-    return std::max(1, 2 * radius);
+        for (rules::Vec v : s.offsets) radius = std::max(radius, std::int64_t{std::abs(v.x)} + std::abs(v.y) + std::abs(v.z));
+    return static_cast<int>(std::clamp<std::int64_t>(2 * radius, 1, std::numeric_limits<int>::max()));
 }
 
 /// States with no enabled rule, outside the goal and where `assume` holds, split into deadlocks and
