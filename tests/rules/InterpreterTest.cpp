@@ -176,6 +176,22 @@ TEST_CASE("a copy term moves a module with its fields, blocking cells must be oc
     for (const auto& i : w.in->enabled(c)) CHECK_FALSE(w.at(*w.in->successor(c, i), 1, 0) == "M&charge=2");
 }
 
+namespace {
+
+/// How many instances of rule `name` are enabled in `c`, by the reference interpreter; the
+/// compiled tables must agree.
+long enabledBoth(World& w, const rules::Configuration& c, const std::string& name) {
+    const auto names = w.enabledRules(c);
+    const auto interpreted = std::count(names.begin(), names.end(), name);
+    const rules::Engine engine(*w.model, w.region, c.inputs);
+    long compiled = 0;
+    engine.forEachMatch(c.cells.data(), [&](int p) { compiled += w.model->rules()[engine.instances()[p].rule].name == name; });
+    CHECK(compiled == interpreted);
+    return interpreted;
+}
+
+}  // namespace
+
 TEST_CASE("a <=> rule's right-side inputs are conditions of both directions, whichever way it is written") {
     // Fired forwards, `step` tested only its left side: it moved a module onto a cell outside the
     // target, so `no(A&!target)` failed for this pair and held for the same pair written the other
@@ -183,16 +199,7 @@ TEST_CASE("a <=> rule's right-side inputs are conditions of both directions, whi
     for (const char* rule : {"rule step / back: A&target _ <=> _ A&target\n", "rule back / step: _ A&target <=> A&target _\n"}) {
         CAPTURE(rule);
         World w(test::parse(std::string("system t\nlattice square2d\nsymmetry none\nstates A\ninput target\n") + rule), "square:3x1");
-        const auto count = [&](const rules::Configuration& c, const std::string& name) {
-            const auto names = w.enabledRules(c);
-            const auto interpreted = std::count(names.begin(), names.end(), name);
-            // The compiled tables agree with the reference interpreter.
-            const rules::Engine engine(*w.model, w.region, c.inputs);
-            long compiled = 0;
-            engine.forEachMatch(c.cells.data(), [&](int p) { compiled += w.model->rules()[engine.instances()[p].rule].name == name; });
-            CHECK(compiled == interpreted);
-            return interpreted;
-        };
+        const auto count = [&](const rules::Configuration& c, const std::string& name) { return enabledBoth(w, c, name); };
         auto c = w.ascii("A..");
         w.mark(c, "target", "X..");
         CHECK(count(c, "step") == 0);  // the cell it would move to is not in the target
@@ -211,15 +218,7 @@ TEST_CASE("a <=> rule's right side may say where an input does not hold: '!targe
     // language.md allows `!target` on either side of a `<=>` rule; the parser refused every negated
     // atom there ("does not say what the cell becomes"), though an input is not written (an audit).
     World w(test::parse("system t\nlattice square2d\nsymmetry none\nstates A\ninput target\nrule step / back: A _ <=> _ A&!target\n"), "square:3x1");
-    const auto count = [&](const rules::Configuration& c, const std::string& name) {
-        const auto names = w.enabledRules(c);
-        const auto interpreted = std::count(names.begin(), names.end(), name);
-        const rules::Engine engine(*w.model, w.region, c.inputs);
-        long compiled = 0;
-        engine.forEachMatch(c.cells.data(), [&](int p) { compiled += w.model->rules()[engine.instances()[p].rule].name == name; });
-        CHECK(compiled == interpreted);
-        return interpreted;
-    };
+    const auto count = [&](const rules::Configuration& c, const std::string& name) { return enabledBoth(w, c, name); };
     auto c = w.ascii("A..");
     w.mark(c, "target", ".X.");
     CHECK(count(c, "step") == 0);  // it would move onto the target
