@@ -51,6 +51,7 @@ public:
     explicit Interrupted(int signal) : std::runtime_error("interrupted by " + signalName(signal)), signal_(signal) {}
     int signal() const { return signal_; }
     static std::string signalName(int signal) { return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM"
+                                                                                 : signal == SIGHUP    ? "SIGHUP"
                                                                                                        : "signal " + std::to_string(signal); }
 
 private:

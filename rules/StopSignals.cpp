@@ -66,8 +66,12 @@ StopSignals::StopSignals(bool oneShot) : outerEndOnSecond_(endOnSecond) {
     action.sa_flags = 0;
     sigaction(SIGINT, &action, &oldInt_);
     sigaction(SIGTERM, &action, &oldTerm_);
+    // SIGHUP too (a closed terminal, a dropped ssh session): it ended a long plan at once, its
+    // --out folder left partial with no summary.
+    sigaction(SIGHUP, &action, &oldHup_);
     if (oldInt_.sa_handler == SIG_IGN) sigaction(SIGINT, &oldInt_, nullptr);
     if (oldTerm_.sa_handler == SIG_IGN) sigaction(SIGTERM, &oldTerm_, nullptr);
+    if (oldHup_.sa_handler == SIG_IGN) sigaction(SIGHUP, &oldHup_, nullptr);
 }
 
 StopSignals::~StopSignals() {
@@ -75,6 +79,7 @@ StopSignals::~StopSignals() {
     endOnSecond = outerEndOnSecond_;
     sigaction(SIGINT, &oldInt_, nullptr);
     sigaction(SIGTERM, &oldTerm_, nullptr);
+    sigaction(SIGHUP, &oldHup_, nullptr);
 }
 
 const volatile std::sig_atomic_t* StopSignals::caught() { return &caughtSignal; }

@@ -1,5 +1,5 @@
 #pragma once
-// SIGINT and SIGTERM caught while a long job runs, so it stops at a point where its outputs are
+// SIGINT, SIGTERM and SIGHUP caught while a long job runs, so it stops at a point where its outputs are
 // whole (a plan at a round boundary, verify after killing its solver processes) instead of dying
 // mid-write. One mechanism for every subcommand that needs it.
 
@@ -18,7 +18,7 @@ public:
     StopSignals(const StopSignals&) = delete;
     StopSignals& operator=(const StopSignals&) = delete;
 
-    /// The signal caught since the catcher was installed (SIGINT or SIGTERM), 0 for none; the
+    /// The signal caught since the catcher was installed (SIGINT, SIGTERM or SIGHUP), 0 for none; the
     /// address is what a run polls (planner::RunOptions::interrupt).
     static const volatile std::sig_atomic_t* caught();
 
@@ -28,7 +28,7 @@ public:
 
 private:
     struct sigaction oldInt_ {
-    }, oldTerm_{};
+    }, oldTerm_{}, oldHup_{};
     int outerEndOnSecond_;
 };
 
