@@ -44,10 +44,7 @@ int openSpecial(const std::string& option, const std::string& path) {
         }
         if (errno != ENXIO && errno != EINTR) throw InputError(option + " " + path + ": cannot open: " + reason());
         StopSignals::stopIfCaught();
-        if (jobSecondsLeft() <= 0)
-            throw LimitError("the job's " + parameterName(Parameter::Timeout) + " ran out while holon waited for a reader of " + option + " " + path +
-                                 " (a FIFO nothing reads); start its reader first, or raise the limit",
-                             Parameter::Timeout);
+        checkJobDeadline("holon waited for a reader of " + option + " " + path + " (a FIFO nothing reads); start its reader first, or raise the limit");
         ::usleep(50'000);
     }
 }

@@ -27,11 +27,8 @@ namespace {
 void waitReadable(int fd, const std::string& path) {
     for (;;) {
         StopSignals::stopIfCaught();
+        checkJobDeadline("holon waited for '" + path + "' (a pipe or FIFO that nothing wrote); start its writer first, or raise the limit");
         const double left = jobSecondsLeft();
-        if (left <= 0)
-            throw LimitError("the job's " + parameterName(Parameter::Timeout) + " ran out while holon waited for '" + path +
-                                 "' (a pipe or FIFO that nothing wrote); start its writer first, or raise the limit",
-                             Parameter::Timeout);
         pollfd polled{fd, POLLIN, 0};
         const int slice = static_cast<int>(std::ceil(std::min(left, 0.1) * 1000));
         const int ready = ::poll(&polled, 1, slice);
