@@ -10,6 +10,7 @@
 #include "checker/Property.h"
 #include "rules/Budget.h"
 #include "rules/Error.h"
+#include "rules/Limits.h"
 #include "rules/Parameter.h"
 
 #include <algorithm>
@@ -73,13 +74,22 @@ std::string beyondLimits(const ExploreStats& stats, const Limits& limits, const 
 
 }  // namespace
 
-std::unique_ptr<rules::Engine> checkEngine(const rules::Model& model, const rules::Region& region, const CheckOptions& options) {
+std::unique_ptr<rules::Engine> engineWithin(const rules::Model& model, const rules::Region& region, const std::vector<std::uint32_t>& inputs, Limits& limits) {
+    rules::requireMemory(rules::Engine::bytesFor(model, region), limits.memoryBytes,
+                         "the rule engine on region " + region.spec() + " (" + std::to_string(region.size()) + " cells, " + std::to_string(model.shapes().size()) +
+                             " rule shapes)");
+    auto engine = std::make_unique<rules::Engine>(model, region, inputs);
+    limits.memoryBytes -= std::min(limits.memoryBytes, engine->regionBytes());
+    return engine;
+}
+
+std::unique_ptr<rules::Engine> checkEngine(const rules::Model& model, const rules::Region& region, const CheckOptions& options, Limits& limits) {
     // One engine, one set of inputs: a start under other inputs was explored under the first's.
     for (const rules::Configuration& c : options.initial)
         if (c.inputs != options.initial.front().inputs)
             throw InputError("the initial configurations (" + rules::parameterName(rules::Parameter::Initial) +
                              ") hold different inputs; an exploration runs under one set of inputs: explore them one at a time");
-    return std::make_unique<rules::Engine>(model, region, !options.all && !options.initial.empty() ? options.initial.front().inputs : options.inputs);
+    return engineWithin(model, region, !options.all && !options.initial.empty() ? options.initial.front().inputs : options.inputs, limits);
 }
 
 std::unique_ptr<Explorer> startExplorer(const rules::Engine& engine, const CheckOptions& options, Explorer::Options xo) {
@@ -115,7 +125,8 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
     };
     std::erase_if(types, [&](const auto& t) { return !selected(t->name()); });
 
-    auto engine = checkEngine(model, region, options);
+    Limits limits = options.limits;
+    auto engine = checkEngine(model, region, options, limits);
     const rules::Engine& e = *engine;
 
     // Properties of single states (invariants) are checked on every state as it is stored.
@@ -123,7 +134,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
     for (const auto& t : types)
         if (t->watchesStates()) watchers.push_back(t.get());
     Explorer::Options xo;
-    xo.limits = options.limits;
+    xo.limits = limits;
     xo.budget = budget;
     xo.recordEdges = true;
     xo.onProgress = options.onProgress;
@@ -142,7 +153,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
     report.bytesPerState = ex->bytesPerState();
     const bool complete = report.stats.stopped == StopReason::Finished;
     Components comps;
-    const bool componentsFit = complete && beyondLimits(report.stats, options.limits, budget, kComponentsCost).empty();  // only a whole graph's count is shown
+    const bool componentsFit = complete && beyondLimits(report.stats, limits, budget, kComponentsCost).empty();  // only a whole graph's count is shown
     if (componentsFit) comps = components(*ex);
     report.components = componentsFit ? comps.count : -1;
 
@@ -154,7 +165,7 @@ CheckReport check(const rules::Model& model, const rules::Region& region, const 
     for (const auto& t : types) {
         const auto t0 = Clock::now();
         const std::optional<PhaseCost> cost = t->cost(complete);
-        const std::string why = cost ? beyondLimits(report.stats, options.limits, budget, *cost) : "";
+        const std::string why = cost ? beyondLimits(report.stats, limits, budget, *cost) : "";
         PropertyResult r = why.empty() ? t->check(graph) : t->named();
         if (!why.empty()) r.summary = why;
         if (r.trace) r.trace->property = t->name();

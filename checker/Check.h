@@ -44,9 +44,14 @@ struct Exploration {
     std::unique_ptr<Explorer> explorer;
 };
 
-/// The set-up of a check, shared with diff (checker/Diff.h): the engine on the region, with the
-/// inputs of the first initial configuration (options.inputs with `all` or no initial one).
-std::unique_ptr<rules::Engine> checkEngine(const rules::Model& model, const rules::Region& region, const CheckOptions& options);
+/// The engine of an exploration on `region`, within the memory bound: refused before it is built
+/// (LimitError, exit 3) when its estimate (rules::Engine::bytesFor) is over limits.memoryBytes;
+/// the bytes it holds are taken off limits.memoryBytes, which is then what the exploration has.
+std::unique_ptr<rules::Engine> engineWithin(const rules::Model& model, const rules::Region& region, const std::vector<std::uint32_t>& inputs, Limits& limits);
+/// The set-up of a check, shared with diff (checker/Diff.h): the engine on the region (engineWithin
+/// `limits`), with the inputs of the first initial configuration (options.inputs with `all` or no
+/// initial one).
+std::unique_ptr<rules::Engine> checkEngine(const rules::Model& model, const rules::Region& region, const CheckOptions& options, Limits& limits);
 /// An explorer of `engine` with `xo`, given the starts `options` says: every legal configuration,
 /// or the initial configurations, each legal (else InputError).
 std::unique_ptr<Explorer> startExplorer(const rules::Engine& engine, const CheckOptions& options, Explorer::Options xo);

@@ -186,11 +186,11 @@ DiffReport diff(const rules::Model& a, const rules::Model& b, const rules::Regio
         co.limits = options.limits;
         co.limits.memoryBytes /= 2;
         co.all = options.all, co.initial = options.initial[side], co.inputs = options.inputs[side];
+        Exploration& x = report.explored[side];
+        x.engine = checkEngine(*models[side], region, co, co.limits);
         Explorer::Options xo;
         xo.limits = co.limits;
         xo.budget = budget;
-        Exploration& x = report.explored[side];
-        x.engine = checkEngine(*models[side], region, co);
         x.explorer = startExplorer(*x.engine, co, xo);
         x.explorer->explore();
         report.systems[side] = models[side]->system().name;

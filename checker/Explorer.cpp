@@ -392,6 +392,11 @@ Explorer::Worker::Worker(const WordConstraints& constraints, int words, bool onW
     for (Successors& s : ring) s.packed.resize((onWords ? room : 1) * words), s.keys.resize(room), s.probe.resize(room), s.via.resize(room);
 }
 
+std::uint64_t Explorer::Worker::bufferBytes(std::uint64_t instances, int words, bool onWords) {
+    const std::uint64_t packed = (onWords ? instances : 1) * static_cast<std::uint64_t>(words) * 8;
+    return 3 * (packed + instances * (8 + 8 + 4));  // the ring: packed words, keys, probes, via
+}
+
 bool Explorer::claimRoom(Worker& worker, std::uint64_t n, bool mayRefuse) {
     // From the worker's own share first; the round's room is taken a block at a time, so the
     // threads seldom meet on its cache line.
@@ -546,8 +551,12 @@ const ExploreStats& Explorer::explore() {
     // round that needs more puts its remaining states back and runs again after growing.
     const std::uint64_t chunk = std::max<std::uint64_t>(64, std::min<std::uint64_t>(1u << 14, (1u << 20) / branching));
     constexpr std::uint64_t kRoundBytes = 32ull << 20;
+    // The workers' buffers hold one state's successors, a slot per instance of the region: on a
+    // huge region they alone can be over the memory bound, and then nothing is explored.
+    const std::uint64_t workerBytes = rules::checkedProduct({std::uint64_t(threads), Worker::bufferBytes(branching, store_.layout().words(), words_ != nullptr)});
+    const bool workersFit = workerBytes < options_.limits.memoryBytes;
     std::vector<Worker> workers;
-    for (int t = 0; t < threads; ++t) workers.emplace_back(constraints_, store_.layout().words(), words_ != nullptr);
+    for (int t = 0; t < threads && workersFit; ++t) workers.emplace_back(constraints_, store_.layout().words(), words_ != nullptr);
     rules::WorkerPool pool(threads);
     // A level's states are kept by the worker that found them, and each worker expands a slice of
     // its own list first (their words were written from its core, so they are in its cache),
@@ -574,6 +583,8 @@ const ExploreStats& Explorer::explore() {
     };
     if (halted() != StopReason::Finished)  // --all stopped while listing the legal configurations
         stats_.stopped = halted(), stats_.enumerating = true, stats_.frontier = enumerated_;
+    else if (!workersFit)
+        halt(StopReason::Memory), stats_.stopped = StopReason::Memory, stats_.frontier = sizeOf(level);
     while (sizeOf(level) > 0 && stats_.stopped == StopReason::Finished) {
         const std::size_t chunks = (sizeOf(level) + chunk - 1) / chunk;
         for (std::size_t c = 0; c < chunks; ++c) {

@@ -132,6 +132,8 @@ private:
     /// instance where they are needed instead of being kept for every successor.
     struct Worker {
         Worker(const WordConstraints& constraints, int words, bool onWords);
+        /// The bytes of the successor buffers the constructor sizes for `instances` instances.
+        static std::uint64_t bufferBytes(std::uint64_t instances, int words, bool onWords);
         Evaluator ev;
         Successors ring[3];  // expandRange's pipeline
         StateStore::IdBlock ids;

@@ -5,6 +5,7 @@
 // search's backward side ran dry first, every configuration from which B is reachable).
 // --parallel groups the path's steps into rounds that fire together (checker/PathSchedule.h).
 
+#include "checker/Check.h"
 #include "checker/Draw.h"
 #include "checker/Path.h"
 #include "checker/PathSchedule.h"
@@ -78,7 +79,8 @@ int run(const PathArgs& a) {
             std::cerr << "\r  searching: " << s.states << " states, depth " << s.depth << ", " << std::fixed << std::setprecision(1) << s.seconds << " s   "
                       << std::flush;
         };
-    const rules::Engine engine(model, region, query.from.inputs);
+    const auto engineHeld = checker::engineWithin(model, region, query.from.inputs, query.limits);
+    const rules::Engine& engine = *engineHeld;
     const checker::PathResult result = checker::shortestPath(engine, query);
     if (terminal) std::cerr << "\r" << std::string(70, ' ') << "\r";
     if (a.threadsOption && a.threadsOption->count() && result.search != checker::PathSearch::Forward)

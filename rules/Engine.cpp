@@ -13,6 +13,7 @@
 #include "rules/Components.h"
 
 #include "rules/Error.h"
+#include "rules/Limits.h"
 #include "rules/Printer.h"
 
 #include <algorithm>
@@ -71,6 +72,11 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     combo_.resize(region.size());
     for (int i = 0; i < region.size(); ++i) combo_[i] = tables_.comboIndex(inputs_[i]);
     byCell_.resize(region.size());
+    // Room for every shape at every cell, so that the pools never double (bytesFor counts this).
+    std::size_t poolCells = 0;
+    for (const RuleShape& shape : model.shapes()) poolCells += shape.offsets.size();
+    placed_.reserve(model.shapes().size() * region.cells().size());
+    cellPool_.reserve(poolCells * region.cells().size());
     for (int s = 0; s < static_cast<int>(model.shapes().size()); ++s) {
         const RuleShape& shape = model.shapes()[s];
         for (Vec cell : region.cells()) {
@@ -116,6 +122,22 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
         if (fresh) predicateMasks_.push_back(tables_.compilePredicate(*p, nullptr, {}));
         predicateIndex_.emplace(p, it->second);
     }
+}
+
+std::uint64_t Engine::bytesFor(const Model& model, const Region& region) {
+    // Per cell and shape: the instance, its slot in placedIndex_, its cells in the pool (reserved)
+    // and in the lists of the cells it covers (8 bytes a cell: a list doubles as it grows). Per cell: its list
+    // (with the allocator's header), its input combination and inputs.
+    std::uint64_t perCell = sizeof(std::vector<std::int32_t>) + 16 + sizeof(int) + sizeof(std::uint32_t);
+    for (const RuleShape& shape : model.shapes()) perCell += sizeof(Placed) + sizeof(std::int32_t) + 12 * shape.offsets.size();
+    return checkedProduct({perCell, static_cast<std::uint64_t>(region.size())});
+}
+
+std::uint64_t Engine::regionBytes() const {
+    std::uint64_t bytes = placed_.capacity() * sizeof(Placed) + (cellPool_.capacity() + placedIndex_.capacity()) * sizeof(std::int32_t) +
+                          combo_.capacity() * sizeof(int) + inputs_.capacity() * sizeof(std::uint32_t);
+    for (const auto& list : byCell_) bytes += sizeof(list) + 16 + list.capacity() * sizeof(std::int32_t);
+    return bytes;
 }
 
 bool Engine::matches(const CellValue* cells, int placed) const {

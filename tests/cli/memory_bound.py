@@ -1,0 +1,42 @@
+#!/usr/bin/env python3
+"""check, path and diff stay within --memory on a large region: the rule engine on the region
+(about 1.5 KB a cell for planner_intermediate) and the workers' buffers (a slot per rule instance)
+count against it.
+
+Usage: memory_bound.py HOLON WORKDIR LIBRARY
+
+Before, neither was counted: check on square:400x400 with --memory 300 peaked at 603 MB, and with
+--memory 16 the same; on the largest region check takes (4,194,304 cells) that is about 15 GB.
+"""
+import os, subprocess, sys
+
+holon, work, lib = sys.argv[1:4]
+os.makedirs(work, exist_ok=True)
+start = os.path.join(work, "start.txt")
+with open(start, "w") as f:
+    f.write("FF\nFF\n")
+rules = os.path.join(lib, "planner_intermediate.holon")
+common = ["--from", start, "--input", "target=all"]
+failures = []
+
+
+def run(name, args, code, most_mib, expect):
+    p = subprocess.Popen([holon] + args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    out = p.stdout.read()
+    _, status, usage = os.wait4(p.pid, 0)
+    rc = os.waitstatus_to_exitcode(status)
+    peak = usage.ru_maxrss >> 10  # MiB
+    ok = rc == code and peak <= most_mib and expect in out
+    print(f"{name}: exit {rc}, peak {peak} MiB (at most {most_mib})" + ("" if ok else f"  FAILED\n{out[-2000:]}"))
+    if not ok:
+        failures.append(name)
+
+
+# The engine alone is over the bound: refused before it is built, naming the region.
+run("check square:200x200 --memory 16", ["check", rules, "--region", "square:200x200", "--memory", "16"] + common, 3, 40,
+    "the rule engine on region square:200x200")
+# The engine fits, the workers' buffers do not: a memory stop before the first expansion.
+run("check square:400x400 --memory 300", ["check", rules, "--region", "square:400x400", "--memory", "300"] + common, 3, 330, "stopped by memory")
+run("path square:400x400 --memory 300", ["path", rules, "--region", "square:400x400", "--memory", "300", "--goal"] + common, 3, 330, "stopped by memory")
+run("diff square:300x300 --memory 300", ["diff", rules, rules, "--region", "square:300x300", "--memory", "300"] + common, 3, 330, "stopped by memory")
+sys.exit(1 if failures else 0)
