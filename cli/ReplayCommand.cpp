@@ -10,6 +10,7 @@
 
 #include "cli/Commands.h"
 #include "cli/Inputs.h"
+#include "cli/Limits.h"
 
 #include "planner/Replay.h"
 #include "rules/ConfigIo.h"
@@ -17,6 +18,7 @@
 #include "rules/Library.h"
 #include "rules/OutputFile.h"
 #include "rules/PlanLines.h"
+#include "rules/StopSignals.h"
 
 #include <filesystem>
 #include <fstream>
@@ -29,6 +31,7 @@ namespace {
 
 struct Args {
     std::string rules, plan;
+    double timeout = 0;  // 0: none
 };
 
 int run(const Args& a) {
@@ -74,7 +77,17 @@ int run(const Args& a) {
 
     std::int64_t steps = 0, losses = 0;
     rules::PlanLine step;
+    // A signal or --timeout stops the replay between two lines: the steps so far are reported as
+    // judged, and the exit is 128 + the signal or 3 (a plan of 10^8 steps takes minutes).
+    const rules::StopSignals guard(true);
+    const Budget budget = Budget(a.timeout) || Budget::onSignals();
     while (plan.next(step)) {
+        if ((steps + losses) % 4096 == 0)
+            if (const std::optional<StopReason> why = budget.reached()) {
+                std::cout << "replay " << a.plan << ": stopped " << (*why == StopReason::Timeout ? "by --timeout" : "by a signal") << " at line " << plan.lineNumber()
+                          << ", after " << steps << " steps, every one legal under " << system->name << "; the rest is not judged" << raiseAdvice(*why) << '\n';
+                return *why == StopReason::Timeout ? kExitUndecided : 128 + caughtSignal();
+            }
         for (std::size_t k = 0; k < step.cells.size(); ++k)
             if (!region.contains(step.cells[k]))
                 throw InputError(plan.where() + ": cell " + step.json["cells"][k].dump() + " lies outside the plan's region " + region.spec());
@@ -98,17 +111,17 @@ int run(const Args& a) {
             bool fits = true;
             for (std::size_t k = 0; k < cells.size(); ++k) fits &= shape.offsets[k] + instance.anchor == cells[k];
             if (!fits) continue;
-            rules::Configuration after;
-            if (const planner::StepFault f = planner::replayStep(in, now, instance, after); f != planner::StepFault::None) {
+            planner::StepUndo undo;
+            if (const planner::StepFault f = planner::replayStep(in, now, instance, &undo); f != planner::StepFault::None) {
                 why = planner::describe(f);
                 continue;
             }
             legal = true;
             for (std::size_t k = 0; k < cells.size() && legal; ++k)
-                if (const nlohmann::json is = rules::stateFields(model, after.cells[region.indexOf(cells[k])]); is != step.json["after"][k])
+                if (const nlohmann::json is = rules::stateFields(model, now.cells[region.indexOf(cells[k])]); is != step.json["after"][k])
                     why = "the after-states differ: cell " + step.json["cells"][k].dump() + " becomes " + is.dump() + ", the plan says " + step.json["after"][k].dump(),
                     legal = false;
-            if (legal) now = std::move(after);
+            if (!legal) planner::undoStep(now, undo);
         }
         if (!legal) {
             std::cout << "replay " << a.plan << ": ILLEGAL step at line " << plan.lineNumber() << " (round " << step.round << ", rule " << rule << ", cells " << named
@@ -130,6 +143,7 @@ Run addReplayCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("replay", "check a plan (holon plan --plan-out) step by step with the reference interpreter");
     addRulesFile(sub, "rules", a->rules, "the plan's rules, as plan --rules")->required();
     sub->add_option("plan", a->plan, "the plan, JSON Lines from holon plan --plan-out")->required();
+    addTimeout(sub, a->timeout, "the steps judged so far are reported");
     return [a] { return run(*a); };
 }
 

@@ -6,11 +6,26 @@
 
 namespace holon::planner {
 
-StepFault replayStep(const rules::Interpreter& in, const rules::Configuration& before, const rules::Instance& instance, rules::Configuration& after) {
-    if (!in.matches(before, instance)) return StepFault::NotEnabled;
-    after = in.apply(before, instance);
-    if (!in.model().system().constraints.empty() && in.legal(before) && !in.legal(after)) return StepFault::ConstraintBroken;
+StepFault replayStep(const rules::Interpreter& in, rules::Configuration& now, const rules::Instance& instance, StepUndo* undo) {
+    if (!in.matches(now, instance)) return StepFault::NotEnabled;
+    StepUndo saved;
+    const rules::Region& region = in.region();
+    for (rules::Vec o : in.model().shapes()[instance.shape].offsets) {
+        const int cell = region.indexOf(instance.anchor + o);
+        saved.push_back({cell, now.cells[cell]});
+    }
+    const bool keepLegal = !in.model().system().constraints.empty() && in.legal(now);
+    in.applyInPlace(now, instance);
+    if (keepLegal && !in.legal(now)) {
+        undoStep(now, saved);
+        return StepFault::ConstraintBroken;
+    }
+    if (undo) *undo = std::move(saved);
     return StepFault::None;
+}
+
+void undoStep(rules::Configuration& now, const StepUndo& undo) {
+    for (const auto& [cell, value] : undo) now.cells[cell] = value;
 }
 
 const char* describe(StepFault fault) {

@@ -7,14 +7,24 @@
 
 #include "rules/Interpreter.h"
 
+#include <utility>
+#include <vector>
+
 namespace holon::planner {
 
 enum class StepFault { None,
                        NotEnabled,
                        ConstraintBroken };
 
-/// Replays `instance` on `before`; on StepFault::None, `after` holds the interpreter's rewrite.
-StepFault replayStep(const rules::Interpreter& in, const rules::Configuration& before, const rules::Instance& instance, rules::Configuration& after);
+/// The pattern cells' states before a step: what undoStep puts back.
+using StepUndo = std::vector<std::pair<int, rules::CellValue>>;
+
+/// Replays `instance` on `now`, in place: on StepFault::None `now` holds the interpreter's rewrite
+/// (and `undo`, if given, the pattern cells' old states); on a fault `now` is unchanged. In place,
+/// so that a plan of n steps on m cells costs n patterns, not n copies of m cells.
+StepFault replayStep(const rules::Interpreter& in, rules::Configuration& now, const rules::Instance& instance, StepUndo* undo = nullptr);
+/// Puts back the states a step overwrote.
+void undoStep(rules::Configuration& now, const StepUndo& undo);
 
 /// Why a step is illegal, in words ("" for None).
 const char* describe(StepFault fault);

@@ -97,22 +97,28 @@ Blocked Interpreter::blocked(const Configuration& c, const Instance& instance) c
 }
 
 Configuration Interpreter::apply(const Configuration& c, const Instance& instance) const {
+    Configuration next = c;
+    applyInPlace(next, instance);
+    return next;
+}
+
+void Interpreter::applyInPlace(Configuration& c, const Instance& instance) const {
     const RuleShape& shape = model_->shapes()[instance.shape];
     const DirectedRule& rule = model_->rules()[shape.rule];
     Placement at;
     for (Vec o : shape.offsets) at.positions.push_back(instance.anchor + o);
-    Configuration next = c;
+    CellValue next[kMaxRuleCells];
     for (std::size_t i = 0; i < at.positions.size(); ++i) {
         const int cell = region_->indexOf(at.positions[i]);
         if (const int k = rule.rhs()[i].copyFrom; k >= 0) {
-            next.cells[cell] = c.cells[region_->indexOf(at.positions[k])];
+            next[i] = c.cells[region_->indexOf(at.positions[k])];
             continue;
         }
         const int value = rewriteTerm(rule.rhs()[i], c.cells[cell], context(at.positions[i], c, &at));
         // validate() proved every right side complete on every state its left side admits.
-        next.cells[cell] = static_cast<CellValue>(value < 0 ? c.cells[cell] : value);
+        next[i] = static_cast<CellValue>(value < 0 ? c.cells[cell] : value);
     }
-    return next;
+    for (std::size_t i = 0; i < at.positions.size(); ++i) c.cells[region_->indexOf(at.positions[i])] = next[i];
 }
 
 std::optional<Configuration> Interpreter::successor(const Configuration& c, const Instance& instance) const {

@@ -52,6 +52,9 @@ public:
     bool matches(const Configuration& c, const Instance& instance) const;
     /// The configuration after firing; requires matches(c, instance).
     Configuration apply(const Configuration& c, const Instance& instance) const;
+    /// apply() in place: every new state is computed from the old ones before any is written, so
+    /// the result is the same; a step costs its pattern, not a copy of the configuration.
+    void applyInPlace(Configuration& c, const Instance& instance) const;
     /// What keeps an instance (every cell in the region) from matching; Blocked::enabled() when it matches.
     Blocked blocked(const Configuration& c, const Instance& instance) const;
     /// matches, and the result satisfies every non-local constraint: the successor, or nothing.

@@ -96,12 +96,11 @@ private:
                                                   : a.instance;
         const rules::Interpreter& in = interpreter(m, model);
         const std::string name = model.rules()[model.shapes()[instance.shape].rule].name;
-        rules::Configuration next;
-        if (const planner::StepFault f = planner::replayStep(in, config, instance, next); f != planner::StepFault::None) {
+        if (const planner::StepFault f = planner::replayStep(in, config, instance); f != planner::StepFault::None) {
             fault_ = system + ": rule " + name + " fired, but " + planner::describe(f);
             return;
         }
-        m.state = std::move(next.cells);
+        m.state = std::move(config.cells);
         m.synced = true;
         ++replayed_;
     }
