@@ -38,6 +38,8 @@ struct ExportArgs {
 // .binvox alone holds the modules and their cells (60 bytes) and a bit per voxel of the cube: the
 // same box peaked at 494 MB, 62 bytes a module.
 constexpr std::uint64_t kBytesPerModule = 160, kBytesPerVoxelModule = 64;
+// A configuration's text while it is parsed, per byte: the text and its JSON tree (measured 14).
+constexpr std::uint64_t kBytesPerConfigByte = 16;
 
 /// Refuses an export whose modules would not fit --memory, before the world is built.
 void requireExportMemory(std::uint64_t modules, const ExportArgs& a) {
@@ -91,7 +93,13 @@ Exported fromConfiguration(const ExportArgs& a) {
                          "; give --rules (the system it is a configuration of) and --region (the region it lies on), as holon check --from takes them");
     const auto system = loadRules(rulesName, a.noWarnings);
     if (!system) throw InputError("--rules " + rulesName + ": the rule file has errors (above)");
-    const rules::Region region = rules::Region::parse(regionSpec, 1u << 22);
+    // Before the region is built and the text parsed: a JSON configuration's parsed form took
+    // 14 bytes per byte of its text (a 45 MB file peaked at 651 MB under --memory 16).
+    const rules::Region region = rules::Region::parse(regionSpec, 1u << 22, [&](std::uint64_t cells) {
+        rules::requireMemory(rules::checkedProduct({file.text.size(), kBytesPerConfigByte}) + rules::checkedProduct({cells, rules::Region::kBytesPerCell}), a.memoryMiB << 20,
+                             "reading --config " + a.config + " (" + std::to_string(file.text.size()) + " bytes, on region " + regionSpec + " of " +
+                                 std::to_string(cells) + " cells)");
+    });
     const rules::Model model(*system, region.lattice());
     const rules::Interpreter in(model, region);
     const rules::Configuration c = rules::configFromText(in, file);
@@ -180,7 +188,7 @@ Run addExportCommand(CLI::App& app) {
     sub->add_option("--robot", a->robot, "the VisibleSim module type: slidingCubes (default on square2d and cubic3d), blinkyBlocks, or hexanodes (hex2d)");
     sub->add_option("--margin", a->margin, "with --visiblesim: empty cells around the modules in the world's grid, room to move (default 0: the grid just holds them)")->check(CLI::Range(0, 1000));
     sub->add_option("--binvox", a->binvox, "write the 3D cells as a .binvox voxel file (holon plan --from reads it back)");
-    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB for the shapes (default 16384)")->check(memoryValidator());
+    sub->add_option("--memory", a->memoryMiB, "memory bound in MiB for the shapes or the configuration (default 16384)")->check(memoryValidator());
     sub->add_option("-W", a->noWarnings, "silence a warning of the rule file: -W no-NAME");
     return [a] { return withinMemory(a->memoryMiB, [&] { return run(*a); }); };
 }

@@ -121,7 +121,7 @@ std::optional<Region> Region::grown(int margin, std::size_t maxCells) const {
     return Region(*lattice_, spec_ + "+" + std::to_string(margin), std::move(cells));
 }
 
-Region Region::parse(std::string_view spec, std::size_t maxCells) {
+Region Region::parse(std::string_view spec, std::size_t maxCells, const std::function<void(std::uint64_t cells)>& admit) {
     const auto colon = spec.find(':');
     const std::string_view kind = spec.substr(0, colon);
     const std::string_view rest = colon == std::string_view::npos ? std::string_view{} : spec.substr(colon + 1);
@@ -129,6 +129,7 @@ Region Region::parse(std::string_view spec, std::size_t maxCells) {
         if (cells > maxCells)
             throw InputError("region '" + std::string(spec) + "' has " + countText(cells) +
                              " cells, more than the limit of " + std::to_string(maxCells) + "; choose a smaller region");
+        if (admit) admit(cells);
     };
     if (colon == std::string_view::npos || rest.empty())
         throw InputError("bad region '" + std::string(spec) + "': write square:WxH, cubic:WxHxD or hex:rR");

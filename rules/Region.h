@@ -4,6 +4,7 @@
 #include "rules/Lattice.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -13,8 +14,12 @@ namespace holon::rules {
 
 class Region {
 public:
-    /// Parses "square:WxH", "cubic:WxHxD" or "hex:rR"; throws InputError naming the fix.
-    static Region parse(std::string_view spec, std::size_t maxCells = 1u << 26);
+    /// Parses "square:WxH", "cubic:WxHxD" or "hex:rR"; throws InputError naming the fix. `admit`,
+    /// if given, is called with the number of cells before the region is built (a memory check).
+    static Region parse(std::string_view spec, std::size_t maxCells = 1u << 26, const std::function<void(std::uint64_t cells)>& admit = {});
+    /// What a region holds per cell, at most: its cell, its place in the box index and its
+    /// neighbours (a few bytes more on a hexagon, whose box index covers its bounding box).
+    static constexpr std::uint64_t kBytesPerCell = 64;
     static Region box(const Lattice& lattice, Vec size);
     static Region hexagon(int radius);
     /// Any finite set of lattice points (distinct, at least one), named `spec` in messages: the

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """check, path and diff stay within --memory on a large region: the rule engine on the region
 (about 1.5 KB a cell for planner_intermediate) and the workers' buffers (a slot per rule instance)
-count against it.
+count against it. export --config checks its estimate before it parses the configuration.
 
 Usage: memory_bound.py HOLON WORKDIR LIBRARY
 
@@ -39,4 +39,17 @@ run("check square:200x200 --memory 16", ["check", rules, "--region", "square:200
 run("check square:400x400 --memory 300", ["check", rules, "--region", "square:400x400", "--memory", "300"] + common, 3, 330, "stopped by memory")
 run("path square:400x400 --memory 300", ["path", rules, "--region", "square:400x400", "--memory", "300", "--goal"] + common, 3, 330, "stopped by memory")
 run("diff square:300x300 --memory 300", ["diff", rules, rules, "--region", "square:300x300", "--memory", "300"] + common, 3, 330, "stopped by memory")
+# export --config: the memory check came after the JSON was parsed (three times, whole, for the
+# names in it): a 45 MB configuration peaked at 651 MB under --memory 16.
+big = os.path.join(work, "big.json")
+# Written by a child: a forked child's peak counts its parent's pages before exec, and the text
+# built here would be counted against holon.
+subprocess.run([sys.executable, "-c", """import sys
+cells = [[x, y] for x in range(500) for y in range(500)]
+with open(sys.argv[1], "w") as f:
+    f.write('{"system":"planner_intermediate","region":"square:500x500","inputs":{"target":' + str(cells).replace(" ", "") + '},"cells":[' +
+            ",".join('{"at":[%d,%d],"label":"F"}' % (x, y) for x, y in cells) + "]}")
+""", big], check=True)
+run("export --config (11 MB) --memory 16", ["export", "--config", big, "--memory", "16", "--visiblesim", os.path.join(work, "big.xml")], 3, 50,
+    "reading --config " + big)
 sys.exit(1 if failures else 0)
