@@ -79,13 +79,23 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         }
         report.obligations.push_back(std::move(o));
     };
+    // withinLimits with the files this obligation wrote before a limit cut it short.
+    auto limited = [&](const std::string& name, const std::string& kind, const std::function<Obligation()>& prove) {
+        const std::size_t before = run.written().size();
+        Obligation o = withinLimits(name, kind, prove);
+        if (o.smtFile.empty())
+            for (std::size_t k = before; k < run.written().size(); ++k)
+                if (std::find(run.written().begin() + before, run.written().begin() + k, run.written()[k]) == run.written().begin() + k)  // bmc rewrites its file
+                    o.smtFile += (o.smtFile.empty() ? "" : " ") + run.written()[k];
+        return o;
+    };
     std::vector<std::unique_ptr<PropertyType>> types;
     for (const rules::Property& p : system.properties) types.push_back(propertyType(p));
     for (const auto& type : types) {
         if (!selected(type->name())) continue;
         announce(type->name());
         const Budget budget = options.obligationBudget();
-        add(withinLimits(type->name(), type->kind(), [&] { return type->prove({run, budget, invariants}); }), *type, Evidence::Obligation);
+        add(limited(type->name(), type->kind(), [&] { return type->prove({run, budget, invariants}); }), *type, Evidence::Obligation);
     }
 
     // What --depth and --reach show unreachable: a state breaking an invariant, or (progress) a
@@ -151,7 +161,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             if (!t.atDepth) continue;
             const std::string name = t.property->name + "@bmc" + std::to_string(options.depth);
             announce(name);
-            add(withinLimits(name, "bmc", [&] { return bmc(t, options.depth, name); }), *t.type, Evidence::Path);
+            add(limited(name, "bmc", [&] { return bmc(t, options.depth, name); }), *t.type, Evidence::Path);
         }
 
     // Every reachable state, without a depth bound: Horn clauses for Spacer (Reach.cpp). A

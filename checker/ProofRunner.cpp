@@ -210,6 +210,7 @@ void ProofRunner::write(const std::string& name, const smt::Solver& solver, Obli
     file.write("; holon proof obligation: system " + model_.system().name + ", region " + region_.spec() + ", property " + name +
                "\n; expected: unsat (the property holds for every configuration of the region)\n(set-logic ALL)\n" + solver.toSmt2());
     o.smtFile = file.path();
+    written_.push_back(file.path());
 }
 
 int ProofRunner::placedFrom(const smt::Model& m, const smt::Term& selector) const { return m.intValue(selector); }

@@ -59,6 +59,9 @@ public:
     rules::OutputFile smtPath(const std::string& name) const;
 
     void write(const std::string& name, const smt::Solver& solver, Obligation& o, const Budget& budget);
+    /// Every file write() wrote, in order: an obligation a limit cut short after its file was
+    /// written still names it (withinLimits returns a fresh obligation).
+    const std::vector<std::string>& written() const { return written_; }
 
     int placedFrom(const smt::Model& m, const smt::Term& selector) const;
 
@@ -67,6 +70,7 @@ private:
     const rules::Region& region_;
     const VerifyOptions& options_;
     rules::Engine engine_;
+    std::vector<std::string> written_;
 };
 
 /// An obligation holon does not encode: verdict unknown, with the reason.
