@@ -65,6 +65,8 @@ std::vector<std::uint32_t> inputsOf(const smt::Model& m, const SmtEncoding& enc)
 class Prover {
 public:
     Prover(const rules::Model& model, const EverySizeOptions& options) : model_(model), options_(options) {}
+    /// The --smt-out files that could not be written (VerifyReport::writeErrors).
+    const std::vector<std::string>& writeErrors() const { return writeErrors_; }
 
     /// The window of `margin`, made once per margin.
     const Window& window(int margin) {
@@ -103,11 +105,12 @@ public:
             for (const smt::Term& f : enc.facts()) copy.add(f);
             for (std::size_t k = 0; k < act.size(); ++k) copy.add(smt::implies(act[k], body[k]));
             copy.add(smt::anyOf(ctx, act));
-            file.write("; holon proof obligation for every region: system " + model_.system().name + ", lattice " + model_.lattice().name() +
-                       ", property " + ob.name + "\n; window: every rule shape with its first cell at the origin, and every point within " +
-                       std::to_string(ob.margin) + " steps of its pattern, free (" + std::to_string(w.region().size()) +
-                       " cells; proofs/README.md)\n; expected: unsat (the property holds on every region of the lattice)\n(set-logic ALL)\n" + copy.toSmt2());
-            o.smtFile = file.path();
+            writeSmtFile(file,
+                         "; holon proof obligation for every region: system " + model_.system().name + ", lattice " + model_.lattice().name() + ", property " + ob.name +
+                             "\n; window: every rule shape with its first cell at the origin, and every point within " + std::to_string(ob.margin) +
+                             " steps of its pattern, free (" + std::to_string(w.region().size()) +
+                             " cells; proofs/README.md)\n; expected: unsat (the property holds on every region of the lattice)\n(set-logic ALL)\n" + copy.toSmt2(),
+                         o, writeErrors_);
         }
         o.result.verdict = Verdict::Holds;
         o.result.summary = ob.proved + " (window of radius " + std::to_string(ob.margin) + ", " + std::to_string(w.region().size()) + " cells)";
@@ -215,6 +218,7 @@ private:
     const rules::Model& model_;
     const EverySizeOptions& options_;
     std::map<int, std::unique_ptr<Window>> windows_;
+    std::vector<std::string> writeErrors_;
 };
 
 /// Conservation of mass or of the module count: the amount on the pattern (the frame keeps the rest).
@@ -385,6 +389,7 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
         if (o.result.verdict == Verdict::Unknown) out.notLocal.push_back(p->name);
         add(o, drawing);
     }
+    out.report.writeErrors = prover.writeErrors();
     return out;
 }
 

@@ -27,6 +27,15 @@
 
 namespace holon::checker {
 
+void writeSmtFile(const rules::OutputFile& file, const std::string& text, Obligation& o, std::vector<std::string>& errors) {
+    try {
+        file.write(text);
+        o.smtFile += (o.smtFile.empty() ? "" : " ") + file.path();
+    } catch (const InputError& e) {
+        errors.push_back(e.what());
+    }
+}
+
 bool VerifyReport::counterexample() const {
     for (const Obligation& o : obligations)
         if (o.result.verdict == Verdict::Violated) return true;
@@ -235,6 +244,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             });
             add(std::move(o), *t.type, Evidence::Path);
         }
+    report.writeErrors = run.writeErrors();
     return report;
 }
 

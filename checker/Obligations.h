@@ -6,6 +6,7 @@
 #include "rules/Budget.h"
 #include "rules/Engine.h"
 #include "rules/Interpreter.h"
+#include "rules/OutputFile.h"
 
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -43,9 +44,16 @@ struct Obligation {
     std::string scope;
 };
 
+/// Writes one --smt-out file for obligation `o` (its smtFile names it once written). A write that
+/// fails is kept in `errors` instead of ending the job: the report is worth more than the file.
+void writeSmtFile(const rules::OutputFile& file, const std::string& text, Obligation& o, std::vector<std::string>& errors);
+
 struct VerifyReport {
     std::string system, region;
     std::vector<Obligation> obligations;
+    /// --smt-out files that could not be written (a full disk): the proofs went on without them,
+    /// and the caller reports these after the table (exit 2), as for every output.
+    std::vector<std::string> writeErrors;
     bool counterexample() const;
     /// Every obligation's verdict combined: a counterexample wins, then unknown.
     Verdict overall() const;

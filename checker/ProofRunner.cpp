@@ -207,10 +207,12 @@ rules::OutputFile ProofRunner::smtPath(const std::string& name) const {
 void ProofRunner::write(const std::string& name, const smt::Solver& solver, Obligation& o, const Budget& budget) {
     budget.check("writing the SMT-LIB2 file");
     const rules::OutputFile file = smtPath(name);
-    file.write("; holon proof obligation: system " + model_.system().name + ", region " + region_.spec() + ", property " + name +
-               "\n; expected: unsat (the property holds for every configuration of the region)\n(set-logic ALL)\n" + solver.toSmt2());
-    o.smtFile = file.path();
-    written_.push_back(file.path());
+    o.smtFile.clear();  // bmc writes its file again at each depth
+    writeSmtFile(file,
+                 "; holon proof obligation: system " + model_.system().name + ", region " + region_.spec() + ", property " + name +
+                     "\n; expected: unsat (the property holds for every configuration of the region)\n(set-logic ALL)\n" + solver.toSmt2(),
+                 o, writeErrors_);
+    if (!o.smtFile.empty()) written_.push_back(file.path());
 }
 
 int ProofRunner::placedFrom(const smt::Model& m, const smt::Term& selector) const { return m.intValue(selector); }

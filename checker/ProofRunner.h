@@ -62,6 +62,8 @@ public:
     /// Every file write() wrote, in order: an obligation a limit cut short after its file was
     /// written still names it (withinLimits returns a fresh obligation).
     const std::vector<std::string>& written() const { return written_; }
+    /// The files write() could not write, with the reasons (VerifyReport::writeErrors).
+    const std::vector<std::string>& writeErrors() const { return writeErrors_; }
 
     int placedFrom(const smt::Model& m, const smt::Term& selector) const;
 
@@ -70,7 +72,7 @@ private:
     const rules::Region& region_;
     const VerifyOptions& options_;
     rules::Engine engine_;
-    std::vector<std::string> written_;
+    std::vector<std::string> written_, writeErrors_;
 };
 
 /// An obligation holon does not encode: verdict unknown, with the reason.

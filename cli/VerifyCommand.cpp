@@ -100,6 +100,7 @@ int run(const VerifyArgs& a) {
     auto drawingFor = [&](const checker::PropertyResult& r) { return rules::Engine(model, region, r.inputs.value_or(noInputs)); };
     // A write that fails (a full disk) is said after the table, which it no longer takes with it.
     WriteErrors errors;
+    for (const std::string& e : report.writeErrors) errors.add(e);
     std::vector<std::string> written;
     for (const checker::PropertyResult* r : shown) {
         if (!r->trace) continue;

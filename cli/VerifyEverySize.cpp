@@ -178,12 +178,15 @@ int runEverySize(const EverySizeArgs& a) {
     // default place it would replace the complete certificate `holon plan` reads (a stray
     // --timeout 2 left every verdict unknown there, and --require-proof refused the next plan).
     const auto cut = std::find_if(report.obligations.begin(), report.obligations.end(), [](const checker::Obligation& o) { return o.result.limited; });
-    bool certified = certificate && (!a.certificate.empty() || cut == report.obligations.end());
-    if (certificate && !certified)
+    bool certified = certificate && (!a.certificate.empty() || cut == report.obligations.end()) && report.writeErrors.empty();
+    if (certificate && !report.writeErrors.empty())
+        certificateNote = "none written: --smt-out files it would name could not be written (below)";
+    else if (certificate && !certified)
         certificateNote = "none written: a limit cut the run short (" + cut->result.name + ": " + cut->result.summary + "), and a partial record must not replace " +
                           certificate->path() + "; raise the limit, or give --certificate PATH to write it anyway";
     // A write that fails (a full disk) is said after the table, which it no longer takes with it.
     WriteErrors errors;
+    for (const std::string& e : report.writeErrors) errors.add(e);
     if (certified) {
         certified = errors.attempt([&] { certificate->write(checker::certificateText(checker::certificateOf(report, rulePath, system->sourceSha256, model.lattice().name()))); },
                                    "the certificate " + certificate->path());
