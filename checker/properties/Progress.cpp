@@ -30,6 +30,65 @@ int ruleReach(const rules::Model& model) {
     return static_cast<int>(std::clamp<std::int64_t>(2 * radius, 1, std::numeric_limits<int>::max()));
 }
 
+/// A rule with a far position (`_@(1000,1000)`) grows a 3-cell region to tens of millions of
+/// cells: growing it ran for minutes, past the deadline, the memory bound and signals.
+constexpr std::size_t kMaxGrownCells = std::size_t{1} << 20;
+
+/// The region grown by the rules' reach, where a stuck state is tried to tell a deadlock from an
+/// edge effect; none when it would have more than kMaxGrownCells cells.
+std::optional<rules::Region> edgeRegion(const rules::Model& model, const rules::Region& region) { return region.grown(ruleReach(model), kMaxGrownCells); }
+
+std::string unclassifiableWhy(const rules::Model& model) {
+    return "the rules reach " + std::to_string(ruleReach(model)) + " lattice steps, and the region grown by that has more than " + std::to_string(kMaxGrownCells) +
+           " cells to tell a deadlock from an edge effect on";
+}
+
+/// Whether a state stuck on the region is an edge effect: on the grown region (`wide`: outside
+/// cells empty, inputs false) some rule instance is enabled.
+bool edgeEffect(const rules::Interpreter& wide, const std::vector<CellValue>& cells, const std::vector<std::uint32_t>& inputs) {
+    rules::Configuration c = wide.empty();
+    std::copy(cells.begin(), cells.end(), c.cells.begin());
+    std::copy(inputs.begin(), inputs.end(), c.inputs.begin());
+    return !wide.enabled(c).empty();
+}
+
+/// The same as a formula over state `s` of `enc`: no instance of the grown region that needs a
+/// cell outside the region is enabled, outside cells empty and their inputs false (the grown
+/// region keeps the region's cell indices). What a proof adds so that it calls a state a deadlock
+/// exactly where check does; nothing when no instance outside can be enabled.
+std::optional<smt::Term> noEdgeEffect(SmtEncoding& enc, const SmtEncoding::State& s, const rules::Engine& e, const rules::Region& grown) {
+    smt::Context& ctx = s.is[0][0].context();
+    const rules::Engine wide(e.model(), grown, {}, true);
+    const int n = e.region().size();
+    // Most instances need something in a cell outside, which is empty, or an input there, which
+    // is false: they get no formula, and often none is left.
+    const int emptyCombo = wide.tables().comboIndex(0);
+    std::vector<int> open;
+    for (int placed = 0; placed < static_cast<int>(wide.instances().size()); ++placed) {
+        const rules::Engine::Placed& p = wide.instances()[placed];
+        if (std::all_of(p.cells, p.cells + p.size, [&](std::int32_t c) { return c < n; })) continue;  // the region's own: `stuck` has them
+        bool possible = true;
+        for (int k = 0; k < p.size && possible; ++k) possible = p.cells[k] < n || wide.lhsAccepts(placed, k, emptyCombo, 0);
+        if (possible) open.push_back(placed);
+    }
+    if (open.empty()) return std::nullopt;  // nothing to add: the query stays as it was, byte for byte
+    smt::Term all = ctx.boolVal(true);
+    // The grown state is s on the region's cells (the grown region keeps their indices) and empty
+    // outside; an input bit is named by its cell, so the region's are s's own.
+    SmtEncoding outer(ctx, wide, SmtEncoding::Use::Queries, enc.budget());
+    SmtEncoding::State g = s;
+    for (int i = n; i < grown.size(); ++i) {
+        std::vector<smt::Term> row;
+        for (std::size_t v = 0; v < s.is[0].size(); ++v) row.push_back(ctx.boolVal(v == 0));
+        g.is.push_back(row);
+        for (const smt::Term& bit : outer.inputBits()[i]) all = all && !bit;
+    }
+    const bool constrained = !e.model().system().constraints.empty();
+    for (int placed : open) all = all && (constrained ? !(outer.matches(placed, g) && outer.legal(outer.successor(placed, g), false)) : !outer.matches(placed, g));
+    for (const smt::Term& f : outer.facts()) all = all && f;
+    return all;
+}
+
 /// States with no enabled rule, outside the goal and where `assume` holds, split into deadlocks and
 /// edge effects of the bounded region: on the region grown by the rules' reach (outside cells empty,
 /// inputs false) some instance is enabled, so only the region's bound stops the system, not the
@@ -37,19 +96,12 @@ int ruleReach(const rules::Model& model) {
 /// stay unclassified (never called deadlocks: an edge effect reported as a flaw is a wrong answer).
 Stuck stuckStates(const Explorer& ex, const rules::Engine& e, const rules::Expr* assume, const Budget& budget) {
     constexpr std::size_t kClassified = 10'000;
-    // A rule with a far position (`_@(1000,1000)`) grows a 3-cell region to tens of millions of
-    // cells: growing it ran for minutes, past the deadline, the memory bound and signals.
-    constexpr std::size_t kMaxGrownCells = std::size_t{1} << 20;
     const rules::Model& model = e.model();
-    const rules::Region& region = e.region();
-    const int reach = ruleReach(model);
-    const std::optional<rules::Region> grown = region.grown(reach, kMaxGrownCells);
+    const std::optional<rules::Region> grown = edgeRegion(model, e.region());
     std::optional<rules::Interpreter> wide;
     if (grown) wide.emplace(model, *grown);
     Stuck out;
-    out.unclassifiedWhy = grown ? "within the limits"
-                                : "the rules reach " + std::to_string(reach) + " lattice steps, and the region grown by that has more than " + std::to_string(kMaxGrownCells) +
-                                      " cells to tell a deadlock from an edge effect on";
+    out.unclassifiedWhy = grown ? "within the limits" : unclassifiableWhy(model);
     std::size_t tried = 0;
     for (StateId s : ex.terminal()) {
         const auto cells = ex.cells(s);
@@ -59,10 +111,7 @@ Stuck stuckStates(const Explorer& ex, const rules::Engine& e, const rules::Expr*
             ++out.unclassified;
             continue;
         }
-        rules::Configuration c = wide->empty();
-        std::copy(cells.begin(), cells.end(), c.cells.begin());
-        std::copy(e.inputs().begin(), e.inputs().end(), c.inputs.begin());
-        (wide->enabled(c).empty() ? out.deadlocks : out.edgeEffects).push_back(s);
+        (edgeEffect(*wide, cells, e.inputs()) ? out.edgeEffects : out.deadlocks).push_back(s);
     }
     return out;
 }
@@ -150,6 +199,11 @@ public:
         SmtEncoding enc(ctx, e, SmtEncoding::Use::Queries, proof.budget);
         auto c = enc.state("c");
         smt::Term q = stuck(enc, c, e, assumption_);
+        // A state stuck only because the region ends is no deadlock, as in check; where the grown
+        // region is too large to say, a stuck state found is not called one either (below).
+        const std::optional<rules::Region> grown = edgeRegion(e.model(), e.region());
+        if (grown)
+            if (const std::optional<smt::Term> deadlock = noEdgeEffect(enc, c, e, *grown)) q = q && *deadlock;
         for (const rules::Property* inv : proof.invariants) q = q && enc.holds(inv->exprs[0], c, true);
         auto decode = [&](const smt::Model& m, PropertyResult& r) {
             Trace t;
@@ -160,13 +214,32 @@ public:
             r.summary = t.description;
             r.witness = nlohmann::json::object();
         };
-        return run.solve(name(), kind(), ctx, enc, q, decode, "outside the goal, some rule is enabled wherever the invariants hold");
+        Obligation o = run.solve(name(), kind(), ctx, enc, q, decode,
+                                 "outside the goal, some rule is enabled wherever the invariants hold (or, at the region's edge, would be on a larger region)");
+        if (!grown && o.result.verdict == Verdict::Violated) {
+            o.result.verdict = Verdict::Unknown;
+            o.result.summary = "a stuck state outside the goal, not classified (deadlock or edge effect): " + unclassifiableWhy(e.model());
+            o.result.trace.reset();
+        }
+        return o;
     }
 
     std::optional<BadTarget> target(const rules::Engine& e) const override {
         const rules::Expr* assumption = assumption_;
-        return BadTarget{[assumption, &e](SmtEncoding& enc, const SmtEncoding::State& s) { return stuck(enc, s, e, assumption); },
-                         [assumption](const std::vector<CellValue>& c, const rules::Engine& en) { return stuckAt(c, en, assumption); },
+        // Deadlocks as check and prove() call them: not the states stuck only at the region's edge.
+        // Where the grown region is too large to say, every stuck state is a target (a rule
+        // reaching hundreds of cells away).
+        auto grown = std::make_shared<std::optional<rules::Region>>(edgeRegion(e.model(), e.region()));
+        return BadTarget{[assumption, &e, grown](SmtEncoding& enc, const SmtEncoding::State& s) {
+                             smt::Term bad = stuck(enc, s, e, assumption);
+                             if (*grown)
+                                 if (const std::optional<smt::Term> deadlock = noEdgeEffect(enc, s, e, **grown)) bad = bad && *deadlock;
+                             return bad;
+                         },
+                         [assumption, grown](const std::vector<CellValue>& c, const rules::Engine& en) {
+                             if (!stuckAt(c, en, assumption)) return false;
+                             return !*grown || !edgeEffect(rules::Interpreter(en.model(), **grown), c, en.inputs());
+                         },
                          "a deadlock outside the goal"};
     }
 
@@ -186,6 +259,9 @@ public:
         if (assumption_ && !in.holds(*assumption_, c)) return fail("the progress assumption does not hold there");
         if (in.atGoal(c)) return fail("the state is a goal");
         if (!in.enabled(c).empty()) return fail("a rule is enabled");
+        if (const std::optional<rules::Region> grown = edgeRegion(in.model(), in.region());
+            grown && edgeEffect(rules::Interpreter(in.model(), *grown), c.cells, c.inputs))
+            return fail("it is stuck only at the region's edge: on a larger region a rule is enabled");
         return true;
     }
 

@@ -253,6 +253,32 @@ TEST_CASE("progress under non-local constraints: a rule enables only into a lega
     CHECK(stuck.confirmed());
 }
 
+TEST_CASE("progress means one thing: a state stuck only at the region's edge is no deadlock for verify either") {
+    // Growth fills the region; a full row is stuck only because the region ends. check called it an
+    // edge effect and progress held; verify called it a counterexample (and @reach too).
+    const char* grow = "system grow\nlattice square2d\nstates M\nrule grow: M@(0,0) _@(1,0) => M M\ngoal count(M) >= 100\ninvariant alive: some(M)\nprogress\n";
+    test::World w(test::parse(grow), "square:3x1");
+    const auto start = w.ascii("M..");
+    checker::VerifyOptions o;
+    o.properties = {"alive", "progress"};
+    o.initial = {start};
+    o.reach = true;
+    const auto r = checker::verify(*w.model, w.region, o);
+    CHECK(result(r, "progress").verdict == Verdict::Holds);
+    CHECK(result(r, "progress@reach").verdict == Verdict::Holds);
+    const auto c = test::checkFrom(test::parse(grow), "square:3x1", "M..", "");
+    CHECK(c.property("progress").verdict == Verdict::Holds);
+    CHECK(c.property("progress").witness["edge_effects"] == 1);
+    // A real deadlock is still one: without the invariant, the empty region is stuck on any region.
+    const char* bare = "system bare\nlattice square2d\nstates M\nrule grow: M@(0,0) _@(1,0) => M M\ngoal count(M) >= 100\nprogress\n";
+    test::World b(test::parse(bare), "square:3x1");
+    const auto rb = prove(b, {"progress"});
+    const auto& stuck = result(rb, "progress");
+    REQUIRE(stuck.verdict == Verdict::Violated);
+    CHECK(stuck.confirmed());
+    for (auto v : stuck.trace->steps.front().cells) CHECK(v == 0);
+}
+
 TEST_CASE("holonomy means one thing: verify and check give the same verdict, and verify's witness is a path") {
     for (const char* spec : {"square:3x3", "hex:r1"}) {
         for (const char* stem : {"pixel", "intermediate"}) {
