@@ -67,6 +67,8 @@ public:
     Prover(const rules::Model& model, const EverySizeOptions& options) : model_(model), options_(options) {}
     /// The --smt-out files that could not be written (VerifyReport::writeErrors).
     const std::vector<std::string>& writeErrors() const { return writeErrors_; }
+    /// The --smt-out files written so far, in order (withinLimits).
+    const std::vector<std::string>& written() const { return written_; }
 
     /// The window of `margin`, made once per margin.
     const Window& window(int margin) {
@@ -111,6 +113,7 @@ public:
                              " steps of its pattern, free (" + std::to_string(w.region().size()) +
                              " cells; proofs/README.md)\n; expected: unsat (the property holds on every region of the lattice)\n(set-logic ALL)\n" + copy.toSmt2(),
                          o, writeErrors_);
+            if (!o.smtFile.empty()) written_.push_back(o.smtFile);
         }
         o.result.verdict = Verdict::Holds;
         o.result.summary = ob.proved + " (window of radius " + std::to_string(ob.margin) + ", " + std::to_string(w.region().size()) + " cells)";
@@ -218,7 +221,7 @@ private:
     const rules::Model& model_;
     const EverySizeOptions& options_;
     std::map<int, std::unique_ptr<Window>> windows_;
-    std::vector<std::string> writeErrors_;
+    std::vector<std::string> writeErrors_, written_;
 };
 
 /// Conservation of mass or of the module count: the amount on the pattern (the frame keeps the rest).
@@ -291,7 +294,8 @@ EverySizeReport verifyEverySize(const rules::Model& model, const EverySizeOption
     auto run = [&](const StepObligation& ob) {
         if (onObligation) onObligation(ob.name);
         std::string drawing;
-        Obligation o = withinLimits(ob.name, ob.kind, [&] { return prover.prove(ob, drawing); });
+        Obligation o = withinLimits(
+            ob.name, ob.kind, [&] { return prover.prove(ob, drawing); }, prover.written());
         o.scope = "every region";
         return std::make_pair(o, drawing);
     };

@@ -88,16 +88,7 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         }
         report.obligations.push_back(std::move(o));
     };
-    // withinLimits with the files this obligation wrote before a limit cut it short.
-    auto limited = [&](const std::string& name, const std::string& kind, const std::function<Obligation()>& prove) {
-        const std::size_t before = run.written().size();
-        Obligation o = withinLimits(name, kind, prove);
-        if (o.smtFile.empty())
-            for (std::size_t k = before; k < run.written().size(); ++k)
-                if (std::find(run.written().begin() + before, run.written().begin() + k, run.written()[k]) == run.written().begin() + k)  // bmc rewrites its file
-                    o.smtFile += (o.smtFile.empty() ? "" : " ") + run.written()[k];
-        return o;
-    };
+    auto limited = [&](const std::string& name, const std::string& kind, const std::function<Obligation()>& prove) { return withinLimits(name, kind, prove, run.written()); };
     std::vector<std::unique_ptr<PropertyType>> types;
     for (const rules::Property& p : system.properties) types.push_back(propertyType(p));
     for (const auto& type : types) {

@@ -11,6 +11,7 @@
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 
@@ -252,6 +253,16 @@ Obligation withinLimits(const std::string& name, const std::string& kind, const 
         recoverSolverMemory();
         return o;
     }
+}
+
+Obligation withinLimits(const std::string& name, const std::string& kind, const std::function<Obligation()>& prove, const std::vector<std::string>& written) {
+    const std::size_t before = written.size();
+    Obligation o = withinLimits(name, kind, prove);
+    if (o.smtFile.empty())
+        for (std::size_t k = before; k < written.size(); ++k)
+            if (std::find(written.begin() + before, written.begin() + k, written[k]) == written.begin() + k)  // bmc writes its file again at each depth
+                o.smtFile += (o.smtFile.empty() ? "" : " ") + written[k];
+    return o;
 }
 
 }  // namespace holon::checker

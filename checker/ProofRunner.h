@@ -83,5 +83,8 @@ Obligation notEncoded(const std::string& name, const std::string& kind, const st
 /// built, or Z3 out of memory (reset here, once its context is gone). Any other Z3 failure is an
 /// InternalError.
 Obligation withinLimits(const std::string& name, const std::string& kind, const std::function<Obligation()>& prove);
+/// The same, for a prover that lists the --smt-out files it writes in `written`: an obligation a
+/// limit cut short after its file was written still names it (smt_file was null).
+Obligation withinLimits(const std::string& name, const std::string& kind, const std::function<Obligation()>& prove, const std::vector<std::string>& written);
 
 }  // namespace holon::checker
