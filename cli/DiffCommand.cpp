@@ -64,7 +64,7 @@ int run(const DiffArgs& a) {
             std::cout << j.dump(2) << '\n';
         } else {
             std::cout << "undecided: " << what << " stopped by " << stopReasonName(why) << (states ? " after " + std::to_string(*states) + " states" : "")
-                      << (limitOption(why).empty() ? "" : "; raise the limit (--max-states, --timeout or --memory) to compare whole graphs") << '\n';
+                      << raiseAdvice(why, " to compare whole graphs") << '\n';
         }
         return exitCodeFor(why, caughtSignal());
     };
