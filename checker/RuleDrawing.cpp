@@ -49,7 +49,7 @@ rules::SvgPicture drawOrientation(const rules::Model& model, int shape, int orie
         std::vector<std::uint32_t> inputs(region.size(), 0);
         if (draw > 0 && !system.inputs.empty())
             for (auto& bits : inputs) bits = static_cast<std::uint32_t>(rng() & ((1u << system.inputs.size()) - 1));
-        const rules::Engine engine(model, region, inputs);
+        const rules::Engine engine(model, region, inputs, false, {shape});  // this shape alone: a drawing per rule stays linear in the rules
         const auto& placed = engine.instances();
         const auto p = std::find_if(placed.begin(), placed.end(), [&](const rules::Engine::Placed& q) { return q.shape == shape && q.anchor == anchor; });
         if (p == placed.end()) break;  // cannot happen: the region is built around the pattern

@@ -66,9 +66,9 @@ struct RegionCells {
 
 }  // namespace
 
-Engine::Engine(const Model& model, const Region& region, const std::vector<std::uint32_t>& inputs, bool everyInputCombination)
+Engine::Engine(const Model& model, const Region& region, const std::vector<std::uint32_t>& inputs, bool everyInputCombination, const std::vector<int>& onlyShapes)
     : model_(&model), region_(&region), inputs_(inputs.size() == static_cast<std::size_t>(region.size()) ? inputs : std::vector<std::uint32_t>(region.size(), 0)),
-      tables_(model, combosFor(model, inputs_, everyInputCombination)) {
+      tables_(model, combosFor(model, inputs_, everyInputCombination), onlyShapes) {
     combo_.resize(region.size());
     for (int i = 0; i < region.size(); ++i) combo_[i] = tables_.comboIndex(inputs_[i]);
     byCell_.resize(region.size());
@@ -78,6 +78,7 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     placed_.reserve(model.shapes().size() * region.cells().size());
     cellPool_.reserve(poolCells * region.cells().size());
     for (int s = 0; s < static_cast<int>(model.shapes().size()); ++s) {
+        if (tables_.shape(s).lhs.empty()) continue;  // not among onlyShapes
         const RuleShape& shape = model.shapes()[s];
         for (Vec cell : region.cells()) {
             Placed p;

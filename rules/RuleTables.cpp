@@ -139,7 +139,7 @@ int RuleTables::comboIndex(std::uint32_t inputs) const {
     return it == combos_.end() ? -1 : static_cast<int>(it - combos_.begin());
 }
 
-RuleTables::RuleTables(const Model& model, std::vector<std::uint32_t> combos)
+RuleTables::RuleTables(const Model& model, std::vector<std::uint32_t> combos, const std::vector<int>& onlyShapes)
     : model_(&model), alphabet_(model.alphabet().size()) {
     combos_.push_back(0);
     for (std::uint32_t c : combos)
@@ -152,6 +152,10 @@ RuleTables::RuleTables(const Model& model, std::vector<std::uint32_t> combos)
         directionNeighbours_.push_back(touching);
     }
     for (const RuleShape& shape : model.shapes()) {
+        if (!onlyShapes.empty() && std::find(onlyShapes.begin(), onlyShapes.end(), static_cast<int>(shapes_.size())) == onlyShapes.end()) {
+            shapes_.emplace_back();
+            continue;
+        }
         const DirectedRule& rule = model.rules()[shape.rule];
         if (shape.offsets.size() > kMaxCells) throw InternalError("rule '" + rule.name + "' has more cells than the parser admits");
         Shape t;
@@ -179,7 +183,7 @@ RuleTables::RuleTables(const Model& model, std::vector<std::uint32_t> combos)
     for (std::size_t c = 0; c < combos_.size(); ++c)
         for (int v = 0; v < alphabet_; ++v)
             for (int sh = 0; sh < static_cast<int>(shapes_.size()); ++sh)
-                if (test(shapes_[sh].lhs[0], static_cast<int>(c), static_cast<CellValue>(v))) shapesByFirst_[c * alphabet_ + v].push_back(sh);
+                if (!shapes_[sh].lhs.empty() && test(shapes_[sh].lhs[0], static_cast<int>(c), static_cast<CellValue>(v))) shapesByFirst_[c * alphabet_ + v].push_back(sh);
     // Masses as integers over the least common denominator.
     for (int v = 0; v < alphabet_; ++v) massDen_ = checkedLcm(massDen_, model.alphabet().mass(static_cast<CellValue>(v)).den());
     for (int v = 0; v < alphabet_; ++v) {

@@ -47,7 +47,9 @@ public:
 
     /// `combos`: the input combinations (bit sets over the system's inputs) the tables must cover;
     /// combination 0 (no input set) is always index 0, used for cells outside the region.
-    RuleTables(const Model& model, std::vector<std::uint32_t> combos);
+    /// `onlyShapes`, when not empty: the shapes compiled; the others keep their index with no
+    /// table (a drawing of one rule of 870 compiled them all, once per orientation).
+    RuleTables(const Model& model, std::vector<std::uint32_t> combos, const std::vector<int>& onlyShapes = {});
 
     const Model& model() const { return *model_; }
     int alphabet() const { return alphabet_; }
