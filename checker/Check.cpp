@@ -12,6 +12,7 @@
 #include "rules/Error.h"
 #include "rules/Limits.h"
 #include "rules/Parameter.h"
+#include "rules/StopSignals.h"
 
 #include <algorithm>
 #include <chrono>
@@ -78,7 +79,12 @@ std::unique_ptr<rules::Engine> engineWithin(const rules::Model& model, const rul
     rules::requireMemory(rules::Engine::bytesFor(model, region), limits.memoryBytes,
                          "the rule engine on region " + region.spec() + " (" + std::to_string(region.size()) + " cells, " + std::to_string(model.shapes().size()) +
                              " rule shapes)");
-    auto engine = std::make_unique<rules::Engine>(model, region, inputs);
+    // The build polls the job's deadline and the signal catcher: on 4 million cells it takes a
+    // minute, and --timeout 1 ran 65 s.
+    auto engine = std::make_unique<rules::Engine>(model, region, inputs, false, std::vector<int>{}, [] {
+        checkJobDeadline("building the rule engine");
+        rules::StopSignals::stopIfCaught();
+    });
     limits.memoryBytes -= std::min(limits.memoryBytes, engine->regionBytes());
     return engine;
 }

@@ -147,7 +147,7 @@ std::variant<DesignDifference, StopReason> compareDesigns(const ExploredDesign& 
 
 int DiffReport::stopped() const {
     for (int side = 0; side < 2; ++side)
-        if (explored[side].explorer->stats().stopped != StopReason::Finished) return side;
+        if (!explored[side].explorer || explored[side].explorer->stats().stopped != StopReason::Finished) return side;
     return -1;
 }
 
@@ -181,7 +181,11 @@ DiffReport diff(const rules::Model& a, const rules::Model& b, const rules::Regio
     report.region = region.spec();
     const Budget budget = options.limits.budget();  // one timeout for both
     const rules::Model* models[2] = {&a, &b};
+    for (int side = 0; side < 2; ++side) report.systems[side] = models[side]->system().name;
     for (int side = 0; side < 2; ++side) {
+        // A stopped first exploration decides the report: building B's engine after the deadline or
+        // a signal would throw, and A's report would be lost.
+        if (side == 1 && report.stopped() == 0) break;
         CheckOptions co;
         co.limits = options.limits;
         co.limits.memoryBytes /= 2;
@@ -193,7 +197,6 @@ DiffReport diff(const rules::Model& a, const rules::Model& b, const rules::Regio
         xo.budget = budget;
         x.explorer = startExplorer(*x.engine, co, xo);
         x.explorer->explore();
-        report.systems[side] = models[side]->system().name;
     }
     if (report.stopped() >= 0) return report;
     auto compared = compareDesigns({report.explored[0].engine.get(), report.explored[0].explorer.get()}, {report.explored[1].engine.get(), report.explored[1].explorer.get()}, budget);

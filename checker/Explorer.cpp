@@ -583,8 +583,8 @@ const ExploreStats& Explorer::explore() {
     };
     if (halted() != StopReason::Finished)  // --all stopped while listing the legal configurations
         stats_.stopped = halted(), stats_.enumerating = true, stats_.frontier = enumerated_;
-    else if (!workersFit)
-        halt(StopReason::Memory), stats_.stopped = StopReason::Memory, stats_.frontier = sizeOf(level);
+    else if (const auto why = budget_.reached(); why || !workersFit)  // a signal during the set-up is a signal, not a memory stop
+        halt(why.value_or(StopReason::Memory)), stats_.stopped = halted(), stats_.frontier = sizeOf(level);
     while (sizeOf(level) > 0 && stats_.stopped == StopReason::Finished) {
         const std::size_t chunks = (sizeOf(level) + chunk - 1) / chunk;
         for (std::size_t c = 0; c < chunks; ++c) {

@@ -66,7 +66,8 @@ struct RegionCells {
 
 }  // namespace
 
-Engine::Engine(const Model& model, const Region& region, const std::vector<std::uint32_t>& inputs, bool everyInputCombination, const std::vector<int>& onlyShapes)
+Engine::Engine(const Model& model, const Region& region, const std::vector<std::uint32_t>& inputs, bool everyInputCombination, const std::vector<int>& onlyShapes,
+               const std::function<void()>& checkpoint)
     : model_(&model), region_(&region), inputs_(inputs.size() == static_cast<std::size_t>(region.size()) ? inputs : std::vector<std::uint32_t>(region.size(), 0)),
       tables_(model, combosFor(model, inputs_, everyInputCombination), onlyShapes) {
     combo_.resize(region.size());
@@ -80,7 +81,9 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     for (int s = 0; s < static_cast<int>(model.shapes().size()); ++s) {
         if (tables_.shape(s).lhs.empty()) continue;  // not among onlyShapes
         const RuleShape& shape = model.shapes()[s];
-        for (Vec cell : region.cells()) {
+        for (std::size_t i = 0; i < region.cells().size(); ++i) {
+            if (checkpoint && i % 65536 == 0) checkpoint();
+            const Vec cell = region.cells()[i];
             Placed p;
             p.shape = s, p.rule = shape.rule, p.anchor = cell - shape.offsets[0];
             p.size = static_cast<std::uint8_t>(shape.offsets.size());

@@ -9,6 +9,7 @@
 #include "rules/RuleTables.h"
 
 #include <cstdint>
+#include <functional>
 #include <unordered_map>
 #include <vector>
 
@@ -35,8 +36,10 @@ public:
     /// `inputs`: per region cell, the input bits of the problem. With `everyInputCombination`, the
     /// tables cover all 2^k combinations of the k inputs, for encodings where inputs are unknown.
     /// `onlyShapes`, when not empty: the only shapes compiled and placed (a drawing of one rule).
+    /// `checkpoint`, when given, is called every few thousand placements and may throw to stop the
+    /// build (a deadline or a signal: placing every shape on 4 million cells takes a minute).
     Engine(const Model& model, const Region& region, const std::vector<std::uint32_t>& inputs, bool everyInputCombination = false,
-           const std::vector<int>& onlyShapes = {});
+           const std::vector<int>& onlyShapes = {}, const std::function<void()>& checkpoint = {});
     /// An upper estimate of the bytes an engine on `region` holds, known before it is built: every
     /// shape placed at every cell, its cells in the pool and in each cell's list (with a vector's
     /// doubling), and the arrays per cell. About 2 to 4 KB per cell for the bundled systems.

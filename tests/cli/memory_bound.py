@@ -8,7 +8,7 @@ Usage: memory_bound.py HOLON WORKDIR LIBRARY
 Before, neither was counted: check on square:400x400 with --memory 300 peaked at 603 MB, and with
 --memory 16 the same; on the largest region check takes (4,194,304 cells) that is about 15 GB.
 """
-import os, subprocess, sys
+import os, signal, subprocess, sys, threading, time
 
 holon, work, lib = sys.argv[1:4]
 os.makedirs(work, exist_ok=True)
@@ -20,14 +20,20 @@ common = ["--from", start, "--input", "target=all"]
 failures = []
 
 
-def run(name, args, code, most_mib, expect):
+def run(name, args, code, most_mib, expect, most_seconds=60, signal_after=None):
+    start_time = time.monotonic()
     p = subprocess.Popen([holon] + args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if signal_after is not None:
+        threading.Timer(signal_after, lambda: p.send_signal(signal.SIGTERM)).start()
     out = p.stdout.read()
     _, status, usage = os.wait4(p.pid, 0)
+    took = time.monotonic() - start_time
     rc = os.waitstatus_to_exitcode(status)
+    if rc < 0:
+        rc = 128 - rc  # killed by the signal itself, as a shell reports it
     peak = usage.ru_maxrss >> 10  # MiB
-    ok = rc == code and peak <= most_mib and expect in out
-    print(f"{name}: exit {rc}, peak {peak} MiB (at most {most_mib})" + ("" if ok else f"  FAILED\n{out[-2000:]}"))
+    ok = rc == code and peak <= most_mib and expect in out and took <= most_seconds
+    print(f"{name}: exit {rc}, peak {peak} MiB (at most {most_mib}), {took:.1f} s (at most {most_seconds})" + ("" if ok else f"  FAILED\n{out[-2000:]}"))
     if not ok:
         failures.append(name)
 
@@ -39,6 +45,13 @@ run("check square:200x200 --memory 16", ["check", rules, "--region", "square:200
 run("check square:400x400 --memory 300", ["check", rules, "--region", "square:400x400", "--memory", "300"] + common, 3, 330, "stopped by memory")
 run("path square:400x400 --memory 300", ["path", rules, "--region", "square:400x400", "--memory", "300", "--goal"] + common, 3, 330, "stopped by memory")
 run("diff square:300x300 --memory 300", ["diff", rules, rules, "--region", "square:300x300", "--memory", "300"] + common, 3, 330, "stopped by memory")
+# Building the engine on a large region polls --timeout and signals: --timeout 1 on square:1000x1000
+# took 11.8 s (65 s on 2048x2048), and a SIGTERM during the build of path ended as "stopped by
+# memory", exit 3.
+run("check square:1000x1000 --timeout 1", ["check", rules, "--region", "square:1000x1000", "--timeout", "1"] + common, 3, 2000,
+    "--timeout ran out while building the rule engine", most_seconds=4)
+run("path square:1000x1000, SIGTERM during the build", ["path", rules, "--region", "square:1000x1000", "--memory", "2000", "--goal"] + common, 143, 2100,
+    "terminated (SIGTERM)", signal_after=0.8)
 # export --config: the memory check came after the JSON was parsed (three times, whole, for the
 # names in it): a 45 MB configuration peaked at 651 MB under --memory 16.
 big = os.path.join(work, "big.json")
