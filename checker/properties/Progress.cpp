@@ -60,13 +60,28 @@ std::optional<smt::Term> noEdgeEffect(SmtEncoding& enc, const SmtEncoding::State
     smt::Context& ctx = s.is[0][0].context();
     const rules::Engine wide(e.model(), grown, {}, true);
     const int n = e.region().size();
-    // Most instances need something in a cell outside, which is empty, or an input there, which
-    // is false: they get no formula, and often none is left.
+    // Every instance of the grown region counts (check asks the interpreter whether any is
+    // enabled there), but two kinds need no formula. An instance that needs something in a cell
+    // outside, which is empty, or an input there, which is false, is never enabled (most of them).
+    // An instance of the region's own is enabled there exactly as on the region -- `stuck` says it
+    // is not -- unless constraints judge its successor (their values change with the region:
+    // count(_), connected(_)) or its guard reads a neighbour outside.
+    const bool constrained = !e.model().system().constraints.empty();
     const int emptyCombo = wide.tables().comboIndex(0);
+    const rules::Lattice& lattice = grown.lattice();
+    auto seesOutside = [&](const rules::Engine::Placed& p) {
+        for (int k = 0; k < p.size; ++k)
+            for (int d = 0; d < lattice.degree(); ++d)
+                if (const int m = grown.neighbour(p.cells[k], d); m < 0 || m >= n) return true;
+        return false;
+    };
     std::vector<int> open;
     for (int placed = 0; placed < static_cast<int>(wide.instances().size()); ++placed) {
         const rules::Engine::Placed& p = wide.instances()[placed];
-        if (std::all_of(p.cells, p.cells + p.size, [&](std::int32_t c) { return c < n; })) continue;  // the region's own: `stuck` has them
+        if (std::all_of(p.cells, p.cells + p.size, [&](std::int32_t c) { return c < n; })) {
+            if (constrained || (wide.tables().shape(p.shape).hasGuard && seesOutside(p))) open.push_back(placed);
+            continue;
+        }
         bool possible = true;
         for (int k = 0; k < p.size && possible; ++k) possible = p.cells[k] < n || wide.lhsAccepts(placed, k, emptyCombo, 0);
         if (possible) open.push_back(placed);
@@ -83,7 +98,6 @@ std::optional<smt::Term> noEdgeEffect(SmtEncoding& enc, const SmtEncoding::State
         g.is.push_back(row);
         for (const smt::Term& bit : outer.inputBits()[i]) all = all && !bit;
     }
-    const bool constrained = !e.model().system().constraints.empty();
     for (int placed : open) all = all && (constrained ? !(outer.matches(placed, g) && outer.legal(outer.successor(placed, g), false)) : !outer.matches(placed, g));
     for (const smt::Term& f : outer.facts()) all = all && f;
     return all;
@@ -97,11 +111,15 @@ std::optional<smt::Term> noEdgeEffect(SmtEncoding& enc, const SmtEncoding::State
 Stuck stuckStates(const Explorer& ex, const rules::Engine& e, const rules::Expr* assume, const Budget& budget) {
     constexpr std::size_t kClassified = 10'000;
     const rules::Model& model = e.model();
-    const std::optional<rules::Region> grown = edgeRegion(model, e.region());
+    Stuck out;
+    // After the deadline nothing is classified: growing a region of 4 million cells and building
+    // its interpreter took a second past --timeout.
+    const bool inTime = !budget.expired() && !budget.interrupted();
+    const std::optional<rules::Region> grown = inTime ? edgeRegion(model, e.region()) : std::nullopt;
     std::optional<rules::Interpreter> wide;
     if (grown) wide.emplace(model, *grown);
-    Stuck out;
-    out.unclassifiedWhy = grown ? "within the limits" : unclassifiableWhy(model);
+    out.unclassifiedWhy = !inTime ? "the job's budget ran out first" : grown ? "within the limits"
+                                                                             : unclassifiableWhy(model);
     std::size_t tried = 0;
     for (StateId s : ex.terminal()) {
         const auto cells = ex.cells(s);
@@ -246,7 +264,9 @@ public:
     /// A proved counterexample is one state: legal, where the assumption holds, outside the goal, with
     /// nothing enabled.
     bool confirm(const PropertyResult& r, Evidence evidence, const rules::Interpreter& in, const rules::Engine& engine, std::string* why) const override {
-        if (evidence == Evidence::Path) return PropertyType::confirm(r, evidence, in, engine, why);
+        // A path (--reach, --depth) must replay and end in a deadlock; a proof's counterexample is
+        // that one state.
+        if (evidence == Evidence::Path && !PropertyType::confirm(r, evidence, in, engine, why)) return false;
         auto fail = [&](const std::string& m) {
             if (why) *why = m;
             return false;
@@ -254,7 +274,7 @@ public:
         if (!r.trace || r.trace->steps.empty()) return fail("the counterexample has no trace");
         rules::Configuration c = in.empty();
         c.inputs = engine.inputs();
-        c.cells = r.trace->steps.front().cells;
+        c.cells = evidence == Evidence::Path ? r.trace->steps.back().cells : r.trace->steps.front().cells;
         if (!in.legal(c)) return fail("the state is not legal");
         if (assumption_ && !in.holds(*assumption_, c)) return fail("the progress assumption does not hold there");
         if (in.atGoal(c)) return fail("the state is a goal");

@@ -269,6 +269,23 @@ TEST_CASE("progress means one thing: a state stuck only at the region's edge is 
     const auto c = test::checkFrom(test::parse(grow), "square:3x1", "M..", "");
     CHECK(c.property("progress").verdict == Verdict::Holds);
     CHECK(c.property("progress").witness["edge_effects"] == 1);
+    // The instance blocked may lie inside the region, stopped by a constraint whose value grows with
+    // the region (count(_), connected(_)): on the grown region its successor is legal, so the state
+    // is an edge effect too (verdict audit 4: verify said "NOT confirmed", exit 4, and @reach a
+    // confirmed deadlock).
+    for (const char* constraint : {"count(_) >= 1", "connected(_)"}) {
+        CAPTURE(constraint);
+        const std::string text = std::string("system m1\nlattice square2d\nsymmetry none\nstates A\nrule grow: A@(0,0) _@(1,0) => A A\nconstraint ") + constraint +
+                                 "\ngoal no(#) or count(#) == 99\nprogress\n";
+        test::World m(test::parse(text), "square:3x2");
+        checker::VerifyOptions mo;
+        mo.initial = {m.ascii("A..\n...")};
+        mo.reach = true;
+        const auto mr = checker::verify(*m.model, m.region, mo);
+        CHECK(result(mr, "progress").verdict == Verdict::Holds);
+        CHECK(result(mr, "progress@reach").verdict == Verdict::Holds);
+        CHECK(test::checkAll(test::parse(text), "square:3x2").property("progress").verdict == Verdict::Holds);
+    }
     // A real deadlock is still one: without the invariant, the empty region is stuck on any region.
     const char* bare = "system bare\nlattice square2d\nstates M\nrule grow: M@(0,0) _@(1,0) => M M\ngoal count(M) >= 100\nprogress\n";
     test::World b(test::parse(bare), "square:3x1");
