@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <unordered_set>
 
 namespace holon::rules {
 
@@ -274,9 +275,12 @@ private:
             if (f.hi - f.lo >= kMaxFieldValues)
                 fail(loc, "a field holds at most " + std::to_string(kMaxFieldValues) + " values");
         } else {
+            // A set for the duplicate search: a search of the list made 140,000 values take 37 s
+            // and a 4 MiB file run for minutes past --timeout.
+            std::unordered_set<std::string> seen;
             do {
                 const Token& v = freshName("a state");
-                if (nameTaken(v.text) || std::count(f.values.begin(), f.values.end(), v.text))
+                if (nameTaken(v.text) || !seen.insert(v.text).second)
                     d_.error(v.loc, "'" + v.text + "' is declared twice; state names must be unique in a system");
                 else {
                     if (static_cast<int>(f.values.size()) == kMaxFieldValues)
