@@ -107,9 +107,8 @@ void drawRules(const rules::System& s, const RulesOptions& o) {
             throw InputError("--lattice " + o.lattice + ": system '" + s.name + "' is written for the " + rules::Lattice::get(*s.lattice).name() + " lattice; leave --lattice out");
     }
     const rules::Model model(s, *lattice);  // throws InputError when the system is fixed to another lattice
-    std::error_code error;
-    std::filesystem::create_directories(o.svgDir, error);
-    if (error) throw InputError("--svg " + o.svgDir + ": cannot create the folder: " + error.message());
+    // Created if missing, its parent not (a mistyped path made /nonexist/x), as every --out folder.
+    rules::prepareOutputDir("--svg", o.svgDir, {"*.svg"});
     const auto fileName = [](const std::string& name) {
         std::string out;
         for (char c : name) out += std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' ? c : '_';
