@@ -104,9 +104,13 @@ std::string pageData(const Run& run) {
     j["marked"] = marked;
     j["changeStart"] = changeStart.text(), j["changeCell"] = changeCell.text(), j["changeState"] = changeState.text();
     j["contextStart"] = contextStart.text(), j["contextCell"] = contextCell.text();
-    std::string text = j.dump();
-    // Inside <script>, "</" would end the element; in JSON it only occurs in strings, where "<\/" means the same.
-    for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3)) text.replace(at, 2, "<\\/");
+    const std::string dumped = j.dump();
+    // Inside <script>, "</" ends the element, and "<!--" with "<script" makes the parser miss the end
+    // tag (a rule named "<!--<script>" gave a dead page). In JSON "<" only occurs in strings, where
+    // "\u003c" means the same: every one is written so.
+    std::string text;
+    text.reserve(dumped.size());
+    for (const char c : dumped) c == '<' ? text += "\\u003c" : text += c;
     return text;
 }
 
