@@ -100,7 +100,7 @@ bool printComponents(const checker::Explorer& explorer, const rules::System& sys
 int run(const CheckArgs& a) {
     auto system = loadRules(a.file, a.noWarnings);
     if (!system) return 2;
-    const rules::Region region = rules::Region::parse(a.region, 1u << 22);
+    const rules::Region region = exploreRegion(a.region, a.limits);
     rules::Model model(*system, region.lattice());
     rules::Interpreter in(model, region);
     // Output paths are checked before the work, so a finished check is never lost to a bad path.

@@ -36,7 +36,7 @@ int run(const DiffArgs& a) {
     if (a.all == !a.from.empty())
         throw InputError(std::string(a.all ? "--all and --from name both" : "say") + " where both designs start: --from CONFIG (repeatable), or --all for every legal configuration" +
                          (a.all ? "; give one" : ""));
-    const rules::Region region = rules::Region::parse(a.region, 1u << 22);
+    const rules::Region region = exploreRegion(a.region, a.limits);
     const rules::StopSignals guard(true);  // a signal stops the exploration: undecided, 128 + the signal
     std::optional<rules::OutputFile> svgOut;
     if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);

@@ -13,6 +13,7 @@
 #include "cli/Commands.h"
 #include "rules/Error.h"
 #include "rules/Limits.h"
+#include "rules/Region.h"
 #include "rules/StopSignals.h"
 
 #include <sstream>
@@ -65,6 +66,16 @@ struct ExploreLimitArgs {
         return l;
     }
 };
+
+/// The region of an exploration (check, path, diff): refused before it is built (LimitError, exit
+/// 3) when its own tables (rules::Region::kBytesPerCell a cell, 190 MiB at the largest region)
+/// are over --memory, which they were by 12 times under --memory 16.
+inline rules::Region exploreRegion(const std::string& spec, const ExploreLimitArgs& limits) {
+    return rules::Region::parse(spec, 1u << 22, [&](std::uint64_t cells) {
+        rules::requireMemory(rules::checkedProduct({cells, rules::Region::kBytesPerCell}), limits.memoryMiB << 20,
+                             "region " + spec + " (" + rules::countText(cells) + " cells)");
+    });
+}
 
 /// Registers --max-states, --timeout, --memory and --threads on `sub`; `each` qualifies what they
 /// bound in the help ("each exploration").

@@ -55,7 +55,7 @@ int run(const PathArgs& a) {
     const checker::PathSearch search = searchNamed(a.search);
     auto system = loadRules(a.file, a.noWarnings);
     if (!system) return kExitBadInput;
-    const rules::Region region = rules::Region::parse(a.region, 1u << 22);
+    const rules::Region region = exploreRegion(a.region, a.limits);
     rules::Model model(*system, region.lattice());
     rules::Interpreter in(model, region);
     std::optional<rules::OutputFile> traceOut, svgOut, htmlOut;

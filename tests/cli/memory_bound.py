@@ -41,6 +41,9 @@ def run(name, args, code, most_mib, expect, most_seconds=60, signal_after=None):
 # The engine alone is over the bound: refused before it is built, naming the region.
 run("check square:200x200 --memory 16", ["check", rules, "--region", "square:200x200", "--memory", "16"] + common, 3, 40,
     "the rule engine on region square:200x200")
+# The region's own tables are over the bound: refused before they are built (199 MiB under --memory 16).
+run("check square:2000x2000 --memory 16", ["check", rules, "--region", "square:2000x2000", "--memory", "16"] + common, 3, 40,
+    "region square:2000x2000 (4000000 cells) needs about")
 # The engine fits, the workers' buffers do not: a memory stop before the first expansion.
 run("check square:400x400 --memory 300", ["check", rules, "--region", "square:400x400", "--memory", "300"] + common, 3, 330, "stopped by memory")
 run("path square:400x400 --memory 300", ["path", rules, "--region", "square:400x400", "--memory", "300", "--goal"] + common, 3, 330, "stopped by memory")
