@@ -129,11 +129,13 @@ Setting parseFile(const std::string& path, const Budget& budget) {
         if (word == "seed") {
             Seed seed;
             std::string cell;
-            if (!(in >> seed.group)) throw InputError(where + ": `seed` needs a group number first");
+            if (!(in >> seed.group) || seed.group < 0) throw InputError(where + ": `seed` needs a group number (0 or more) first");
             for (Cell& c : seed.cells) {
                 if (!(in >> cell)) throw InputError(where + ": a seed lists four cells, foot first");
                 c = parseCell(cell, where);
             }
+            // What follows the four cells was dropped without a word (a fifth cell, a typo).
+            if (in >> cell) throw InputError(where + ": '" + cell + "' after the seed's four cells; a seed is `seed GROUP x,y,z x,y,z x,y,z x,y,z`");
             s.recipe.seeds.push_back(seed);
         } else if (word == "voxel") {
             std::string cell;
@@ -141,8 +143,10 @@ Setting parseFile(const std::string& path, const Budget& budget) {
         } else if (word == "start") {
             std::string cell;
             if (!(in >> cell)) throw InputError(where + ": `start` needs a cell x,y");
+            // A start stands on the floor: x,y only (a z was set to 0 without a word), and nothing after.
+            if (std::count(cell.begin(), cell.end(), ',') != 1) throw InputError(where + ": '" + cell + "': a start is a floor cell x,y, with no z");
             Cell c = parseCell(cell, where);
-            c.z = 0;
+            if (in >> cell) throw InputError(where + ": '" + cell + "' after the start's cell; a start is `start x,y`");
             s.starts.push_back(c);
         } else {
             throw InputError(where + ": unknown line '" + word + "'; use `seed`, `voxel` or `start`");
