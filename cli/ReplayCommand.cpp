@@ -19,6 +19,7 @@
 #include "rules/OutputFile.h"
 #include "rules/PlanLines.h"
 #include "rules/StopSignals.h"
+#include "rules/TextFile.h"
 
 #include <filesystem>
 #include <fstream>
@@ -35,13 +36,15 @@ struct Args {
 };
 
 int run(const Args& a) {
+    // From the start: a plan read from a FIFO is waited for, and its start line can take seconds.
+    const rules::StopSignals guard(true);
     const std::optional<rules::System> system = loadRules(a.rules, {});
     if (!system) return kExitBadInput;
     // A folder opens as an empty stream, which read as a plan cut short.
     if (std::error_code error; std::filesystem::is_directory(a.plan, error)) throw InputError(a.plan + ": is a folder; give the plan's file (holon plan --plan-out FILE)");
-    std::ifstream file(a.plan);
-    if (!file) throw InputError(a.plan + ": cannot open the plan");
-    rules::PlanLineReader plan(file, a.plan);
+    // Read as every input is: a FIFO with no writer is waited for within --timeout and signals.
+    const std::unique_ptr<std::istream> file = rules::openInputStream(a.plan);
+    rules::PlanLineReader plan(*file, a.plan);
     if (plan.kind() != "plan" || !plan.head().contains("start") || !plan.head()["start"].is_object())
         throw InputError(a.plan + ":1: not a holon plan: its first line must be {\"plan\":\"holon\",...,\"start\":CONFIGURATION} (holon plan --plan-out)");
     const nlohmann::json& of = plan.head().contains("system") ? plan.head()["system"] : nlohmann::json();
@@ -79,7 +82,6 @@ int run(const Args& a) {
     rules::PlanLine step;
     // A signal or --timeout stops the replay between two lines: the steps so far are reported as
     // judged, and the exit is 128 + the signal or 3 (a plan of 10^8 steps takes minutes).
-    const rules::StopSignals guard(true);
     const Budget budget = Budget(a.timeout) || Budget::onSignals();
     while (plan.next(step)) {
         if ((steps + losses) % 4096 == 0)

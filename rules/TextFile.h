@@ -4,6 +4,8 @@
 
 #include "rules/Limits.h"
 
+#include <istream>
+#include <memory>
 #include <string>
 
 namespace holon::rules {
@@ -13,5 +15,9 @@ namespace holon::rules {
 /// A pipe or FIFO that nothing writes yet is waited for until a signal (Interrupted) or the job's
 /// deadline (LimitError about the timeout, rules/Budget.h setJobDeadline).
 std::string readTextFile(const std::string& path, std::size_t maxBytes = kMaxFileBytes);
+
+/// The same file as a stream, for inputs read a line at a time (a plan of millions of lines): the
+/// same errors when it cannot be opened, and the same waits, in slices, for a pipe or FIFO.
+std::unique_ptr<std::istream> openInputStream(const std::string& path);
 
 }  // namespace holon::rules

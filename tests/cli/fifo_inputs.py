@@ -76,4 +76,9 @@ run("plan --from FIFO, late writer", ["plan", "--from", fifo, "--to", "box:2x2",
 # Nothing writes: --timeout ends the wait.
 run("check FIFO rules, no writer", ["check", fifo, "--region", "square:3x3", "--timeout", "1"], {3}, expect="timeout ran out while holon waited for")
 run("plan --from FIFO, no writer", ["plan", "--from", fifo, "--to", "box:2x2", "--timeout", "1"], {3})
+# replay streams its plan: a FIFO with no writer waited for ever, and a late writer is read whole.
+subprocess.run([holon, "plan", "--from", "box:3x2", "--to", "box:2x3", "--plan-out", os.path.join(work, "plan.jsonl"), "--quiet"], capture_output=True)
+plan = open(os.path.join(work, "plan.jsonl")).read()
+run("replay FIFO, no writer", ["replay", rules, fifo, "--timeout", "1"], {3}, expect="timeout ran out while holon waited for")
+run("replay FIFO, late writer", ["replay", rules, fifo, "--timeout", "20"], {0}, plan, delay=1.0, expect="all 9 steps legal")
 sys.exit(1 if failures else 0)
