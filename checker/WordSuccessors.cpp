@@ -126,8 +126,11 @@ void WordSuccessors::findUnique(const std::vector<CellValue>& pinned) {
         for (int k = 0; k < instances[p].size && first < 0; ++k)
             for (int j = 0; j < planes_; ++j)
                 if ((layout_->plane(delta, j) >> instances[p].cells[k]) & 1u) first = instances[p].cells[k];
-        bool unique = true;
+        // An instance that changes nothing (`A => *`) has the effect of every other such instance
+        // anywhere in the region: its self-loop is one edge with theirs (each was counted).
+        bool unique = first >= 0;
         for (const std::int32_t q : engine_->instancesAt(first < 0 ? instances[p].cells[0] : first)) {
+            if (!unique) break;
             if (q == static_cast<std::int32_t>(p)) continue;
             if (!fixed_[q]) {
                 unique = false;
