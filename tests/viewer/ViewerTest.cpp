@@ -133,7 +133,12 @@ TEST_CASE("the page holds the data once, and a label cannot end its script eleme
     std::size_t scripts = 0;
     for (std::size_t at = html.find("</script>"); at != std::string::npos; at = html.find("</script>", at + 1)) ++scripts;
     CHECK(scripts == 2);  // the data's and the code's
-    CHECK(html.find(R"(<\/script>)") != std::string::npos);
+    CHECK(html.find(R"(\u003c/script>)") != std::string::npos);
+    // "<!--" with "<script" made the parser miss the data's end tag: no "<" is left in the data.
+    run.steps[1].label = "<!--<script>";
+    const std::string commented = viewer::page(run);
+    CHECK(commented.find("<!--<script>") == std::string::npos);
+    CHECK(commented.find(R"(\u003c!--\u003cscript>)") != std::string::npos);
 }
 
 TEST_CASE("a monitor's trace names no region: the box around its cells, every fired instance's cells as context") {
