@@ -73,10 +73,12 @@ Engine::Engine(const Model& model, const Region& region, const std::vector<std::
     combo_.resize(region.size());
     for (int i = 0; i < region.size(); ++i) combo_[i] = tables_.comboIndex(inputs_[i]);
     byCell_.resize(region.size());
-    // Room for every shape at every cell, so that the pools never double (bytesFor counts this).
-    std::size_t poolCells = 0;
-    for (const RuleShape& shape : model.shapes()) poolCells += shape.offsets.size();
-    placed_.reserve(model.shapes().size() * region.cells().size());
+    // Room for every shape placed at every cell, so that the pools never double (bytesFor counts
+    // this); only the compiled ones: a drawing's engine of one shape among 3,480 reserved them all.
+    std::size_t shapes = 0, poolCells = 0;
+    for (int s = 0; s < tables_.shapeCount(); ++s)
+        if (!tables_.shape(s).lhs.empty()) ++shapes, poolCells += model.shapes()[s].offsets.size();
+    placed_.reserve(shapes * region.cells().size());
     cellPool_.reserve(poolCells * region.cells().size());
     std::uint64_t tried = 0;
     for (int s = 0; s < static_cast<int>(model.shapes().size()); ++s) {
