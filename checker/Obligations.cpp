@@ -88,14 +88,15 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         }
         report.obligations.push_back(std::move(o));
     };
-    auto limited = [&](const std::string& name, const std::string& kind, const std::function<Obligation()>& prove) { return withinLimits(name, kind, prove, run.written()); };
     std::vector<std::unique_ptr<PropertyType>> types;
     for (const rules::Property& p : system.properties) types.push_back(propertyType(p));
     for (const auto& type : types) {
         if (!selected(type->name())) continue;
         announce(type->name());
         const Budget budget = options.obligationBudget();
-        add(limited(type->name(), type->kind(), [&] { return type->prove({run, budget, invariants}); }), *type, Evidence::Obligation);
+        add(withinLimits(
+                type->name(), type->kind(), [&] { return type->prove({run, budget, invariants}); }, run.written()),
+            *type, Evidence::Obligation);
     }
 
     // What --depth and --reach show unreachable: a state breaking an invariant, or (progress) a
@@ -161,7 +162,9 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             if (!t.atDepth) continue;
             const std::string name = t.property->name + "@bmc" + std::to_string(options.depth);
             announce(name);
-            add(limited(name, "bmc", [&] { return bmc(t, options.depth, name); }), *t.type, Evidence::Path);
+            add(withinLimits(
+                    name, "bmc", [&] { return bmc(t, options.depth, name); }, run.written()),
+                *t.type, Evidence::Path);
         }
 
     // Every reachable state, without a depth bound: Horn clauses for Spacer (Reach.cpp). A
