@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """check, path and diff stay within --memory on a large region: the rule engine on the region
-(about 1.5 KB a cell for planner_intermediate) and the workers' buffers (a slot per rule instance)
+(about 1.3 KB a cell for planner_intermediate) and the workers' buffers (a slot per rule instance)
 count against it. export --config checks its estimate before it parses the configuration.
 
 Usage: memory_bound.py HOLON WORKDIR LIBRARY
