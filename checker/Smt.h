@@ -32,10 +32,8 @@ public:
     /// Throws Failure("out of memory") where Z3 cannot make a context within its memory limit.
     /// Freed with the Context unless `budget` is spent or interrupted by then (see the destructor).
     explicit Context(const Budget& budget = Budget());
-    /// Z3 frees the terms a move assignment left referenced (see Term) only with the context,
-    /// layer by layer, in time quadratic in the formulas' depth (40 s after a 0.5 s timeout for
-    /// Progress on square:12x12). Past the deadline that time is not spent: the context stays
-    /// allocated, and reachable, until the process ends.
+    /// Releases the terms move assignments kept (see Term), newest first, then the context.
+    /// Past the deadline or a signal it stays allocated, and reachable, until the process ends.
     ~Context();
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
@@ -61,16 +59,20 @@ public:
     void markExhausted() { exhausted_ = true; }
 
 private:
+    friend class Term;
     struct Watcher;  // interrupts Z3 at the deadline or on a signal, in Smt.cpp
     Budget budget_;
     Native* native_;
+    /// The Z3 terms move assignments overwrote, in order (Term::Node*, declared below): each still
+    /// holds the reference Z3's C++ API would have kept.
+    std::vector<const void*> retained_;
     bool exhausted_ = false;
     std::unique_ptr<Watcher> watcher_;
 };
 
 /// A Z3 term, reference-counted; copies share the term. A move assignment keeps the term it
 /// overwrites referenced until the context goes, as Z3 4.8.12's C++ API does: the SMT-LIB2 files
-/// written from the terms depend on it (see Smt.cpp).
+/// written from the terms, and the solver's timings, depend on it (see Smt.cpp).
 class Term {
 public:
     /// What the inspection of a solved formula needs (Reach's invariant printer); anything else is Other.
@@ -88,7 +90,7 @@ public:
     Term(const Term& o);
     Term(Term&& o) noexcept : ctx_(o.ctx_), node_(o.node_) { o.node_ = nullptr; }
     Term& operator=(const Term& o);
-    Term& operator=(Term&& o) noexcept;
+    Term& operator=(Term&& o);
     ~Term();
 
     Context& context() const { return *ctx_; }
