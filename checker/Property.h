@@ -40,7 +40,7 @@ inline constexpr PhaseCost kComponentsCost{16, 0};
 struct Stuck {
     std::vector<StateId> deadlocks, edgeEffects;
     std::uint64_t unclassified = 0;
-    std::string unclassifiedWhy;  // why some stuck states were not classified: "within the limits", or the grown region's size
+    std::string unclassifiedWhy;  // why some stuck states were not classified: the budget, or the grown region's size
 };
 
 /// What an explicit-state check reads: the explored graph and whether it is whole.

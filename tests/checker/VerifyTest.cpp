@@ -298,6 +298,14 @@ TEST_CASE("progress means one thing: a state stuck only at the region's edge is 
     const auto hc = test::checkAll(test::parse(hex), "hex:r1");
     CHECK(hc.property("progress").verdict == Verdict::Holds);
     CHECK(hc.property("progress").witness["edge_effects"] > 0);
+    // Every stuck state is classified, not the first 10,000: each row's A's packed to the right is
+    // stuck only at the edge, 4^7 - 1 = 16,383 states of square:3x7 (6,383 were left unclassified,
+    // and the verdict unknown).
+    const char* packed = "system packed\nlattice square2d\nsymmetry none\nstates A\nrule r: A@(0,0) _@(1,0) => _ A\ngoal count(A) == 0\nprogress\n";
+    const auto pc = test::checkAll(test::parse(packed), "square:3x7");
+    CHECK(pc.property("progress").verdict == Verdict::Holds);
+    CHECK(pc.property("progress").witness["edge_effects"] == 16383);
+    CHECK(pc.property("progress").witness["unclassified"] == 0);
     // A real deadlock is still one: without the invariant, the empty region is stuck on any region.
     const char* bare = "system bare\nlattice square2d\nstates M\nrule grow: M@(0,0) _@(1,0) => M M\ngoal count(M) >= 100\nprogress\n";
     test::World b(test::parse(bare), "square:3x1");
