@@ -38,6 +38,10 @@ struct Args {
 int run(const Args& a) {
     // From the start: a plan read from a FIFO is waited for, and its start line can take seconds.
     const rules::StopSignals guard(true);
+    // A signal or --timeout stops the replay between two lines: the steps so far are reported as
+    // judged, and the exit is 128 + the signal or 3 (a plan of 10^8 steps takes minutes). It counts
+    // from here: a 162 MB start line took 6 s to read, and a replay with --timeout 0.5 went on.
+    const Budget budget = Budget(a.timeout) || Budget::onSignals();
     const std::optional<rules::System> system = loadRules(a.rules, {});
     if (!system) return kExitBadInput;
     // A folder opens as an empty stream, which read as a plan cut short.
@@ -80,9 +84,6 @@ int run(const Args& a) {
 
     std::int64_t steps = 0, losses = 0;
     rules::PlanLine step;
-    // A signal or --timeout stops the replay between two lines: the steps so far are reported as
-    // judged, and the exit is 128 + the signal or 3 (a plan of 10^8 steps takes minutes).
-    const Budget budget = Budget(a.timeout) || Budget::onSignals();
     while (plan.next(step)) {
         if ((steps + losses) % 4096 == 0)
             if (const std::optional<StopReason> why = budget.reached()) {

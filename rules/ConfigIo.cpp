@@ -9,6 +9,7 @@
 
 #include "rules/ConfigIo.h"
 
+#include "rules/Budget.h"
 #include "rules/Error.h"
 #include "rules/Escape.h"
 #include "rules/OutputFile.h"
@@ -60,41 +61,59 @@ std::string withoutBom(const std::string& text) { return text.rfind("\xEF\xBB\xB
 
 namespace {
 
-/// A SAX pass that only checks every object names each key once. The library's callback parser
-/// would do it in the same pass as the parse, but it looks for discarded values among the parent's
-/// elements at the end of every object: quadratic in a list of cells (a 160,000-cell configuration
-/// took 11 s to read, a million cells over two minutes).
-struct KeysOnce {
+/// The parse as a SAX pass that builds the value (the library's own builder), checks that every
+/// object names each key once, and reads the job's deadline and the signal catcher every 2^16
+/// values. The library's callback parser would check the keys too, but it looks for discarded
+/// values among the parent's elements at the end of every object: quadratic in a list of cells (a
+/// 160,000-cell configuration took 11 s to read, a million cells over two minutes). A key pass
+/// before the library's parse cost a second lexing of the text, and neither could be stopped: a
+/// 162 MB plan's start line took 6 s to read after --timeout 0.5.
+class CheckedParse {
+public:
     using json = nlohmann::json;
-    // The keys of each open object, innermost last. A set: one object of a 64 MiB file may have a
-    // million keys.
-    std::vector<std::unordered_set<std::string>> open;
-    bool null() { return true; }
-    bool boolean(bool) { return true; }
-    bool number_integer(json::number_integer_t) { return true; }
-    bool number_unsigned(json::number_unsigned_t) { return true; }
-    bool number_float(json::number_float_t, const json::string_t&) { return true; }
-    bool string(json::string_t&) { return true; }
-    bool binary(json::binary_t&) { return true; }
-    bool start_object(std::size_t) { return open.emplace_back(), true; }
-    bool end_object() { return open.pop_back(), true; }
-    bool start_array(std::size_t) { return true; }
-    bool end_array() { return true; }
+    explicit CheckedParse(json& result) : build_(result) {}
+    bool null() { return poll(), build_.null(); }
+    bool boolean(bool b) { return poll(), build_.boolean(b); }
+    bool number_integer(json::number_integer_t n) { return poll(), build_.number_integer(n); }
+    bool number_unsigned(json::number_unsigned_t n) { return poll(), build_.number_unsigned(n); }
+    bool number_float(json::number_float_t n, const json::string_t& text) { return poll(), build_.number_float(n, text); }
+    bool string(json::string_t& v) { return poll(), build_.string(v); }
+    bool binary(json::binary_t& v) { return poll(), build_.binary(v); }
+    bool start_object(std::size_t n) { return open_.emplace_back(), build_.start_object(n); }
+    bool end_object() { return open_.pop_back(), build_.end_object(); }
+    bool start_array(std::size_t n) { return build_.start_array(n); }
+    bool end_array() { return build_.end_array(); }
     bool key(json::string_t& key) {
-        if (!open.back().insert(key).second) throw InputError("the key \"" + excerpt(key, 60) + "\" appears twice in one object; give each key once");
-        return true;
+        // A set: one object of a 64 MiB file may have a million keys.
+        if (!open_.back().insert(key).second) throw InputError("the key \"" + excerpt(key, 60) + "\" appears twice in one object; give each key once");
+        return build_.key(key);
     }
-    // A syntax error is left to the parse that follows, which reports it with its place.
-    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) { return false; }
+    // A template as the builder's is: it throws `e` as its own type (parse_error, with its byte).
+    template <class Exception>
+    bool parse_error(std::size_t at, const std::string& token, const Exception& e) {
+        return build_.parse_error(at, token, e);
+    }
+
+private:
+    void poll() {
+        if (++values_ % (1u << 16) != 0) return;
+        checkJobDeadline("reading JSON");
+        Budget::onSignals().check("reading JSON");
+    }
+    // The library's value builder: not in its documented API, but the one json::parse uses.
+    nlohmann::detail::json_sax_dom_parser<json> build_;
+    std::vector<std::unordered_set<std::string>> open_;  // the keys of each open object, innermost last
+    std::uint32_t values_ = 0;
 };
 
 }  // namespace
 
 nlohmann::json parseJsonOnceEach(const std::string& text) {
     checkJsonText(text);
-    KeysOnce keys;
-    nlohmann::json::sax_parse(text, &keys);
-    return nlohmann::json::parse(text);
+    nlohmann::json result;
+    CheckedParse parse(result);
+    nlohmann::json::sax_parse(text, &parse);
+    return result;
 }
 
 std::string jsonErrorText(const std::exception& e) {
