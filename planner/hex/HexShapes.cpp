@@ -8,6 +8,7 @@
 
 #include "rules/Components.h"
 #include "rules/Error.h"
+#include "rules/Escape.h"
 #include "rules/OutputFile.h"
 #include "rules/Parameter.h"
 #include "rules/Picture.h"
@@ -58,7 +59,14 @@ std::vector<std::uint8_t> readPicture(const HexArray& array, const std::string& 
                          " characters, but " + rules::parameterName(rules::Parameter::Size) + " is " + std::to_string(n) + "; draw N rows of N characters");
     std::vector<std::uint8_t> shape(array.size(), 0);
     for (int r = 0; r < n; ++r)
-        for (int i = 0; i < n; ++i) shape[array.pictureIndex(r, i)] = lines[r][i] == '#';
+        for (int i = 0; i < n; ++i) {
+            // Anything else was read as empty: a NUL byte or a stray letter drew a hole silently.
+            const char c = lines[r][i];
+            if (c != '#' && c != '.' && c != ' ')
+                throw InputError(role + " " + path + ":" + std::to_string(r + 1) + ":" + std::to_string(i + 1) + ": '" + rules::excerpt(std::string_view(&c, 1)) +
+                                 "' is not a picture character; draw a module as '#' and an empty point as '.' or a space");
+            shape[array.pictureIndex(r, i)] = c == '#';
+        }
     return shape;
 }
 
