@@ -34,7 +34,9 @@ std::string libraryDir() {
 }
 
 std::string rulesPath(const std::string& name) {
-    if (std::filesystem::exists(name)) return name;
+    // A regular file, not anything of that name: a folder called planner_intermediate in the
+    // working directory (an --out folder named after its system) was read as the rule file.
+    if (std::error_code error; std::filesystem::is_regular_file(name, error)) return name;
     const std::string bundled = libraryDir() + "/" + name + ".holon";
     return std::filesystem::exists(bundled) ? bundled : name;  // a missing file is reported by the reader
 }

@@ -22,7 +22,8 @@ std::optional<System> loadSystem(const std::string& path, std::ostream& diagnost
 /// The folder of the bundled library, rules/library/.
 std::string libraryDir();
 /// A rule file, or the stem of a bundled system ("planner_general1"): the path to read. Every
-/// command that takes a rule file takes a bundled name this way.
+/// command that takes a rule file takes a bundled name this way. A regular file of that name comes
+/// first; a folder of that name does not hide the bundled system.
 std::string rulesPath(const std::string& name);
 /// Paths of every bundled .holon file, sorted.
 std::vector<std::string> libraryFiles();

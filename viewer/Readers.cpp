@@ -41,10 +41,15 @@ std::string text(const nlohmann::json& j, const char* key) { return j.is_object(
 
 /// The system a file's states belong to: --rules, else the file it names, else the bundled one.
 rules::System loadNamed(const std::string& rulesFile, const std::string& source, const std::string& name, const std::string& where) {
-    // A "source" the file names is followed only to a regular file: a FIFO there hung view.
+    // A "source" the file names is followed only to a regular file: a FIFO there hung view. Its
+    // "system" is a name, looked up among the bundled systems only: as a path it found a folder
+    // or file of that name in the working directory first.
     std::error_code error;
-    const std::string path = rules::rulesPath(!rulesFile.empty() ? rulesFile : !source.empty() && std::filesystem::is_regular_file(source, error) ? source
-                                                                                                                                                  : name);
+    const bool plainName = !name.empty() && name.find_first_of("/\\") == std::string::npos && name != "." && name != "..";
+    const std::string path = !rulesFile.empty()                                                   ? rules::rulesPath(rulesFile)
+                             : !source.empty() && std::filesystem::is_regular_file(source, error) ? source
+                             : plainName                                                          ? rules::libraryDir() + "/" + name + ".holon"
+                                                                                                  : std::string();
     if (!std::filesystem::exists(path))
         throw InputError(!rulesFile.empty() ? "--rules " + rulesFile + ": no such file or bundled system"
                                             : where + ": the rule file it names ('" + (source.empty() ? name : source) + "') is not there; give it with --rules FILE");
