@@ -90,13 +90,17 @@ std::string seriesSvg(const std::vector<planner::hex::SculptResult>& runs, int s
     return svg.document(w + left + 10, h + bottom + 10, {{"font-size", 11}});
 }
 
+// What --out holds.
+const rules::OutputNames kFrame{"frame_", ".svg"};
+const std::string kSeriesSvg = "series.svg", kSeriesCsv = "series.csv";
+
 /// series.svg and series.csv; a file that cannot be written is added to `errors`.
 void writeOutputs(const HexArgs& a, const std::vector<planner::hex::SculptResult>& runs, int steps, WriteErrors& errors) {
     const auto attempt = [&](const std::string& name, const std::function<void(std::ostream&)>& fill) {
         errors.attempt([&] { rules::OutputFile("--out", (std::filesystem::path(a.out) / name).string()).write(fill); });
     };
-    attempt("series.svg", [&](std::ostream& svg) { svg << seriesSvg(runs, steps); });
-    attempt("series.csv", [&](std::ostream& csv) {
+    attempt(kSeriesSvg, [&](std::ostream& svg) { svg << seriesSvg(runs, steps); });
+    attempt(kSeriesCsv, [&](std::ostream& csv) {
         csv << "step";
         for (std::size_t r = 0; r < runs.size(); ++r) csv << ",completeness" << r << ",stability" << r << ",compliance" << r << ",holes" << r;
         csv << '\n';
@@ -132,7 +136,7 @@ int run(HexArgs a) {
     rules::requireMemory(rules::checkedProduct({perRun, std::uint64_t(parallel)}) + rules::checkedProduct({series, std::uint64_t(a.reps)}), a.memoryMiB << 20,
                          std::to_string(a.reps) + (a.reps == 1 ? " run of " : " runs of ") + std::to_string(a.setup.steps) + " timesteps on " + std::to_string(a.setup.size) + "x" +
                              std::to_string(a.setup.size) + " (" + std::to_string(parallel) + " at once)");
-    if (!a.out.empty()) rules::removeEarlierOutputs(a.out, {"frame_*.svg", "series.svg", "series.csv"});
+    if (!a.out.empty()) rules::removeEarlierOutputs(a.out, {kFrame.pattern(), kSeriesSvg, kSeriesCsv});
     std::vector<planner::hex::SculptResult> runs(a.reps);
     std::vector<char> ran(a.reps, 0);
     WriteErrors errors;  // written only by run 0 (the frames), read after every run has ended
@@ -147,7 +151,7 @@ int run(HexArgs a) {
                     if (steps) steps->timestepEnded();
                     if (!a.out.empty() && r == 0 && (s.time() == 1 || s.time() == last / 10 || s.time() == last)) {
                         errors.attempt([&] {
-                            rules::OutputFile("--out", (std::filesystem::path(a.out) / ("frame_" + std::to_string(s.time()) + ".svg")).string()).write(planner::hex::sculptSvg(s));
+                            rules::OutputFile("--out", (std::filesystem::path(a.out) / kFrame.of(std::to_string(s.time()))).string()).write(planner::hex::sculptSvg(s));
                         });
                     } },
                 budget,

@@ -56,22 +56,26 @@ std::string name(const Job& j) {
     return std::string(rb::couplingName(j.coupling)) + "_" + rb::strategyName(j.strategy) + "_" + std::to_string(j.run);
 }
 
+// What --out holds, per run.
+const rules::OutputNames kTrace{"trace_", ".csv"}, kFeet{"feet_", ".svg"}, kAssembly{"assembly_", ".svg"}, kSteps{"steps_", ".jsonl"},
+    kCoordination{"coordination_", ".json"};
+
 /// One run's trace (CSV), foot traces and assembly (SVG), its actions for holon view (JSON Lines), and its coordination rule; a file that
 /// cannot be written is added to `errors`.
 void writeRun(const std::filesystem::path& dir, const Job& j, const rb::Setting& setting, WriteErrors& errors) {
     const auto write = [&](const std::string& file, const std::function<void(std::ostream&)>& fill) {
         errors.attempt([&] { rules::OutputFile("--out", (dir / file).string()).write(fill); });
     };
-    write("trace_" + name(j) + ".csv", [&](std::ostream& csv) {
+    write(kTrace.of(name(j)), [&](std::ostream& csv) {
         csv << "module,begin,end,from_x,from_y,to_x,to_y,force_x,force_y,seat\n";
         for (const rb::Action& a : j.result.actions)
             csv << a.module << ',' << a.begin << ',' << a.end << ',' << a.from.x << ',' << a.from.y << ',' << a.to.x << ',' << a.to.y << ','
                 << a.forceX << ',' << a.forceY << ',' << a.seat << '\n';
     });
-    write("feet_" + name(j) + ".svg", [&](std::ostream& out) { out << rb::footTraceSvg(setting, j.result); });
-    write("assembly_" + name(j) + ".svg", [&](std::ostream& out) { out << rb::assemblySvg(setting, j.result); });
-    write("steps_" + name(j) + ".jsonl", [&](std::ostream& out) { out << rb::runSteps(setting, j.result, name(j)); });
-    if (!j.result.coordination.empty()) write("coordination_" + name(j) + ".json", [&](std::ostream& out) { out << j.result.coordination; });
+    write(kFeet.of(name(j)), [&](std::ostream& out) { out << rb::footTraceSvg(setting, j.result); });
+    write(kAssembly.of(name(j)), [&](std::ostream& out) { out << rb::assemblySvg(setting, j.result); });
+    write(kSteps.of(name(j)), [&](std::ostream& out) { out << rb::runSteps(setting, j.result, name(j)); });
+    if (!j.result.coordination.empty()) write(kCoordination.of(name(j)), [&](std::ostream& out) { out << j.result.coordination; });
 }
 
 /// Collisions of the runs that did not deadlock, and of all runs.
@@ -228,7 +232,7 @@ int run(const RoombotsArgs& a, const CLI::App& sub) {
     const int parallel = std::min(static_cast<int>(jobs.size()), a.threads > 0 ? a.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
     rules::requireMemory((std::uint64_t{16} << 20) * std::uint64_t(parallel) + (std::uint64_t{64} << 10) * jobs.size(), a.memoryMiB << 20,
                          std::to_string(jobs.size()) + " runs (" + std::to_string(parallel) + " at once)");
-    if (!a.out.empty()) rules::removeEarlierOutputs(a.out, {"trace_*.csv", "feet_*.svg", "assembly_*.svg", "steps_*.jsonl", "coordination_*.json"});
+    if (!a.out.empty()) rules::removeEarlierOutputs(a.out, {kTrace.pattern(), kFeet.pattern(), kAssembly.pattern(), kSteps.pattern(), kCoordination.pattern()});
     rb::AssemblyOptions options;
     options.stallSteps = a.stall;
     options.budget = budget;  // a run the budget cuts short is dropped, not counted

@@ -84,6 +84,14 @@ public:
 /// whole folder is the option's.
 void prepareOutputDir(const std::string& option, const std::string& dir, const std::vector<std::string>& names = {});
 
+/// A family of output files, `prefix` + an id + `suffix` ("frame_" 200 ".svg"): the one spelling
+/// of its names, for writing them and for the pattern that finds an earlier run's.
+struct OutputNames {
+    std::string prefix, suffix;
+    std::string of(const std::string& id) const { return prefix + id + suffix; }
+    std::string pattern() const { return prefix + "*" + suffix; }
+};
+
 /// Removes the files in `dir` (not below it) whose names match `names` (patterns as above): the
 /// outputs an earlier run left in a reused folder. Called when a run starts writing, so the folder
 /// holds one run's files; a stale violation.itf.json or frame_2000.svg beside a new run's summary
