@@ -306,6 +306,14 @@ TEST_CASE("progress means one thing: a state stuck only at the region's edge is 
     CHECK(pc.property("progress").verdict == Verdict::Holds);
     CHECK(pc.property("progress").witness["edge_effects"] == 16383);
     CHECK(pc.property("progress").witness["unclassified"] == 0);
+    // An obligation's time is all of it, the formulas' building too, as its timeout counts it: under
+    // count(#) >= 1 on hex:r2 progress said 86 ms of a 2 s obligation (verdict audit 5).
+    {
+        test::World z(test::parse("system z1\nlattice hex2d\nstates A\nrule put: _@(0,0) _@(1,0) => A A\nconstraint count(#) >= 1\ngoal count(#) >= 99\nprogress\n"), "hex:r2");
+        const Budget wall;
+        const double said = result(checker::verify(*z.model, z.region, {}), "progress").seconds;
+        CHECK(said >= 0.5 * wall.elapsed());
+    }
     // A real deadlock is still one: without the invariant, the empty region is stuck on any region.
     const char* bare = "system bare\nlattice square2d\nstates M\nrule grow: M@(0,0) _@(1,0) => M M\ngoal count(M) >= 100\nprogress\n";
     test::World b(test::parse(bare), "square:3x1");
