@@ -221,6 +221,22 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 } else if (proof.verdict == Verdict::Unknown) {
                     o.result.summary = "the solver gave up: " + unknownReason(proof.reason);
                     o.result.limited = limitReached(proof.reason);
+                    // Spacer can give up where a bounded search settles it at once (verdict audit
+                    // 5: "Overflow encountered when expanding vector" on hex:r1, a deadlock 1 step
+                    // from the start): a path to a bad state is looked for, as after "reachable".
+                    if (!o.result.limited) {
+                        Obligation shortest = withinLimits(name, "reach", [&] { return bmc(t, std::numeric_limits<int>::max(), name); });
+                        o.result.seconds += shortest.result.seconds;
+                        if (shortest.result.verdict == Verdict::Violated) {
+                            shortest.result.kind = "reach";
+                            shortest.result.seconds = o.result.seconds;
+                            shortest.smtFile = o.smtFile;
+                            o = shortest;
+                        } else {
+                            o.result.summary += "; no path to a bad state found by a bounded search either";
+                            o.result.limited = shortest.result.limited;
+                        }
+                    }
                 } else {
                     o.result.verdict = Verdict::Unknown;
                     o.result.summary = "a bad state is reachable, but no trace to it within the timeout";

@@ -314,6 +314,24 @@ TEST_CASE("progress means one thing: a state stuck only at the region's edge is 
         const double said = result(checker::verify(*z.model, z.region, {}), "progress").seconds;
         CHECK(said >= 0.5 * wall.elapsed());
     }
+    // Spacer gives up on this one ("Overflow encountered when expanding vector"), and the deadlock
+    // is 1 step from the start (r1 deletes the B): a bounded search finds it (verdict audit 5: it
+    // was unknown).
+    {
+        test::World p(test::parse("system p1\nlattice hex2d\nsymmetry rotations+reflections\nstates A | B\n"
+                                  "rule r0: !A@(0,0) _@(-1,0) _@(0,1) => * A A if all nbr@2 _\nrule r1: B@(0,0) => _\n"
+                                  "rule r2: B@(0,0) _@(-1,0) => _ B\nconstraint connected\ngoal all(_)\nprogress\n"),
+                      "hex:r1");
+        rules::Configuration start = p.in->empty();
+        p.set(start, 0, 0, "A");
+        p.set(start, 0, 1, "B");
+        checker::VerifyOptions po;
+        po.initial = {start};
+        po.reach = true;
+        const auto pr = checker::verify(*p.model, p.region, po);
+        CHECK(result(pr, "progress@reach").verdict == Verdict::Violated);
+        CHECK(result(pr, "progress@reach").trace->steps.size() == 2);
+    }
     // A real deadlock is still one: without the invariant, the empty region is stuck on any region.
     const char* bare = "system bare\nlattice square2d\nstates M\nrule grow: M@(0,0) _@(1,0) => M M\ngoal count(M) >= 100\nprogress\n";
     test::World b(test::parse(bare), "square:3x1");
