@@ -265,21 +265,16 @@ std::optional<smt::Term> SmtEncoding::cellwise(const Expr& e, const State& s) {
     // Sign lemmas: a sum at most 0 with a positive cell has a negative one, and so on. The solver
     // finds these pigeonhole facts only by trying every cell (Progress over general1: if the
     // mass fits the target and a metamodule lies outside it, some target cell is empty).
+    // A cell is never both positive and negative (it has one state), so "a positive cell j has a
+    // negative cell k != j" is "some positive cell -> some negative cell": linear in the cells. Each
+    // j with its own disjunction over the others was quadratic, and cellwise runs once per
+    // instance's successor under a constraint (progress under count(#) >= 1 on hex:r3: 6 s of
+    // building for a 0.1 s proof).
+    auto any = [&](const std::vector<smt::Term>& cells) { return smt::anyOf(ctx_, cells); };
     auto atMost = [&](std::int64_t bound) {  // sum <= bound
-        smt::Term f = ctx_.boolVal(true);
-        if (bound > 0) return f;
-        for (int j = 0; j < n; ++j) {
-            smt::Term other = ctx_.boolVal(false);
-            for (int k = 0; k < n; ++k)
-                if (k != j) other = other || neg[k];
-            f = f && smt::implies(pos[j], other);
-        }
-        if (bound < 0) {
-            smt::Term any = ctx_.boolVal(false);
-            for (int k = 0; k < n; ++k) any = any || neg[k];
-            f = f && any;
-        }
-        return f;
+        if (bound > 0) return ctx_.boolVal(true);
+        const smt::Term f = smt::implies(any(pos), any(neg));
+        return bound < 0 ? f && any(neg) : f;
     };
     auto atLeast = [&](std::int64_t bound) {  // sum >= bound: the mirror image
         std::swap(pos, neg);
