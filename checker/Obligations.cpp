@@ -173,6 +173,11 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
     // @reach -- restrict the steps the later Horn clauses consider. Inductiveness not asked for is
     // proved here without being reported or exported.
     std::vector<const rules::Property*> known;
+    // That proving has one obligation's budget in all, and its time is reported with the first
+    // @reach obligation: each invariant had a budget of its own, and none of it was shown (with
+    // --obligation-timeout 4, progress@reach said 4.9 s and took 9; robustness audit 6).
+    const Budget assumed = options.obligationBudget();
+    double assumedSeconds = 0;
     if (options.reach && !options.initial.empty()) {
         VerifyOptions quiet = options;
         quiet.smtOut.clear();
@@ -184,10 +189,10 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             });
             if (!initially) continue;
             auto asked = std::find_if(report.obligations.begin(), report.obligations.end(), [&](const Obligation& o) { return o.result.name == p->name; });
-            const Budget budget = options.obligationBudget();
-            const auto proved = [&] { return withinLimits(p->name, "invariant", [&] { return propertyType(*p)->prove({quietRun, budget, invariants}); }).result.verdict; };
+            const auto proved = [&] { return withinLimits(p->name, "invariant", [&] { return propertyType(*p)->prove({quietRun, assumed, invariants}); }).result.verdict; };
             if ((asked != report.obligations.end() ? asked->result.verdict : proved()) == Verdict::Holds) known.push_back(p);
         }
+        assumedSeconds = assumed.elapsed();
     }
     auto knownAt = [&](SmtEncoding& enc, const SmtEncoding::State& s) {
         smt::Term all = s.is[0][0].context().boolVal(true);
@@ -252,6 +257,8 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 }
                 return o;
             });
+            o.result.seconds += assumedSeconds;
+            assumedSeconds = 0;
             add(std::move(o), *t.type, Evidence::Path);
         }
     report.writeErrors = run.writeErrors();

@@ -8,8 +8,10 @@ Usage: verify_limits.py HOLON WORKDIR LIBRARY
   it, 13 MB each: 3.9 GB and 9 s for a 5 s budget (3,000 invariants: the machine ran out, no table).
 - planner_intermediate on square:14x14 with --memory 300: the obligation ran out of memory in 1 s,
   and freeing its context took 54 s before the exit (square:20x20: minutes, deaf to signals).
+- progress --reach with --obligation-timeout 2: the invariants it assumes were proved first, each
+  with a budget of its own, and that time was in no row (the table said 2.9 s of a 5 s run).
 """
-import os, resource, subprocess, sys, time
+import os, re, resource, subprocess, sys, time
 
 holon, work, lib = sys.argv[1:4]
 os.makedirs(work, exist_ok=True)
@@ -36,4 +38,15 @@ with open(many, "w") as f:
 run("300 invariants, --timeout 2", ["verify", many, "--region", "square:3x3", "--timeout", "2"], 3, 8, 1000, "p299")
 run("square:14x14 --memory 300", ["verify", os.path.join(lib, "planner_intermediate.holon"), "--region", "square:14x14", "--memory", "300", "--property", "progress"], 3, 10, 2000,
     "out of memory")
+examples = os.path.join(lib, "..", "..", "examples", "verify")
+start = time.monotonic()
+r = subprocess.run([holon, "verify", os.path.join(lib, "planner_general2.holon"), "--region", "square:3x2", "--property", "progress", "--reach", "--from",
+                    os.path.join(examples, "general_start.json"), "--input", "target=" + os.path.join(examples, "general_target.txt"), "--obligation-timeout", "2"],
+                   capture_output=True, text=True, timeout=300)
+took = time.monotonic() - start
+shown = sum(int(ms) for ms in re.findall(r"^  \S+ +\S+ +(\d+) ms", r.stdout, re.M)) / 1000
+ok = r.returncode in (0, 1, 3) and shown >= 0.8 * took
+print(f"progress --reach, --obligation-timeout 2: exit {r.returncode}, {took:.1f} s, the table shows {shown:.1f} s (at least 80 %)" + ("" if ok else f"  FAILED\n{r.stdout[-2000:]}"))
+if not ok:
+    failures.append("reach time")
 sys.exit(1 if failures else 0)
