@@ -116,6 +116,8 @@ int run(const CheckArgs& a) {
     options.properties = a.properties;
     if (a.all && !a.from.empty()) throw InputError("give either --all or --from, not both");
     if (!a.all && a.from.empty()) throw InputError("say where to start: --from CONFIG (JSON or ASCII art), or --all for every legal configuration");
+    // From here: a signal while a large --from is read ended holon with no word (robustness audit 6).
+    const rules::StopSignals guard(true);  // a signal stops the exploration: the report so far, 128 + the signal
     options.initial = readStarts(in, a.from, a.inputs, &options.inputs);
     requireSharedInputs(options.initial, a.from);
     const bool terminal = isatty(2) && !a.json;
@@ -125,7 +127,6 @@ int run(const CheckArgs& a) {
                       << s.depth << ", " << std::fixed << std::setprecision(1) << s.seconds << " s   " << std::flush;
         };
     checker::Exploration kept;
-    const rules::StopSignals guard(true);  // a signal stops the exploration: the report so far, 128 + the signal
     const checker::CheckReport report = checker::check(model, region, options, &kept);
     if (terminal) std::cerr << "\r" << std::string(90, ' ') << "\r";
     const rules::Engine& engine = *kept.engine;

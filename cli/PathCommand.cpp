@@ -64,6 +64,8 @@ int run(const PathArgs& a) {
     if (!a.svg.empty()) svgOut.emplace("--svg", a.svg);
 
     checker::PathQuery query;
+    // From here: a signal while a large --from is read ended holon with no word (robustness audit 6).
+    const rules::StopSignals guard(true);  // a signal stops the search: undecided, 128 + the signal
     query.from = readStarts(in, {a.from}, a.inputs).front();
     if (!a.to.empty()) {
         query.to = readStarts(in, {a.to}, a.inputs, nullptr, "--to").front();
@@ -72,7 +74,6 @@ int run(const PathArgs& a) {
     }
     query.limits = a.limits.limits();
     query.search = search;
-    const rules::StopSignals guard(true);  // a signal stops the search: undecided, 128 + the signal
     const bool terminal = isatty(2) && !a.json;
     if (terminal)
         query.onProgress = [](const checker::ExploreStats& s) {
