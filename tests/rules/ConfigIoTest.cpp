@@ -1,6 +1,7 @@
 // Configuration formats: JSON and ASCII art round trips, and clear errors for bad input.
 
 #include "TestSupport.h"
+#include "rules/Budget.h"
 #include "rules/Error.h"
 
 #include <sstream>
@@ -115,4 +116,18 @@ TEST_CASE("a key given twice in one JSON object is refused, not the last one kep
     CHECK_THROWS_WITH_AS(rules::configFromText(*w.in, R"({"cells":[{"at":[0,0],"state":"M","at":[1,1]}]})"), doctest::Contains("the key \"at\" appears twice"), InputError);
     // The same key in different objects is fine.
     CHECK(rules::configFromText(*w.in, R"({"cells":[{"at":[0,0],"state":"M"},{"at":[1,0],"state":"M"}]})").cells[w.region.indexOf({1, 0, 0})] != 0);
+}
+
+TEST_CASE("a large configuration is read within the job's deadline") {
+    // Turning a start line of 10^6 cells into a configuration took a second after its parse, with
+    // the deadline unread (robustness audit 6). The value is built here, so only that loop is timed.
+    World w(test::parse("system pix\nlattice square2d\nstates M\n"), "square:200x200");
+    nlohmann::json j = {{"cells", nlohmann::json::array()}};
+    for (int x = 0; x < 200; ++x)
+        for (int y = 0; y < 200; ++y) j["cells"].push_back({{"at", {x, y}}, {"state", "M"}});
+    CHECK(rules::configFromJson(*w.in, j).cells.size() == 40000u);
+    setJobDeadline(1e-9);
+    CHECK_THROWS_AS(rules::configFromJson(*w.in, j), LimitError);
+    setJobDeadline(0);
+    CHECK(rules::configFromJson(*w.in, j).cells.size() == 40000u);
 }
