@@ -213,6 +213,20 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 for (const std::string& f : proof.certificateFiles) o.smtFile += (o.smtFile.empty() ? "" : " ") + f;
                 o.result.verdict = proof.verdict;
                 o.result.seconds = proof.seconds;
+                // Deepening BMC for the shortest path to a bad state; found, it is the verdict (true).
+                auto shortestPath = [&](Obligation& reach) {
+                    Obligation shortest = withinLimits(name, "reach", [&] { return bmc(t, std::numeric_limits<int>::max(), name); });
+                    reach.result.seconds += shortest.result.seconds;
+                    if (shortest.result.verdict != Verdict::Violated) {
+                        reach.result.limited = reach.result.limited || shortest.result.limited;
+                        return false;
+                    }
+                    shortest.result.kind = "reach";
+                    shortest.result.seconds = reach.result.seconds;
+                    shortest.smtFile = reach.smtFile;
+                    reach = shortest;
+                    return true;
+                };
                 if (isKnown) {
                     o.result.verdict = Verdict::Holds;
                     o.result.summary = "holds in every reachable state: it is inductive and holds initially";
@@ -229,31 +243,12 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                     // Spacer can give up where a bounded search settles it at once (verdict audit
                     // 5: "Overflow encountered when expanding vector" on hex:r1, a deadlock 1 step
                     // from the start): a path to a bad state is looked for, as after "reachable".
-                    if (!o.result.limited) {
-                        Obligation shortest = withinLimits(name, "reach", [&] { return bmc(t, std::numeric_limits<int>::max(), name); });
-                        o.result.seconds += shortest.result.seconds;
-                        if (shortest.result.verdict == Verdict::Violated) {
-                            shortest.result.kind = "reach";
-                            shortest.result.seconds = o.result.seconds;
-                            shortest.smtFile = o.smtFile;
-                            o = shortest;
-                        } else {
-                            o.result.summary += "; no path to a bad state found by a bounded search either";
-                            o.result.limited = shortest.result.limited;
-                        }
-                    }
+                    if (!o.result.limited && !shortestPath(o)) o.result.summary += "; no path to a bad state found by a bounded search either";
                 } else {
                     o.result.verdict = Verdict::Unknown;
                     o.result.summary = "a bad state is reachable, but no trace to it within the timeout";
                     o.result.limited = true;
-                    Obligation shortest = withinLimits(name, "reach", [&] { return bmc(t, std::numeric_limits<int>::max(), name); });
-                    o.result.seconds += shortest.result.seconds;
-                    if (shortest.result.verdict == Verdict::Violated) {
-                        shortest.result.kind = "reach";
-                        shortest.result.seconds = o.result.seconds;
-                        shortest.smtFile = o.smtFile;
-                        o = shortest;
-                    }
+                    shortestPath(o);
                 }
                 return o;
             });
