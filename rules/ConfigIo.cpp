@@ -15,6 +15,7 @@
 #include "rules/OutputFile.h"
 #include "rules/Parameter.h"
 #include "rules/Picture.h"
+#include "rules/StopSignals.h"
 #include "rules/TextFile.h"
 
 #include <algorithm>
@@ -63,8 +64,8 @@ namespace {
 
 /// Reads the job's deadline and the signal catcher: a large input takes seconds to read.
 void pollJob(const char* during) {
+    StopSignals::stopIfCaught();
     checkJobDeadline(during);
-    Budget::onSignals().check(during);
 }
 
 /// The parse as a SAX pass that builds the value (the library's own builder), checks that every
