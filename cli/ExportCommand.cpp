@@ -91,7 +91,7 @@ Exported fromConfiguration(const ExportArgs& a) {
     if (rulesName.empty() || regionSpec.empty())
         throw InputError("--config " + a.config + " does not name its " + (rulesName.empty() ? "system" : "region") +
                          "; give --rules (the system it is a configuration of) and --region (the region it lies on), as holon check --from takes them");
-    const auto system = loadRules(rulesName, a.noWarnings);
+    const auto system = loadRules(rulesName, a.noWarnings, !a.rules.empty() ? "--rules" : "the system --config " + a.config + " names,");
     if (!system) throw InputError("--rules " + rulesName + ": the rule file has errors (above)");
     // Before the region is built and the text parsed: a JSON configuration's parsed form took
     // 14 bytes per byte of its text (a 45 MB file peaked at 651 MB under --memory 16).

@@ -46,8 +46,8 @@ CLI::Option* addRulesFiles(CLI::App* sub, const std::string& name, std::vector<s
     return sub->add_option(name, files, std::string(kRulesHelp) + "; several may be given");
 }
 
-std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings) {
-    const std::string path = rules::rulesPath(file);
+std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings, const std::string& option) {
+    const std::string path = rules::rulesPath(file, option);
     rules::OutputClaims::reading("the rule file", path);
     return rules::loadSystem(path, std::cerr, loadOptions(noWarnings));
 }

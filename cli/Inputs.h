@@ -21,8 +21,8 @@ rules::LoadOptions loadOptions(const std::vector<std::string>& noWarnings);
 CLI::Option* addRulesFile(CLI::App* sub, const std::string& name, std::string& file, const std::string& what = "");
 CLI::Option* addRulesFiles(CLI::App* sub, const std::string& name, std::vector<std::string>& files);
 /// Parses a rule file or bundled system (rulesPath), printing diagnostics to stderr; nothing when
-/// it has errors.
-std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings);
+/// it has errors. `option` ("--rules"; empty for a positional argument) names where it was given.
+std::optional<rules::System> loadRules(const std::string& file, const std::vector<std::string>& noWarnings, const std::string& option = "");
 /// Per-cell input bits from NAME=FILE arguments (FILE: an ASCII mask; `none`: the input holds
 /// nowhere, `all`: everywhere, so a file by either name is written ./none). `named`, if given,
 /// gets bit k set for each input k an argument names.

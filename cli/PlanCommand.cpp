@@ -205,7 +205,7 @@ int run(const PlanArgs& a) {
     if (!a.traceOut.empty()) traceFile.emplace("--trace-out", a.traceOut);
     else if (!a.out.empty()) traceFile.emplace("--out", a.out + "/violation.itf.json");
 
-    auto system = loadRules(a.rules, a.noWarnings);
+    auto system = loadRules(a.rules, a.noWarnings, "--rules");
     if (!system) return 2;
     const std::uint64_t memory = a.memoryMiB << 20;
     planner::Shape from = planner::parseShape(a.from, a.scale, memory);

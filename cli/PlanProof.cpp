@@ -48,7 +48,7 @@ bool valid(const PlanProof& p) { return p.check.status == checker::CertificateSt
 }  // namespace
 
 PlanProof planProof(const std::string& rules, const rules::System& system, const std::string& lattice) {
-    const std::string path = rules::rulesPath(rules);
+    const std::string path = rules::rulesPath(rules, "--rules");
     PlanProof proof;
     proof.check = checker::checkCertificate(checker::certificatePath(path, lattice), system.sourceSha256, lattice);
     proof.verify = "holon verify " + rules + " --every-size --lattice " + lattice;

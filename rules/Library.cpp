@@ -33,12 +33,23 @@ std::string libraryDir() {
     return HOLON_LIBRARY_DIR;
 }
 
-std::string rulesPath(const std::string& name) {
+std::string bundledPath(const std::string& stem) { return libraryDir() + "/" + stem + ".holon"; }
+
+std::string rulesPath(const std::string& name, const std::string& option) {
     // A regular file, not anything of that name: a folder called planner_intermediate in the
     // working directory (an --out folder named after its system) was read as the rule file.
-    if (std::error_code error; std::filesystem::is_regular_file(name, error)) return name;
-    const std::string bundled = libraryDir() + "/" + name + ".holon";
-    return std::filesystem::exists(bundled) ? bundled : name;  // a missing file is reported by the reader
+    std::error_code error;
+    if (std::filesystem::is_regular_file(name, error)) return name;
+    if (const std::string bundled = bundledPath(name); std::filesystem::is_regular_file(bundled, error)) return bundled;
+    if (std::filesystem::exists(name, error)) return name;  // a folder or a FIFO: the reader says what it is
+    // "cannot read 'nosuch'" named neither the option nor that a bundled name would have done.
+    std::string stems;
+    try {
+        for (const std::string& file : libraryFiles()) stems += (stems.empty() ? "" : ", ") + std::filesystem::path(file).stem().string();
+    } catch (const std::filesystem::filesystem_error&) {
+        stems = "(none: the library folder " + libraryDir() + " cannot be read)";
+    }
+    throw InputError((option.empty() ? "" : option + " ") + "'" + name + "': no such rule file, and no bundled system of that name; give a .holon file or one of: " + stems);
 }
 
 std::vector<std::string> libraryFiles() {
@@ -50,7 +61,7 @@ std::vector<std::string> libraryFiles() {
 }
 
 System librarySystem(const std::string& stem) {
-    const std::string path = libraryDir() + "/" + stem + ".holon";
+    const std::string path = bundledPath(stem);
     std::ostringstream messages;
     auto system = loadSystem(path, messages);
     if (!system) throw InputError("library system '" + stem + "' failed to load:\n" + messages.str());

@@ -21,10 +21,13 @@ std::optional<System> loadSystem(const std::string& path, std::ostream& diagnost
 
 /// The folder of the bundled library, rules/library/.
 std::string libraryDir();
+/// The path of the bundled system `stem` ("planner_general1"), there or not.
+std::string bundledPath(const std::string& stem);
 /// A rule file, or the stem of a bundled system ("planner_general1"): the path to read. Every
 /// command that takes a rule file takes a bundled name this way. A regular file of that name comes
-/// first; a folder of that name does not hide the bundled system.
-std::string rulesPath(const std::string& name);
+/// first; a folder of that name does not hide the bundled system. When there is neither, throws
+/// InputError naming `option` (as "--rules"; empty for a positional argument) and the bundled names.
+std::string rulesPath(const std::string& name, const std::string& option = "");
 /// Paths of every bundled .holon file, sorted.
 std::vector<std::string> libraryFiles();
 /// Loads a bundled system by file stem ("planner_intermediate"); throws InputError when it fails.

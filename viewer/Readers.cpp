@@ -46,13 +46,14 @@ rules::System loadNamed(const std::string& rulesFile, const std::string& source,
     // or file of that name in the working directory first.
     std::error_code error;
     const bool plainName = !name.empty() && name.find_first_of("/\\") == std::string::npos && name != "." && name != "..";
-    const std::string path = !rulesFile.empty()                                                   ? rules::rulesPath(rulesFile)
+    const std::string path = !rulesFile.empty()                                                   ? rules::rulesPath(rulesFile, "--rules")
                              : !source.empty() && std::filesystem::is_regular_file(source, error) ? source
-                             : plainName                                                          ? rules::libraryDir() + "/" + name + ".holon"
+                             : plainName                                                          ? rules::bundledPath(name)
                                                                                                   : std::string();
     if (!std::filesystem::exists(path))
-        throw InputError(!rulesFile.empty() ? "--rules " + rulesFile + ": no such file or bundled system"
-                                            : where + ": the rule file it names ('" + (source.empty() ? name : source) + "') is not there; give it with --rules FILE");
+        throw InputError(where + ": the rule file it names ('" + (source.empty() ? name : source) + "') is not there" +
+                         (source.empty() && plainName ? " (a system's name is looked up among the bundled systems only, not in the working directory)" : "") +
+                         "; give it with --rules FILE");
     rules::OutputClaims::reading("the rule file", path);  // -o must not replace it
     std::optional<rules::System> system = rules::loadSystem(path, std::cerr);
     if (!system) throw InputError(path + ": the rule file has errors (above); fix it or give another with --rules FILE");
