@@ -82,8 +82,7 @@ std::unique_ptr<rules::Engine> engineWithin(const rules::Model& model, const rul
     // The build polls the job's deadline and the signal catcher: on 4 million cells it takes a
     // minute, and --timeout 1 ran 65 s.
     auto engine = std::make_unique<rules::Engine>(model, region, inputs, false, std::vector<int>{}, [] {
-        checkJobDeadline("building the rule engine");
-        rules::StopSignals::stopIfCaught();
+        rules::StopSignals::checkJob("building the rule engine");
     });
     limits.memoryBytes -= std::min(limits.memoryBytes, engine->regionBytes());
     return engine;

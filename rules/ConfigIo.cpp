@@ -9,7 +9,6 @@
 
 #include "rules/ConfigIo.h"
 
-#include "rules/Budget.h"
 #include "rules/Error.h"
 #include "rules/Escape.h"
 #include "rules/OutputFile.h"
@@ -62,12 +61,6 @@ std::string withoutBom(const std::string& text) { return text.rfind("\xEF\xBB\xB
 
 namespace {
 
-/// Reads the job's deadline and the signal catcher: a large input takes seconds to read.
-void pollJob(const char* during) {
-    StopSignals::stopIfCaught();
-    checkJobDeadline(during);
-}
-
 /// The parse as a SAX pass that builds the value (the library's own builder), checks that every
 /// object names each key once, and reads the job's deadline and the signal catcher every 2^16
 /// values. The library's callback parser would check the keys too, but it looks for discarded
@@ -106,7 +99,7 @@ public:
 
 private:
     void poll() {
-        if (++values_ % (1u << 16) == 0) pollJob("reading JSON");
+        if (++values_ % (1u << 16) == 0) StopSignals::checkJob("reading JSON");
     }
     // The library's value builder: not in its documented API, but the one json::parse uses.
     nlohmann::detail::json_sax_dom_parser<json> build_;
@@ -256,7 +249,7 @@ Configuration configFromJson(const Interpreter& in, const nlohmann::json& j, std
     std::size_t read = 0;
     for (const auto& cell : j["cells"]) {
         // A start line of 10^6 cells takes a second here, after its parse (robustness audit 6).
-        if (++read % (1u << 14) == 0) pollJob("reading a configuration");
+        if (++read % (1u << 14) == 0) StopSignals::checkJob("reading a configuration");
         if (!cell.is_object() || !cell.contains("at")) throw InputError("each cell is an object with \"at\" and its fields");
         const int i = cellIndex(cell["at"]);
         if (c.cells[i]) throw InputError("cell " + quote(cell["at"]) + " is listed twice");

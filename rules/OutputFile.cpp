@@ -6,7 +6,6 @@
 
 #include "rules/OutputFile.h"
 
-#include "rules/Budget.h"
 #include "rules/Error.h"
 #include "rules/StopSignals.h"
 
@@ -43,8 +42,7 @@ int openSpecial(const std::string& option, const std::string& path) {
             return fd;
         }
         if (errno != ENXIO && errno != EINTR) throw InputError(option + " " + path + ": cannot open: " + reason());
-        StopSignals::stopIfCaught();
-        checkJobDeadline("holon waited for a reader of " + option + " " + path + " (a FIFO nothing reads); start its reader first, or raise the limit");
+        StopSignals::checkJob("holon waited for a reader of " + option + " " + path + " (a FIFO nothing reads); start its reader first, or raise the limit");
         ::usleep(50'000);
     }
 }

@@ -3,6 +3,7 @@
 
 #include "rules/StopSignals.h"
 
+#include "rules/Budget.h"
 #include "rules/Error.h"
 #include "rules/OutputFile.h"
 
@@ -87,6 +88,11 @@ const volatile std::sig_atomic_t* StopSignals::caught() { return &caughtSignal; 
 void StopSignals::stopIfCaught() {
     // Outside any catcher a signal ends holon by itself; what an earlier catcher caught is done with.
     if (const int signal = caughtSignal; signal != 0 && depth > 0) throw Interrupted(signal);
+}
+
+void StopSignals::checkJob(const std::string& during) {
+    stopIfCaught();
+    checkJobDeadline(during);
 }
 
 void endOnSignalsCleanly() {

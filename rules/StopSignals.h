@@ -4,6 +4,7 @@
 // mid-write. One mechanism for every subcommand that needs it.
 
 #include <csignal>
+#include <string>
 
 namespace holon::rules {
 
@@ -25,6 +26,9 @@ public:
     /// Throws Interrupted once the catcher installed now has caught a signal: for work that polls no
     /// budget (reading an input, building a page) but must stop as a run would.
     static void stopIfCaught();
+    /// stopIfCaught, then checkJobDeadline(during): the poll of every input reader and of work
+    /// outside a run's budget.
+    static void checkJob(const std::string& during);
 
 private:
     struct sigaction oldInt_ {

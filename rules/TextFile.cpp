@@ -29,8 +29,7 @@ namespace {
 /// Waits until `fd` has data or its writer has gone, a slice at a time.
 void waitReadable(int fd, const std::string& path) {
     for (;;) {
-        StopSignals::stopIfCaught();
-        checkJobDeadline("holon waited for '" + path + "' (a pipe or FIFO that nothing wrote); start its writer first, or raise the limit");
+        StopSignals::checkJob("holon waited for '" + path + "' (a pipe or FIFO that nothing wrote); start its writer first, or raise the limit");
         const double left = jobSecondsLeft();
         pollfd polled{fd, POLLIN, 0};
         const int slice = static_cast<int>(std::ceil(std::min(left, 0.1) * 1000));

@@ -116,8 +116,7 @@ std::string pageData(const Run& run) {
 
 std::string page(Run run) {
     sample(run);
-    rules::StopSignals::stopIfCaught();
-    checkJobDeadline("building the page");
+    rules::StopSignals::checkJob("building the page");
     std::string html = kViewerPage;
     const std::string marker = "HOLON_VIEWER_DATA";
     const std::size_t at = html.find(marker);

@@ -298,8 +298,7 @@ Run readLines(const std::string& path, std::istream& in, const std::string& rule
     rules::PlanLine j;
     while (lines.next(j)) {
         // holon plan --html builds the page after its run, within its --timeout and signal catcher.
-        rules::StopSignals::stopIfCaught();
-        checkJobDeadline("building the page");
+        rules::StopSignals::checkJob("building the page");
         const std::string where = lines.where();
         if (!round || j.round != *round) {
             close();
