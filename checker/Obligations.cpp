@@ -140,7 +140,6 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
         const std::string proved = "holds on every path of up to " + std::to_string(depth) + " steps from the given configurations";
         Obligation o = run.solve(name, "bmc", ctx, enc, start && someBad, decode, proved, 1.0, lemmas);
         for (int k = 1; k <= depth && o.result.verdict == Verdict::Holds; ++k) {
-            const double spent = o.result.seconds;
             if (budget.expired()) {
                 o.result.verdict = Verdict::Unknown;
                 o.result.summary = "timeout at depth " + std::to_string(k);
@@ -153,7 +152,6 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
             someBad = someBad || target.bad(enc, path[k]);
             lemmas = lemmas && enc.instantiate().all;
             o = run.solve(name, "bmc", ctx, enc, start && steps && someBad, decode, proved, 1.0, lemmas);
-            o.result.seconds += spent;
         }
         return o;
     };
@@ -212,17 +210,14 @@ VerifyReport verify(const rules::Model& model, const rules::Region& region, cons
                 Obligation o = ProofRunner::named(name, "reach");
                 for (const std::string& f : proof.certificateFiles) o.smtFile += (o.smtFile.empty() ? "" : " ") + f;
                 o.result.verdict = proof.verdict;
-                o.result.seconds = proof.seconds;
                 // Deepening BMC for the shortest path to a bad state; found, it is the verdict (true).
                 auto shortestPath = [&](Obligation& reach) {
                     Obligation shortest = withinLimits(name, "reach", [&] { return bmc(t, std::numeric_limits<int>::max(), name); });
-                    reach.result.seconds += shortest.result.seconds;
                     if (shortest.result.verdict != Verdict::Violated) {
                         reach.result.limited = reach.result.limited || shortest.result.limited;
                         return false;
                     }
                     shortest.result.kind = "reach";
-                    shortest.result.seconds = reach.result.seconds;
                     shortest.smtFile = reach.smtFile;
                     reach = shortest;
                     return true;

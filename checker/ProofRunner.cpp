@@ -12,7 +12,6 @@
 #include "rules/Error.h"
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 
 namespace holon::checker {
@@ -74,7 +73,6 @@ void ProofRunner::limitTime(smt::Solver& solver, const Budget& budget, double sh
 Obligation ProofRunner::solve(const std::string& name, const std::string& kind, smt::Context& ctx, SmtEncoding& enc, const smt::Term& query,
                               const std::function<void(const smt::Model&, PropertyResult&)>& decode, const std::string& provedText,
                               double timeoutShare, const std::optional<smt::Term>& earlierLemmas) {
-    const auto start = std::chrono::steady_clock::now();
     Obligation o = named(name, kind);
     const SmtEncoding::Lemmas lemmas = enc.instantiate();
     auto check = [&](const smt::Term& chosen) {
@@ -117,7 +115,6 @@ Obligation ProofRunner::solve(const std::string& name, const std::string& kind, 
         if (r == smt::Result::Unknown) reason = s.reasonUnknown();
         solver = s;
     }
-    o.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     switch (*result) {
     case smt::Result::Unsat:
         o.result.verdict = Verdict::Holds;
@@ -150,7 +147,6 @@ void ProofRunner::recordInputs(const smt::Model& m, smt::Context& ctx, PropertyR
 Obligation ProofRunner::stepwise(const std::string& name, const std::string& kind, smt::Context& ctx, SmtEncoding& enc, const smt::Term& base,
                                  const std::function<smt::Term(int)>& perInstance,
                                  const std::function<void(const smt::Model&, int, PropertyResult&)>& decode, const std::string& provedText) {
-    const auto start = std::chrono::steady_clock::now();
     Obligation o = named(name, kind);
     const int count = static_cast<int>(engine_.instances().size());
     const smt::Term lemmas = enc.instantiate().all;
@@ -196,7 +192,6 @@ Obligation ProofRunner::stepwise(const std::string& name, const std::string& kin
             break;
         }
     }
-    o.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return o;
 }
 

@@ -36,7 +36,8 @@ public:
     /// Solves `query` (after the encoding's domain facts); a model becomes a counterexample via
     /// `decode`. The encoding's lemmas (and `earlierLemmas`) help the solver but are not written
     /// with --smt-out: an exported obligation is the theorem alone, so that a re-check does not
-    /// rest on the argument that makes them valid.
+    /// rest on the argument that makes them valid. The obligation's time is withinLimits' to
+    /// measure, as for every obligation: it times the whole of it.
     Obligation solve(const std::string& name, const std::string& kind, smt::Context& ctx, SmtEncoding& enc, const smt::Term& query,
                      const std::function<void(const smt::Model&, PropertyResult&)>& decode, const std::string& provedText,
                      double timeoutShare = 1.0, const std::optional<smt::Term>& earlierLemmas = std::nullopt);

@@ -20,7 +20,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -140,7 +139,6 @@ std::vector<smt::Term> irredundant(const smt::Term& found, const smt::Term& onSt
 /// The Horn clauses, built and solved in this process.
 ReachProof solveHorn(smt::Context& ctx, const rules::Engine& engine, const BadStates& bad, const BadStates& known,
                      const std::vector<rules::Configuration>& initial, const Budget& budget, const std::string& smtOption, const std::string& smtFile) {
-    const auto start = std::chrono::steady_clock::now();
     const rules::Region& region = engine.region();
     const rules::Model& model = engine.model();
     const int alphabet = model.alphabet().size();
@@ -244,12 +242,11 @@ ReachProof solveHorn(smt::Context& ctx, const rules::Engine& engine, const BadSt
         if (proof.verdict == Verdict::Holds)
             for (const smt::Term& c : irredundant(found, inv(s), s, ctx)) proof.invariant.push_back(clauseText(c, atoms, model.alphabet()));
     }
-    proof.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return proof;
 }
 
 nlohmann::json toJson(const ReachProof& p) {
-    return {{"verdict", static_cast<int>(p.verdict)}, {"invariant", p.invariant}, {"reason", p.reason}, {"seconds", p.seconds}, {"files", p.certificateFiles}, {"used_known", p.usedKnown}};
+    return {{"verdict", static_cast<int>(p.verdict)}, {"invariant", p.invariant}, {"reason", p.reason}, {"files", p.certificateFiles}, {"used_known", p.usedKnown}};
 }
 
 ReachProof reachProofFromJson(const nlohmann::json& answer) {
@@ -261,7 +258,6 @@ ReachProof reachProofFromJson(const nlohmann::json& answer) {
     proof.verdict = static_cast<Verdict>(answer["verdict"].get<int>());
     proof.invariant = answer["invariant"].get<std::vector<std::string>>();
     proof.reason = answer["reason"].get<std::string>();
-    proof.seconds = answer["seconds"].get<double>();
     proof.certificateFiles = answer["files"].get<std::vector<std::string>>();
     proof.usedKnown = answer["used_known"].get<bool>();
     return proof;
@@ -305,8 +301,8 @@ ReachProof proveUnreachable(const rules::Engine& engine, const BadStates& bad, c
         jobs, [](const nlohmann::json& a) { return a.contains("verdict") && static_cast<Verdict>(a["verdict"].get<int>()) != Verdict::Unknown; }, budget);
     ReachProof best = answer.job >= 0 ? reachProofFromJson(answer.answer) : ReachProof{};
     // No child answered (the solvers overran the grace past the budget): the reason firstDecisive
-    // gives, and the time spent, not "the solver gave up: " and 0 ms.
-    if (answer.job < 0) best.reason = answer.answer.value("error", std::string("timeout: no solver process answered")), best.seconds = budget.elapsed();
+    // gives, not "the solver gave up: ".
+    if (answer.job < 0) best.reason = answer.answer.value("error", std::string("timeout: no solver process answered"));
     const int winner = best.verdict != Verdict::Unknown ? answer.job : -1;
     // The winner's files take the plain names; the others' are removed, with the temporaries of a
     // loser stopped in the middle of a write (OutputFile writes beside the file, then renames).

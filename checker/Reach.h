@@ -21,7 +21,6 @@ struct ReachProof {
     /// inputs, when the initial configurations differ in them).
     std::vector<std::string> invariant;
     std::string reason;  // when unknown
-    double seconds = 0;
     /// Written SMT-LIB2 (with `smtFile`): the three checks of the invariant found, ordinary queries
     /// that are unsat when it is a certificate. The Horn clauses themselves go to `smtFile`.
     std::vector<std::string> certificateFiles;
