@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
+#include <string_view>
 #include <unordered_set>
 
 namespace holon::rules {
@@ -495,6 +496,11 @@ Configuration configFromText(const Interpreter& in, const std::string& withBom, 
             if (index) throw InputError("'#" + std::to_string(*index) + "' picks a state of an ITF trace, and this is a configuration; give " + path + " without it");
             return configFromJson(in, j, inputsNamed);
         }
+        // A JSON array was read as a picture ("row 1 of the picture has 15 cells"): say what it is.
+        // (By its first two tokens: parsing the whole of a large file only to say so would be unpolled.)
+        if (const auto second = text.find_first_not_of(" \t\r\n", first + 1);
+            text[first] == '[' && second != std::string::npos && std::string_view("{[]\"").find(text[second]) != std::string_view::npos)
+            throw InputError("a JSON array; a configuration is a JSON object with a \"cells\" array, as {\"cells\": [{\"at\": [0, 0], ...}]} (docs/cli.md), or ASCII art");
         if (index) throw InputError("'#" + std::to_string(*index) + "' picks a state of an ITF trace, and this is ASCII art; give " + path + " without it");
         return configFromAscii(in, text);
     } catch (const nlohmann::json::exception& e) {
