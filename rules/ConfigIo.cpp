@@ -72,7 +72,30 @@ namespace {
 class CheckedParse {
 public:
     using json = nlohmann::json;
-    explicit CheckedParse(json& result) : build_(result) {}
+    /// The text as the parser reads it, a character at a time: each step records how far the
+    /// parser has read, so that a repeated key can be given its line and column (the SAX
+    /// callbacks are given no position).
+    class Reading {
+    public:
+        using iterator_category = std::input_iterator_tag;
+        using value_type = char;
+        using difference_type = std::ptrdiff_t;
+        using pointer = const char*;
+        using reference = const char&;
+        Reading(const char* at, const char** read) : at_(at), read_(read) {}
+        reference operator*() const { return *at_; }
+        Reading& operator++() { return *read_ = ++at_, *this; }
+        bool operator==(const Reading& other) const { return at_ == other.at_; }
+        bool operator!=(const Reading& other) const { return at_ != other.at_; }
+
+    private:
+        const char* at_;
+        const char** read_;
+    };
+
+    CheckedParse(json& result, const std::string& text) : build_(result), text_(&text), read_(text.data()) {}
+    Reading begin() { return {text_->data(), &read_}; }
+    Reading end() { return {text_->data() + text_->size(), &read_}; }
     bool null() { return poll(), build_.null(); }
     bool boolean(bool b) { return poll(), build_.boolean(b); }
     bool number_integer(json::number_integer_t n) { return poll(), build_.number_integer(n); }
@@ -89,7 +112,8 @@ public:
     bool key(json::string_t& key) {
         poll();
         // A set: one object of a 64 MiB file may have a million keys.
-        if (!open_.back().insert(key).second) throw InputError("the key \"" + excerpt(key, 60) + "\" appears twice in one object; give each key once");
+        if (!open_.back().insert(key).second)
+            throw InputError(keyPlace() + "the key \"" + excerpt(key, 60) + "\" appears twice in one object; give each key once");
         return build_.key(key);
     }
     // A template as the builder's is: it throws `e` as its own type (parse_error, with its byte).
@@ -102,10 +126,23 @@ private:
     void poll() {
         if (++values_ % (1u << 16) == 0) StopSignals::checkJob("reading JSON");
     }
+    /// "line L, column C: " of the key just read: the parser has read up to its closing quote.
+    std::string keyPlace() const {
+        const char* const text = text_->data();
+        std::size_t at = static_cast<std::size_t>(read_ - text);
+        at = at > 0 ? at - 1 : 0;  // the closing quote
+        while (at > 0 && !(text[at - 1] == '"' && (at < 2 || text[at - 2] != '\\'))) --at;
+        at = at > 0 ? at - 1 : 0;  // the opening quote
+        const std::size_t lineStart = text_->rfind('\n', at);
+        const auto line = 1 + std::count(text, text + at, '\n');
+        return "line " + std::to_string(line) + ", column " + std::to_string(at - (lineStart == std::string::npos ? 0 : lineStart + 1) + 1) + ": ";
+    }
     // The library's value builder: not in its documented API, but the one json::parse uses.
     nlohmann::detail::json_sax_dom_parser<json> build_;
     std::vector<std::unordered_set<std::string>> open_;  // the keys of each open object, innermost last
     std::uint32_t values_ = 0;
+    const std::string* text_;
+    const char* read_;  // how far the parser has read (Reading)
 };
 
 }  // namespace
@@ -113,8 +150,8 @@ private:
 nlohmann::json parseJsonOnceEach(const std::string& text) {
     checkJsonText(text);
     nlohmann::json result;
-    CheckedParse parse(result);
-    nlohmann::json::sax_parse(text, &parse);
+    CheckedParse parse(result, text);
+    nlohmann::json::sax_parse(parse.begin(), parse.end(), &parse);
     return result;
 }
 

@@ -112,8 +112,10 @@ TEST_CASE("a trace for another region names the region to run with, and only one
 
 TEST_CASE("a key given twice in one JSON object is refused, not the last one kept") {
     World w = World::library("pixel", "square:3x3");
-    CHECK_THROWS_WITH_AS(rules::configFromText(*w.in, R"({"cells":[{"at":[0,0],"state":"M"}],"cells":[]})"), doctest::Contains("the key \"cells\" appears twice in one object"), InputError);
+    CHECK_THROWS_WITH_AS(rules::configFromText(*w.in, R"({"cells":[{"at":[0,0],"state":"M"}],"cells":[]})"), doctest::Contains("line 1, column 37: the key \"cells\" appears twice in one object"), InputError);
     CHECK_THROWS_WITH_AS(rules::configFromText(*w.in, R"({"cells":[{"at":[0,0],"state":"M","at":[1,1]}]})"), doctest::Contains("the key \"at\" appears twice"), InputError);
+    // The place is the repeated key's opening quote, escapes inside the key included (it had none).
+    CHECK_THROWS_WITH_AS(rules::configFromText(*w.in, "{\n  \"cells\": [],\n    \"a\\\"b\": 1, \"a\\\"b\": 2}"), doctest::Contains("line 3, column 16: the key"), InputError);
     // The same key in different objects is fine.
     CHECK(rules::configFromText(*w.in, R"({"cells":[{"at":[0,0],"state":"M"},{"at":[1,0],"state":"M"}]})").cells[w.region.indexOf({1, 0, 0})] != 0);
 }
