@@ -7,6 +7,7 @@
 #include "planner/hex/HexShapes.h"
 
 #include "rules/Components.h"
+#include "rules/ConfigIo.h"
 #include "rules/Error.h"
 #include "rules/Escape.h"
 #include "rules/OutputFile.h"
@@ -46,10 +47,31 @@ std::vector<std::uint8_t> readPicture(const HexArray& array, const std::string& 
     // and the read below then waited for a second writer.
     if (std::error_code missing; !std::filesystem::exists(path, missing))
         throw InputError(role + " '" + path + "': not square, T, rectangle or circle, and no such file");
-    std::vector<std::string> lines;
+    std::string text;
     try {
         rules::OutputClaims::reading("the picture", path);  // --steps-out must not replace it
-        lines = rules::pictureRows(rules::readTextFile(path), true);
+        text = rules::withoutBom(rules::readTextFile(path));
+    } catch (const InputError& e) {
+        throw InputError(role + " '" + path + "': " + e.what());
+    }
+    // Every character before the picture's size: anything else was read as empty (a NUL byte or a
+    // stray letter drew a hole silently), and a multi-byte character counted as several columns, so
+    // the message was about the width, not the character.
+    for (std::size_t at = 0, row = 1, rowStart = 0; at < text.size(); ++at) {
+        const char c = text[at];
+        if (c == '\n') ++row, rowStart = at + 1;
+        if (c == '#' || c == '.' || c == ' ' || c == '\n' || (c == '\r' && (at + 1 == text.size() || text[at + 1] == '\n'))) continue;
+        // The whole of a UTF-8 character, for the message: its lead byte says how long it is.
+        const auto lead = static_cast<unsigned char>(c);
+        const std::size_t length = lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3
+                                                  : lead >= 0xC0   ? 2
+                                                                   : 1;
+        throw InputError(role + " " + path + ":" + std::to_string(row) + ":" + std::to_string(at - rowStart + 1) + ": '" +
+                         rules::excerpt(std::string_view(text).substr(at, length)) + "' is not a picture character; draw a module as '#' and an empty point as '.' or a space");
+    }
+    std::vector<std::string> lines;
+    try {
+        lines = rules::pictureRows(text, true);
     } catch (const InputError& e) {
         throw InputError(role + " '" + path + "': " + e.what());
     }
@@ -59,14 +81,7 @@ std::vector<std::uint8_t> readPicture(const HexArray& array, const std::string& 
                          " characters, but " + rules::parameterName(rules::Parameter::Size) + " is " + std::to_string(n) + "; draw N rows of N characters");
     std::vector<std::uint8_t> shape(array.size(), 0);
     for (int r = 0; r < n; ++r)
-        for (int i = 0; i < n; ++i) {
-            // Anything else was read as empty: a NUL byte or a stray letter drew a hole silently.
-            const char c = lines[r][i];
-            if (c != '#' && c != '.' && c != ' ')
-                throw InputError(role + " " + path + ":" + std::to_string(r + 1) + ":" + std::to_string(i + 1) + ": '" + rules::excerpt(std::string_view(&c, 1)) +
-                                 "' is not a picture character; draw a module as '#' and an empty point as '.' or a space");
-            shape[array.pictureIndex(r, i)] = c == '#';
-        }
+        for (int i = 0; i < n; ++i) shape[array.pictureIndex(r, i)] = lines[r][i] == '#';
     return shape;
 }
 
