@@ -76,6 +76,8 @@ public:
     const BoxEngine& engine() const { return *problem_->engine; }
     const std::vector<BoxEngine::Value>& cells() const { return cells_; }
     const RunStats& stats() const { return stats_; }
+    /// The run's deadline and stop flag: what work between rounds (Faults) polls too.
+    const Budget& budget() const { return options_.budget; }
     /// The planner instances (not transfers) enabled now, and how many of them the allocator holds
     /// back (Allocator::releases): where a slow plan waits (completion.csv). A pass over the
     /// enabled instances; nothing changes.

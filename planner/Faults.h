@@ -60,8 +60,11 @@ private:
     const Problem* problem_;
     FaultOptions options_;
     Random random_;
-    std::vector<bool> done_;              // per loss
-    std::vector<std::string> events_;     // what each loss did
+    std::vector<bool> done_;           // per loss
+    std::vector<std::string> events_;  // what each loss did
+    std::int64_t roundsSeen_ = 0;      // the last round roundEnd was called after
+    /// What loss k did, or why it was not made.
+    std::string event(std::size_t k) const;
     std::vector<std::uint32_t> arrives_;  // per board cell with --delay: the round its latest state reaches the neighbours
     std::int64_t dropped_ = 0, delayed_ = 0;
     std::string broken_;
