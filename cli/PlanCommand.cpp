@@ -291,7 +291,7 @@ int run(const PlanArgs& a) {
     bool pageTimedOut = false;
     if (!a.html.empty() && report.writeErrors().empty()) {
         try {
-            errors.attempt([&] { rules::OutputFile("--html", a.html).write(viewer::page(viewer::readRun(a.planOut))); });
+            errors.attempt([&] { rules::OutputFile("--html", a.html).write(viewer::page(viewer::readRun(a.planOut, "", a.memoryMiB << 20))); });
         } catch (const Interrupted& e) {
             pageSignal = e.signal();
             std::cerr << "holon plan: --html " << a.html << " not written: " << e.what() << " while the page was built\n";

@@ -422,7 +422,7 @@ Run readItf(const nlohmann::json& itf, const std::string& path, const rules::Sys
     return run;
 }
 
-Run readRun(const std::string& path, const std::string& rulesFile) {
+Run readRun(const std::string& path, const std::string& rulesFile, std::uint64_t memoryBytes) {
     // Only a file: /dev/zero or a pipe has no end to read to.
     std::error_code error;
     if (std::filesystem::is_directory(path, error)) throw InputError(path + ": a folder, not a file; " + kFormats);
@@ -433,6 +433,16 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
     if (!in) throw InputError(path + ": cannot open the file");
     std::string first;
     std::getline(in, first);
+    // What a JSON value read whole takes is about 33 bytes per byte of its text (a plan whose
+    // start line is 78 MB peaked at 2.5 GB, a 67 MB ITF trace at 2.4 GB); the lines after the
+    // first are read one at a time (a 24 MB plan of 10^6 lines: 25 MB). A 2 GiB file was read
+    // until the machine ran out of memory.
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    auto require = [&](std::uint64_t wholeBytes) {
+        rules::requireMemory(rules::checkedProduct({wholeBytes, kBytesPerJsonByte}) + rules::checkedProduct({size, 4}), memoryBytes,
+                             "reading " + path + " (" + std::to_string(size) + " bytes, " + std::to_string(wholeBytes) + " of them one JSON value)");
+    };
+    require(first.size());
     nlohmann::json head;
     bool line = false;
     try {
@@ -450,6 +460,7 @@ Run readRun(const std::string& path, const std::string& rulesFile) {
     // be one (its parse error pointed at line 2 of a file with none).
     if (first.find_first_not_of(" \t\r\n") == std::string::npos && in.peek() == std::char_traits<char>::eof())
         throw InputError(path + ": the file is empty; " + std::string(kFormats));
+    require(size);
     std::stringstream rest;
     rest << first << '\n'
          << in.rdbuf();

@@ -5,6 +5,7 @@
 // that is none of them, or breaks its format, throws InputError naming FILE:LINE and the fix.
 
 #include "rules/Ir.h"
+#include "rules/Limits.h"
 #include "viewer/Run.h"
 
 #include <nlohmann/json.hpp>
@@ -14,8 +15,10 @@
 namespace holon::viewer {
 
 /// `rules`: the rule file to read the states with, or "" for the one the input names (its
-/// "source" when that file exists, else the bundled system of its name).
-Run readRun(const std::string& path, const std::string& rules = "");
+/// "source" when that file exists, else the bundled system of its name). A file whose reading
+/// would take more than `memoryBytes` by the estimate below is refused (LimitError), before it is
+/// parsed.
+Run readRun(const std::string& path, const std::string& rules = "", std::uint64_t memoryBytes = rules::kDefaultMemoryBytes);
 
 /// An ITF trace already in memory, of `system` (`where` names it in messages): check, path --html.
 Run readItf(const nlohmann::json& itf, const std::string& where, const rules::System& system);

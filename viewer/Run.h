@@ -60,6 +60,8 @@ constexpr std::int64_t kMaxCells = 4'000'000;
 constexpr std::int64_t kMaxChanges = 4'000'000;
 /// The largest input file the viewer reads (a plan of 10^6 metamodules is about 250 MB).
 constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t{2} << 30;
+/// The memory a JSON value read whole takes per byte of its text, an upper bound (readRun).
+constexpr std::uint64_t kBytesPerJsonByte = 40;
 
 /// Merges runs of `g` consecutive steps into one (labels of the first and last, changes to their
 /// net effect, context of all), g the smallest power of 2 that brings the changes within
