@@ -42,6 +42,8 @@ std::string rulesPath(const std::string& name, const std::string& option) {
     if (std::filesystem::is_regular_file(name, error)) return name;
     if (const std::string bundled = bundledPath(name); std::filesystem::is_regular_file(bundled, error)) return bundled;
     if (std::filesystem::exists(name, error)) return name;  // a folder or a FIFO: the reader says what it is
+    const std::string where = (option.empty() ? "" : option + " ") + "'" + name + "'";
+    if (name.find('/') != std::string::npos || std::filesystem::path(name).extension() == ".holon") throw InputError(where + ": no such rule file");
     // "cannot read 'nosuch'" named neither the option nor that a bundled name would have done.
     std::string stems;
     try {
@@ -49,7 +51,7 @@ std::string rulesPath(const std::string& name, const std::string& option) {
     } catch (const std::filesystem::filesystem_error&) {
         stems = "(none: the library folder " + libraryDir() + " cannot be read)";
     }
-    throw InputError((option.empty() ? "" : option + " ") + "'" + name + "': no such rule file, and no bundled system of that name; give a .holon file or one of: " + stems);
+    throw InputError(where + ": no such rule file, and no bundled system of that name; give a .holon file or one of: " + stems);
 }
 
 std::vector<std::string> libraryFiles() {
