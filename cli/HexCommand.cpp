@@ -7,6 +7,7 @@
 #include "cli/Limits.h"
 #include "cli/Parallel.h"
 #include "cli/WriteErrors.h"
+#include "planner/hex/HexShapes.h"
 #include "planner/hex/SculptRun.h"
 #include "planner/hex/SculptSteps.h"
 #include "rules/Budget.h"
@@ -127,6 +128,10 @@ int run(HexArgs a) {
     // the runs at a timestep boundary so that the table and the files hold whole timesteps.
     const Budget budget = Budget(a.timeout) || Budget::onSignals();
     const rules::StopSignals guard(true);  // one-shot: a second signal ends holon at once
+    // The pictures are inputs before --out is prepared and its earlier files removed: a picture
+    // saved in the folder as series.csv was deleted as an earlier output, then reported missing.
+    for (const auto& [option, spec] : {std::pair{"--from", a.setup.from}, std::pair{"--to", a.setup.to}})
+        if (planner::hex::isPictureFile(spec)) rules::OutputClaims::reading(option, spec);
     if (!a.out.empty()) rules::prepareOutputDir("--out", a.out);
     std::optional<rules::OutputStream> stepsFile;  // the first run, instance by instance
     if (!a.stepsOut.empty()) stepsFile.emplace(rules::OutputFile("--steps-out", a.stepsOut).open());

@@ -100,6 +100,8 @@ bool connected(const HexArray& array, const std::vector<std::uint8_t>& shape) {
             6, [&](int d) { return array.step(d); }, inShape));
 }
 
+bool isPictureFile(const std::string& spec) { return !namedShape(spec, 1.0); }
+
 std::vector<std::uint8_t> sculptShape(const HexArray& array, const std::string& spec, const std::string& role) {
     std::vector<std::uint8_t> shape;
     const double a = 0.66 * array.frameWidth(), cx = array.frameWidth() / 2, cy = array.frameHeight() / 2;

@@ -10,10 +10,14 @@
 namespace holon::planner::hex {
 
 /// Per board cell: 1 where the geometry is filled. `spec` is square, T, rectangle, circle or the
-/// path of a text file with N lines of N characters ('#' filled, anything else empty; the first
+/// path of a text file with N lines of N characters ('#' filled, '.' or a space empty; the first
 /// line is the top row). Throws InputError for an unknown name, a malformed file, or a geometry
 /// that is empty or not connected.
 std::vector<std::uint8_t> sculptShape(const HexArray& array, const std::string& spec, const std::string& role);
+
+/// Whether `spec` names a picture file rather than one of the named geometries: what a command
+/// declares it reads (rules::OutputClaims) before it clears or writes any output.
+bool isPictureFile(const std::string& spec);
 
 /// Whether the filled lattice points form one connected set (six neighbours); true when none are.
 bool connected(const HexArray& array, const std::vector<std::uint8_t>& shape);
