@@ -107,9 +107,9 @@ constexpr std::size_t kMaxDiskMetamodules = 500;  // every move is written out, 
 /// --hex-disks: the plan's disk moves (JSON Lines), start and end pictures, and an independent
 /// replay of every move. Returns false when a template had no disk motion or the replay failed; a
 /// file that cannot be written is added to `errors`. An interrupted plan's moves are written, not
-/// judged: the last templates are unfinished.
+/// judged: the last templates are unfinished. What it did is said on `out`.
 bool writeDisks(const std::string& dir, const planner::hex::DiskMetamodules& disks, const planner::Execution& execution, bool failed,
-                bool interrupted, WriteErrors& errors) {
+                bool interrupted, WriteErrors& errors, std::ostream& out) {
     errors.attempt([&] {
         // Millions of lines for a few dozen metamodules: streamed (rule names are identifiers).
         rules::OutputStream moves = rules::OutputFile("--hex-disks", dir + "/disk_moves.jsonl").open();
@@ -124,24 +124,24 @@ bool writeDisks(const std::string& dir, const planner::hex::DiskMetamodules& dis
     });
     errors.attempt([&] { rules::OutputFile("--hex-disks", dir + "/disks.svg").write(planner::hex::disksSvg({{"start", disks.startDisks()}, {"end", disks.disks()}})); });
     errors.attempt([&] { rules::OutputFile("--hex-disks", dir + "/creation.svg").write(planner::hex::sequenceSvg(disks.design(), 0, 6)); });
-    std::cout << "  hex disks: " << disks.side() << "x" << disks.side() << " disks per metamodule slot, " << disks.disksPerUnit()
-              << " per unit of mass (the ring); creation " << disks.design().base(0).size() << " pivot moves; " << disks.moves().size() << " pivot moves in all, in "
-              << dir << "/disk_moves.jsonl, disks.svg and creation.svg\n";
+    out << "  hex disks: " << disks.side() << "x" << disks.side() << " disks per metamodule slot, " << disks.disksPerUnit()
+        << " per unit of mass (the ring); creation " << disks.design().base(0).size() << " pivot moves; " << disks.moves().size() << " pivot moves in all, in "
+        << dir << "/disk_moves.jsonl, disks.svg and creation.svg\n";
     if (interrupted) {
-        std::cout << "  hex disks: the plan was interrupted; the moves so far are written, not replayed\n";
+        out << "  hex disks: the plan was interrupted; the moves so far are written, not replayed\n";
         return true;
     }
     if (failed) {
-        std::cout << "  hex disks FAILED: " << disks.failure() << '\n';
+        out << "  hex disks FAILED: " << disks.failure() << '\n';
         return false;
     }
     std::string why;
     if (!disks.slotsMatch(execution.cells(), why)) {
-        std::cout << "  hex disks FAILED: " << why << '\n';
+        out << "  hex disks FAILED: " << why << '\n';
         return false;
     }
     const std::string fault = planner::hex::replayDiskMoves(disks.startDisks(), disks.moves());
-    std::cout << "  hex disks replayed: " << (fault.empty() ? "every move a pivot into an empty cell, all disks connected after each" : "FAILED at " + fault) << '\n';
+    out << "  hex disks replayed: " << (fault.empty() ? "every move a pivot into an empty cell, all disks connected after each" : "FAILED at " + fault) << '\n';
     return fault.empty();
 }
 
@@ -326,7 +326,8 @@ int run(const PlanArgs& a) {
             std::cout << "  wrote " << a.out << "/ (summary.json" << (interrupted ? ", marked interrupted" : "") << ", completion.csv, snapshots"
                       << (stats.complete ? "" : ", end.json: the end configuration, for holon check --from") << ")\n";
     }
-    const bool disksOk = !disks || writeDisks(a.hexDisks, *disks, execution, disksFailed, interrupted, errors);
+    // Under --json, stdout holds the JSON alone: the disks' lines go to stderr.
+    const bool disksOk = !disks || writeDisks(a.hexDisks, *disks, execution, disksFailed, interrupted, errors, a.json ? std::cerr : std::cout);
     const bool violated = monitor && monitor->violated();
     if (violated && traceFile) {
         errors.attempt([&] {

@@ -121,7 +121,7 @@ void drawRules(const rules::System& s, const RulesOptions& o) {
         file.write(checker::drawRuleSvg(model, r));
         ++written;
     }
-    std::cout << "  drawings     " << written << (written == 1 ? " rule" : " rules") << " on " << lattice->name() << " in " << o.svgDir << "/\n";
+    (o.json ? std::cerr : std::cout) << "  drawings     " << written << (written == 1 ? " rule" : " rules") << " on " << lattice->name() << " in " << o.svgDir << "/\n";
 }
 
 void printHuman(const nlohmann::ordered_json& j, std::ostream& out) {
@@ -192,6 +192,13 @@ Run addRulesCommand(CLI::App& app) {
         nlohmann::ordered_json all = nlohmann::ordered_json::array();
         int failed = 0;
         std::map<std::string, std::string> drawn;  // system name -> the file --svg drew it from
+        // Every rule file is an input before --svg writes: x.r.svg in the folder was replaced by
+        // its own drawing (audit 7). A file that cannot be found is reported in the loop below.
+        if (!opts->svgDir.empty())
+            for (const std::string& file : opts->files) try {
+                    rules::OutputClaims::reading("the rule file", rules::rulesPath(file));
+                } catch (const InputError&) {
+                }
         for (const std::string& file : opts->files) {
             // --lattice only says where --svg draws: alone it was ignored without a word.
             if (!opts->lattice.empty() && opts->svgDir.empty()) throw InputError("--lattice chooses the lattice --svg draws the rules on; add --svg DIR, or leave out --lattice");
