@@ -5,29 +5,42 @@
 
 #include "checker/PathSearch.h"
 
+#include "rules/StopSignals.h"
+
 #include <algorithm>
 
 namespace holon::checker {
 
-Footprints::Footprints(const rules::Engine& engine) {
-    const auto& placed = engine.instances();
+Footprints::Footprints(const rules::Engine& engine) : engine_(&engine) {
     const rules::RuleTables& tables = engine.tables();
-    const rules::Region& region = engine.region();
-    writes_.resize(placed.size()), reads_.resize(placed.size());
+    const auto& placed = engine.instances();
     for (std::size_t p = 0; p < placed.size(); ++p) {
-        const auto& inst = placed[p];
-        for (int k = 0; k < inst.size; ++k)
-            if (tables.mayWrite(inst.shape, k, engine.comboOfCell(inst.cells[k]))) writes_[p].push_back(inst.cells[k]);
-        for (const rules::RuleTables::Site site : tables.readSites(inst.shape)) {
-            const int cell = inst.cells[site.cell];
-            if (const int n = site.direction < 0 ? cell : region.neighbour(cell, site.direction); n >= 0) reads_[p].push_back(n);
-        }
-        for (auto* cells : {&writes_[p], &reads_[p]}) {
-            std::sort(cells->begin(), cells->end());
-            cells->erase(std::unique(cells->begin(), cells->end()), cells->end());
-        }
-        maxWrites_ = std::max(maxWrites_, static_cast<int>(writes_[p].size()));
+        if (p % (1u << 16) == 0) rules::StopSignals::checkJob("preparing the search");
+        int writes = 0;  // an instance's pattern cells are distinct
+        for (int k = 0; k < placed[p].size; ++k) writes += tables.mayWrite(placed[p].shape, k, engine.comboOfCell(placed[p].cells[k]));
+        maxWrites_ = std::max(maxWrites_, writes);
     }
+}
+
+std::vector<int> Footprints::writes(int p) const {
+    const auto& inst = engine_->instances()[p];
+    std::vector<int> cells;
+    for (int k = 0; k < inst.size; ++k)
+        if (engine_->tables().mayWrite(inst.shape, k, engine_->comboOfCell(inst.cells[k]))) cells.push_back(inst.cells[k]);
+    std::sort(cells.begin(), cells.end());
+    return cells;
+}
+
+std::vector<int> Footprints::reads(int p) const {
+    const auto& inst = engine_->instances()[p];
+    std::vector<int> cells;
+    for (const rules::RuleTables::Site site : engine_->tables().readSites(inst.shape)) {
+        const int cell = inst.cells[site.cell];
+        if (const int n = site.direction < 0 ? cell : engine_->region().neighbour(cell, site.direction); n >= 0) cells.push_back(n);
+    }
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    return cells;
 }
 
 bool Footprints::interfere(int a, int b) const {
@@ -38,7 +51,7 @@ bool Footprints::interfere(int a, int b) const {
             else ++j;
         return false;
     };
-    return meet(reads_[a], writes_[b]) || meet(reads_[b], writes_[a]);
+    return meet(reads(a), writes(b)) || meet(reads(b), writes(a));
 }
 
 Predecessors::Predecessors(const rules::Engine& engine)

@@ -65,7 +65,7 @@ bool legalNear(Evaluator& evaluator, const rules::Engine::Placed& instance, cons
     return legal;
 }
 
-SearchMeter::SearchMeter(const PathQuery& query) : query_(&query), budget_(query.limits.budget()) {}
+SearchMeter::SearchMeter(const PathQuery& query) : query_(&query), budget_(query.limits.budget()), pollEvery_(query.from.cells.size() > (1u << 16) ? 1 : 16) {}
 
 StopReason SearchMeter::admit(std::uint64_t stored) const { return query_->limits.storable(stored + 1) ? StopReason::Finished : StopReason::MaxStates; }
 
@@ -82,7 +82,7 @@ StopReason SearchMeter::check(std::uint64_t states, std::size_t bytes, int depth
 }
 
 StopReason SearchMeter::poll() {
-    if (++polls_ < 16) return StopReason::Finished;
+    if (++polls_ < pollEvery_) return StopReason::Finished;
     polls_ = 0;
     return budget_.reached().value_or(StopReason::Finished);
 }
