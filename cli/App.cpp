@@ -84,6 +84,9 @@ int runHolon(int argc, char** argv) {
                             if (option->get_type_name().starts_with("INT") || option->get_type_name().starts_with("UINT"))
                                 if (const std::size_t at = value.find_first_not_of("+- "); at != std::string::npos && value[at] == '0' && at + 1 < value.size())
                                     throw InputError(option->get_name() + " " + value + ": write the number in decimal, without a leading 0 or a 0x prefix");
+                            // And fractions as C's strtod: --timeout 0x10 ran for 16 s (audit 7).
+                            if (option->get_type_name().starts_with("FLOAT") && value.find_first_of("xX") != std::string::npos)
+                                throw InputError(option->get_name() + " " + value + ": write the number in decimal, without a 0x prefix");
                         }
                 // --timeout counts from the job's start, for the waits no run's budget reaches yet
                 // (an input read from a FIFO that nothing writes).
