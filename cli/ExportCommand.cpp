@@ -103,6 +103,7 @@ Exported fromConfiguration(const ExportArgs& a) {
     const rules::Model model(*system, region.lattice());
     const rules::Interpreter in(model, region);
     const rules::Configuration c = rules::configFromText(in, file);
+    if (!file.index) notePictureShortfall("--config", a.config, region, file.text);  // FILE#N is an ITF trace
     std::uint64_t modules = 0;
     for (const rules::CellValue v : c.cells) modules += v != 0;
     requireExportMemory(modules, a);

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <set>
 
 namespace holon::cli {
 
@@ -52,17 +53,13 @@ std::optional<rules::System> loadRules(const std::string& file, const std::vecto
     return rules::loadSystem(path, std::cerr, loadOptions(noWarnings));
 }
 
-namespace {
-
-/// A picture smaller than the region is read as its top-left corner, the rest empty. Said, not
-/// done silently: a start or mask drawn for another region is otherwise taken as it is.
 void notePictureShortfall(const std::string& option, const std::string& path, const rules::Region& region, const std::string& text) {
-    if (const std::string shortfall = rules::pictureShortfall(region, text); !shortfall.empty())
+    // Once per file: diff reads each start for both designs, and said so twice.
+    static std::set<std::pair<std::string, std::string>> noted;
+    if (const std::string shortfall = rules::pictureShortfall(region, text); !shortfall.empty() && noted.insert({option, path}).second)
         std::cerr << "holon: note: " << option << " " << path << " is smaller than region " << region.spec() << " (" << shortfall
                   << "); it is read as the region's top-left corner, the rest empty\n";
 }
-
-}  // namespace
 
 std::vector<std::uint32_t> readInputs(const rules::Interpreter& in, const std::vector<std::string>& specs, std::uint32_t* named) {
     const rules::Region& region = in.region();

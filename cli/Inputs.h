@@ -41,6 +41,11 @@ std::string pathFor(const std::string& path, const std::string& property, bool s
 /// counterexample was found: a file left at that path by an earlier run looked current.
 void noteNoCounterexample(const std::string& command, const std::vector<std::pair<std::string, std::string>>& options);
 
+/// A picture smaller than the region is read as its top-left corner, the rest empty: said on
+/// stderr (once per option and file), not done silently, since a start or mask drawn for another
+/// region is otherwise taken as it is.
+void notePictureShortfall(const std::string& option, const std::string& path, const rules::Region& region, const std::string& text);
+
 /// The start configurations of --from, each with the inputs of `inputSpecs` (--input) added, every
 /// declared input set by one or the other (an input left out is not silently false everywhere), and
 /// each legal (else the error names the constraint that fails, with its line). With no --from,
