@@ -1,6 +1,7 @@
 // Rule drawings (checker/RuleDrawing.h). An example firing is found by planting, for each pattern
 // cell, a state its left side accepts (Engine::lhsAccepts, so inputs and field atoms count) and
-// retrying with other neighbours and inputs until the guard holds; the two configurations are
+// retrying with other neighbours and inputs until the guard holds; an orientation where that finds
+// none takes another's example turned by the symmetry between them. The two configurations are
 // drawn by the trace drawer (checker/Draw), one panel per orientation stacked in one document.
 
 #include "checker/RuleDrawing.h"
@@ -12,6 +13,7 @@
 #include "rules/Svg.h"
 
 #include <algorithm>
+#include <optional>
 #include <random>
 
 namespace holon::checker {
@@ -32,17 +34,37 @@ std::pair<rules::Region, rules::Vec> regionAround(const rules::Lattice& lattice,
     return {rules::Region::box(lattice, hi - lo + rules::Vec{1, 1, 1}).grown(1), rules::Vec{} - lo};
 }
 
-/// A panel: the example firing of one orientation, or its left side when none was found.
-rules::SvgPicture drawOrientation(const rules::Model& model, int shape, int orientation, int orientations) {
+/// An example firing of one shape: the configuration before it and the inputs, on the region
+/// regionAround draws.
+struct Example {
+    std::vector<std::uint32_t> inputs;
+    std::vector<CellValue> cells;
+};
+
+/// The shape's instance at the anchor of its drawing region, on an engine of that shape alone (a
+/// drawing per rule stays linear in the rules).
+struct Drawn {
+    rules::Region region;
+    rules::Vec anchor;
+    rules::Engine engine;
+    int instance;
+    Drawn(const rules::Model& model, int shape, const std::vector<std::uint32_t>& inputs, std::pair<rules::Region, rules::Vec> around)
+        : region(std::move(around.first)), anchor(around.second), engine(model, region, inputs, false, {shape}) {
+        const auto& placed = engine.instances();
+        const auto p = std::find_if(placed.begin(), placed.end(), [&](const rules::Engine::Placed& q) { return q.shape == shape && q.anchor == anchor; });
+        if (p == placed.end()) throw InternalError("drawRuleSvg: the region is built around the pattern, yet has no instance at its anchor");
+        instance = static_cast<int>(p - placed.begin());
+    }
+};
+
+/// An example firing found by planting states the left side accepts and retrying until the guard
+/// holds; none when 20 draws of the inputs with 300 tries each found none.
+std::optional<Example> findExample(const rules::Model& model, int shape) {
     const rules::RuleShape& rs = model.shapes()[shape];
-    // Not a structured binding: clang 14 does not let a lambda capture one.
-    const std::pair<rules::Region, rules::Vec> around = regionAround(model.lattice(), rs.offsets);
-    const rules::Region& region = around.first;
-    const rules::Vec anchor = around.second;
     const rules::System& system = model.system();
     const int alphabet = model.alphabet().size();
     std::mt19937 rng(static_cast<unsigned>(1000 + shape));
-    const std::string head = "orientation " + std::to_string(orientation + 1) + " of " + std::to_string(orientations);
+    const rules::Region region = regionAround(model.lattice(), rs.offsets).first;
     // Twenty draws of the inputs (the first: none set), each with a compiled engine and 300 tries:
     // the first leave every other cell empty (the plainest example), then every other cell holds
     // one state (guards that count many cells of a state), then random states.
@@ -50,11 +72,9 @@ rules::SvgPicture drawOrientation(const rules::Model& model, int shape, int orie
         std::vector<std::uint32_t> inputs(region.size(), 0);
         if (draw > 0 && !system.inputs.empty())
             for (auto& bits : inputs) bits = static_cast<std::uint32_t>(rng() & ((1u << system.inputs.size()) - 1));
-        const rules::Engine engine(model, region, inputs, false, {shape});  // this shape alone: a drawing per rule stays linear in the rules
-        const auto& placed = engine.instances();
-        const auto p = std::find_if(placed.begin(), placed.end(), [&](const rules::Engine::Placed& q) { return q.shape == shape && q.anchor == anchor; });
-        if (p == placed.end()) break;  // cannot happen: the region is built around the pattern
-        const int instance = static_cast<int>(p - placed.begin());
+        const Drawn d(model, shape, inputs, regionAround(model.lattice(), rs.offsets));
+        const rules::Engine& engine = d.engine;
+        const rules::Engine::Placed& p = engine.instances()[d.instance];
         for (int attempt = 0; attempt < 300; ++attempt) {
             std::vector<CellValue> cells(region.size(), 0);
             // Tries 100-199 make each free pattern cell (one that may be empty) hold one state
@@ -67,28 +87,57 @@ rules::SvgPicture drawOrientation(const rules::Model& model, int shape, int orie
                 for (auto& v : cells)
                     if (rng() % 2) v = static_cast<CellValue>(1 + rng() % (alphabet - 1));
             bool planted = true;
-            for (int k = 0; k < p->size && planted; ++k) {
-                const int cell = p->cells[k];
+            for (int k = 0; k < p.size && planted; ++k) {
+                const int cell = p.cells[k];
                 std::vector<CellValue> accepted;
                 for (int v = 0; v < alphabet; ++v)
-                    if (engine.lhsAccepts(instance, k, engine.comboOfCell(cell), static_cast<CellValue>(v))) accepted.push_back(static_cast<CellValue>(v));
+                    if (engine.lhsAccepts(d.instance, k, engine.comboOfCell(cell), static_cast<CellValue>(v))) accepted.push_back(static_cast<CellValue>(v));
                 const bool free = std::count(accepted.begin(), accepted.end(), 0) && std::count(accepted.begin(), accepted.end(), one);
                 if (accepted.empty()) planted = false;
                 else if (binary && free) cells[cell] = std::uniform_real_distribution<double>(0, 1)(rng) < share ? one : 0;
                 else cells[cell] = accepted[attempt < 20 ? attempt % accepted.size() : rng() % accepted.size()];
             }
-            if (!planted || !engine.matches(cells.data(), instance)) continue;
-            Trace t;
-            t.steps.push_back({cells, -1});
-            CellValue saved[rules::Engine::kMaxCells];
-            engine.apply(cells.data(), instance, saved);
-            t.steps.push_back({cells, instance});
-            return drawTrace(t, engine, head);
+            if (planted && engine.matches(cells.data(), d.instance)) return Example{inputs, cells};
         }
     }
-    rules::Svg none;
-    none.text(10, 22, head + ": no example found whose guard holds", {{"font-size", 14}, {"font-weight", "bold"}});
-    return none.picture(520, 40);
+    return std::nullopt;
+}
+
+/// `from`'s example carried onto shape `to` by a symmetry that maps the one's pattern onto the
+/// other's, when the guard holds there too: the random search can miss an orientation whose
+/// example is a rotation of one it found (a 19-cell hex rule: 5 of 6 panels said none).
+std::optional<Example> carried(const rules::Model& model, int from, const Example& example, int to) {
+    const std::vector<rules::Vec>&a = model.shapes()[from].offsets, &b = model.shapes()[to].offsets;
+    const auto [source, sourceAnchor] = regionAround(model.lattice(), a);
+    for (const rules::LinearMap& t : model.lattice().pointGroup()) {
+        bool maps = a.size() == b.size();
+        for (std::size_t k = 0; k < a.size() && maps; ++k) maps = t.apply(a[k]) == b[k];
+        if (!maps) continue;
+        const auto around = regionAround(model.lattice(), b);
+        Example moved{std::vector<std::uint32_t>(around.first.size(), 0), std::vector<CellValue>(around.first.size(), 0)};
+        for (int i = 0; i < source.size(); ++i)
+            if (const int j = around.first.indexOf(around.second + t.apply(source.cell(i) - sourceAnchor)); j >= 0)
+                moved.cells[j] = example.cells[i], moved.inputs[j] = example.inputs[i];
+        if (const Drawn d(model, to, moved.inputs, around); d.engine.matches(moved.cells.data(), d.instance)) return moved;
+    }
+    return std::nullopt;
+}
+
+/// A panel: the example firing of one orientation, or a line saying none was found.
+rules::SvgPicture drawOrientation(const rules::Model& model, int shape, const std::optional<Example>& example, const std::string& head) {
+    if (!example) {
+        rules::Svg none;
+        none.text(10, 22, head + ": no example found whose guard holds", {{"font-size", 14}, {"font-weight", "bold"}});
+        return none.picture(520, 40);
+    }
+    const Drawn d(model, shape, example->inputs, regionAround(model.lattice(), model.shapes()[shape].offsets));
+    Trace t;
+    std::vector<CellValue> cells = example->cells;
+    t.steps.push_back({cells, -1});
+    CellValue saved[rules::Engine::kMaxCells];
+    d.engine.apply(cells.data(), d.instance, saved);
+    t.steps.push_back({cells, d.instance});
+    return drawTrace(t, d.engine, head);
 }
 
 }  // namespace
@@ -117,8 +166,14 @@ std::string drawRuleSvg(const rules::Model& model, int rule) {
     rules::Svg body;
     body.text(10, 24, title, {{"font-size", 15}, {"font-weight", "bold"}});
     double y = 36, width = 520;
+    std::vector<std::optional<Example>> examples;
+    for (int s : shapes) examples.push_back(findExample(model, s));
+    for (std::size_t k = 0; k < shapes.size(); ++k)
+        for (std::size_t j = 0; j < shapes.size() && !examples[k]; ++j)
+            if (examples[j] && j != k) examples[k] = carried(model, shapes[j], *examples[j], shapes[k]);
     for (std::size_t k = 0; k < shapes.size(); ++k) {
-        const rules::SvgPicture panel = drawOrientation(model, shapes[k], static_cast<int>(k), static_cast<int>(shapes.size()));
+        const std::string head = "orientation " + std::to_string(k + 1) + " of " + std::to_string(shapes.size());
+        const rules::SvgPicture panel = drawOrientation(model, shapes[k], examples[k], head);
         body.nested(panel.document, 0, y);
         y += panel.height + 8, width = std::max(width, panel.width);
     }

@@ -47,3 +47,18 @@ TEST_CASE("every orientation of every library rule is drawn as an example firing
     }
     CHECK(drawn * static_cast<int>(kEveryNthFile) > 100);
 }
+
+TEST_CASE("an orientation the search misses takes a rotation of another's example") {
+    // A 19-cell hex rule whose guard counts states: the random search finds an example for some
+    // orientations only, and 5 of 6 panels said "no example found whose guard holds" (audit 7).
+    const rules::System system = test::parse(
+        "system hs\nlattice hex2d\nstates M | N | K\n"
+        "rule r: *@(0,0) *@(-2,0) *@(-2,1) *@(-2,2) *@(-1,-1) *@(-1,0) *@(-1,1) *@(-1,2) *@(0,-2) *@(0,-1) *@(0,1) *@(0,2) *@(1,-2) *@(1,-1) *@(1,0) "
+        "*@(1,1) *@(2,-2) *@(2,-1) *@(2,0) => _ * * * * * * * * * * * * * * * * * * if count pattern M == 9 and count pattern N == 5 and count nbr K == 2 "
+        "and count nbr@3 N == 4\n");
+    const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Hex2D));
+    const std::string svg = checker::drawRuleSvg(model, 0);
+    CHECK(occurrences(svg, " of 6</text>") == 6);
+    CHECK(occurrences(svg, "no example found") == 0);
+    CHECK(occurrences(svg, "1: r at") == 6);
+}
