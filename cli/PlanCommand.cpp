@@ -296,8 +296,9 @@ int run(const PlanArgs& a) {
             pageSignal = e.signal();
             std::cerr << "holon plan: --html " << a.html << " not written: " << e.what() << " while the page was built\n";
         } catch (const LimitError& e) {
-            pageTimedOut = true;
-            std::cerr << "holon plan: --html " << a.html << " not written: " << e.what() << "; raise --timeout\n";
+            pageTimedOut = true;  // the deadline, or the page over --memory (whose message says to raise it)
+            const bool timeout = e.parameter() == rules::Parameter::Timeout;
+            std::cerr << "holon plan: --html " << a.html << " not written: " << e.what() << (timeout ? "; raise --timeout" : "") << '\n';
         }
     }
 

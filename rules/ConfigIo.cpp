@@ -20,7 +20,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
-#include <string_view>
 #include <unordered_set>
 
 namespace holon::rules {
@@ -133,9 +132,11 @@ private:
         at = at > 0 ? at - 1 : 0;  // the closing quote
         while (at > 0 && !(text[at - 1] == '"' && (at < 2 || text[at - 2] != '\\'))) --at;
         at = at > 0 ? at - 1 : 0;  // the opening quote
-        const std::size_t lineStart = text_->rfind('\n', at);
+        const std::size_t lineStart = text_->rfind('\n', at), from = lineStart == std::string::npos ? 0 : lineStart + 1;
         const auto line = 1 + std::count(text, text + at, '\n');
-        return "line " + std::to_string(line) + ", column " + std::to_string(at - (lineStart == std::string::npos ? 0 : lineStart + 1) + 1) + ": ";
+        // Columns count characters, not bytes: a UTF-8 continuation byte is 10xxxxxx.
+        const auto column = 1 + std::count_if(text + from, text + at, [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });
+        return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": ";
     }
     // The library's value builder: not in its documented API, but the one json::parse uses.
     nlohmann::detail::json_sax_dom_parser<json> build_;
@@ -534,9 +535,8 @@ Configuration configFromText(const Interpreter& in, const std::string& withBom, 
             return configFromJson(in, j, inputsNamed);
         }
         // A JSON array was read as a picture ("row 1 of the picture has 15 cells"): say what it is.
-        // (By its first two tokens: parsing the whole of a large file only to say so would be unpolled.)
-        if (const auto second = text.find_first_not_of(" \t\r\n", first + 1);
-            text[first] == '[' && second != std::string::npos && std::string_view("{[]\"").find(text[second]) != std::string_view::npos)
+        // No state is drawn as '[', so a picture never starts with one.
+        if (text[first] == '[')
             throw InputError("a JSON array; a configuration is a JSON object with a \"cells\" array, as {\"cells\": [{\"at\": [0, 0], ...}]} (docs/cli.md), or ASCII art");
         if (index) throw InputError("'#" + std::to_string(*index) + "' picks a state of an ITF trace, and this is ASCII art; give " + path + " without it");
         return configFromAscii(in, text);

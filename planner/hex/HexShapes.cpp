@@ -15,6 +15,7 @@
 #include "rules/Picture.h"
 #include "rules/TextFile.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -57,10 +58,14 @@ std::vector<std::uint8_t> readPicture(const HexArray& array, const std::string& 
     // Every character before the picture's size: anything else was read as empty (a NUL byte or a
     // stray letter drew a hole silently), and a multi-byte character counted as several columns, so
     // the message was about the width, not the character.
-    for (std::size_t at = 0, row = 1, rowStart = 0; at < text.size(); ++at) {
+    // Up to the last line that draws something: blank lines after it, tabs included, are dropped
+    // as pictureRows drops them.
+    const std::size_t last = text.find_last_not_of(" \t\r\n");
+    const std::size_t drawn = last == std::string::npos ? 0 : std::min(text.size(), text.find('\n', last));
+    for (std::size_t at = 0, row = 1, rowStart = 0; at < drawn; ++at) {
         const char c = text[at];
         if (c == '\n') ++row, rowStart = at + 1;
-        if (c == '#' || c == '.' || c == ' ' || c == '\n' || (c == '\r' && (at + 1 == text.size() || text[at + 1] == '\n'))) continue;
+        if (c == '#' || c == '.' || c == ' ' || c == '\n' || (c == '\r' && at + 1 < text.size() && text[at + 1] == '\n')) continue;
         // The whole of a UTF-8 character, for the message: its lead byte says how long it is.
         const auto lead = static_cast<unsigned char>(c);
         const std::size_t length = lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3

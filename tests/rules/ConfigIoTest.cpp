@@ -116,6 +116,8 @@ TEST_CASE("a key given twice in one JSON object is refused, not the last one kep
     CHECK_THROWS_WITH_AS(rules::configFromText(*w.in, R"({"cells":[{"at":[0,0],"state":"M","at":[1,1]}]})"), doctest::Contains("the key \"at\" appears twice"), InputError);
     // The place is the repeated key's opening quote, escapes inside the key included (it had none).
     CHECK_THROWS_WITH_AS(rules::configFromText(*w.in, "{\n  \"cells\": [],\n    \"a\\\"b\": 1, \"a\\\"b\": 2}"), doctest::Contains("line 3, column 16: the key"), InputError);
+    // Columns count characters: "\u00e9" is two bytes of UTF-8 and one column.
+    CHECK_THROWS_WITH_AS(rules::configFromText(*w.in, "{\"\xC3\xA9\": 1, \"\xC3\xA9\": 2}"), doctest::Contains("line 1, column 10: the key"), InputError);
     // The same key in different objects is fine.
     CHECK(rules::configFromText(*w.in, R"({"cells":[{"at":[0,0],"state":"M"},{"at":[1,0],"state":"M"}]})").cells[w.region.indexOf({1, 0, 0})] != 0);
 }
