@@ -80,6 +80,10 @@ Exported fromShapes(const ExportArgs& a) {
     return e;
 }
 
+[[noreturn]] void refuseBinvox2D(const rules::Lattice& lattice) {
+    throw InputError("--binvox: binvox holds 3D voxel shapes and this " + lattice.name() + " one is 2D; give a 3D shape or configuration, or write --visiblesim");
+}
+
 Exported fromConfiguration(const ExportArgs& a) {
     // A JSON configuration (plan's end.json included) names its system and region, a trace its
     // rule file and region: those are the defaults; ASCII art names neither.
@@ -100,6 +104,8 @@ Exported fromConfiguration(const ExportArgs& a) {
                              "reading --config " + a.config + " (" + std::to_string(file.text.size()) + " bytes, on region " + regionSpec + " of " +
                                  std::to_string(cells) + " cells)");
     });
+    // Before the text is parsed (seconds for a large file): a 2D region has no voxels to write.
+    if (!a.binvox.empty() && region.lattice().dimension() != 3) refuseBinvox2D(region.lattice());
     const rules::Model model(*system, region.lattice());
     const rules::Interpreter in(model, region);
     const rules::Configuration c = rules::configFromText(in, file);
@@ -155,8 +161,7 @@ int run(const ExportArgs& a) {
         world = rules::visibleSimWorld(*e.lattice, robot, e.blocks, e.targets, comments, a.margin);
     }
     if (binvoxFile) {
-        if (e.lattice->dimension() != 3)
-            throw InputError("--binvox: binvox holds 3D voxel shapes and this " + e.lattice->name() + " one is 2D; give a 3D shape or configuration, or write --visiblesim");
+        if (e.lattice->dimension() != 3) refuseBinvox2D(*e.lattice);
         if (!e.targets.empty()) throw InputError("--binvox holds one shape; write the target with its own holon export --shape " + a.target + " --binvox FILE");
         std::vector<rules::Vec> cells;
         for (const rules::VisibleSimCell& b : e.blocks) cells.push_back(b.at);
