@@ -80,6 +80,11 @@ nlohmann::json PlanLineReader::parse(const std::string& text) const {
     } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number past a double
         throw InputError(where() + ": not a JSON line (" + jsonErrorText(e) + "); the file is cut short or was edited by hand: write it again");
     } catch (const InputError& e) {
+        // A place in the line's one-line record is a column of this line: FILE:LINE:COL, not
+        // "FILE:2: line 1, column 40" (a key given twice).
+        const std::string what = e.what(), record = "line 1, column ";
+        if (const auto colon = what.find(": "); what.rfind(record, 0) == 0 && colon != std::string::npos)
+            throw InputError(where() + ":" + what.substr(record.size(), colon - record.size()) + what.substr(colon));
         throw InputError(where() + ": " + e.what());
     }
 }
