@@ -22,28 +22,22 @@ Footprints::Footprints(const rules::Engine& engine) : engine_(&engine) {
     }
 }
 
-std::vector<int> Footprints::writes(int p) const {
-    const auto& inst = engine_->instances()[p];
-    std::vector<int> cells;
+Footprints::Footprint Footprints::of(int placed) const {
+    const auto& inst = engine_->instances()[placed];
+    Footprint f;
     for (int k = 0; k < inst.size; ++k)
-        if (engine_->tables().mayWrite(inst.shape, k, engine_->comboOfCell(inst.cells[k]))) cells.push_back(inst.cells[k]);
-    std::sort(cells.begin(), cells.end());
-    return cells;
-}
-
-std::vector<int> Footprints::reads(int p) const {
-    const auto& inst = engine_->instances()[p];
-    std::vector<int> cells;
+        if (engine_->tables().mayWrite(inst.shape, k, engine_->comboOfCell(inst.cells[k]))) f.writes.push_back(inst.cells[k]);
     for (const rules::RuleTables::Site site : engine_->tables().readSites(inst.shape)) {
         const int cell = inst.cells[site.cell];
-        if (const int n = site.direction < 0 ? cell : engine_->region().neighbour(cell, site.direction); n >= 0) cells.push_back(n);
+        if (const int n = site.direction < 0 ? cell : engine_->region().neighbour(cell, site.direction); n >= 0) f.reads.push_back(n);
     }
-    std::sort(cells.begin(), cells.end());
-    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-    return cells;
+    std::sort(f.writes.begin(), f.writes.end());
+    std::sort(f.reads.begin(), f.reads.end());
+    f.reads.erase(std::unique(f.reads.begin(), f.reads.end()), f.reads.end());
+    return f;
 }
 
-bool Footprints::interfere(int a, int b) const {
+bool Footprints::interfere(const Footprint& a, const Footprint& b) {
     const auto meet = [](const std::vector<int>& x, const std::vector<int>& y) {
         for (std::size_t i = 0, j = 0; i < x.size() && j < y.size();)
             if (x[i] == y[j]) return true;
@@ -51,7 +45,7 @@ bool Footprints::interfere(int a, int b) const {
             else ++j;
         return false;
     };
-    return meet(reads(a), writes(b)) || meet(reads(b), writes(a));
+    return meet(a.reads, b.writes) || meet(b.reads, a.writes);
 }
 
 Predecessors::Predecessors(const rules::Engine& engine)

@@ -50,10 +50,13 @@ std::string stepName(const Trace& path, const rules::Engine& engine, int step) {
 Schedule compactSteps(const Trace& path, const rules::Engine& engine, const Footprints& footprints) {
     Schedule s;
     std::vector<std::size_t> roundOf(path.steps.size(), 0);
+    // Each step's footprint once: the pairs below are quadratic in the path's length.
+    std::vector<Footprints::Footprint> prints(path.steps.size());
+    for (std::size_t i = 1; i < path.steps.size(); ++i) prints[i] = footprints.of(path.steps[i].placed);
     for (std::size_t i = 1; i < path.steps.size(); ++i) {
         std::size_t earliest = 0;
         for (std::size_t j = 1; j < i; ++j)
-            if (footprints.interfere(path.steps[j].placed, path.steps[i].placed)) earliest = std::max(earliest, roundOf[j] + 1);
+            if (Footprints::interfere(prints[j], prints[i])) earliest = std::max(earliest, roundOf[j] + 1);
         std::size_t r = earliest;
         for (; r < s.rounds.size(); ++r) {
             s.rounds[r].push_back(static_cast<int>(i));

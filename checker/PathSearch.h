@@ -19,16 +19,20 @@ namespace holon::checker {
 /// and a gigabyte on a 4-million-cell region, for the few instances of one path.
 class Footprints {
 public:
+    /// The cells one instance may write (sorted) and reads (sorted, distinct).
+    struct Footprint {
+        std::vector<int> writes, reads;
+    };
     /// One pass over the instances for maxWrites, reading the job's deadline and signals.
     explicit Footprints(const rules::Engine& engine);
     /// The most cells one instance writes: a step changes at most this many cells.
     int maxWrites() const { return maxWrites_; }
+    Footprint of(int placed) const;
     /// a's reads meet b's writes or b's reads meet a's writes: the two cannot fire together.
-    bool interfere(int a, int b) const;
+    static bool interfere(const Footprint& a, const Footprint& b);
+    bool interfere(int a, int b) const { return interfere(of(a), of(b)); }
 
 private:
-    std::vector<int> writes(int p) const;  // sorted
-    std::vector<int> reads(int p) const;   // sorted, distinct
     const rules::Engine* engine_;
     int maxWrites_ = 0;
 };
