@@ -11,11 +11,9 @@
 #include "rules/Engine.h"
 #include "rules/Limits.h"
 
-#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <chrono>
-#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -40,10 +38,7 @@ struct Limits {
     /// The deadline (from now, and no later than the job's: its --timeout counts setup too) and
     /// the stop flag as one budget. From now alone, path --timeout 2 on a 4-million-cell region
     /// searched for 2 s after a second of setup.
-    Budget budget() const {
-        const double left = jobSecondsLeft(), seconds = timeoutSeconds > 0 ? std::min(timeoutSeconds, left) : left;
-        return Budget(std::isinf(seconds) ? 0 : std::max(seconds, 1e-9)) || Budget::stopFlag(stopFlag);
-    }
+    Budget budget() const { return Budget(timeoutSeconds) || Budget::job() || Budget::stopFlag(stopFlag); }
     /// Whether `states` states may be stored.
     bool storable(std::uint64_t states) const { return states <= maxStates; }
     /// How many more states may be stored beside `stored` ones.

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -81,6 +82,14 @@ Budget Budget::stopFlag(const volatile std::sig_atomic_t* flag) {
 }
 
 Budget Budget::onSignals() { return stopFlag(rules::StopSignals::caught()); }
+
+Budget Budget::job() {
+    const double left = jobSecondsLeft();
+    if (std::isinf(left)) return {};
+    Budget b;
+    b.seconds_ = std::max(left, 1e-9);  // passed: expired at once, not "no deadline"
+    return b;
+}
 
 Budget operator||(Budget a, const Budget& b) {
     // The smaller of two caps, 0 meaning none.

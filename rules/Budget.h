@@ -60,6 +60,8 @@ public:
     static Budget stopFlag(const volatile std::sig_atomic_t* flag);
     /// Stops once rules::StopSignals has caught SIGINT or SIGTERM (while a catcher is installed).
     static Budget onSignals();
+    /// The whole job's deadline (setJobDeadline), already passed or not; none when there is none.
+    static Budget job();
 
     /// Whichever of the two stops first: the earlier deadline, the smaller caps, either flag.
     friend Budget operator||(Budget a, const Budget& b);

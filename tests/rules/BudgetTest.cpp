@@ -5,6 +5,7 @@
 
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <set>
 #include <string>
 #include <thread>
@@ -98,4 +99,17 @@ TEST_CASE("every stop reason has its own name, the ones messages and JSON have a
     CHECK(stopReasonName(StopReason::MaxRounds) == "max-rounds");
     CHECK(stopReasonName(StopReason::Timeout) == "timeout");
     CHECK(stopReasonName(StopReason::Interrupted) == "interrupted");
+}
+
+TEST_CASE("Budget::job is the job's deadline: none, ahead, or passed (expired, not unlimited)") {
+    setJobDeadline(0);
+    CHECK_FALSE(Budget::job().limited());
+    setJobDeadline(100);
+    CHECK(Budget::job().limited());
+    CHECK_FALSE(Budget::job().expired());
+    CHECK((Budget(1000) || Budget::job()).remaining() <= 100);  // the earlier deadline of the two
+    setJobDeadline(1e-6);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    CHECK(Budget::job().expired());
+    setJobDeadline(0);
 }
