@@ -273,8 +273,7 @@ std::optional<smt::Term> SmtEncoding::cellwise(const Expr& e, const State& s) {
     auto any = [&](const std::vector<smt::Term>& cells) { return smt::anyOf(ctx_, cells); };
     auto atMost = [&](std::int64_t bound) {  // sum <= bound
         if (bound > 0) return ctx_.boolVal(true);
-        const smt::Term f = smt::implies(any(pos), any(neg));
-        return bound < 0 ? f && any(neg) : f;
+        return bound < 0 ? any(neg) : smt::implies(any(pos), any(neg));  // below 0: some cell is negative
     };
     auto atLeast = [&](std::int64_t bound) {  // sum >= bound: the mirror image
         std::swap(pos, neg);
