@@ -34,7 +34,7 @@ SculptResult runSculpt(const SculptSetup& setup, const std::function<void(const 
     if (stoppedDuringSetup()) return result;
     const auto target = sculptShape(array, setup.to, rules::parameterName(rules::Parameter::SculptTo));
     if (stoppedDuringSetup()) return result;
-    const TriPlan plan = planTriRegions(array, source, target, std::max(2.0, setup.triFraction * setup.size));
+    const TriPlan plan = planTriRegions(array, source, target, std::max(2.0, setup.triFraction * setup.size), budget);
     if (stoppedDuringSetup()) return result;
     HoleSculptor sculptor(array, source, target, plan, setup.options);
     result.modules = sculptor.modules();

@@ -38,7 +38,10 @@ int nearestDirection(double dx, double dy) {
 
 }  // namespace
 
-TriPlan planTriRegions(const HexArray& array, const std::vector<std::uint8_t>& source, const std::vector<std::uint8_t>& target, double side) {
+TriPlan planTriRegions(const HexArray& array, const std::vector<std::uint8_t>& source, const std::vector<std::uint8_t>& target, double side,
+                       const Budget& budget) {
+    std::uint32_t polls = 0;
+    const auto stopped = [&] { return ++polls % (1u << 16) == 0 && budget.reached(); };
     if (!(side >= 2.0))
         throw InputError(rules::parameterName(rules::Parameter::Tri) + ": tri-regions must be at least 2 module diameters wide", rules::Parameter::Tri);
     TriPlan plan;
@@ -47,6 +50,7 @@ TriPlan planTriRegions(const HexArray& array, const std::vector<std::uint8_t>& s
     std::unordered_map<std::int64_t, std::int32_t> indexOf;
     std::vector<std::vector<std::int64_t>> members;
     for (std::int64_t i : array.points()) {
+        if (stopped()) return plan;
         const std::int64_t key = triangleKey(array.x(i), array.y(i), side);
         auto [it, fresh] = indexOf.try_emplace(key, static_cast<std::int32_t>(members.size()));
         if (fresh) members.emplace_back(), plan.regions.emplace_back();
@@ -85,6 +89,7 @@ TriPlan planTriRegions(const HexArray& array, const std::vector<std::uint8_t>& s
     for (int k = 0; k < static_cast<int>(plan.regions.size()); ++k) worklist.push_back(k);
     std::size_t sinceProgress = 0;
     while (!worklist.empty()) {
+        if (stopped()) return plan;
         const int k = worklist.front();
         worklist.pop_front();
         std::array<std::int64_t, 6> totals{};

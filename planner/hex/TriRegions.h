@@ -4,6 +4,7 @@
 // direction.
 
 #include "planner/hex/HexArray.h"
+#include "rules/Budget.h"
 
 #include <cstdint>
 #include <vector>
@@ -25,7 +26,9 @@ struct TriPlan {
 };
 
 /// Tiles the array with triangles of edge `side` module diameters and assigns gravity by the
-/// worklist algorithm of §IV-C.
-TriPlan planTriRegions(const HexArray& array, const std::vector<std::uint8_t>& source, const std::vector<std::uint8_t>& target, double side);
+/// worklist algorithm of §IV-C. Once `budget` is reached the plan is left unfinished: the caller
+/// must not use it (on a 4000 x 4000 array the plan takes seconds).
+TriPlan planTriRegions(const HexArray& array, const std::vector<std::uint8_t>& source, const std::vector<std::uint8_t>& target, double side,
+                       const Budget& budget = Budget());
 
 }  // namespace holon::planner::hex
