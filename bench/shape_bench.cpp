@@ -4,7 +4,9 @@
 // small and large overlaps), runs the system with each allocator and the intermediate planner on
 // the same problem, and prints per allocator the distribution (median, 90th percentile, worst) of
 //   transfers / the transport lower bound (Transport.cpp; problems whose bound is 0 are counted
-//   apart), and rounds / the intermediate planner's rounds,
+//   apart), rounds / the intermediate planner's rounds, and rounds / the floor: the larger of the
+//   intermediate planner's rounds and the cut bound (RoundBound.cpp), which no run may beat (exit 3
+//   when one does: the bound would be wrong),
 // with how many runs did not complete (exit 1 when any did not). Seed 000 §V measured allocators on
 // blocks only.
 // Usage: shape_bench [--pairs2d N] [--pairs3d N] [--cells N] [--seed S] [--system NAME]
@@ -17,6 +19,7 @@
 #include "PlanSupport.h"
 #include "ShapeGenerator.h"
 
+#include "planner/RoundBound.h"
 #include "rules/Error.h"
 
 #include <algorithm>
@@ -79,7 +82,7 @@ struct Distribution {
 };
 
 struct Tally {
-    Distribution transfers, rounds;
+    Distribution transfers, rounds, overFloor;
     int incomplete = 0, zeroBound = 0;
     double seconds = 0;
 };
@@ -135,9 +138,9 @@ int main(int argc, char** argv) try {
     std::ofstream csv;
     if (!o.csv.empty()) {
         csv.open(o.csv);
-        csv << "dimension,index,family,start,target,bound,intermediate_rounds,allocator,complete,transfers,rounds,seconds,stopped,first_change_round\n";
+        csv << "dimension,index,family,start,target,bound,intermediate_rounds,round_bound,allocator,complete,transfers,rounds,seconds,stopped,first_change_round\n";
     }
-    int incomplete = 0;
+    int incomplete = 0, belowBound = 0;
     const rules::System general = rules::librarySystem(o.system), intermediate = rules::librarySystem("planner_intermediate");
     std::printf("shape bench: %s, seed %llu, about %d metamodules per start (0.5x-1.5x), sync rounds\n", o.system.c_str(), (unsigned long long)o.seed, o.cells);
     for (int dimension : {2, 3}) {
@@ -146,17 +149,20 @@ int main(int argc, char** argv) try {
         const rules::Lattice& lattice = rules::Lattice::get(dimension == 3 ? rules::LatticeKind::Cubic3D : rules::LatticeKind::Square2D);
         const rules::Model generalModel(general, lattice), intermediateModel(intermediate, lattice);
         std::map<std::string, Tally> tally;
+        Distribution cutOverBase;   // per problem: the cut bound on rounds (RoundBound.cpp) over the intermediate's
         Distribution beforeChange;  // per problem: the fewest rounds before a creation or deletion, over the intermediate's
         int redrawn = 0;
         std::vector<double> sizes;
         for (int index = 0; index < pairs; ++index) {
             if (o.only >= 0 && index != o.only) continue;
             bench::ShapePair pair;
-            std::int64_t bound = -1;
+            std::int64_t bound = -1, roundBound = 0;
             for (int attempt = 0;; ++attempt) {
                 pair = bench::shapePair(dimension, o.seed, index, attempt, o.cells, 1.9);
                 try {
-                    bound = planner::transferLowerBound(planner::makeProblem(generalModel, pair.start, pair.target, rules::Vec{}, o.seed));
+                    const planner::Problem problem = planner::makeProblem(generalModel, pair.start, pair.target, rules::Vec{}, o.seed);
+                    bound = planner::transferLowerBound(problem);
+                    if (const auto b = planner::roundLowerBound(problem)) roundBound = b->rounds;
                     break;
                 } catch (const InputError&) {
                     ++redrawn;  // the drawn sizes are more than the system's mass allows
@@ -176,32 +182,44 @@ int main(int argc, char** argv) try {
                 t.seconds += r.seconds;
                 if (!r.complete) ++t.incomplete, ++incomplete;
                 else {
+                    if (r.rounds < roundBound) {
+                        std::fprintf(stderr, "shape_bench: %dD problem %d: %s took %lld rounds, below the cut bound %lld: the bound is wrong\n", dimension, index,
+                                     allocator.c_str(), (long long)r.rounds, (long long)roundBound);
+                        ++belowBound;
+                    }
+                    if (base.complete) t.overFloor.values.push_back(double(r.rounds) / double(std::max({base.rounds, roundBound, std::int64_t{1}})));
                     if (bound > 0) t.transfers.values.push_back(double(r.transfers) / double(bound));
                     else ++t.zeroBound;
                     if (base.complete && base.rounds > 0) t.rounds.values.push_back(double(r.rounds) / double(base.rounds));
                 }
                 if (csv.is_open())
                     csv << dimension << ',' << index << ',' << pair.family << ',' << pair.start.cells.size() << ',' << pair.target.cells.size() << ',' << bound << ','
-                        << base.rounds << ',' << allocator << ',' << (r.complete ? 1 : 0) << ',' << r.transfers << ',' << r.rounds << ',' << r.seconds << ','
+                        << base.rounds << ',' << roundBound << ',' << allocator << ',' << (r.complete ? 1 : 0) << ',' << r.transfers << ',' << r.rounds << ',' << r.seconds << ','
                         << r.stopped << ',' << r.firstChange << '\n';
             }
+            if (base.complete && base.rounds > 0) cutOverBase.values.push_back(double(roundBound) / double(base.rounds));
             if (fewestBeforeChange > 0 && base.complete && base.rounds > 0) beforeChange.values.push_back(double(fewestBeforeChange - 1) / double(base.rounds));
         }
         if (sizes.empty()) continue;  // --only names no problem of this dimension
         std::sort(sizes.begin(), sizes.end());
         std::printf("\n%dD: %d pairs (%d draws refused by the mass check and redrawn); start sizes %g..%g, median %g\n", dimension, pairs, redrawn, sizes.front(),
                     sizes.back(), sizes[sizes.size() / 2]);
-        std::printf("%-10s %-22s %-22s %10s %9s %8s\n", "allocator", "transfers/bound", "rounds/intermediate", "incomplete", "bound=0", "run s");
-        std::printf("%-10s %-22s %-22s\n", "", "median    p90  worst", "median    p90  worst");
+        std::printf("%-10s %-22s %-22s %-22s %10s %9s %8s\n", "allocator", "transfers/bound", "rounds/intermediate", "rounds/floor", "incomplete", "bound=0",
+                    "run s");
+        std::printf("%-10s %-22s %-22s %-22s\n", "", "median    p90  worst", "median    p90  worst", "median    p90  worst");
         for (const std::string& allocator : o.allocators) {
             const Tally& t = tally[allocator];
-            std::printf("%-10s %-22s %-22s %10d %9d %8.1f\n", allocator.c_str(), t.transfers.show().c_str(), t.rounds.show().c_str(), t.incomplete, t.zeroBound,
-                        t.seconds);
+            std::printf("%-10s %-22s %-22s %-22s %10d %9d %8.1f\n", allocator.c_str(), t.transfers.show().c_str(), t.rounds.show().c_str(),
+                        t.overFloor.show().c_str(), t.incomplete, t.zeroBound, t.seconds);
         }
+        const auto cutOver3 = std::count_if(cutOverBase.values.begin(), cutOverBase.values.end(), [](double v) { return v > 3; });
+        std::printf("%-33s %-22s (over 3 on %d of %zu problems)\n", "cut bound on rounds/intermediate", cutOverBase.show().c_str(), int(cutOver3),
+                    cutOverBase.values.size());
         const auto over3 = std::count_if(beforeChange.values.begin(), beforeChange.values.end(), [](double v) { return v > 3; });
         std::printf("%-33s %-22s (over 3 on %d of %zu problems)\n", "rounds before a creation/deletion", beforeChange.show().c_str(), int(over3),
                     beforeChange.values.size());
     }
+    if (belowBound > 0) return 3;  // an internal error: a proven bound was beaten
     return incomplete == 0 ? 0 : 1;
 } catch (const std::exception& e) {
     std::fprintf(stderr, "shape_bench: %s\n", e.what());
