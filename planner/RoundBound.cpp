@@ -30,10 +30,10 @@ namespace holon::planner {
 
 namespace {
 
-constexpr int kMaxSpan = 8;          // patterns wider than this give no bound (none of the library's)
-constexpr std::size_t kMaxCuts = 64;  // distances tried per side: a bound from fewer sets is still one
+constexpr int kMaxSpan = 8;                                                     // patterns wider than this give no bound (none of the library's)
+constexpr std::size_t kMaxCuts = 64;                                            // distances tried per side: a bound from fewer sets is still one
 constexpr std::int64_t kNoGoalMass = std::numeric_limits<std::int64_t>::max();  // no goal state: nothing asked
-constexpr std::int32_t kNoHops = std::numeric_limits<std::int32_t>::max();   // not reached
+constexpr std::int32_t kNoHops = std::numeric_limits<std::int32_t>::max();      // not reached
 
 struct Rules {
     std::int64_t perCell = 0;  // the most mass units one cell of one instance can lose
@@ -234,7 +234,7 @@ private:
 
     const Problem* problem_;
     Rules rules_;
-    std::vector<char> mayHold_;             // per board cell: holds mass at the start, or a rule can fill it
+    std::vector<char> mayHold_;              // per board cell: holds mass at the start, or a rule can fill it
     std::vector<std::int64_t> gain_, loss_;  // per board cell: mass it must gain, or lose, by the goal
     std::vector<std::int64_t> steps_;
     std::vector<std::uint32_t> mark_;

@@ -4,8 +4,8 @@
 
 #include "PlannerSupport.h"
 
-#include "planner/RoundBound.h"
 #include "ShapeGenerator.h"
+#include "planner/RoundBound.h"
 
 namespace holon::test {
 
