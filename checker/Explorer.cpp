@@ -459,7 +459,9 @@ bool Explorer::resolve(const Successors& s, Worker& worker) {
         if (room && !claimRoom(worker, room, true)) return false;
     }
     thread_local std::vector<StateId> seen;
-    seen.clear();
+    thread_local std::vector<std::pair<StateId, int>> rulesSeen;  // (successor, rule) of every recorded step
+    seen.clear(), rulesSeen.clear();
+    auto ruleOf = [&](std::int32_t via) { return engine_->instances()[via].rule; };
     std::uint64_t edges = 0, added = 0;
     for (std::size_t k = 0; k < s.count; ++k) {
         StateId sid = onePass ? lookUp(k) : found[k];
@@ -482,8 +484,14 @@ bool Explorer::resolve(const Successors& s, Worker& worker) {
         }
         // Two instances with the same effect are one edge of the graph.
         if (!words_ || !words_->unique(s.via[k])) {
-            if (std::find(seen.begin(), seen.end(), sid) != seen.end()) continue;
+            if (std::find(seen.begin(), seen.end(), sid) != seen.end()) {
+                const std::pair<StateId, int> step{sid, ruleOf(s.via[k])};
+                if (options_.recordEdges && std::find(rulesSeen.begin(), rulesSeen.end(), step) == rulesSeen.end())
+                    rulesSeen.push_back(step), worker.otherRules.push_back({s.from, sid, s.via[k]});
+                continue;
+            }
             seen.push_back(sid);
+            if (options_.recordEdges) rulesSeen.push_back({sid, ruleOf(s.via[k])});
         }
         ++edges;
         if (options_.recordEdges) worker.edges.push_back({s.from, sid, s.via[k]});
@@ -717,6 +725,21 @@ void Explorer::buildRows(std::vector<Worker>& perThread) {
         f.edges.resize(0);
         f.edges.shrinkToFit();
     }
+    otherVia_.clear();
+    for (Worker& f : perThread) {
+        for (const Worker::Edge& e : f.otherRules)
+            for (std::uint64_t k = rowStart_[e.from]; k < rowStart_[e.from + 1]; ++k)
+                if (succ_[k] == e.to) otherVia_.push_back({k, e.via});
+        f.otherRules = {};
+    }
+    std::sort(otherVia_.begin(), otherVia_.end());
+}
+
+std::vector<std::int32_t> Explorer::viasOf(std::uint64_t edge) const {
+    std::vector<std::int32_t> out{succVia_[edge]};
+    for (auto it = std::lower_bound(otherVia_.begin(), otherVia_.end(), std::pair<std::uint64_t, std::int32_t>{edge, INT32_MIN}); it != otherVia_.end() && it->first == edge; ++it)
+        out.push_back(it->second);
+    return out;
 }
 
 std::vector<StateId> Explorer::ids() const {

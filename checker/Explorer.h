@@ -108,6 +108,10 @@ public:
     const std::vector<std::uint64_t>& rowStart() const { return rowStart_; }
     const std::vector<StateId>& successors() const { return succ_; }
     const std::vector<std::int32_t>& successorVia() const { return succVia_; }
+    /// The instances that make edge `edge`'s step: successorVia()'s first, then one of each other
+    /// rule that makes the same step (two instances with the same effect are one edge, but a
+    /// property may judge a step by its rule: a ranking's excepted rules).
+    std::vector<std::int32_t> viasOf(std::uint64_t edge) const;
     bool hasEdges() const { return !rowStart_.empty(); }
     /// The path of (state, instance that led to it) from an initial state to `id`.
     std::vector<std::pair<StateId, std::int32_t>> pathTo(StateId id) const;
@@ -150,6 +154,7 @@ private:
             std::int32_t via;
         };
         PageArray<Edge> edges;  // grows by remapping: 39 M edges for pixel on 5x5
+        std::vector<Edge> otherRules;  // an edge's step again, by an instance of another rule
         std::uint64_t edgeCount = 0;
     };
     /// addAllLegal's first phase: found(thread, job, index) for every legal candidate, from
@@ -239,6 +244,7 @@ private:
     std::vector<std::uint64_t> rowStart_;
     std::vector<StateId> succ_;
     std::vector<std::int32_t> succVia_;
+    std::vector<std::pair<std::uint64_t, std::int32_t>> otherVia_;  // (edge, instance of another rule), by edge
     ExploreStats stats_;
 };
 

@@ -50,14 +50,19 @@ public:
         // A step of an excepted rule (a resource move) must keep the ranking; every other step decreases it.
         std::vector<char> excepted(model.rules().size());
         for (std::size_t q = 0; q < excepted.size(); ++q) excepted[q] = model.ruleNamed(static_cast<int>(q), p.except);
-        auto keptBy = [&](std::uint64_t k) { return excepted[e.instances()[ex->successorVia()[k]].rule] != 0; };
-        std::vector<char> flat(succ.size(), 0);
+        auto keptBy = [&](std::int32_t via) { return excepted[e.instances()[via].rule] != 0; };
+        // A step is judged by the rule of each instance that makes it: an excepted rule's and a
+        // covered rule's can make the same step, which the graph holds as one edge.
+        std::vector<char> flat(succ.size(), 0), covered(succ.size(), 0);
+        std::vector<std::int32_t> badVia(succ.size(), -1), coveredVia(succ.size(), -1);
         std::uint64_t badEdges = 0, firstBad = 0;
         StateId firstFrom = kNoState;
         for (StateId s : ids)
             for (std::uint64_t k = row[s]; k < row[s + 1]; ++k)
-                if (keptBy(k) ? rank[succ[k]] != rank[s] : !lexLess(rank[succ[k]], rank[s])) {
-                    flat[k] = 1;
+                for (std::int32_t via : ex->viasOf(k)) {
+                    if (!keptBy(via) && !covered[k]) covered[k] = 1, coveredVia[k] = via;
+                    if (flat[k] || !(keptBy(via) ? rank[succ[k]] != rank[s] : !lexLess(rank[succ[k]], rank[s]))) continue;
+                    flat[k] = 1, badVia[k] = via;
                     if (badEdges++ == 0) firstBad = k, firstFrom = s;
                 }
         if (badEdges == 0) {
@@ -77,12 +82,13 @@ public:
         for (StateId s : ids)
             for (std::uint64_t k = row[s]; k < row[s + 1] && !livelock; ++k) {
                 if (flat[k] && flatScc.of[succ[k]] == flatScc.of[s]) cycleFrom = s, cycleEdge = k, livelock = true;
-                else if (cycleFrom == kNoState && !keptBy(k) && whole.of[succ[k]] == whole.of[s]) cycleFrom = s, cycleEdge = k;
+                else if (cycleFrom == kNoState && covered[k] && whole.of[succ[k]] == whole.of[s]) cycleFrom = s, cycleEdge = k;
             }
         if (cycleFrom == kNoState) {
             r.trace = traceWithStep(*ex, firstFrom, firstBad);
+            r.trace->steps.back().placed = badVia[firstBad];
             r.summary = std::to_string(badEdges) + " steps do not decrease it; the reachable graph has no cycle, so runs still terminate here";
-            r.trace->description = "the last step " + std::string(keptBy(firstBad) ? "changes" : "does not decrease") + " '" + p.name + "'";
+            r.trace->description = "the last step " + std::string(keptBy(badVia[firstBad]) ? "changes" : "does not decrease") + " '" + p.name + "'";
             r.witness = {{"non_decreasing_steps", badEdges}, {"cycle", false}, {"livelock", false}};
             return r;
         }
@@ -99,6 +105,8 @@ public:
         t.loop = static_cast<int>(t.steps.size()) - 1;
         // ITF: the last state steps back to states[loop], so the repeated state is not written twice.
         t.steps.insert(t.steps.end(), cycle.steps.begin() + 1, cycle.steps.end() - 1);
+        // The cycle's own step by the rule that makes it one: non-decreasing, or covered.
+        if (next != cycleFrom) t.steps[static_cast<std::size_t>(*t.loop) + 1].placed = livelock ? badVia[cycleEdge] : coveredVia[cycleEdge];
         // Can a fair scheduler leave a livelock? Only if some step from its strong component (in
         // the whole graph) decreases the ranking; and a mixed cycle only if a step leaves its component.
         bool escapable = false;

@@ -161,6 +161,25 @@ TEST_CASE("termination fails exactly when the reachable graph has a cycle, whate
     CHECK(a.property("r").summary.find("no cycle") != std::string::npos);
 }
 
+TEST_CASE("a ranking judges a step by every rule that makes it, in either order of declaration") {
+    // slide is excepted, move is covered, and they make the same steps: the graph keeps one edge
+    // per step, and judging it by the first rule alone said "holds" when slide came first (audit 9).
+    const std::string slide = "rule slide: A _ => _ A\n", move = "rule move: A _ => _ A if count nbr # >= 0\n";
+    for (const std::string& rules : {slide + move, move + slide}) {
+        CAPTURE(rules);
+        auto c = test::checkFrom(test::parse("system paredge\nstates A\n" + rules + "ranking k: count(A) except slide\n"), "square:2x1", "A.", "");
+        const auto& r = c.property("k");
+        REQUIRE(r.verdict == Verdict::Violated);
+        CHECK(r.witness["livelock"] == true);
+        REQUIRE(r.trace->steps.size() == 2);
+        CHECK(c.kept.engine->model().rules()[c.kept.engine->instances()[r.trace->steps[1].placed].rule].name == "move");
+        c.replayAll();
+    }
+    // A covered rule that changes nothing, beside an excepted one that can make the same (empty) step.
+    auto idle = test::parse("system idle\nstates A\nrule other: _ => *\nrule idle: A => A\nranking k: count(A) except other\n");
+    CHECK(test::checkFrom(idle, "square:2x1", "A.", "").property("k").verdict == Verdict::Violated);
+}
+
 TEST_CASE("a trap without a deadlock: the goal is unreachable from a cycle") {
     // From A the goal G is one step away; from B and C only the cycle B <-> C remains.
     auto trap = test::parse("system trap\nstates A | B | C | G\nrule a2g: A => G\nrule a2b: A => B\nrule b2c: B => C\nrule c2b: C => B\ngoal count(G) == 1\n");
