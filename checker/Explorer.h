@@ -153,7 +153,7 @@ private:
             StateId from, to;
             std::int32_t via;
         };
-        PageArray<Edge> edges;  // grows by remapping: 39 M edges for pixel on 5x5
+        PageArray<Edge> edges;         // grows by remapping: 39 M edges for pixel on 5x5
         std::vector<Edge> otherRules;  // an edge's step again, by an instance of another rule
         std::uint64_t edgeCount = 0;
     };
