@@ -123,7 +123,7 @@ public:
             if (r == smt::Result::Unknown) {
                 ctx.checkStopped("solving");
                 o.result.verdict = Verdict::Unknown;
-                o.result.summary = "the solver gave up on rule '" + ruleOf(w, w.focus()[k]) + "': " + unknownReason(solver.reasonUnknown());
+                o.result.summary = "the solver gave up on rule " + ruleOf(w, w.focus()[k]) + ": " + unknownReason(solver.reasonUnknown());
                 o.result.limited = limitReached(solver.reasonUnknown());
                 break;
             }
@@ -144,7 +144,14 @@ public:
     }
 
 private:
-    std::string ruleOf(const Window& w, int q) const { return model_.rules()[w.engine().instances()[q].rule].name; }
+    /// The rules a step of instance q is a step of, quoted: 's', or 's' (also 't') for a shape kept
+    /// once for two rules.
+    std::string ruleOf(const Window& w, int q) const {
+        const std::vector<int>& rules = model_.shapes()[static_cast<std::size_t>(w.engine().instances()[q].shape)].rules;
+        std::string out = "'" + model_.rules()[rules.front()].name + "'";
+        for (std::size_t k = 1; k < rules.size(); ++k) out += (k == 1 ? " (also '" : ", '") + model_.rules()[rules[k]].name + "'";
+        return rules.size() > 1 ? out + ")" : out;
+    }
 
     /// A window counterexample: completed on the window grown by one (the bounded encoding, with the
     /// instance's pattern and the cells its guard reads fixed), then replayed by the interpreter.
@@ -154,7 +161,7 @@ private:
         const rules::Engine open(model_, concrete, {}, true);
         const int placed = open.instanceAt(concrete.indexOf({0, 0, 0}), w.engine().instances()[q].shape);
         const std::string rule = ruleOf(w, q);
-        o.result.witness = {{"rule", rule}, {"window_radius", ob.margin}, {"window_cells", w.region().size()}};
+        o.result.witness = {{"rule", model_.rules()[w.engine().instances()[q].rule].name}, {"window_radius", ob.margin}, {"window_cells", w.region().size()}};
         std::string why;
         std::optional<Trace> trace;
         std::vector<std::uint32_t> inputs;
@@ -201,7 +208,7 @@ private:
                 type->explain(o.result, in, engine);
                 drawing = drawTraceAscii(*trace, engine);
                 o.result.verdict = Verdict::Violated;
-                o.result.summary = "rule '" + rule + "' " + ob.broken + " (a window counterexample, confirmed on region " + concrete.spec() + " by the reference interpreter)";
+                o.result.summary = "rule " + rule + " " + ob.broken + " (a window counterexample, confirmed on region " + concrete.spec() + " by the reference interpreter)";
                 o.result.witness["confirmed_on"] = concrete.spec();
                 return;
             }
@@ -211,7 +218,7 @@ private:
         }
         o.result.witness["confirmed"] = false;
         o.result.verdict = Verdict::Unknown;
-        o.result.summary = "not proved for every size: rule '" + rule + "' " + ob.broken + " on the window, but that is not confirmed on region " + concrete.spec() + " (" + why + ")";
+        o.result.summary = "not proved for every size: rule " + rule + " " + ob.broken + " on the window, but that is not confirmed on region " + concrete.spec() + " (" + why + ")";
         o.result.witness["why_unconfirmed"] = why;
     }
 
@@ -248,10 +255,7 @@ StepObligation conserves(const rules::Model& model, const rules::Property& p) {
 StepObligation ranking(const rules::Model& model, const rules::Property& p) {
     int countRadius = 0;
     for (const rules::Expr& x : p.exprs) countRadius = std::max(countRadius, readRadius(x));
-    auto excepted = [&model, &p](const rules::Engine& e, int q) { return model.ruleNamed(e.instances()[q].rule, p.except); };
-    auto notDecreased = [&p, excepted](SmtEncoding& enc, int q, const State& c, const State& d) {
-        return enc.fires(q, c, d) && !(excepted(enc.engine(), q) ? enc.keptAfter(p.exprs, q, d, c) : enc.lexLessAfter(p.exprs, q, d, c));
-    };
+    auto notDecreased = [&p](SmtEncoding& enc, int q, const State& c, const State& d) { return enc.fires(q, c, d) && enc.rankingBroken(p, q, d, c); };
     StepObligation ob;
     ob.name = p.name, ob.kind = "ranking", ob.margin = std::max(ruleRadius(model), 2 * countRadius), ob.property = &p;
     ob.proved = "every step decreases it lexicographically" + exceptText(p) + ", on every region";

@@ -716,6 +716,14 @@ smt::Term SmtEncoding::keptAfter(const std::vector<Expr>& ranking, int placed, c
     return same;
 }
 
+smt::Term SmtEncoding::rankingBroken(const rules::Property& r, int placed, const State& after, const State& before) {
+    const int shape = engine_.instances()[placed].shape;
+    const bool excepted = engine_.model().shapeHasRule(shape, r.except, true), covered = engine_.model().shapeHasRule(shape, r.except, false);
+    if (!covered) return !keptAfter(r.exprs, placed, after, before);
+    if (!excepted) return !lexLessAfter(r.exprs, placed, after, before);
+    return !keptAfter(r.exprs, placed, after, before) || !lexLessAfter(r.exprs, placed, after, before);
+}
+
 std::vector<CellValue> SmtEncoding::decode(const smt::Model& m, const State& s) const {
     std::vector<CellValue> cells;
     for (const auto& row : s.is) {

@@ -67,6 +67,10 @@ public:
     smt::Term lexLessAfter(const std::vector<rules::Expr>& ranking, int placed, const State& after, const State& before);
     /// Every component of the ranking is the same after the step as before.
     smt::Term keptAfter(const std::vector<rules::Expr>& ranking, int placed, const State& after, const State& before);
+    /// The step by placed instance p breaks ranking `r`: as a step of a rule `r` excepts it changes
+    /// it, as a step of a rule it covers it does not decrease it (a shape kept once for several
+    /// rules is a step of each: rules::RuleShape::rules).
+    smt::Term rankingBroken(const rules::Property& r, int placed, const State& after, const State& before);
     smt::Term massUnits(const State& s);
     /// Cell `cell`'s mass in units of the mass denominator (an integer term).
     smt::Term cellMassUnits(const State& s, int cell) const;

@@ -181,9 +181,18 @@ Model::Model(const System& system, const Lattice& lattice)
         for (std::size_t ri = 0; ri < rules_.size(); ++ri)
             for (std::size_t g = from; g < to; ++g)
                 kept[ri][g] = owner.emplace(orientations[ri][g].key, static_cast<int>(ri)).second;
+    std::map<std::string, std::size_t> shapeOfKey;
     for (std::size_t ri = 0; ri < rules_.size(); ++ri)
         for (std::size_t g = 0; g < group.size(); ++g)
-            if (kept[ri][g]) shapes_.push_back({static_cast<int>(ri), static_cast<int>(g), orientations[ri][g].offsets});
+            if (kept[ri][g]) {
+                shapeOfKey.emplace(orientations[ri][g].key, shapes_.size());
+                shapes_.push_back({static_cast<int>(ri), static_cast<int>(g), orientations[ri][g].offsets, {static_cast<int>(ri)}});
+            }
+    for (std::size_t ri = 0; ri < rules_.size(); ++ri)
+        for (const Orientation& o : orientations[ri]) {
+            std::vector<int>& also = shapes_[shapeOfKey.at(o.key)].rules;
+            if (std::find(also.begin(), also.end(), static_cast<int>(ri)) == also.end()) also.push_back(static_cast<int>(ri));
+        }
     // A duplicate: every orientation of the rule is an orientation of some earlier rule.
     std::map<std::string, int> earlier;
     for (std::size_t ri = 0; ri < rules_.size(); ++ri) {
@@ -202,6 +211,11 @@ Model::Model(const System& system, const Lattice& lattice)
 bool Model::ruleNamed(int rule, const std::vector<std::string>& names) const {
     const DirectedRule& r = rules_[rule];
     return std::find(names.begin(), names.end(), r.name) != names.end() || std::find(names.begin(), names.end(), r.rule->name) != names.end();
+}
+
+bool Model::shapeHasRule(int shape, const std::vector<std::string>& names, bool named) const {
+    const std::vector<int>& rules = shapes_[static_cast<std::size_t>(shape)].rules;
+    return std::any_of(rules.begin(), rules.end(), [&](int r) { return ruleNamed(r, names) == named; });
 }
 
 int Model::shapeCount(int rule) const {

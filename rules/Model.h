@@ -59,6 +59,11 @@ struct RuleShape {
     int rule = 0;      // index into Model::rules()
     int symmetry = 0;  // index into Lattice::pointGroup(): below rotations().size() a rotation
     std::vector<Vec> offsets;
+    /// Every rule a step of this shape is a step of: `rule`, then each other rule with an
+    /// orientation that reads and writes the same cells in the same way (a duplicate rule, or a
+    /// mirror twin); the shape is kept once, but a property that names rules (a ranking's
+    /// `except`) judges the step as each one's.
+    std::vector<int> rules;
 };
 
 class Model {
@@ -77,6 +82,8 @@ public:
     int shapeCount(int rule) const;
     /// Directed rule `rule` is among `names` (a `<=>` rule's name covers both directions).
     bool ruleNamed(int rule, const std::vector<std::string>& names) const;
+    /// Whether some rule of the shape is named in `names` (`named`), or some is not (`!named`).
+    bool shapeHasRule(int shape, const std::vector<std::string>& names, bool named) const;
     /// Directed rules whose every orientation repeats an orientation of earlier rules, with one of
     /// them. Such a rule may still own shapes: a rewrite a reflection of an earlier rule would also
     /// give is kept under the rule whose rotation gives it.

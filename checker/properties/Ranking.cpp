@@ -24,6 +24,26 @@ std::vector<rules::Rational> rankOf(const rules::Engine& e, const rules::Propert
     return rank;
 }
 
+/// Whether a step of instance q from ranking `from` to `to` breaks the ranking: as a step of an
+/// excepted rule it must keep it, as a step of a covered rule decrease it, and a shape kept once
+/// for several rules (Model's RuleShape::rules) is a step of each.
+bool breaks(const rules::Engine& e, const rules::Property& p, int q, const std::vector<rules::Rational>& from, const std::vector<rules::Rational>& to) {
+    const int shape = e.instances()[q].shape;
+    return (e.model().shapeHasRule(shape, p.except, true) && from != to) || (e.model().shapeHasRule(shape, p.except, false) && !lexLess(to, from));
+}
+
+/// The rule by which a step of instance q breaks the ranking, and how: a covered rule's that does
+/// not decrease it first, else an excepted rule's that changes it.
+std::pair<int, std::string> breaker(const rules::Engine& e, const rules::Property& p, int q, const std::vector<rules::Rational>& from, const std::vector<rules::Rational>& to) {
+    const rules::Model& model = e.model();
+    const std::vector<int>& rules = model.shapes()[static_cast<std::size_t>(e.instances()[q].shape)].rules;
+    for (int rule : rules)
+        if (!model.ruleNamed(rule, p.except) && !lexLess(to, from)) return {rule, "does not decrease it"};
+    for (int rule : rules)
+        if (model.ruleNamed(rule, p.except) && from != to) return {rule, "changes it (an excepted rule must keep it)"};
+    return {e.instances()[q].rule, "does not decrease it"};
+}
+
 /// Two strong-component runs and a shortest path, a flag per edge, and per state a vector of
 /// `terms` ranking values.
 PhaseCost rankingCost(std::size_t terms) { return {128.0 + 16.0 * static_cast<double>(terms), 13}; }
@@ -47,24 +67,24 @@ public:
         for (StateId s : ids) {
             rank[s] = rankOf(e, p, ex->cells(s).data());
         }
-        // A step of an excepted rule (a resource move) must keep the ranking; every other step decreases it.
-        std::vector<char> excepted(model.rules().size());
-        for (std::size_t q = 0; q < excepted.size(); ++q) excepted[q] = model.ruleNamed(static_cast<int>(q), p.except);
-        auto keptBy = [&](std::int32_t via) { return excepted[e.instances()[via].rule] != 0; };
-        // A step is judged by the rule of each instance that makes it: an excepted rule's and a
-        // covered rule's can make the same step, which the graph holds as one edge.
-        std::vector<char> flat(succ.size(), 0), covered(succ.size(), 0);
+        // A step of an excepted rule (a resource move) must keep the ranking; every other step
+        // decreases it. A step is judged by the rule of each instance that makes it: an excepted
+        // rule's and a covered rule's can make the same step, which the graph holds as one edge.
+        auto coveredBy = [&](std::int32_t via) { return model.shapeHasRule(e.instances()[via].shape, p.except, false); };
+        std::vector<char> bad(succ.size(), 0), covered(succ.size(), 0), level(succ.size(), 0);
         std::vector<std::int32_t> badVia(succ.size(), -1), coveredVia(succ.size(), -1);
         std::uint64_t badEdges = 0, firstBad = 0;
         StateId firstFrom = kNoState;
         for (StateId s : ids)
-            for (std::uint64_t k = row[s]; k < row[s + 1]; ++k)
+            for (std::uint64_t k = row[s]; k < row[s + 1]; ++k) {
+                level[k] = rank[succ[k]] == rank[s];
                 for (std::int32_t via : ex->viasOf(k)) {
-                    if (!keptBy(via) && !covered[k]) covered[k] = 1, coveredVia[k] = via;
-                    if (flat[k] || !(keptBy(via) ? rank[succ[k]] != rank[s] : !lexLess(rank[succ[k]], rank[s]))) continue;
-                    flat[k] = 1, badVia[k] = via;
+                    if (coveredBy(via) && !covered[k]) covered[k] = 1, coveredVia[k] = via;
+                    if (bad[k] || !breaks(e, p, via, rank[s], rank[succ[k]])) continue;
+                    bad[k] = 1, badVia[k] = via;
                     if (badEdges++ == 0) firstBad = k, firstFrom = s;
                 }
+            }
         if (badEdges == 0) {
             holdsOrUnknown(r, g, "every step decreases it" + exceptText(p));
             return r;
@@ -72,23 +92,29 @@ public:
         r.verdict = Verdict::Violated;
         // Termination fails exactly when the reachable graph has a cycle through a step of a
         // covered rule (one not excepted), whatever mix of decreasing and non-decreasing steps
-        // it takes; a cycle of excepted steps that keep the ranking is the allocator's (seed
-        // 000 Lemma 3). A cycle on which the ranking never decreases (a livelock) is shown first.
-        const Components flatScc = strongComponents(*ex, flat);
+        // it takes; a cycle of excepted steps alone is the allocator's (seed 000 Lemma 3). A
+        // cycle on which the ranking never decreases (a livelock: every step keeps it, since it
+        // comes back) is shown first.
+        const Components levelScc = strongComponents(*ex, level);
         const Components whole = strongComponents(*ex, std::vector<char>(succ.size(), 1));
         StateId cycleFrom = kNoState;
         std::uint64_t cycleEdge = 0;
         bool livelock = false;
         for (StateId s : ids)
             for (std::uint64_t k = row[s]; k < row[s + 1] && !livelock; ++k) {
-                if (flat[k] && flatScc.of[succ[k]] == flatScc.of[s]) cycleFrom = s, cycleEdge = k, livelock = true;
-                else if (cycleFrom == kNoState && covered[k] && whole.of[succ[k]] == whole.of[s]) cycleFrom = s, cycleEdge = k;
+                if (!covered[k]) continue;
+                if (level[k] && levelScc.of[succ[k]] == levelScc.of[s]) cycleFrom = s, cycleEdge = k, livelock = true;
+                else if (cycleFrom == kNoState && whole.of[succ[k]] == whole.of[s]) cycleFrom = s, cycleEdge = k;
             }
         if (cycleFrom == kNoState) {
             r.trace = traceWithStep(*ex, firstFrom, firstBad);
             r.trace->steps.back().placed = badVia[firstBad];
-            r.summary = std::to_string(badEdges) + " steps do not decrease it; the reachable graph has no cycle, so runs still terminate here";
-            r.trace->description = "the last step " + std::string(keptBy(badVia[firstBad]) ? "changes" : "does not decrease") + " '" + p.name + "'";
+            const bool one = badEdges == 1;
+            const std::string what = p.except.empty() ? (one ? " step does not decrease it" : " steps do not decrease it")
+                                                      : std::string(one ? " step breaks it" : " steps break it") + " (a covered rule's must decrease it, an excepted rule's keep it)";
+            r.summary = std::to_string(badEdges) + what + "; the reachable graph has no cycle through a step of a rule it covers, so runs still terminate here";
+            const auto [rule, how] = breaker(e, p, badVia[firstBad], rank[firstFrom], rank[succ[firstBad]]);
+            r.trace->description = "the last step, by rule '" + model.rules()[rule].name + "', " + how;
             r.witness = {{"non_decreasing_steps", badEdges}, {"cycle", false}, {"livelock", false}};
             return r;
         }
@@ -99,26 +125,31 @@ public:
         std::vector<StateId> loop{cycleFrom};
         if (next == cycleFrom) loop.push_back(cycleFrom);
         else
-            for (StateId b : GraphView(*ex, livelock ? &flat : nullptr).shortestPath(next, cycleFrom)) loop.push_back(b);
+            for (StateId b : GraphView(*ex, livelock ? &level : nullptr).shortestPath(next, cycleFrom)) loop.push_back(b);
         const Trace cycle = traceAlong(*ex, loop);
         Trace t = traceTo(*ex, cycleFrom);
         t.loop = static_cast<int>(t.steps.size()) - 1;
         // ITF: the last state steps back to states[loop], so the repeated state is not written twice.
         t.steps.insert(t.steps.end(), cycle.steps.begin() + 1, cycle.steps.end() - 1);
-        // The cycle's own step by the rule that makes it one: non-decreasing, or covered.
-        if (next != cycleFrom) t.steps[static_cast<std::size_t>(*t.loop) + 1].placed = livelock ? badVia[cycleEdge] : coveredVia[cycleEdge];
+        // The cycle's own step, by a covered rule, is written out, so the trace names it: after
+        // the state the lasso returns to (for a self-loop, that state again).
+        if (next == cycleFrom) t.steps.push_back({ex->cells(cycleFrom), coveredVia[cycleEdge]});
+        else t.steps[static_cast<std::size_t>(*t.loop) + 1].placed = coveredVia[cycleEdge];
         // Can a fair scheduler leave a livelock? Only if some step from its strong component (in
         // the whole graph) decreases the ranking; and a mixed cycle only if a step leaves its component.
         bool escapable = false;
         for (StateId s : ids)
             if (whole.of[s] == whole.of[cycleFrom])
                 for (std::uint64_t k = row[s]; k < row[s + 1] && !escapable; ++k)
-                    escapable = livelock ? !flat[k] : whole.of[succ[k]] != whole.of[s];
+                    escapable = livelock ? !level[k] : whole.of[succ[k]] != whole.of[s];
         r.trace = t;
         const std::size_t length = loop.size() - 1;
+        const std::vector<int>& cycleRules = model.shapes()[static_cast<std::size_t>(e.instances()[coveredVia[cycleEdge]].shape)].rules;
+        const int coveredRule = *std::find_if(cycleRules.begin(), cycleRules.end(), [&](int q) { return !model.ruleNamed(q, p.except); });
         r.summary = "not terminating: " +
                     (livelock ? "a cycle of " + stepCount(length) + " on which it never decreases"
                               : "a cycle of " + stepCount(length) + " that undoes what it decreases") +
+                    ", through a step of rule '" + model.rules()[coveredRule].name + "'" +
                     (escapable ? " (a fair scheduler can leave it)" : " (trapped: no step leaves it)");
         r.trace->description = r.summary;
         r.witness = {{"non_decreasing_steps", badEdges}, {"cycle", true}, {"livelock", livelock}, {"length", length}, {"escapable", escapable}};
@@ -130,8 +161,7 @@ public:
     bool confirm(const PropertyResult& r, Evidence evidence, const rules::Interpreter& in, const rules::Engine& engine, std::string* why) const override {
         if (evidence == Evidence::Path) return PropertyType::confirm(r, evidence, in, engine, why);
         return confirmBrokenStep(r, in, engine, why, "decreases the ranking (an excepted rule's keeps it)", [&](const CellValue* before, const CellValue* after, int q) {
-            const auto from = rankOf(engine, p_, before), to = rankOf(engine, p_, after);
-            return engine.model().ruleNamed(engine.instances()[q].rule, p_.except) ? from != to : !lexLess(to, from);
+            return breaks(engine, p_, q, rankOf(engine, p_, before), rankOf(engine, p_, after));
         });
     }
 
@@ -143,15 +173,14 @@ public:
         smt::Context ctx(proof.budget);
         SmtEncoding enc(ctx, e, SmtEncoding::Use::Queries, proof.budget);
         auto c = enc.state("c"), d = enc.state("d");
-        auto kept = [&](int q) { return model.ruleNamed(e.instances()[q].rule, p.except); };
         return run.stepwise(
-            p.name, "ranking", ctx, enc, enc.legal(c) && enc.legal(d),
-            [&](int q) { return enc.fires(q, c, d) && !(kept(q) ? enc.keptAfter(p.exprs, q, d, c) : enc.lexLessAfter(p.exprs, q, d, c)); },
+            p.name, "ranking", ctx, enc, enc.legal(c) && enc.legal(d), [&](int q) { return enc.fires(q, c, d) && enc.rankingBroken(p, q, d, c); },
             [&](const smt::Model& m, int q, PropertyResult& r) {
-                const std::string why = kept(q) ? "changes it (an excepted rule must keep it)" : "does not decrease it";
-                r.trace = Trace{{{enc.decode(m, c), -1}, {enc.decode(m, d), q}}, {}, {}, "a step that " + why, {}};
-                r.summary = "rule '" + model.rules()[e.instances()[q].rule].name + "' " + why;
-                r.witness = {{"rule", model.rules()[e.instances()[q].rule].name}};
+                const std::vector<CellValue> before = enc.decode(m, c), after = enc.decode(m, d);
+                const auto [rule, why] = breaker(e, p, q, rankOf(e, p, before.data()), rankOf(e, p, after.data()));
+                r.trace = Trace{{{before, -1}, {after, q}}, {}, {}, "a step that " + why, {}};
+                r.summary = "rule '" + model.rules()[rule].name + "' " + why;
+                r.witness = {{"rule", model.rules()[rule].name}};
             },
             "every step decreases it lexicographically" + exceptText(p));
     }

@@ -6,6 +6,7 @@
 #include "CheckSupport.h"
 #include "checker/Draw.h"
 #include "checker/Holonomy.h"
+#include "checker/Obligations.h"
 #include "rules/TextFile.h"
 
 #include <regex>
@@ -178,6 +179,48 @@ TEST_CASE("a ranking judges a step by every rule that makes it, in either order 
     // A covered rule that changes nothing, beside an excepted one that can make the same (empty) step.
     auto idle = test::parse("system idle\nstates A\nrule other: _ => *\nrule idle: A => A\nranking k: count(A) except other\n");
     CHECK(test::checkFrom(idle, "square:2x1", "A.", "").property("k").verdict == Verdict::Violated);
+}
+
+TEST_CASE("a rule that repeats another is still a rule: its steps are judged as its own (audit 10)") {
+    // t has every instance of s, so the model keeps one shape for both; excepting s must not
+    // except t, in check, in the bounded proof and in the proof for every size.
+    for (const char* t : {"rule t: A _ => _ A\n", "rule t: _ A => A _\n"}) {
+        CAPTURE(t);
+        const rules::System dup = test::parse(std::string("system dup\nstates A\nrule s: A _ => _ A\n") + t + "ranking k: count(A) except s\n");
+        auto c = test::checkFrom(dup, "square:2x1", "A.", "");
+        const auto& r = c.property("k");
+        REQUIRE(r.verdict == Verdict::Violated);
+        CHECK(r.summary.find("through a step of rule 't'") != std::string::npos);
+        c.replayAll();
+        const test::World w(dup, "square:2x1");
+        checker::VerifyOptions o;
+        o.timeoutSeconds = 60;
+        CHECK(checker::verify(*w.model, w.region, o).overall() == Verdict::Violated);
+    }
+}
+
+TEST_CASE("a livelock is a cycle of steps that keep the ranking, through a covered rule's step (audit 10)") {
+    struct Case {
+        const char *text, *start, *summary;
+        bool cycle, livelock;
+    };
+    for (const Case& k : {
+             // g is excepted and keeps count(#), and f keeps it too: a livelock.
+             Case{"rule f: A => B\nrule g: B => A\nranking k: count(#) except g\n", "A", "never decreases", true, true},
+             // mk decreases count(_) on the cycle: it is undone by rm, not a livelock.
+             Case{"rule mk: _ => A\nrule rm: A => _\nranking k: count(_) except mk\n", ".", "undoes what it decreases", true, false},
+             // Every rule excepted: the excepted steps break it, but a cycle of them alone is the allocator's.
+             Case{"rule f: A => B\nrule g: B => A\nranking k: count(A) except f, g\n", "A", "no cycle", false, false},
+         }) {
+        CAPTURE(k.text);
+        auto c = test::checkFrom(test::parse(std::string("system ll\nstates A | B\n") + k.text), "square:1x1", k.start, "");
+        const auto& r = c.property("k");
+        REQUIRE(r.verdict == Verdict::Violated);
+        CHECK(r.summary.find(k.summary) != std::string::npos);
+        CHECK(r.witness["cycle"] == k.cycle);
+        CHECK(r.witness["livelock"] == k.livelock);
+        c.replayAll();
+    }
 }
 
 TEST_CASE("a trap without a deadlock: the goal is unreachable from a cycle") {
