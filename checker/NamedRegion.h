@@ -4,7 +4,8 @@
 // smallest region that can be named (square:WxH, cubic:WxHxD, hex:rR) and holds a translate of it,
 // the added cells empty without inputs, and has the reference interpreter confirm it there again:
 // the trace --trace-out writes is then one `holon check --region R --from TRACE#0` and
-// `holon view` read like any other.
+// `holon view` read like any other. Cells no step reads or writes are then emptied where the
+// interpreter still confirms it, and the region shrunk around what is left.
 
 #include "checker/Trace.h"
 #include "checker/Verdict.h"
