@@ -1,8 +1,8 @@
 // Moving a window counterexample onto a named region. The window (checker/Window.h) is rebuilt from
 // the radius the counterexample's witness records, grown by one as checker/EverySize.cpp grows it
 // (the spec it was confirmed on must come out the same); each cell is translated into the named
-// region (square and cubic: by the lower corner of the bounding box; hex: none, the window is
-// around the origin and a hexagon is too), and each step's instance is found again by its shape and
+// region (square and cubic: by the lower corner of the bounding box; hex: so that the cells lie
+// nearest the origin, around which a hexagon lies), and each step's instance is found again by its shape and
 // first cell. Lattices are translation invariant and the added cells are empty without inputs, as a
 // point outside a region reads; but constraints and properties quantify over them, so the
 // interpreter confirms the moved trace instead of taking that on trust. Then it is made smaller,
@@ -32,9 +32,18 @@ std::pair<rules::Region, rules::Vec> namedAround(const rules::Lattice& lattice, 
         return {rules::Region::box(lattice, hi - lo + rules::Vec{1, 1, 1}), rules::Vec{} - lo};
     }
     case rules::LatticeKind::Hex2D: {
-        int radius = 0;
-        for (rules::Vec v : cells) radius = std::max({radius, std::abs(v.x), std::abs(v.y), std::abs(v.x + v.y)});
-        return {rules::Region::hexagon(radius), rules::Vec{}};
+        // A hexagon is centred on the origin: the cells are moved by whichever of 0 and minus one
+        // of them puts them nearest it.
+        auto radiusAfter = [&](rules::Vec shift) {
+            int radius = 0;
+            for (rules::Vec v : cells) radius = std::max({radius, std::abs(v.x + shift.x), std::abs(v.y + shift.y), std::abs(v.x + shift.x + v.y + shift.y)});
+            return radius;
+        };
+        rules::Vec best{};
+        int radius = radiusAfter(best);
+        for (rules::Vec v : cells)
+            if (const int r = radiusAfter(rules::Vec{} - v); r < radius) radius = r, best = rules::Vec{} - v;
+        return {rules::Region::hexagon(radius), best};
     }
     }
     throw InternalError("a lattice without a named region");
