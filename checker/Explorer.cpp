@@ -461,7 +461,14 @@ bool Explorer::resolve(const Successors& s, Worker& worker) {
     thread_local std::vector<StateId> seen;
     thread_local std::vector<std::pair<StateId, int>> rulesSeen;  // (successor, rule) of every recorded step
     seen.clear(), rulesSeen.clear();
-    auto ruleOf = [&](std::int32_t via) { return engine_->instances()[via].rule; };
+    // The rules an instance's step is a step of: its shape may be kept once for several
+    // (rules::RuleShape::rules). An instance that adds one to a step already recorded is listed too.
+    auto addsRules = [&](StateId sid, std::int32_t via) {
+        bool added = false;
+        for (int rule : engine_->model().shapes()[static_cast<std::size_t>(engine_->instances()[via].shape)].rules)
+            if (std::find(rulesSeen.begin(), rulesSeen.end(), std::pair<StateId, int>{sid, rule}) == rulesSeen.end()) rulesSeen.push_back({sid, rule}), added = true;
+        return added;
+    };
     std::uint64_t edges = 0, added = 0;
     for (std::size_t k = 0; k < s.count; ++k) {
         StateId sid = onePass ? lookUp(k) : found[k];
@@ -485,13 +492,11 @@ bool Explorer::resolve(const Successors& s, Worker& worker) {
         // Two instances with the same effect are one edge of the graph.
         if (!words_ || !words_->unique(s.via[k])) {
             if (std::find(seen.begin(), seen.end(), sid) != seen.end()) {
-                const std::pair<StateId, int> step{sid, ruleOf(s.via[k])};
-                if (options_.recordEdges && std::find(rulesSeen.begin(), rulesSeen.end(), step) == rulesSeen.end())
-                    rulesSeen.push_back(step), worker.otherRules.push_back({s.from, sid, s.via[k]});
+                if (options_.recordEdges && addsRules(sid, s.via[k])) worker.otherRules.push_back({s.from, sid, s.via[k]});
                 continue;
             }
             seen.push_back(sid);
-            if (options_.recordEdges) rulesSeen.push_back({sid, ruleOf(s.via[k])});
+            if (options_.recordEdges) addsRules(sid, s.via[k]);
         }
         ++edges;
         if (options_.recordEdges) worker.edges.push_back({s.from, sid, s.via[k]});

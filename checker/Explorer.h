@@ -108,9 +108,9 @@ public:
     const std::vector<std::uint64_t>& rowStart() const { return rowStart_; }
     const std::vector<StateId>& successors() const { return succ_; }
     const std::vector<std::int32_t>& successorVia() const { return succVia_; }
-    /// The instances that make edge `edge`'s step: successorVia()'s first, then one of each other
-    /// rule that makes the same step (two instances with the same effect are one edge, but a
-    /// property may judge a step by its rule: a ranking's excepted rules).
+    /// The instances that make edge `edge`'s step: successorVia()'s first, then each one that adds
+    /// a rule the step is a step of (rules::RuleShape::rules). Two instances with the same effect
+    /// are one edge, but a property may judge a step by its rules: a ranking's `except`.
     std::vector<std::int32_t> viasOf(std::uint64_t edge) const;
     bool hasEdges() const { return !rowStart_.empty(); }
     /// The path of (state, instance that led to it) from an initial state to `id`.

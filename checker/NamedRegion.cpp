@@ -43,7 +43,7 @@ std::pair<rules::Region, rules::Vec> namedAround(const rules::Lattice& lattice, 
         int radius = radiusAfter(best);
         for (rules::Vec v : cells)
             if (const int r = radiusAfter(rules::Vec{} - v); r < radius) radius = r, best = rules::Vec{} - v;
-        return {rules::Region::hexagon(radius), best};
+        return {rules::Region::hexagon(std::max(radius, 1)), best};  // hex:r0 is no region --region takes
     }
     }
     throw InternalError("a lattice without a named region");

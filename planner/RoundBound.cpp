@@ -127,7 +127,7 @@ public:
             const std::uint8_t c = engine.combo(static_cast<std::int64_t>(i));
             if (c == BoxEngine::kOutside) continue;
             const std::int64_t m = tables.massUnitsOf(problem.cells[i]);
-            mayHold_[i] = m > 0 || fillable[c];
+            mayHold_[i] = problem.cells[i] != 0 || fillable[c];     // a metamodule of no mass may still take some
             if (!mayHold_[i] || least[c] == kNoGoalMass) continue;  // no goal state here: nothing is asked
             gain_[i] = std::max<std::int64_t>(0, least[c] - m), loss_[i] = std::max<std::int64_t>(0, m - most[c]);
         }

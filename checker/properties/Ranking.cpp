@@ -7,6 +7,7 @@
 
 #include "checker/ProofRunner.h"
 #include "checker/properties/Kinds.h"
+#include "rules/Error.h"
 
 #include <algorithm>
 
@@ -41,7 +42,7 @@ std::pair<int, std::string> breaker(const rules::Engine& e, const rules::Propert
         if (!model.ruleNamed(rule, p.except) && !lexLess(to, from)) return {rule, "does not decrease it"};
     for (int rule : rules)
         if (model.ruleNamed(rule, p.except) && from != to) return {rule, "changes it (an excepted rule must keep it)"};
-    return {e.instances()[q].rule, "does not decrease it"};
+    throw InternalError("a step reported as breaking ranking '" + p.name + "' keeps it for every rule it is a step of");
 }
 
 /// Two strong-component runs and a shortest path, a flag per edge, and per state a vector of
@@ -112,10 +113,11 @@ public:
             const bool one = badEdges == 1;
             const std::string what = p.except.empty() ? (one ? " step does not decrease it" : " steps do not decrease it")
                                                       : std::string(one ? " step breaks it" : " steps break it") + " (a covered rule's must decrease it, an excepted rule's keep it)";
-            r.summary = std::to_string(badEdges) + what + "; the reachable graph has no cycle through a step of a rule it covers, so runs still terminate here";
+            r.summary = std::to_string(badEdges) + what + "; no cycle of the reachable graph passes through a step of a rule it covers, so " +
+                        (p.except.empty() ? "runs still terminate here" : "only steps of excepted rules can repeat for ever here");
             const auto [rule, how] = breaker(e, p, badVia[firstBad], rank[firstFrom], rank[succ[firstBad]]);
             r.trace->description = "the last step, by rule '" + model.rules()[rule].name + "', " + how;
-            r.witness = {{"non_decreasing_steps", badEdges}, {"cycle", false}, {"livelock", false}};
+            r.witness = {{"breaking_steps", badEdges}, {"cycle", false}, {"livelock", false}};
             return r;
         }
         // Lasso: reach the cycle, take its step, and come back by a shortest path inside the
@@ -152,7 +154,7 @@ public:
                     ", through a step of rule '" + model.rules()[coveredRule].name + "'" +
                     (escapable ? " (a fair scheduler can leave it)" : " (trapped: no step leaves it)");
         r.trace->description = r.summary;
-        r.witness = {{"non_decreasing_steps", badEdges}, {"cycle", true}, {"livelock", livelock}, {"length", length}, {"escapable", escapable}};
+        r.witness = {{"breaking_steps", badEdges}, {"cycle", true}, {"livelock", livelock}, {"length", length}, {"escapable", escapable}};
         return r;
     }
 

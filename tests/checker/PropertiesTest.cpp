@@ -191,6 +191,7 @@ TEST_CASE("a rule that repeats another is still a rule: its steps are judged as 
         const auto& r = c.property("k");
         REQUIRE(r.verdict == Verdict::Violated);
         CHECK(r.summary.find("through a step of rule 't'") != std::string::npos);
+        CHECK(checker::drawTraceAscii(*r.trace, *c.kept.engine).find("s (also t) at") != std::string::npos);
         c.replayAll();
         const test::World w(dup, "square:2x1");
         checker::VerifyOptions o;
