@@ -95,8 +95,8 @@ bool confirmed(const rules::Model& model, const PropertyResult& r, const NamedCo
 /// or writes, and sets their inputs, with whatever satisfies the hypotheses, which hides the step
 /// in a person's drawing and makes `holon check --from TRACE#0` explore a large region. Each such
 /// cell is emptied in every state, and its inputs cleared, where the interpreter still confirms the
-/// trace; then the trace moves onto the smallest named region around what is left. Greedy, one cell at a time: a few hundred replays of a
-/// one-step trace on a window.
+/// trace; then the trace moves onto the smallest named region around what is left. Greedy, one
+/// cell at a time: a few hundred replays of a one-step trace on a window.
 NamedCounterexample smaller(const rules::Model& model, const PropertyResult& r, NamedCounterexample c) {
     const rules::Engine engine(model, c.region, c.inputs);
     std::vector<char> keep(static_cast<std::size_t>(c.region.size()), 0);
