@@ -50,10 +50,9 @@ std::string stepTitle(const Trace& t, const rules::Engine& e, std::size_t k) {
     if (t.steps[k].placed < 0) return k == 0 ? "initial" : "adjacent, not one rule step away";
     const auto& p = e.instances()[t.steps[k].placed];
     // A shape kept once for several rules (a repeated or mirrored rule) is a step of each.
-    const std::vector<int>& rules = e.model().shapes()[static_cast<std::size_t>(p.shape)].rules;
-    std::string names = e.model().rules()[p.rule].name;
-    for (std::size_t r = 1; r < rules.size(); ++r) names += (r == 1 ? " (also " : ", ") + e.model().rules()[rules[r]].name;
-    return names + (rules.size() > 1 ? ")" : "") + " at " + position(e.region(), p.cells[0]);
+    std::string also;
+    for (int r : e.model().alsoRules(p.shape)) also += (also.empty() ? " (also " : ", ") + e.model().rules()[r].name;
+    return e.model().rules()[p.rule].name + (also.empty() ? "" : also + ")") + " at " + position(e.region(), p.cells[0]);
 }
 
 /// An ASCII arrow for an in-plane axis direction (square, and x/y of cubic), or 0.

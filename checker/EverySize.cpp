@@ -147,10 +147,10 @@ private:
     /// The rules a step of instance q is a step of, quoted: 's', or 's' (also 't') for a shape kept
     /// once for two rules.
     std::string ruleOf(const Window& w, int q) const {
-        const std::vector<int>& rules = model_.shapes()[static_cast<std::size_t>(w.engine().instances()[q].shape)].rules;
-        std::string out = "'" + model_.rules()[rules.front()].name + "'";
-        for (std::size_t k = 1; k < rules.size(); ++k) out += (k == 1 ? " (also '" : ", '") + model_.rules()[rules[k]].name + "'";
-        return rules.size() > 1 ? out + ")" : out;
+        const rules::Engine::Placed& p = w.engine().instances()[q];
+        std::string out = "'" + model_.rules()[p.rule].name + "'", also;
+        for (int r : model_.alsoRules(p.shape)) also += (also.empty() ? " (also '" : ", '") + model_.rules()[r].name + "'";
+        return out + (also.empty() ? "" : also + ")");
     }
 
     /// A window counterexample: completed on the window grown by one (the bounded encoding, with the

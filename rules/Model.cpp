@@ -213,6 +213,14 @@ bool Model::ruleNamed(int rule, const std::vector<std::string>& names) const {
     return std::find(names.begin(), names.end(), r.name) != names.end() || std::find(names.begin(), names.end(), r.rule->name) != names.end();
 }
 
+std::vector<int> Model::alsoRules(int shape) const {
+    const RuleShape& s = shapes_[static_cast<std::size_t>(shape)];
+    std::vector<int> out;
+    for (int r : s.rules)
+        if (rules_[r].rule != rules_[s.rule].rule) out.push_back(r);
+    return out;
+}
+
 bool Model::shapeHasRule(int shape, const std::vector<std::string>& names, bool named) const {
     const std::vector<int>& rules = shapes_[static_cast<std::size_t>(shape)].rules;
     return std::any_of(rules.begin(), rules.end(), [&](int r) { return ruleNamed(r, names) == named; });

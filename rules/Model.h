@@ -82,6 +82,9 @@ public:
     int shapeCount(int rule) const;
     /// Directed rule `rule` is among `names` (a `<=>` rule's name covers both directions).
     bool ruleNamed(int rule, const std::vector<std::string>& names) const;
+    /// The rules of the shape written apart from its owner's (a two-way rule's reverse is the same
+    /// rule written once): what a step's name adds as "(also t)".
+    std::vector<int> alsoRules(int shape) const;
     /// Whether some rule of the shape is named in `names` (`named`), or some is not (`!named`).
     bool shapeHasRule(int shape, const std::vector<std::string>& names, bool named) const;
     /// Directed rules whose every orientation repeats an orientation of earlier rules, with one of
