@@ -49,10 +49,7 @@ std::vector<int> changedCells(const Trace& t, std::size_t k) {
 std::string stepTitle(const Trace& t, const rules::Engine& e, std::size_t k) {
     if (t.steps[k].placed < 0) return k == 0 ? "initial" : "adjacent, not one rule step away";
     const auto& p = e.instances()[t.steps[k].placed];
-    // A shape kept once for several rules (a repeated or mirrored rule) is a step of each.
-    std::string also;
-    for (int r : e.model().alsoRules(p.shape)) also += (also.empty() ? " (also " : ", ") + e.model().rules()[r].name;
-    return e.model().rules()[p.rule].name + (also.empty() ? "" : also + ")") + " at " + position(e.region(), p.cells[0]);
+    return e.model().stepRules(p.shape, false) + " at " + position(e.region(), p.cells[0]);
 }
 
 /// An ASCII arrow for an in-plane axis direction (square, and x/y of cubic), or 0.

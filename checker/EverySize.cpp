@@ -144,14 +144,7 @@ public:
     }
 
 private:
-    /// The rules a step of instance q is a step of, quoted: 's', or 's' (also 't') for a shape kept
-    /// once for two rules.
-    std::string ruleOf(const Window& w, int q) const {
-        const rules::Engine::Placed& p = w.engine().instances()[q];
-        std::string out = "'" + model_.rules()[p.rule].name + "'", also;
-        for (int r : model_.alsoRules(p.shape)) also += (also.empty() ? " (also '" : ", '") + model_.rules()[r].name + "'";
-        return out + (also.empty() ? "" : also + ")");
-    }
+    std::string ruleOf(const Window& w, int q) const { return model_.stepRules(w.engine().instances()[q].shape, true); }
 
     /// A window counterexample: completed on the window grown by one (the bounded encoding, with the
     /// instance's pattern and the cells its guard reads fixed), then replayed by the interpreter.

@@ -30,7 +30,6 @@ public:
     Footprint of(int placed) const;
     /// a's reads meet b's writes or b's reads meet a's writes: the two cannot fire together.
     static bool interfere(const Footprint& a, const Footprint& b);
-    bool interfere(int a, int b) const { return interfere(of(a), of(b)); }
 
 private:
     const rules::Engine* engine_;

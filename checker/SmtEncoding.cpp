@@ -718,7 +718,7 @@ smt::Term SmtEncoding::keptAfter(const std::vector<Expr>& ranking, int placed, c
 
 smt::Term SmtEncoding::rankingBroken(const rules::Property& r, int placed, const State& after, const State& before) {
     const int shape = engine_.instances()[placed].shape;
-    const bool excepted = engine_.model().shapeHasRule(shape, r.except, true), covered = engine_.model().shapeHasRule(shape, r.except, false);
+    const bool excepted = engine_.model().shapeRule(shape, r.except, true) >= 0, covered = engine_.model().shapeRule(shape, r.except, false) >= 0;
     if (!covered) return !keptAfter(r.exprs, placed, after, before);
     if (!excepted) return !lexLessAfter(r.exprs, placed, after, before);
     return !keptAfter(r.exprs, placed, after, before) || !lexLessAfter(r.exprs, placed, after, before);

@@ -27,8 +27,7 @@
 namespace holon::planner {
 
 Monitor::Monitor(const Problem& problem, const Execution& execution) : problem_(&problem), execution_(&execution) {
-    for (const rules::Property& p : problem.model->system().properties)
-        if (p.kind == rules::Property::Kind::Conserves && p.quantity == rules::Property::Quantity::Mass) conservesMass_ = true;
+    conservesMass_ = problem.model->system().conservesMass();
     for (BoxEngine::Value v : execution.cells()) initialMass_ += problem.tables->massUnitsOf(v);
     mass_ = initialMass_;
     stamp_.assign(execution.cells().size(), 0);

@@ -122,12 +122,13 @@ public:
                 }
         }
         const auto size = static_cast<std::size_t>(board.size());
-        mayHold_.assign(size, 0), gain_.assign(size, 0), loss_.assign(size, 0);
+        mayHold_.assign(size, 0), keeps_.assign(size, 0), gain_.assign(size, 0), loss_.assign(size, 0);
         for (std::size_t i = 0; i < size; ++i) {
             const std::uint8_t c = engine.combo(static_cast<std::int64_t>(i));
             if (c == BoxEngine::kOutside) continue;
             const std::int64_t m = tables.massUnitsOf(problem.cells[i]);
-            mayHold_[i] = problem.cells[i] != 0 || fillable[c];     // a metamodule of no mass may still take some
+            mayHold_[i] = problem.cells[i] != 0 || fillable[c];  // a metamodule of no mass may still take some
+            keeps_[i] = mayHold_[i] && most[c] > 0;
             if (!mayHold_[i] || least[c] == kNoGoalMass) continue;  // no goal state here: nothing is asked
             gain_[i] = std::max<std::int64_t>(0, least[c] - m), loss_[i] = std::max<std::int64_t>(0, m - most[c]);
         }
@@ -141,7 +142,7 @@ public:
         // Hop counts over the cells that may hold mass, from where the mass is (creation) or may stay.
         std::vector<std::int64_t> from;
         for (std::size_t i = 0; i < need.size(); ++i)
-            if (mayHold_[i] && (creation ? problem_->tables->massUnitsOf(problem_->cells[i]) > 0 : loss_[i] == 0 && holdsAtGoal(i))) from.push_back(static_cast<std::int64_t>(i));
+            if (mayHold_[i] && (creation ? problem_->tables->massUnitsOf(problem_->cells[i]) > 0 : loss_[i] == 0 && keeps_[i])) from.push_back(static_cast<std::int64_t>(i));
         const std::vector<std::int32_t> hops = spread(from);
         std::vector<std::int32_t> levels;
         for (std::size_t i = 0; i < need.size(); ++i)
@@ -163,13 +164,6 @@ public:
     }
 
 private:
-    bool holdsAtGoal(std::size_t i) const {
-        const std::uint8_t c = problem_->engine->combo(static_cast<std::int64_t>(i));
-        for (int v = 1; v < problem_->tables->alphabet(); ++v)
-            if (problem_->tables->test(problem_->goal, c, static_cast<rules::CellValue>(v)) && problem_->tables->massUnitsOf(static_cast<rules::CellValue>(v)) > 0) return true;
-        return false;
-    }
-
     bool inside(std::int64_t j) const { return j >= 0 && j < static_cast<std::int64_t>(mayHold_.size()); }
 
     std::vector<std::int32_t> spread(const std::vector<std::int64_t>& sources) const {
@@ -197,44 +191,35 @@ private:
         // The cells within the span of the component that are not in it and may hold mass: the
         // gate on the creation side; on the deletion side, the component's cells within the span
         // of them.
-        if (++epoch_ == 0) std::fill(mark_.begin(), mark_.end(), 0), epoch_ = 1;
-        for (std::int64_t i : cells) mark_[i] = epoch_;
-        std::vector<std::int64_t> layer = cells, near;
-        for (int d = 0; d < rules_.span; ++d) {
-            std::vector<std::int64_t> next;
-            for (std::int64_t i : layer)
-                for (std::int64_t s : steps_)
-                    if (const std::int64_t j = i + s; inside(j) && mark_[j] != epoch_) mark_[j] = epoch_, next.push_back(j);
-            for (std::int64_t j : next)
-                if (mayHold_[j]) near.push_back(j);
-            layer.swap(next);
-        }
+        std::vector<std::int64_t> near;
+        forEachWithinSpan(cells, [&](std::int64_t j) {
+            if (mayHold_[j]) near.push_back(j);
+        });
         if (creation) b.gate = static_cast<std::int64_t>(near.size());
-        else b.gate = membersNear(near);
+        else forEachWithinSpan(near, [&](std::int64_t j) { b.gate += member_[j] == 2; });
         if (b.gate > 0) b.rounds = (b.mass + b.gate * b.perCell - 1) / (b.gate * b.perCell);
         return b;
     }
 
-    /// How many cells of the component being taken (member_ 2) lie within the span of `outside`.
-    std::int64_t membersNear(const std::vector<std::int64_t>& outside) {
+    /// Calls f once for each cell not in `from` within the rules' span of it.
+    template <class F>
+    void forEachWithinSpan(const std::vector<std::int64_t>& from, F&& f) {
         if (++epoch_ == 0) std::fill(mark_.begin(), mark_.end(), 0), epoch_ = 1;
-        std::vector<std::int64_t> layer = outside;
-        for (std::int64_t i : outside) mark_[i] = epoch_;
-        std::int64_t count = 0;
+        for (std::int64_t i : from) mark_[i] = epoch_;
+        std::vector<std::int64_t> layer = from;
         for (int d = 0; d < rules_.span; ++d) {
             std::vector<std::int64_t> next;
             for (std::int64_t i : layer)
                 for (std::int64_t s : steps_)
-                    if (const std::int64_t j = i + s; inside(j) && mark_[j] != epoch_) mark_[j] = epoch_, next.push_back(j);
-            for (std::int64_t j : next) count += member_[j] == 2;
+                    if (const std::int64_t j = i + s; inside(j) && mark_[j] != epoch_) mark_[j] = epoch_, next.push_back(j), f(j);
             layer.swap(next);
         }
-        return count;
     }
 
     const Problem* problem_;
     Rules rules_;
     std::vector<char> mayHold_;              // per board cell: holds mass at the start, or a rule can fill it
+    std::vector<char> keeps_;                // per board cell: a goal state here holds mass
     std::vector<std::int64_t> gain_, loss_;  // per board cell: mass it must gain, or lose, by the goal
     std::vector<std::int64_t> steps_;
     std::vector<std::uint32_t> mark_;
@@ -245,9 +230,7 @@ private:
 }  // namespace
 
 std::optional<RoundBound> roundLowerBound(const Problem& problem) {
-    bool conserves = false;
-    for (const rules::Property& p : problem.model->system().properties) conserves = conserves || (p.kind == rules::Property::Kind::Conserves && p.quantity == rules::Property::Quantity::Mass);
-    if (!conserves) return std::nullopt;
+    if (!problem.model->system().conservesMass()) return std::nullopt;
     const std::optional<Rules> rules = massMoves(problem);
     if (!rules) return std::nullopt;
     Cuts cuts(problem, *rules);

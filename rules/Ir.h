@@ -201,6 +201,9 @@ struct System {
     int fieldIndex(const std::string& name) const;
     int inputIndex(const std::string& name) const;
     const Property* property(const std::string& name) const;
+    /// Whether the system declares `conserves mass`: what the planner's monitor, its disk
+    /// metamodules and its bound on rounds take as given (holon verify proves it).
+    bool conservesMass() const;
 };
 
 }  // namespace holon::rules

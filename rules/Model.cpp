@@ -213,17 +213,19 @@ bool Model::ruleNamed(int rule, const std::vector<std::string>& names) const {
     return std::find(names.begin(), names.end(), r.name) != names.end() || std::find(names.begin(), names.end(), r.rule->name) != names.end();
 }
 
-std::vector<int> Model::alsoRules(int shape) const {
+std::string Model::stepRules(int shape, bool quoted) const {
     const RuleShape& s = shapes_[static_cast<std::size_t>(shape)];
-    std::vector<int> out;
+    const auto name = [&](int r) { return quoted ? "'" + rules_[r].name + "'" : rules_[r].name; };
+    std::string out = name(s.rule), also;
     for (int r : s.rules)
-        if (rules_[r].rule != rules_[s.rule].rule) out.push_back(r);
-    return out;
+        if (rules_[r].rule != rules_[s.rule].rule) also += (also.empty() ? " (also " : ", ") + name(r);
+    return also.empty() ? out : out + also + ")";
 }
 
-bool Model::shapeHasRule(int shape, const std::vector<std::string>& names, bool named) const {
-    const std::vector<int>& rules = shapes_[static_cast<std::size_t>(shape)].rules;
-    return std::any_of(rules.begin(), rules.end(), [&](int r) { return ruleNamed(r, names) == named; });
+int Model::shapeRule(int shape, const std::vector<std::string>& names, bool named) const {
+    for (int r : shapes_[static_cast<std::size_t>(shape)].rules)
+        if (ruleNamed(r, names) == named) return r;
+    return -1;
 }
 
 int Model::shapeCount(int rule) const {

@@ -82,11 +82,13 @@ public:
     int shapeCount(int rule) const;
     /// Directed rule `rule` is among `names` (a `<=>` rule's name covers both directions).
     bool ruleNamed(int rule, const std::vector<std::string>& names) const;
-    /// The rules of the shape written apart from its owner's (a two-way rule's reverse is the same
-    /// rule written once): what a step's name adds as "(also t)".
-    std::vector<int> alsoRules(int shape) const;
-    /// Whether some rule of the shape is named in `names` (`named`), or some is not (`!named`).
-    bool shapeHasRule(int shape, const std::vector<std::string>& names, bool named) const;
+    /// A step's name: its shape's owner, then "(also t)" for each rule written apart from it that
+    /// makes the same step (a two-way rule's reverse is the same rule written once); `quoted` puts
+    /// each name in single quotes.
+    std::string stepRules(int shape, bool quoted) const;
+    /// The first rule of the shape named in `names` (`named`), or not named there (`!named`); -1
+    /// when there is none.
+    int shapeRule(int shape, const std::vector<std::string>& names, bool named) const;
     /// Directed rules whose every orientation repeats an orientation of earlier rules, with one of
     /// them. Such a rule may still own shapes: a rewrite a reflection of an earlier rule would also
     /// give is kept under the rule whose rotation gives it.

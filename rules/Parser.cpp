@@ -936,4 +936,8 @@ const Property* System::property(const std::string& name) const {
     return nullptr;
 }
 
+bool System::conservesMass() const {
+    return std::any_of(properties.begin(), properties.end(), [](const Property& p) { return p.kind == Property::Kind::Conserves && p.quantity == Property::Quantity::Mass; });
+}
+
 }  // namespace holon::rules

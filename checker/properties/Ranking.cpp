@@ -1,15 +1,16 @@
 // Rankings (seed 000 §IV-C, Lemma 3 Termination): a vector of numbers that every step decreases
 // lexicographically, except the steps of excepted rules (resource moves), which keep it.
-// Explicit state: the non-decreasing edges of the explored graph; termination fails exactly when a
-// cycle passes through a step of a covered rule, shown as a lasso (a livelock, on which the ranking
-// never decreases, first; BGL strong components). Proof: one step from c to c', instance by
-// instance, that does not decrease it.
+// Explicit state: the edges that break it (a covered rule's step that does not decrease it, an
+// excepted rule's that changes it); termination fails exactly when a cycle passes through a step
+// of a covered rule, shown as a lasso (a livelock, on which the ranking never decreases, first;
+// BGL strong components). Proof: one step from c to c', instance by instance, that breaks it.
 
 #include "checker/ProofRunner.h"
 #include "checker/properties/Kinds.h"
 #include "rules/Error.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace holon::checker::properties {
 
@@ -25,24 +26,16 @@ std::vector<rules::Rational> rankOf(const rules::Engine& e, const rules::Propert
     return rank;
 }
 
-/// Whether a step of instance q from ranking `from` to `to` breaks the ranking: as a step of an
-/// excepted rule it must keep it, as a step of a covered rule decrease it, and a shape kept once
-/// for several rules (Model's RuleShape::rules) is a step of each.
-bool breaks(const rules::Engine& e, const rules::Property& p, int q, const std::vector<rules::Rational>& from, const std::vector<rules::Rational>& to) {
+/// The rule by which a step of instance q from ranking `from` to `to` breaks the ranking, and how,
+/// if it does: as a step of a covered rule it must decrease it, as a step of an excepted rule keep
+/// it, and a shape kept once for several rules (rules::RuleShape::rules) is a step of each.
+std::optional<std::pair<int, std::string>> breaker(const rules::Engine& e, const rules::Property& p, int q, const std::vector<rules::Rational>& from,
+                                                   const std::vector<rules::Rational>& to) {
     const int shape = e.instances()[q].shape;
-    return (e.model().shapeHasRule(shape, p.except, true) && from != to) || (e.model().shapeHasRule(shape, p.except, false) && !lexLess(to, from));
-}
-
-/// The rule by which a step of instance q breaks the ranking, and how: a covered rule's that does
-/// not decrease it first, else an excepted rule's that changes it.
-std::pair<int, std::string> breaker(const rules::Engine& e, const rules::Property& p, int q, const std::vector<rules::Rational>& from, const std::vector<rules::Rational>& to) {
-    const rules::Model& model = e.model();
-    const std::vector<int>& rules = model.shapes()[static_cast<std::size_t>(e.instances()[q].shape)].rules;
-    for (int rule : rules)
-        if (!model.ruleNamed(rule, p.except) && !lexLess(to, from)) return {rule, "does not decrease it"};
-    for (int rule : rules)
-        if (model.ruleNamed(rule, p.except) && from != to) return {rule, "changes it (an excepted rule must keep it)"};
-    throw InternalError("a step reported as breaking ranking '" + p.name + "' keeps it for every rule it is a step of");
+    if (const int covered = e.model().shapeRule(shape, p.except, false); covered >= 0 && !lexLess(to, from)) return std::pair{covered, std::string("does not decrease it")};
+    if (const int excepted = e.model().shapeRule(shape, p.except, true); excepted >= 0 && from != to)
+        return std::pair{excepted, std::string("changes it (an excepted rule must keep it)")};
+    return std::nullopt;
 }
 
 /// Two strong-component runs and a shortest path, a flag per edge, and per state a vector of
@@ -71,7 +64,7 @@ public:
         // A step of an excepted rule (a resource move) must keep the ranking; every other step
         // decreases it. A step is judged by the rule of each instance that makes it: an excepted
         // rule's and a covered rule's can make the same step, which the graph holds as one edge.
-        auto coveredBy = [&](std::int32_t via) { return model.shapeHasRule(e.instances()[via].shape, p.except, false); };
+        auto coveredBy = [&](std::int32_t via) { return model.shapeRule(e.instances()[via].shape, p.except, false) >= 0; };
         std::vector<char> bad(succ.size(), 0), covered(succ.size(), 0), level(succ.size(), 0);
         std::vector<std::int32_t> badVia(succ.size(), -1), coveredVia(succ.size(), -1);
         std::uint64_t badEdges = 0, firstBad = 0;
@@ -81,7 +74,7 @@ public:
                 level[k] = rank[succ[k]] == rank[s];
                 for (std::int32_t via : ex->viasOf(k)) {
                     if (coveredBy(via) && !covered[k]) covered[k] = 1, coveredVia[k] = via;
-                    if (bad[k] || !breaks(e, p, via, rank[s], rank[succ[k]])) continue;
+                    if (bad[k] || !breaker(e, p, via, rank[s], rank[succ[k]])) continue;
                     bad[k] = 1, badVia[k] = via;
                     if (badEdges++ == 0) firstBad = k, firstFrom = s;
                 }
@@ -115,7 +108,7 @@ public:
                                                       : std::string(one ? " step breaks it" : " steps break it") + " (a covered rule's must decrease it, an excepted rule's keep it)";
             r.summary = std::to_string(badEdges) + what + "; no cycle of the reachable graph passes through a step of a rule it covers, so " +
                         (p.except.empty() ? "runs still terminate here" : "only steps of excepted rules can repeat for ever here");
-            const auto [rule, how] = breaker(e, p, badVia[firstBad], rank[firstFrom], rank[succ[firstBad]]);
+            const auto [rule, how] = *breaker(e, p, badVia[firstBad], rank[firstFrom], rank[succ[firstBad]]);
             r.trace->description = "the last step, by rule '" + model.rules()[rule].name + "', " + how;
             r.witness = {{"breaking_steps", badEdges}, {"cycle", false}, {"livelock", false}};
             return r;
@@ -146,8 +139,7 @@ public:
                     escapable = livelock ? !level[k] : whole.of[succ[k]] != whole.of[s];
         r.trace = t;
         const std::size_t length = loop.size() - 1;
-        const std::vector<int>& cycleRules = model.shapes()[static_cast<std::size_t>(e.instances()[coveredVia[cycleEdge]].shape)].rules;
-        const int coveredRule = *std::find_if(cycleRules.begin(), cycleRules.end(), [&](int q) { return !model.ruleNamed(q, p.except); });
+        const int coveredRule = model.shapeRule(e.instances()[coveredVia[cycleEdge]].shape, p.except, false);
         r.summary = "not terminating: " +
                     (livelock ? "a cycle of " + stepCount(length) + " on which it never decreases"
                               : "a cycle of " + stepCount(length) + " that undoes what it decreases") +
@@ -163,7 +155,7 @@ public:
     bool confirm(const PropertyResult& r, Evidence evidence, const rules::Interpreter& in, const rules::Engine& engine, std::string* why) const override {
         if (evidence == Evidence::Path) return PropertyType::confirm(r, evidence, in, engine, why);
         return confirmBrokenStep(r, in, engine, why, "decreases the ranking (an excepted rule's keeps it)", [&](const CellValue* before, const CellValue* after, int q) {
-            return breaks(engine, p_, q, rankOf(engine, p_, before), rankOf(engine, p_, after));
+            return breaker(engine, p_, q, rankOf(engine, p_, before), rankOf(engine, p_, after)).has_value();
         });
     }
 
@@ -179,7 +171,9 @@ public:
             p.name, "ranking", ctx, enc, enc.legal(c) && enc.legal(d), [&](int q) { return enc.fires(q, c, d) && enc.rankingBroken(p, q, d, c); },
             [&](const smt::Model& m, int q, PropertyResult& r) {
                 const std::vector<CellValue> before = enc.decode(m, c), after = enc.decode(m, d);
-                const auto [rule, why] = breaker(e, p, q, rankOf(e, p, before.data()), rankOf(e, p, after.data()));
+                const auto broken = breaker(e, p, q, rankOf(e, p, before.data()), rankOf(e, p, after.data()));
+                if (!broken) throw InternalError("the solver's step keeps ranking '" + p.name + "' for every rule it is a step of");
+                const auto& [rule, why] = *broken;
                 r.trace = Trace{{{before, -1}, {after, q}}, {}, {}, "a step that " + why, {}};
                 r.summary = "rule '" + model.rules()[rule].name + "' " + why;
                 r.witness = {{"rule", model.rules()[rule].name}};

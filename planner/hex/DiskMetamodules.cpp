@@ -29,9 +29,7 @@ namespace {
 int levelsOf(const Problem& problem) {
     const std::string hexDisks = rules::parameterName(rules::Parameter::HexDisks);
     if (problem.model->lattice().dimension() != 2) throw InputError(hexDisks + ": disks lie in the plane; give a 2D start and target", rules::Parameter::HexDisks);
-    bool conserves = false;
-    for (const rules::Property& p : problem.model->system().properties)
-        conserves |= p.kind == rules::Property::Kind::Conserves && p.quantity == rules::Property::Quantity::Mass;
+    const bool conserves = problem.model->system().conservesMass();
     std::int64_t heaviest = 0;
     for (int v = 0; v < problem.tables->alphabet(); ++v) heaviest = std::max(heaviest, problem.tables->massUnitsOf(static_cast<rules::CellValue>(v)));
     if (!conserves || heaviest <= 1)

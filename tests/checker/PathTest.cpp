@@ -77,7 +77,7 @@ void checkSchedule(const checker::Trace& path, const rules::Engine& engine, cons
     CHECK(schedule.makespan() <= path.steps.size() - 1);
     for (const auto& round : schedule.rounds)
         for (std::size_t a = 0; a < round.size(); ++a)
-            for (std::size_t b = a + 1; b < round.size(); ++b) CHECK_FALSE(footprints.interfere(path.steps[round[a]].placed, path.steps[round[b]].placed));
+            for (std::size_t b = a + 1; b < round.size(); ++b) CHECK_FALSE(checker::Footprints::interfere(footprints.of(path.steps[round[a]].placed), footprints.of(path.steps[round[b]].placed)));
 }
 
 }  // namespace
