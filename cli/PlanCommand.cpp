@@ -234,6 +234,7 @@ int run(const PlanArgs& a) {
     for (const std::string& text : a.lose) faultOptions.losses.push_back(planner::parseLoss("--lose", text, lattice.dimension(), true));
     for (const std::string& text : a.loseRandom) faultOptions.losses.push_back(planner::parseLoss("--lose-random", text, lattice.dimension(), false));
     faultOptions.delay = a.delay, faultOptions.drop = a.drop, faultOptions.seed = a.faultSeed.value_or(a.seed);
+    options.messageDelay = a.delay;
     if (a.faultSeed && a.loseRandom.empty() && a.delay == 0 && a.drop == 0)
         throw InputError("--fault-seed draws the random faults, and none is given; add --lose-random, --delay or --drop, or leave --fault-seed out");
     std::unique_ptr<planner::Faults> faults = faultOptions.any() ? std::make_unique<planner::Faults>(problem, faultOptions) : nullptr;

@@ -16,6 +16,7 @@
 #include "planner/Execution.h"
 
 #include "rules/Error.h"
+#include "rules/Limits.h"
 
 #include <algorithm>
 #include <bit>
@@ -155,6 +156,7 @@ bool Execution::takeIfFree(std::int64_t anchor, int shape) {
 bool Execution::admitted(std::int64_t anchor, int shape) {
     if (!options_.admit || options_.admit(anchor, shape)) return true;
     deferred_ = true;
+    plannerDeferred_ = plannerDeferred_ || engine().kind(shape) != ShapeKind::Transfer;
     return false;
 }
 
@@ -314,7 +316,11 @@ RunStats Execution::run(const RunObserver& observer) {
     std::int64_t sinceUpdate = 0, updateEvery = 1;
     const Vec extent = problem_->board->extent();
     const std::int64_t diameter = std::int64_t{extent.x} + extent.y + extent.z;
-    const std::int64_t maxIdle = options_.maxIdleRounds > 0 ? options_.maxIdleRounds : 1000 + 20 * diameter * diameter;
+    // Saturated: a board a billion cells long, or --delay 10^6, would overflow 64 bits.
+    const auto d = static_cast<std::uint64_t>(diameter);
+    const std::uint64_t window = options_.maxIdleRounds > 0 ? static_cast<std::uint64_t>(options_.maxIdleRounds) : std::min<std::uint64_t>(rules::checkedProduct({20, d, d}), UINT64_MAX - 1000) + 1000;
+    const auto delay = static_cast<std::uint64_t>(std::max<std::int64_t>(1, options_.messageDelay));
+    const auto maxIdle = static_cast<std::int64_t>(std::min<std::uint64_t>(rules::checkedProduct({window, delay}), INT64_MAX));
     std::int64_t plannerSteps = 0, idleSince = 0;
     for (std::uint64_t iteration = 0;; ++iteration) {
         // Reaching the goal ends the run even while transfers are still enabled.
@@ -348,7 +354,7 @@ RunStats Execution::run(const RunObserver& observer) {
             break;
         }
         changed.clear();
-        deferred_ = false;
+        deferred_ = plannerDeferred_ = false;
         bool allocatorMoved = false;
         bool fired;
         if (options_.scheduler == Scheduler::Sync) {
@@ -373,10 +379,12 @@ RunStats Execution::run(const RunObserver& observer) {
         // The fault model held back what could fire: time passes (async: the next step starts a
         // new round, so delays expire).
         if (!fired && deferred_ && options_.scheduler != Scheduler::Sync) sinceUpdate = updateEvery;
-        // Nor is a round whose instances the fault model held back idle: the run waits for the
-        // delays and drops the user asked for, and no-progress would call a plan that completes
-        // (--delay 20000) stuck.
-        if (deferred_) idleSince = stats_.rounds;
+        // Nor is a round in which the fault model held back a planner instance idle: the run
+        // waits for the delays and drops the user asked for, and no-progress would call a plan
+        // that completes (--delay 20000) stuck. Held-back transfers are not progress: counting
+        // them let a livelock of transfers under --delay run for ever (the window is longer
+        // instead, RunOptions::messageDelay).
+        if (plannerDeferred_) idleSince = stats_.rounds;
         if (!fired && !allocatorMoved && !deferred_) {
             stats_.stopped = StopReason::Stuck;
             break;

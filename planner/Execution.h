@@ -36,6 +36,10 @@ struct RunOptions {
     /// (an allocator shuffling resources forever); 0: 1000 + 20 D^2 for a board of extents
     /// summing to D, far above the diffusion time of the random allocator across the board.
     std::int64_t maxIdleRounds = 0;
+    /// The most rounds a state change may take to reach a neighbour (a fault model's delay; 0 or
+    /// 1: the next round). Every hop of a resource may wait that long, so the no-progress window
+    /// is that many times longer.
+    std::int64_t messageDelay = 0;
     /// Sync rounds pipeline transfers (Execution.cpp); false: each resource moves at most one hop
     /// every other round along a queue, as before pipelining (the yardstick PipelineTest holds
     /// pipelined runs to).
@@ -149,6 +153,7 @@ private:
     std::vector<std::pair<int, std::int64_t>> pipelined_;  // transfer shapes that may chain, and the step of each of their cells
     std::int64_t offGoal_ = 0;                             // cells not as the goal wants them
     bool deferred_ = false;                                // options_.admit refused an instance in the current step or round
+    bool plannerDeferred_ = false;                         // ... and one of them was a planner instance, not a transfer
     std::optional<StopReason> halt_;
     RunStats stats_;
 };

@@ -132,6 +132,29 @@ TEST_CASE("a run where only transfers fire for too long stops as no-progress, it
     CHECK_FALSE(stats.complete);
 }
 
+TEST_CASE("the no-progress window grows with the message delay") {
+    // Under --delay every hop of a resource may wait that many rounds, so a run that is slow, not
+    // stuck, gets as many times the window. Here the hook refuses half the transfers each round,
+    // as late messages do.
+    PlannerSystem sys("planner_general1", 2);
+    const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape("box:8x4"), planner::parseShape("box:4x8"), std::nullopt, 1);
+    planner::RunOptions options;
+    options.maxIdleRounds = 1;
+    options.budget = Budget::maxRounds(100000);
+    const planner::Execution* running = nullptr;
+    options.admit = [&](std::int64_t anchor, int shape) { return running->engine().kind(shape) != planner::ShapeKind::Transfer || (anchor + running->stats().rounds) % 2 == 0; };
+    auto runWith = [&](std::int64_t delay) {
+        options.messageDelay = delay;
+        auto allocator = planner::makeAllocator("random", p, 1);
+        planner::Execution ex(p, *allocator, options);
+        running = &ex;
+        return ex.run();
+    };
+    const planner::RunStats prompt = runWith(0), late = runWith(50);
+    CHECK(prompt.stopped == StopReason::NoProgress);
+    CHECK(late.rounds > prompt.rounds);
+}
+
 TEST_CASE("runs are deterministic for a seed and differ across seeds") {
     PlannerSystem sys("planner_general1", 2);
     const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape("box:8x4"), planner::parseShape("box:4x8"), std::nullopt, 1);
