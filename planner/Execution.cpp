@@ -63,8 +63,15 @@ Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions op
             for (std::int64_t step : engine.cellSteps(sh)) pipelined_.push_back({sh, step});
     for (std::int64_t a = 0; a < static_cast<std::int64_t>(n); ++a) {
         offGoal_ += !atGoal(a, cells_[a]);
+        occupied_ += engine.combo(a) != BoxEngine::kOutside && cells_[a] != 0;
         if (engine.combo(a) != BoxEngine::kOutside && cells_[a] != 0) stats_.evaluations += recheck(a, plannerList_, transferList_);
     }
+    // Saturated: a board a billion cells long, or --delay 10^6, would overflow 64 bits.
+    const Vec extent = problem.board->extent();
+    const auto d = static_cast<std::uint64_t>(std::int64_t{extent.x} + extent.y + extent.z);
+    const std::uint64_t window = options_.maxIdleRounds > 0 ? static_cast<std::uint64_t>(options_.maxIdleRounds) : std::min<std::uint64_t>(rules::checkedProduct({20, d, d}), UINT64_MAX - 1000) + 1000;
+    const auto delay = static_cast<std::uint64_t>(std::max<std::int64_t>(1, options_.messageDelay));
+    maxIdle_ = static_cast<std::int64_t>(std::min<std::uint64_t>(rules::checkedProduct({window, delay}), INT64_MAX));
     // A thread's wake-up costs some microseconds: only boards whose rounds take milliseconds get one.
     if (options_.threads > 1 && static_cast<std::int64_t>(n) >= kParallelCells) {
         workers_ = std::make_unique<rules::WorkerPool>(2);
@@ -163,6 +170,7 @@ bool Execution::admitted(std::int64_t anchor, int shape) {
 BoxEngine::Value Execution::lose(std::int64_t cell) {
     const BoxEngine::Value old = cells_[cell];
     cells_[cell] = 0;
+    occupied_ -= old != 0;
     offGoal_ += static_cast<int>(atGoal(cell, old)) - static_cast<int>(atGoal(cell, 0));
     recheckAround({cell});
     return old;
@@ -181,6 +189,7 @@ void Execution::fire(std::int64_t anchor, int shape, const RunObserver& observer
         offGoal_ += static_cast<int>(atGoal(i, old[k])) - static_cast<int>(atGoal(i, cells_[i]));
         stats_.creations += old[k] == 0;
         stats_.deletions += cells_[i] == 0;
+        occupied_ += (old[k] == 0) - (cells_[i] == 0);
     }
     const ShapeKind kind = engine.kind(shape);
     stats_.transfers += kind == ShapeKind::Transfer;
@@ -314,14 +323,7 @@ RunStats Execution::run(const RunObserver& observer) {
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(); };
     std::vector<std::int64_t> changed;
     std::int64_t sinceUpdate = 0, updateEvery = 1;
-    const Vec extent = problem_->board->extent();
-    const std::int64_t diameter = std::int64_t{extent.x} + extent.y + extent.z;
-    // Saturated: a board a billion cells long, or --delay 10^6, would overflow 64 bits.
-    const auto d = static_cast<std::uint64_t>(diameter);
-    const std::uint64_t window = options_.maxIdleRounds > 0 ? static_cast<std::uint64_t>(options_.maxIdleRounds) : std::min<std::uint64_t>(rules::checkedProduct({20, d, d}), UINT64_MAX - 1000) + 1000;
-    const auto delay = static_cast<std::uint64_t>(std::max<std::int64_t>(1, options_.messageDelay));
-    const auto maxIdle = static_cast<std::int64_t>(std::min<std::uint64_t>(rules::checkedProduct({window, delay}), INT64_MAX));
-    std::int64_t plannerSteps = 0, idleSince = 0;
+    std::int64_t plannerSteps = 0;
     for (std::uint64_t iteration = 0;; ++iteration) {
         // Reaching the goal ends the run even while transfers are still enabled.
         if (offGoal_ == 0) {
@@ -344,8 +346,8 @@ RunStats Execution::run(const RunObserver& observer) {
             stats_.stopped = *why;
             break;
         }
-        if (stats_.steps - stats_.transfers != plannerSteps) plannerSteps = stats_.steps - stats_.transfers, idleSince = stats_.rounds;
-        if (stats_.rounds - idleSince > maxIdle) {
+        if (stats_.steps - stats_.transfers != plannerSteps) plannerSteps = stats_.steps - stats_.transfers, idleSince_ = stats_.rounds;
+        if (idleRounds() > maxIdle_) {
             stats_.stopped = StopReason::NoProgress;
             break;
         }
@@ -384,7 +386,7 @@ RunStats Execution::run(const RunObserver& observer) {
         // that completes (--delay 20000) stuck. Held-back transfers are not progress: counting
         // them let a livelock of transfers under --delay run for ever (the window is longer
         // instead, RunOptions::messageDelay).
-        if (plannerDeferred_) idleSince = stats_.rounds;
+        if (plannerDeferred_) idleSince_ = stats_.rounds;
         if (!fired && !allocatorMoved && !deferred_) {
             stats_.stopped = StopReason::Stuck;
             break;
@@ -396,7 +398,7 @@ RunStats Execution::run(const RunObserver& observer) {
         }
     }
     stats_.complete = stats_.stopped == StopReason::Goal;
-    stats_.metamodules = std::count_if(cells_.begin(), cells_.end(), [](BoxEngine::Value v) { return v != 0; });
+    stats_.metamodules = occupied_;
     stats_.seconds = elapsed();
     return stats_;
 }

@@ -93,6 +93,12 @@ public:
         const auto [word, bit] = bitOf(anchor, shape);
         return (bits_[word] & bit) != 0;
     }
+    /// Rounds since a planner instance last fired (or the fault model held one back), and how many
+    /// such rounds in a row stop the run as no-progress (RunOptions::maxIdleRounds).
+    std::int64_t idleRounds() const { return stats_.rounds - idleSince_; }
+    std::int64_t idleWindow() const { return maxIdle_; }
+    /// The occupied cells now.
+    std::int64_t metamodules() const { return occupied_; }
     /// Whether a cell in state v satisfies the system's goal predicate (padding always does).
     bool atGoal(std::int64_t cell, BoxEngine::Value v) const;
     /// A metamodule lost to a fault (planner/Faults.h), between steps or rounds: the cell becomes
@@ -152,6 +158,8 @@ private:
     mutable std::unique_ptr<rules::WorkerPool> workers_;   // two threads on a large board, else none
     std::vector<std::pair<int, std::int64_t>> pipelined_;  // transfer shapes that may chain, and the step of each of their cells
     std::int64_t offGoal_ = 0;                             // cells not as the goal wants them
+    std::int64_t maxIdle_ = 0, idleSince_ = 0;             // idleWindow(), and the round idleRounds() counts from
+    std::int64_t occupied_ = 0;                            // metamodules()
     bool deferred_ = false;                                // options_.admit refused an instance in the current step or round
     bool plannerDeferred_ = false;                         // ... and one of them was a planner instance, not a transfer
     std::optional<StopReason> halt_;

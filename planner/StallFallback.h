@@ -2,7 +2,8 @@
 // The randomizer's turn for the field allocators (gradient, demand, eager): after a round in which
 // nothing fired although the allocator's fields had settled, the fields see no way forward (a
 // destroyer may need a D that only a detour brings), so seed 000 §IV-B's randomizer moves
-// resources until the next creation or deletion.
+// resources until the next creation or deletion. So does a run in which only transfers have fired
+// for a quarter of the no-progress window.
 
 #include "planner/Allocator.h"
 

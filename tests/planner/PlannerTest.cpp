@@ -132,6 +132,23 @@ TEST_CASE("a run where only transfers fire for too long stops as no-progress, it
     CHECK_FALSE(stats.complete);
 }
 
+TEST_CASE("demand and eager: a livelock of transfers under the lock rules gets the randomizer's turn, and the run completes") {
+    // disc:6 -> ring:3,7 (audit 12): the fields swapped six transfers back and forth for 20,000
+    // rounds while a locked pair waited for a D, and 14 of these 40 runs stopped as no-progress;
+    // random, gradient and optimal completed every one.
+    for (const char* rules : {"planner_general_lock2", "planner_general_lock3"}) {
+        PlannerSystem sys(rules, 2);
+        for (const char* allocator : {"demand", "eager"})
+            for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+                const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape("disc:6"), planner::parseShape("ring:3,7"), std::nullopt, seed);
+                const planner::RunStats stats = plan(p, planner::Scheduler::Sync, seed, false, allocator);
+                INFO(rules << " " << allocator << " seed " << seed << ": " << stopReasonName(stats.stopped) << " after " << stats.rounds << " rounds");
+                CHECK(stats.complete);
+                CHECK(stats.rounds < 2000);
+            }
+    }
+}
+
 TEST_CASE("the no-progress window grows with the message delay") {
     // Under --delay every hop of a resource may wait that many rounds, so a run that is slow, not
     // stuck, gets as many times the window. Here the hook refuses half the transfers each round,
