@@ -282,7 +282,10 @@ int run(const PlanArgs& a) {
     const bool interrupted = stats.stopped == StopReason::Interrupted;
     // A plan stopped by --timeout or a signal does not wait for the bound (the child is killed).
     const std::int64_t lowerBound = bound ? lowerBoundOf(*bound, budget) : -1;
-    if (faults) report.addSummary("faults", faults->json());
+    // What produced the run: summary.json and --json say the same.
+    nlohmann::json about = {{"system", system->name}, {"allocator", allocator->name()}, {"scheduler", a.scheduler}, {"seed", a.seed}, {"proof", proof.json()}};
+    if (faults) about["faults"] = faults->json();
+    for (const auto& [key, value] : about.items()) report.addSummary(key, value);
     report.finish(stats, lowerBound);
     WriteErrors errors;
     for (const std::string& e : report.writeErrors()) errors.add(e);
@@ -304,8 +307,8 @@ int run(const PlanArgs& a) {
     }
 
     if (a.json) {
-        nlohmann::json j = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", lowerBound >= 0 ? nlohmann::json(lowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"relabels", stats.relabels}, {"evaluations", stats.evaluations}, {"stopped", stopReasonName(stats.stopped)}, {"system", system->name}, {"allocator", allocator->name()}, {"scheduler", a.scheduler}, {"seed", a.seed}, {"proof", proof.json()}};
-        if (faults) j["faults"] = faults->json();
+        nlohmann::json j = planner::runSummary(problem, execution, stats, lowerBound);
+        j.update(about);
         std::cout << j.dump(2) << '\n';
     } else {
         std::cout << "plan " << problem.start.name << " -> " << problem.target.name << " with " << system->name << " (" << a.scheduler

@@ -5,6 +5,7 @@
 // transfers come last, since moving a resource alone never brings a cell to the goal.
 
 #include "planner/Diagnosis.h"
+#include "planner/Transport.h"
 
 #include "rules/Printer.h"
 
@@ -48,7 +49,8 @@ std::string waitingOn(const Problem& problem, const BoardConfiguration& board, s
     std::string cells;
     for (Vec o : shape.offsets) cells += (cells.empty() ? "" : " ") + boardPoint(best->anchor + o);
     std::string text = "waits on rule " + rule.name + " at " + cells;
-    if (bestWhy.enabled()) return text + ": enabled, held back by the allocator, a fault or a constraint";
+    // Only a system that moves resources has an allocator to hold anything back.
+    if (bestWhy.enabled()) return text + ": enabled, not fired: held back by " + (movesResources(problem) ? "the allocator, " : "") + "a fault or a constraint, or the run stopped first";
     const rules::RefPrinter ref = [&](int k) { return "@" + boardPoint(best->anchor + shape.offsets[static_cast<std::size_t>(k)]); };
     std::vector<std::string> fails;
     for (int k : bestWhy.cells) {

@@ -13,7 +13,7 @@ namespace holon::planner {
 /// those whose left side accepts the cell as it is, planner rules before transfers) and what fails: another pattern cell in the
 /// wrong state, or a guard conjunct with the cells that make it false. Cells are board points.
 /// Says so when no rule changes a cell in this state, or when the nearest instance is enabled
-/// (then the allocator, a fault or a constraint held it back).
+/// (then the allocator, a fault or a constraint held it back, or the run stopped before it fired).
 std::string waitingOn(const Problem& problem, const BoardConfiguration& board, std::int64_t cell);
 
 }  // namespace holon::planner

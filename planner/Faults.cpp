@@ -8,6 +8,7 @@
 
 #include "planner/Faults.h"
 
+#include "planner/Replay.h"
 #include "planner/Report.h"
 #include "rules/ConfigIo.h"
 #include "rules/Error.h"
@@ -42,6 +43,7 @@ Loss parseLoss(const std::string& option, const std::string& text, int dimension
     for (std::string part; std::getline(in, part, ',');) {
         std::int64_t v = 0;
         const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
+        if (ec == std::errc::result_out_of_range) return fail("'" + part + "' is beyond the 64-bit range");
         if (part.empty() || ec != std::errc{} || end != part.data() + part.size()) return fail("'" + part + "' is not an integer");
         numbers.push_back(v);
     }
@@ -158,15 +160,18 @@ std::string Faults::judge(const Execution& execution, std::int64_t cell, BoxEngi
     // The lemmas' hypotheses, as the system states them: its invariants (Safety) and the
     // assumption of its progress property. One interpreter pass per loss.
     const BoardConfiguration configuration(*problem_, cells);
+    if (const std::optional<std::string> broken = brokenHypothesis(configuration.interpreter(), configuration.configuration(), true))
+        return what + " broke " + *broken + ", so seed 000's lemmas no longer cover the run";
     const rules::System& system = problem_->model->system();
-    for (const rules::Property& p : system.properties) {
-        const bool invariant = p.kind == rules::Property::Kind::Invariant;
-        if ((!invariant && p.kind != rules::Property::Kind::Progress) || p.exprs.empty()) continue;
-        const int failing = configuration.interpreter().firstFalseConjunct(p.exprs[0], configuration.configuration());
-        if (failing < 0) continue;
-        const std::string conjunct = rules::printExpr(system, *rules::conjuncts(p.exprs[0])[static_cast<std::size_t>(failing)]);
-        return what + " broke " + (invariant ? "invariant '" + p.name + "'" : "the assumption of progress property '" + p.name + "'") + ": `" + conjunct +
-               "` is false, so seed 000's lemmas no longer cover the run";
+    // A system that carries mass and states no progress assumption about it (the lock planners)
+    // is held to Lemma 2's condition here: the mass left must fill the target, since no rule
+    // makes any (a loss only lowers it, so the target can never hold too much).
+    if (system.conservesMass() && problem_->schema.resource >= 0) {
+        const rules::RuleTables& tables = *problem_->tables;
+        std::int64_t units = 0;
+        board.forEachInside([&](std::int64_t i, Vec) { units += cells[i] ? tables.massUnitsOf(cells[i]) : 0; });
+        const rules::Rational mass(units, tables.massDenominator()), need(static_cast<std::int64_t>(problem_->target.cells.size()));
+        if (mass < need) return what + " left mass " + mass.str() + ", less than the " + need.str() + " metamodules of the target: mass is conserved, so no plan can reach it";
     }
     return "";
 }

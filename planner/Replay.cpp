@@ -4,6 +4,8 @@
 
 #include "planner/Replay.h"
 
+#include "rules/Printer.h"
+
 namespace holon::planner {
 
 StepFault replayStep(const rules::Interpreter& in, rules::Configuration& now, const rules::Instance& instance, StepUndo* undo) {
@@ -26,6 +28,19 @@ StepFault replayStep(const rules::Interpreter& in, rules::Configuration& now, co
 
 void undoStep(rules::Configuration& now, const StepUndo& undo) {
     for (const auto& [cell, value] : undo) now.cells[cell] = value;
+}
+
+std::optional<std::string> brokenHypothesis(const rules::Interpreter& in, const rules::Configuration& now, bool progressAssumption) {
+    const rules::System& system = in.model().system();
+    for (const rules::Property& p : system.properties) {
+        const bool invariant = p.kind == rules::Property::Kind::Invariant;
+        if ((!invariant && !(progressAssumption && p.kind == rules::Property::Kind::Progress)) || p.exprs.empty()) continue;
+        const int failing = in.firstFalseConjunct(p.exprs[0], now);
+        if (failing < 0) continue;
+        const std::string conjunct = rules::printExpr(system, *rules::conjuncts(p.exprs[0])[static_cast<std::size_t>(failing)]);
+        return (invariant ? "invariant '" + p.name + "'" : "the assumption of progress property '" + p.name + "'") + ": `" + conjunct + "` is false";
+    }
+    return std::nullopt;
 }
 
 const char* describe(StepFault fault) {

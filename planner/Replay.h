@@ -7,6 +7,8 @@
 
 #include "rules/Interpreter.h"
 
+#include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -28,5 +30,10 @@ void undoStep(rules::Configuration& now, const StepUndo& undo);
 
 /// Why a step is illegal, in words ("" for None).
 const char* describe(StepFault fault);
+
+/// The first of the system's invariants (and, with `progressAssumption`, the assumptions of its
+/// progress properties) that `now` breaks, in words: "invariant 'safety': `connected` is false".
+/// The hypotheses of seed 000's lemmas, as the system states them.
+std::optional<std::string> brokenHypothesis(const rules::Interpreter& in, const rules::Configuration& now, bool progressAssumption);
 
 }  // namespace holon::planner

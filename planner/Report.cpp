@@ -96,19 +96,23 @@ void Report::finish(const RunStats& stats, std::int64_t transferLowerBound) {
                 out << '\n';
             });
         });
-    const auto [short_, shortCount] = cellsShortOfGoal(*execution_, 20);
-    nlohmann::json unfinished = nlohmann::json::array();
-    std::optional<BoardConfiguration> board;
-    if (!short_.empty()) board.emplace(*problem_, execution_->cells());
-    for (std::int64_t i : short_) {
-        nlohmann::json cell = rules::stateFields(*problem_->model, execution_->cells()[i]);
-        cell["at"] = rules::pointJson(problem_->model->lattice(), problem_->board->point(i));
-        cell["waits_on"] = waitingOn(*problem_, *board, i);
-        unfinished.push_back(cell);
-    }
-    nlohmann::json summary = {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", transferLowerBound >= 0 ? nlohmann::json(transferLowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"stopped", stopReasonName(stats.stopped)}, {"interrupted", stats.stopped == StopReason::Interrupted}, {"cells_short_of_goal", shortCount}, {"short_of_goal", unfinished}};
+    nlohmann::json summary = runSummary(*problem_, *execution_, stats, transferLowerBound);
     summary.update(extra_);
     attempt([&] { rules::OutputFile(options_.outOption, options_.outDir + "/summary.json").write(summary.dump(2) + '\n'); });
+}
+
+nlohmann::json runSummary(const Problem& problem, const Execution& execution, const RunStats& stats, std::int64_t transferLowerBound) {
+    const auto [short_, shortCount] = cellsShortOfGoal(execution, 20);
+    nlohmann::json unfinished = nlohmann::json::array();
+    std::optional<BoardConfiguration> board;
+    if (!short_.empty()) board.emplace(problem, execution.cells());
+    for (std::int64_t i : short_) {
+        nlohmann::json cell = rules::stateFields(*problem.model, execution.cells()[i]);
+        cell["at"] = rules::pointJson(problem.model->lattice(), problem.board->point(i));
+        cell["waits_on"] = waitingOn(problem, *board, i);
+        unfinished.push_back(cell);
+    }
+    return {{"metamodules", stats.metamodules}, {"creations", stats.creations}, {"deletions", stats.deletions}, {"transfers", stats.transfers}, {"transfer_lower_bound", transferLowerBound >= 0 ? nlohmann::json(transferLowerBound) : nlohmann::json()}, {"rounds", stats.rounds}, {"steps", stats.steps}, {"relabels", stats.relabels}, {"evaluations", stats.evaluations}, {"seconds", stats.seconds}, {"complete", stats.complete}, {"stopped", stopReasonName(stats.stopped)}, {"interrupted", stats.stopped == StopReason::Interrupted}, {"cells_short_of_goal", shortCount}, {"short_of_goal", unfinished}};
 }
 
 void Report::snapshot(const std::string& label) {

@@ -26,6 +26,10 @@ struct ReportOptions {
     bool progressBar = false;
 };
 
+/// A run's figures, why it stopped, and the first 20 cells short of its goal with what each waits
+/// on: summary.json, and what plan --json prints, so the two have the same keys.
+nlohmann::json runSummary(const Problem& problem, const Execution& execution, const RunStats& stats, std::int64_t transferLowerBound);
+
 class Report {
 public:
     /// The files a run writes into ReportOptions::outDir (patterns, for rules::prepareOutputDir):
@@ -39,7 +43,7 @@ public:
     void roundEnd(const RunStats& stats);
     /// A metamodule lost to an injected fault: a "fault" line in the plan (holon replay empties the cell).
     void lost(std::int64_t cell);
-    /// An entry summary.json gets besides the run's figures (the faults injected).
+    /// An entry summary.json gets besides the run's figures (the system, the faults injected).
     void addSummary(const std::string& key, nlohmann::json value) { extra_[key] = std::move(value); }
     /// Writes the last snapshot and summary.json (with why the run stopped: "interrupted" for a
     /// signal) and commits the plan and the CSV as complete files.

@@ -75,15 +75,15 @@ int coordinate(std::string_view argument, std::int64_t v, const std::string& whe
 
 /// A file's cells each once: a cell listed twice is a mistake in the file, named by `where(k)` of
 /// both entries, not merged in silence.
-void requireDistinct(std::string_view argument, const std::vector<Vec>& cells, const std::function<std::string(std::size_t)>& where) {
+void requireDistinct(std::string_view argument, const Shape& shape, const std::function<std::string(std::size_t)>& where) {
+    const std::vector<Vec>& cells = shape.cells;
     std::vector<std::pair<Vec, std::size_t>> sorted(cells.size());
     for (std::size_t k = 0; k < cells.size(); ++k) sorted[k] = {cells[k], k};
     std::sort(sorted.begin(), sorted.end());
     for (std::size_t k = 1; k < sorted.size(); ++k)
         if (sorted[k].first == sorted[k - 1].first) {
             const Vec c = sorted[k].first;
-            bad(argument, where(sorted[k].second) + ": cell (" + std::to_string(c.x) + "," + std::to_string(c.y) + "," + std::to_string(c.z) +
-                              ") is listed twice (also " + where(sorted[k - 1].second) + "); list each cell once");
+            bad(argument, where(sorted[k].second) + ": cell " + showCell(c, shape.dimension) + " is listed twice (also " + where(sorted[k - 1].second) + "); list each cell once");
         }
 }
 
@@ -171,7 +171,7 @@ Shape fromJson(std::string_view argument, const std::string& text) {
         s.cells.push_back({at(0), at(1), dim == 3 ? at(2) : 0});
     }
     if (!s.dimension) s.dimension = 2;
-    requireDistinct(argument, s.cells, where);
+    requireDistinct(argument, s, where);
     return s;
 }
 
@@ -194,7 +194,7 @@ Shape fromVoxels(std::string_view argument, const std::string& text) {
         s.cells.push_back({coordinate(argument, x, where), coordinate(argument, y, where), coordinate(argument, z, where)});
         lineOf.push_back(number);
     }
-    requireDistinct(argument, s.cells, [&](std::size_t k) { return "line " + std::to_string(lineOf[k]); });
+    requireDistinct(argument, s, [&](std::size_t k) { return "line " + std::to_string(lineOf[k]); });
     return s;
 }
 
@@ -218,7 +218,7 @@ Shape fromAscii(std::string_view argument, const std::string& text) {
             if (std::string_view("#XxOo@*1").find(ch) != std::string_view::npos) s.cells.push_back({c, r, 0});
             else if (std::string_view(". _0\t").find(ch) == std::string_view::npos)
                 bad(argument, "line " + std::to_string(r + 1) + ", column " + std::to_string(c + 1) + ": '" + rules::escapeText(std::string(1, ch)) +
-                                  "' is neither a cell ('#') nor empty ('.')");
+                                  "' is neither a cell ('#', or X x O o @ * 1) nor empty ('.', or space _ 0 tab)");
         }
     return s;
 }
