@@ -154,7 +154,10 @@ private:
         const rules::Engine open(model_, concrete, {}, true);
         const int placed = open.instanceAt(concrete.indexOf({0, 0, 0}), w.engine().instances()[q].shape);
         const std::string rule = ruleOf(w, q);
-        o.result.witness = {{"rule", model_.rules()[w.engine().instances()[q].rule].name}, {"window_radius", ob.margin}, {"window_cells", w.region().size()}};
+        // Every rule that makes this step, as the message names them: the shape is kept once.
+        nlohmann::json rules = nlohmann::json::array();
+        for (int r : model_.stepRuleList(w.engine().instances()[q].shape)) rules.push_back(model_.rules()[r].name);
+        o.result.witness = {{"rule", rules[0]}, {"rules", rules}, {"window_radius", ob.margin}, {"window_cells", w.region().size()}};
         std::string why;
         std::optional<Trace> trace;
         std::vector<std::uint32_t> inputs;

@@ -213,13 +213,20 @@ bool Model::ruleNamed(int rule, const std::vector<std::string>& names) const {
     return std::find(names.begin(), names.end(), r.name) != names.end() || std::find(names.begin(), names.end(), r.rule->name) != names.end();
 }
 
-std::string Model::stepRules(int shape, bool quoted) const {
+std::vector<int> Model::stepRuleList(int shape) const {
     const RuleShape& s = shapes_[static_cast<std::size_t>(shape)];
-    const auto name = [&](int r) { return quoted ? "'" + rules_[r].name + "'" : rules_[r].name; };
-    std::string out = name(s.rule), also;
+    std::vector<int> list{s.rule};
     for (int r : s.rules)
-        if (rules_[r].rule != rules_[s.rule].rule) also += (also.empty() ? " (also " : ", ") + name(r);
-    return also.empty() ? out : out + also + ")";
+        if (rules_[r].rule != rules_[s.rule].rule) list.push_back(r);
+    return list;
+}
+
+std::string Model::stepRules(int shape, bool quoted) const {
+    const auto name = [&](int r) { return quoted ? "'" + rules_[r].name + "'" : rules_[r].name; };
+    const std::vector<int> list = stepRuleList(shape);
+    std::string out = name(list[0]);
+    for (std::size_t k = 1; k < list.size(); ++k) out += (k == 1 ? " (also " : ", ") + name(list[k]);
+    return list.size() == 1 ? out : out + ")";
 }
 
 int Model::shapeRule(int shape, const std::vector<std::string>& names, bool named) const {

@@ -86,6 +86,8 @@ public:
     /// makes the same step (a two-way rule's reverse is the same rule written once); `quoted` puts
     /// each name in single quotes.
     std::string stepRules(int shape, bool quoted) const;
+    /// The rules stepRules names, owner first.
+    std::vector<int> stepRuleList(int shape) const;
     /// The first rule of the shape named in `names` (`named`), or not named there (`!named`); -1
     /// when there is none.
     int shapeRule(int shape, const std::vector<std::string>& names, bool named) const;

@@ -174,6 +174,18 @@ TEST_CASE("every size: broken variants are refuted by window counterexamples the
             return e.holds(p.exprs[0], t.steps[0].cells.data()) && !e.holds(p.exprs[0], t.steps[1].cells.data());
         });
     }
+    SUBCASE("a rule that repeats an excepted one breaks the ranking, and the witness names both") {
+        // One shape is kept for s and t; the step is t's too (audit 11: the witness named s alone).
+        const rules::System system = test::parse("system dup\nstates A\nrule s: A _ => _ A\nrule t: A _ => _ A\nranking k: count(A) except s\n");
+        const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Square2D));
+        const checker::EverySizeReport r = everySize(model);
+        const checker::Obligation& o = obligation(r.report, "k");
+        CHECK(o.result.witness.at("rules") == nlohmann::json::array({"s", "t"}));
+        const rules::Property& p = *system.property("k");
+        checkRefuted(model, o, [&](const rules::Engine& e, const checker::Trace& t) {
+            return e.number(p.exprs[0], t.steps[1].cells.data()) >= e.number(p.exprs[0], t.steps[0].cells.data());
+        });
+    }
     SUBCASE("hex_growth_overlap breaks a hole") {
         const rules::System system = test::brokenSystem("hex_growth_overlap");
         const rules::Model model(system, rules::Lattice::get(rules::LatticeKind::Hex2D));
