@@ -22,7 +22,6 @@
 #include "rules/StopSignals.h"
 #include "rules/TextFile.h"
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -84,23 +83,13 @@ int run(const Args& a) {
             throw InputError(a.plan + ":1: the start configuration does not set input '" + system->inputs[k] + "' of system " + system->name +
                              "; write the plan again with holon plan --plan-out");
 
-    // The system's invariants (Safety's hypothesis, and what a plan of the planner keeps): on the
-    // start, a plan that starts outside them proves nothing (a tampered start was blamed on a later
-    // step, or passed); after every step while that costs at most kInvariantVisits cell visits in
-    // all (an invariant reads the whole region), and at the end. A loss may break them (plan then
-    // stops as a fault): they are not checked after one that did.
-    if (const std::optional<std::string> broken = planner::brokenHypothesis(in, now, false)) {
+    // The system's invariants (Safety's hypothesis, what a plan of the planner keeps): a plan that
+    // starts outside them proves nothing (a tampered start was blamed on a later step, or passed).
+    planner::InvariantWatch invariants(in);
+    if (const std::optional<std::string> broken = invariants.start(now)) {
         std::cout << "replay " << a.plan << ": the start on line 1 breaks " << *broken << "; a plan must start where the system's invariants hold\n";
         return kExitViolated;
     }
-    // About a second: a check of general1's invariant visits a cell in some 75 ns (a plan of 877,511
-    // steps on 30,000 cells took 3.8 s to replay, and 24 s with 2^28 visits).
-    constexpr std::uint64_t kInvariantVisits = std::uint64_t{1} << 24;
-    const bool hasInvariant = std::any_of(system->properties.begin(), system->properties.end(), [](const rules::Property& p) { return p.kind == rules::Property::Kind::Invariant; });
-    std::uint64_t visits = 0;
-    std::int64_t checked = 0;  // steps after which they were checked
-    bool everyStep = hasInvariant, checking = hasInvariant;
-    std::string afterLoss;  // the loss that broke an invariant, after which none is checked
     std::int64_t steps = 0, losses = 0;
     rules::PlanLine step;
     while (plan.next(step)) {
@@ -123,9 +112,7 @@ int run(const Args& a) {
             }
             lost = 0;
             ++losses;
-            if (checking)
-                if (const std::optional<std::string> broken = planner::brokenHypothesis(in, now, false))
-                    afterLoss = "the loss at line " + std::to_string(plan.lineNumber()) + " broke " + *broken, checking = false;
+            invariants.afterLoss(now, "the loss at line " + std::to_string(plan.lineNumber()));
             continue;
         }
         const std::string& rule = step.rule;
@@ -160,27 +147,20 @@ int run(const Args& a) {
             return kExitViolated;
         }
         ++steps;
-        if (checking && everyStep && (visits += region.size()) > kInvariantVisits) everyStep = false;
-        checked += checking && everyStep;
-        if (checking && everyStep)
-            if (const std::optional<std::string> broken = planner::brokenHypothesis(in, now, false)) {
-                std::cout << "replay " << a.plan << ": the step at line " << plan.lineNumber() << " (round " << step.round << ", rule " << rules::excerpt(rule) << ", cells " << rules::excerpt(named, 200)
-                          << ") is legal but breaks " << *broken << '\n';
-                return kExitViolated;
-            }
-    }
-    if (checking && !everyStep)
-        if (const std::optional<std::string> broken = planner::brokenHypothesis(in, now, false)) {
-            std::cout << "replay " << a.plan << ": all " << steps << " steps legal, but the end breaks " << *broken << " (checked after each of the first " << checked
-                      << " steps only: a check reads all " << region.size() << " cells)\n";
+        if (const std::optional<std::string> broken = invariants.afterStep(now)) {
+            std::cout << "replay " << a.plan << ": the step at line " << plan.lineNumber() << " (round " << step.round << ", rule " << rules::excerpt(rule) << ", cells " << rules::excerpt(named, 200)
+                      << ") is legal but breaks " << *broken << '\n';
             return kExitViolated;
         }
+    }
+    if (const std::optional<std::string> broken = invariants.end(now)) {
+        std::cout << "replay " << a.plan << ": all " << steps << " steps legal, but the end breaks " << *broken << '\n';
+        return kExitViolated;
+    }
     std::cout << "replay " << a.plan << ": all " << steps << " steps legal under " << system->name
               << (losses ? " (with " + std::to_string(losses) + " injected " + (losses == 1 ? "loss" : "losses") + ")" : std::string()) << "; the end is "
               << (in.atGoal(now) ? "at the goal" : "NOT at the goal") << '\n';
-    if (!hasInvariant) std::cout << "  the system states no invariant\n";
-    else if (!afterLoss.empty()) std::cout << "  invariants held until " << afterLoss << "; not checked after it\n";
-    else std::cout << "  invariants held at the start and " << (everyStep ? "after every step" : "at the end (too large a plan to check after every step)") << '\n';
+    std::cout << "  " << invariants.summary() << '\n';
     return kExitOk;
 }
 

@@ -39,6 +39,15 @@ constexpr std::size_t kAhead = 8;
 // of 3 alternated); smaller boards were not measured and stay on one thread.
 constexpr std::int64_t kParallelCells = std::int64_t{1} << 17;
 constexpr std::size_t kParallelAnchors = 4096;
+/// RunOptions::maxIdleRounds, or 1000 + 20 D^2 on a board of extents summing to D, times the
+/// message delay; saturated, since a board a billion cells long, or --delay 10^6, would overflow.
+std::int64_t noProgressWindow(const Board& board, const RunOptions& options) {
+    const Vec extent = board.extent();
+    const auto d = static_cast<std::uint64_t>(std::int64_t{extent.x} + extent.y + extent.z);
+    const std::uint64_t rounds = options.maxIdleRounds > 0 ? static_cast<std::uint64_t>(options.maxIdleRounds) : std::min<std::uint64_t>(rules::checkedProduct({20, d, d}), UINT64_MAX - 1000) + 1000;
+    const auto delay = static_cast<std::uint64_t>(std::max<std::int64_t>(1, options.messageDelay));
+    return static_cast<std::int64_t>(std::min<std::uint64_t>(rules::checkedProduct({rounds, delay}), INT64_MAX));
+}
 }  // namespace
 
 void Execution::prefetchAnchor(std::int64_t anchor) const {
@@ -66,12 +75,7 @@ Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions op
         occupied_ += engine.combo(a) != BoxEngine::kOutside && cells_[a] != 0;
         if (engine.combo(a) != BoxEngine::kOutside && cells_[a] != 0) stats_.evaluations += recheck(a, plannerList_, transferList_);
     }
-    // Saturated: a board a billion cells long, or --delay 10^6, would overflow 64 bits.
-    const Vec extent = problem.board->extent();
-    const auto d = static_cast<std::uint64_t>(std::int64_t{extent.x} + extent.y + extent.z);
-    const std::uint64_t window = options_.maxIdleRounds > 0 ? static_cast<std::uint64_t>(options_.maxIdleRounds) : std::min<std::uint64_t>(rules::checkedProduct({20, d, d}), UINT64_MAX - 1000) + 1000;
-    const auto delay = static_cast<std::uint64_t>(std::max<std::int64_t>(1, options_.messageDelay));
-    maxIdle_ = static_cast<std::int64_t>(std::min<std::uint64_t>(rules::checkedProduct({window, delay}), INT64_MAX));
+    maxIdle_ = noProgressWindow(*problem.board, options_);
     // A thread's wake-up costs some microseconds: only boards whose rounds take milliseconds get one.
     if (options_.threads > 1 && static_cast<std::int64_t>(n) >= kParallelCells) {
         workers_ = std::make_unique<rules::WorkerPool>(2);

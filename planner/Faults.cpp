@@ -31,6 +31,18 @@ bool inside(const Board& board, Vec p) {
     return p.x >= lo.x && p.x < lo.x + ext.x && p.y >= lo.y && p.y < lo.y + ext.y && z;
 }
 
+/// The least mass a target cell holds in a state the goal accepts there (0 when it accepts none).
+rules::Rational leastGoalMass(const Problem& problem) {
+    const rules::RuleTables& tables = *problem.tables;
+    const int inTarget = tables.comboIndex(1u << problem.schema.target);
+    std::optional<std::int64_t> least;
+    for (int v = 1; v < problem.model->alphabet().size(); ++v) {
+        const auto value = static_cast<rules::CellValue>(v);
+        if (tables.test(problem.goal, inTarget, value)) least = std::min(least.value_or(tables.massUnitsOf(value)), tables.massUnitsOf(value));
+    }
+    return rules::Rational(least.value_or(0), tables.massDenominator());
+}
+
 }  // namespace
 
 Loss parseLoss(const std::string& option, const std::string& text, int dimension, bool cell) {
@@ -163,15 +175,19 @@ std::string Faults::judge(const Execution& execution, std::int64_t cell, BoxEngi
     if (const std::optional<std::string> broken = brokenHypothesis(configuration.interpreter(), configuration.configuration(), true))
         return what + " broke " + *broken + ", so seed 000's lemmas no longer cover the run";
     const rules::System& system = problem_->model->system();
-    // A system that carries mass and states no progress assumption about it (the lock planners)
-    // is held to Lemma 2's condition here: the mass left must fill the target, since no rule
-    // makes any (a loss only lowers it, so the target can never hold too much).
+    // Lemma 2's condition, as the planner knows it: the mass left must fill the target at its goal,
+    // since no rule makes any (a loss only lowers it). The general_n systems state it as their
+    // progress assumption, checked above; the lock planners state none.
     if (system.conservesMass() && problem_->schema.resource >= 0) {
         const rules::RuleTables& tables = *problem_->tables;
         std::int64_t units = 0;
         board.forEachInside([&](std::int64_t i, Vec) { units += cells[i] ? tables.massUnitsOf(cells[i]) : 0; });
-        const rules::Rational mass(units, tables.massDenominator()), need(static_cast<std::int64_t>(problem_->target.cells.size()));
-        if (mass < need) return what + " left mass " + mass.str() + ", less than the " + need.str() + " metamodules of the target: mass is conserved, so no plan can reach it";
+        const rules::Rational mass(units, tables.massDenominator());
+        const auto targetCells = static_cast<std::int64_t>(problem_->target.cells.size());
+        const rules::Rational need = rules::Rational(targetCells) * leastGoalMass(*problem_);
+        if (mass < need)
+            return what + " left mass " + mass.str() + ", and the target's " + std::to_string(targetCells) + " cells hold at least " + need.str() +
+                   " at the goal: mass is conserved, so no plan can reach it";
     }
     return "";
 }

@@ -6,6 +6,8 @@
 
 #include "rules/Printer.h"
 
+#include <algorithm>
+
 namespace holon::planner {
 
 StepFault replayStep(const rules::Interpreter& in, rules::Configuration& now, const rules::Instance& instance, StepUndo* undo) {
@@ -41,6 +43,41 @@ std::optional<std::string> brokenHypothesis(const rules::Interpreter& in, const 
         return (invariant ? "invariant '" + p.name + "'" : "the assumption of progress property '" + p.name + "'") + ": `" + conjunct + "` is false";
     }
     return std::nullopt;
+}
+
+InvariantWatch::InvariantWatch(const rules::Interpreter& in, std::uint64_t visits) : in_(&in), budget_(visits) {
+    const auto& properties = in.model().system().properties;
+    watching_ = std::any_of(properties.begin(), properties.end(), [](const rules::Property& p) { return p.kind == rules::Property::Kind::Invariant; });
+}
+
+std::optional<std::string> InvariantWatch::start(const rules::Configuration& now) const { return watching_ ? brokenHypothesis(*in_, now, false) : std::nullopt; }
+
+std::optional<std::string> InvariantWatch::afterStep(const rules::Configuration& now) {
+    ++steps_;
+    if (!watching_ || checked_ + 1 < steps_ || (visits_ += in_->region().size()) > budget_) return std::nullopt;
+    ++checked_;
+    return brokenHypothesis(*in_, now, false);
+}
+
+void InvariantWatch::afterLoss(const rules::Configuration& now, const std::string& where) {
+    if (!watching_) return;
+    if (const std::optional<std::string> broken = brokenHypothesis(*in_, now, false)) brokenByLoss_ = where + " broke " + *broken, watching_ = false;
+}
+
+std::optional<std::string> InvariantWatch::end(const rules::Configuration& now) const {
+    if (!watching_ || checked_ == steps_) return std::nullopt;
+    const std::optional<std::string> broken = brokenHypothesis(*in_, now, false);
+    if (!broken) return std::nullopt;
+    return *broken + " (they held after each of the first " + std::to_string(checked_) + " steps; the other " + std::to_string(steps_ - checked_) +
+           " were not checked one by one: a check reads all " + std::to_string(in_->region().size()) + " cells)";
+}
+
+std::string InvariantWatch::summary() const {
+    if (!brokenByLoss_.empty()) return "invariants held until " + brokenByLoss_ + "; not checked after it";
+    if (!watching_) return "the system states no invariant";
+    if (checked_ == steps_) return "invariants held at the start and after every step";
+    return "invariants held at the start, after each of the first " + std::to_string(checked_) + " steps and at the end (the other " + std::to_string(steps_ - checked_) +
+           " steps were not checked one by one: a check reads all " + std::to_string(in_->region().size()) + " cells)";
 }
 
 const char* describe(StepFault fault) {

@@ -3,7 +3,7 @@
 // nothing fired although the allocator's fields had settled, the fields see no way forward (a
 // destroyer may need a D that only a detour brings), so seed 000 §IV-B's randomizer moves
 // resources until the next creation or deletion. So does a run in which only transfers have fired
-// for a quarter of the no-progress window.
+// for four rounds per metamodule, or a quarter of the no-progress window if that is shorter.
 
 #include "planner/Allocator.h"
 
