@@ -85,7 +85,7 @@ Faults::Faults(const Problem& problem, FaultOptions options)
 bool Faults::admit(const Execution& execution, std::int64_t anchor, int shape) {
     const BoxEngine& engine = execution.engine();
     if (!arrives_.empty()) {
-        const auto now = static_cast<std::uint32_t>(execution.stats().rounds);
+        const std::int64_t now = execution.stats().rounds;
         for (std::int64_t r : engine.readSteps(shape))
             if (arrives_[anchor + r] > now) return ++delayed_, false;
     }
@@ -95,11 +95,11 @@ bool Faults::admit(const Execution& execution, std::int64_t anchor, int shape) {
 
 void Faults::fired(const Execution& execution, std::int64_t anchor, int shape, const BoxEngine::Value* old) {
     if (arrives_.empty()) return;
-    const auto now = static_cast<std::uint32_t>(execution.stats().rounds);
+    const std::int64_t now = execution.stats().rounds;
     const auto steps = execution.engine().cellSteps(shape);
     for (std::size_t k = 0; k < steps.size(); ++k)
         if (execution.cells()[anchor + steps[k]] != old[k])
-            arrives_[anchor + steps[k]] = now + 1 + static_cast<std::uint32_t>(random_.below(static_cast<std::uint64_t>(options_.delay)));
+            arrives_[anchor + steps[k]] = now + 1 + static_cast<std::int64_t>(random_.below(static_cast<std::uint64_t>(options_.delay)));
 }
 
 std::string Faults::describe(std::int64_t cell, BoxEngine::Value value) const {

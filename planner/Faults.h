@@ -65,7 +65,7 @@ private:
     std::int64_t roundsSeen_ = 0;      // the last round roundEnd was called after
     /// What loss k did, or why it was not made.
     std::string event(std::size_t k) const;
-    std::vector<std::uint32_t> arrives_;  // per board cell with --delay: the round its latest state reaches the neighbours
+    std::vector<std::int64_t> arrives_;  // per board cell with --delay: the round its latest state reaches the neighbours (64 bits: --delay 10^6 allows runs past 2^32 rounds)
     std::int64_t dropped_ = 0, delayed_ = 0;
     std::string broken_;
 };
