@@ -155,9 +155,9 @@ private:
         const int placed = open.instanceAt(concrete.indexOf({0, 0, 0}), w.engine().instances()[q].shape);
         const std::string rule = ruleOf(w, q);
         // Every rule that makes this step, as the message names them: the shape is kept once.
-        nlohmann::json rules = nlohmann::json::array();
-        for (int r : model_.stepRuleList(w.engine().instances()[q].shape)) rules.push_back(model_.rules()[r].name);
-        o.result.witness = {{"rule", rules[0]}, {"rules", rules}, {"window_radius", ob.margin}, {"window_cells", w.region().size()}};
+        nlohmann::json names = nlohmann::json::array();
+        for (int r : model_.stepRuleList(w.engine().instances()[q].shape)) names.push_back(model_.rules()[r].name);
+        o.result.witness = {{"rule", names[0]}, {"rules", names}, {"window_radius", ob.margin}, {"window_cells", w.region().size()}};
         std::string why;
         std::optional<Trace> trace;
         std::vector<std::uint32_t> inputs;

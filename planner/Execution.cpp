@@ -72,8 +72,9 @@ Execution::Execution(const Problem& problem, Allocator& allocator, RunOptions op
             for (std::int64_t step : engine.cellSteps(sh)) pipelined_.push_back({sh, step});
     for (std::int64_t a = 0; a < static_cast<std::int64_t>(n); ++a) {
         offGoal_ += !atGoal(a, cells_[a]);
-        occupied_ += engine.combo(a) != BoxEngine::kOutside && cells_[a] != 0;
-        if (engine.combo(a) != BoxEngine::kOutside && cells_[a] != 0) stats_.evaluations += recheck(a, plannerList_, transferList_);
+        if (engine.combo(a) == BoxEngine::kOutside || cells_[a] == 0) continue;
+        ++occupied_;
+        stats_.evaluations += recheck(a, plannerList_, transferList_);
     }
     maxIdle_ = noProgressWindow(*problem.board, options_);
     // A thread's wake-up costs some microseconds: only boards whose rounds take milliseconds get one.

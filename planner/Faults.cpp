@@ -14,7 +14,6 @@
 #include "rules/Error.h"
 #include "rules/Limits.h"
 #include "rules/Parameter.h"
-#include "rules/Printer.h"
 
 #include <charconv>
 #include <sstream>
@@ -29,18 +28,6 @@ bool inside(const Board& board, Vec p) {
     const Vec lo = board.lower(), ext = board.extent();
     const bool z = board.lattice().dimension() != 3 || (p.z >= lo.z && p.z < lo.z + ext.z);
     return p.x >= lo.x && p.x < lo.x + ext.x && p.y >= lo.y && p.y < lo.y + ext.y && z;
-}
-
-/// The least mass a target cell holds in a state the goal accepts there (0 when it accepts none).
-rules::Rational leastGoalMass(const Problem& problem) {
-    const rules::RuleTables& tables = *problem.tables;
-    const int inTarget = tables.comboIndex(1u << problem.schema.target);
-    std::optional<std::int64_t> least;
-    for (int v = 1; v < problem.model->alphabet().size(); ++v) {
-        const auto value = static_cast<rules::CellValue>(v);
-        if (tables.test(problem.goal, inTarget, value)) least = std::min(least.value_or(tables.massUnitsOf(value)), tables.massUnitsOf(value));
-    }
-    return rules::Rational(least.value_or(0), tables.massDenominator());
 }
 
 }  // namespace
@@ -184,7 +171,8 @@ std::string Faults::judge(const Execution& execution, std::int64_t cell, BoxEngi
         board.forEachInside([&](std::int64_t i, Vec) { units += cells[i] ? tables.massUnitsOf(cells[i]) : 0; });
         const rules::Rational mass(units, tables.massDenominator());
         const auto targetCells = static_cast<std::int64_t>(problem_->target.cells.size());
-        const rules::Rational need = rules::Rational(targetCells) * leastGoalMass(*problem_);
+        const std::optional<GoalMass> atGoal = goalMass(*problem_, tables.comboIndex(1u << problem_->schema.target));
+        const rules::Rational need = rules::Rational(targetCells) * rules::Rational(atGoal ? atGoal->least : 0, tables.massDenominator());
         if (mass < need)
             return what + " left mass " + mass.str() + ", and the target's " + std::to_string(targetCells) + " cells hold at least " + need.str() +
                    " at the goal: mass is conserved, so no plan can reach it";

@@ -82,6 +82,18 @@ PlannerSchema PlannerSchema::of(const rules::System& system) {
     return s;
 }
 
+std::optional<GoalMass> goalMass(const Problem& problem, int combo) {
+    const rules::RuleTables& tables = *problem.tables;
+    std::optional<GoalMass> g;
+    for (int v = 0; v < tables.alphabet(); ++v) {
+        const auto value = static_cast<rules::CellValue>(v);
+        if (!tables.test(problem.goal, combo, value)) continue;
+        const std::int64_t m = tables.massUnitsOf(value);
+        g = g ? GoalMass{std::min(g->least, m), std::max(g->most, m)} : GoalMass{m, m};
+    }
+    return g;
+}
+
 Problem makeProblem(const rules::Model& model, Shape start, Shape target, std::optional<Vec> seed, std::uint64_t randomSeed, std::uint64_t memoryBytes,
                     const std::function<void()>& checkpoint) {
     Problem p;

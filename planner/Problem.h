@@ -41,6 +41,13 @@ struct Problem {
     std::int64_t toCreate = 0, toDelete = 0;
 };
 
+/// The least and most mass (in the tables' mass units) a cell with input combination `combo` holds
+/// in a state the goal accepts there, the empty state included; nothing when it accepts none.
+struct GoalMass {
+    std::int64_t least = 0, most = 0;
+};
+std::optional<GoalMass> goalMass(const Problem& problem, int combo);
+
 /// Memory a plan keeps per cell of its board (the box around start and target, padded), for
 /// --memory: the problem's layout (target combo, start cell, connectivity marks), the run's state
 /// (planner/Execution.h: the cell, its enabled and listed bits, marks, stamp), one list entry per

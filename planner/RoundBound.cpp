@@ -104,7 +104,7 @@ public:
         const rules::RuleTables& tables = *problem.tables;
         // Per input combination: whether a rule can fill an empty cell, and the least and most mass
         // a cell may hold at the goal.
-        const int combos = tables.comboCount(), values = tables.alphabet();
+        const int combos = tables.comboCount();
         std::vector<char> fillable(static_cast<std::size_t>(combos), 0);
         std::vector<std::int64_t> least(static_cast<std::size_t>(combos), kNoGoalMass), most(static_cast<std::size_t>(combos), 0);
         for (int c = 0; c < combos; ++c) {
@@ -114,12 +114,7 @@ public:
                     if (tables.test(t.lhs[k], c, 0) && (t.copyFrom[k] >= 0 ? t.copyFrom[k] != static_cast<int>(k) : !t.rhs[k].empty() && t.rhs[k][0] != 0))
                         fillable[static_cast<std::size_t>(c)] = 1;
             }
-            for (int v = 0; v < values; ++v)
-                if (tables.test(problem.goal, c, static_cast<rules::CellValue>(v))) {
-                    const std::int64_t m = tables.massUnitsOf(static_cast<rules::CellValue>(v));
-                    least[static_cast<std::size_t>(c)] = std::min(least[static_cast<std::size_t>(c)], m);
-                    most[static_cast<std::size_t>(c)] = std::max(most[static_cast<std::size_t>(c)], m);
-                }
+            if (const std::optional<GoalMass> g = goalMass(problem, c)) least[static_cast<std::size_t>(c)] = g->least, most[static_cast<std::size_t>(c)] = g->most;
         }
         const auto size = static_cast<std::size_t>(board.size());
         mayHold_.assign(size, 0), keeps_.assign(size, 0), gain_.assign(size, 0), loss_.assign(size, 0);

@@ -149,6 +149,20 @@ TEST_CASE("demand and eager: a livelock of transfers under the lock rules gets t
     }
 }
 
+TEST_CASE("goal mass: a target cell holds a D or a C at the goal, a cell outside it nothing") {
+    // Faults judges a loss by the least, RoundBound its cuts by both; the empty state counts.
+    PlannerSystem sys("planner_general3", 2);
+    const planner::Problem p = planner::makeProblem(*sys.model, planner::parseShape("box:4x2"), planner::parseShape("box:2x4"), std::nullopt, 1);
+    const rules::RuleTables& tables = *p.tables;
+    const std::optional<planner::GoalMass> in = planner::goalMass(p, tables.comboIndex(1u << p.schema.target)), out = planner::goalMass(p, tables.comboIndex(0));
+    REQUIRE(in);
+    REQUIRE(out);
+    CHECK(in->least == tables.massDenominator());         // D = 1
+    CHECK(in->most == tables.massDenominator() * 4 / 3);  // C = 4/3
+    CHECK(out->least == 0);
+    CHECK(out->most == 0);
+}
+
 TEST_CASE("the no-progress window grows with the message delay") {
     // Under --delay every hop of a resource may wait that many rounds, so a run that is slow, not
     // stuck, gets as many times the window. Here the hook refuses half the transfers each round,
